@@ -1,0 +1,88 @@
+package io.github.contacttracker.cli;
+
+import java.io.PrintStream;
+import java.util.List;
+import java.util.Locale;
+import java.util.Set;
+
+import io.github.contacttracker.core.Method;
+import io.github.contacttracker.core.StackTracker;
+import io.github.contacttracker.core.TrackerParameters;
+import io.github.contacttracker.sim.PaperParticles;
+import io.github.contacttracker.sim.ParticleType;
+import io.github.contacttracker.sim.SimulatedStack;
+import net.imglib2.img.array.ArrayImg;
+import net.imglib2.img.basictypeaccess.array.ByteArray;
+import net.imglib2.type.numeric.integer.UnsignedByteType;
+
+/**
+ * {@code bench}: speed of each method on a simulated 512x512 8-bit stack with 12 particles (4 touching pairs),
+ * on one thread and on all, against the time of one plain read pass over the same frames (the memory limit).
+ */
+final class BenchCommand {
+
+	private static final Set<String> OPTIONS = Set.of("frames", "rounds");
+
+	private final PrintStream out;
+
+	BenchCommand(final PrintStream out) {
+		this.out = out;
+	}
+
+	int run(final String[] args) {
+		final Options o = new Options(args, OPTIONS);
+		final int frames = o.integer("frames", 400), rounds = o.integer("rounds", 5);
+		if (frames < 1 || rounds < 1) throw new IllegalArgumentException("--frames and --rounds must be at least 1");
+		final ParticleType type = PaperParticles.silica553();
+		final SimulatedStack<UnsignedByteType> stack = SimulatedStack.benchmarkStack(type, frames, 7);
+		final List<ArrayImg<UnsignedByteType, ?>> imgs = stack.frames();
+		final double mpx = (double) frames * stack.width() * stack.height() / 1e6;
+		final int cores = Runtime.getRuntime().availableProcessors();
+		out.printf(Locale.ROOT, "%d frames of %dx%d 8-bit, 12 particles (4 touching pairs) of %s, %d cores, " +
+			"best of %d rounds%n", frames, stack.width(), stack.height(), type.name(), cores, rounds);
+
+		final double readSeconds = best(rounds, () -> {
+			long sum = 0;
+			for (final ArrayImg<UnsignedByteType, ?> img : imgs) {
+				final byte[] px = ((ByteArray) img.update(null)).getCurrentStorageArray();
+				for (final byte b : px)
+					sum += b & 0xff;
+			}
+			if (sum == 42) out.print(""); // keep the JIT from dropping the loop
+		});
+		out.printf(Locale.ROOT, "%-28s %10s %10s %12s%n", "", "frames/s", "Mpixel/s", "x read time");
+		row("read pass (1 thread)", frames, mpx, readSeconds, readSeconds);
+		final TrackerParameters base = TrackerParameters.of(type.threshold(), type.rOut());
+		// Warm the JIT on every method first, so the first method measured is not penalised.
+		for (int w = 0; w < 3; w++)
+			for (final Method m : Method.values())
+				new StackTracker(base.withMethod(m), 1).track(imgs, false);
+		for (final Method m : Method.values()) {
+			for (final int threads : new int[] { 1, cores }) {
+				final StackTracker tracker = new StackTracker(base.withMethod(m), threads);
+				final double s = best(rounds, () -> tracker.track(imgs, false));
+				row(m.key() + " (" + threads + " thread" + (threads == 1 ? "" : "s") + ")", frames, mpx, s, readSeconds);
+			}
+		}
+		return 0;
+	}
+
+	private void row(final String name, final int frames, final double mpx, final double seconds,
+		final double readSeconds)
+	{
+		out.printf(Locale.ROOT, "%-28s %10.0f %10.0f %12.1f%n", name, frames / seconds, mpx / seconds, seconds /
+			readSeconds);
+	}
+
+	/** Best wall time of {@code rounds} runs after one warm-up run. */
+	private static double best(final int rounds, final Runnable job) {
+		job.run();
+		double best = Double.POSITIVE_INFINITY;
+		for (int r = 0; r < rounds; r++) {
+			final long t0 = System.nanoTime();
+			job.run();
+			best = Math.min(best, (System.nanoTime() - t0) * 1e-9);
+		}
+		return best;
+	}
+}

@@ -1,0 +1,74 @@
+package io.github.contacttracker.cli;
+
+import java.io.IOException;
+import java.io.PrintStream;
+import java.util.Arrays;
+import java.util.concurrent.CancellationException;
+
+/**
+ * The command line: {@code contact-tracker demo | track | simulate | bench | accuracy}. Bad input ends with a
+ * one-line error on stderr and exit status 2; an unexpected failure with exit status 1.
+ */
+public final class ContactTrackerCli {
+
+	/** Exit status for bad input (missing file, bad option, untrackable image). */
+	public static final int EXIT_BAD_INPUT = 2;
+
+	static final String USAGE = String.join("\n", //
+		"usage: contact-tracker COMMAND [options]", //
+		"", //
+		"  demo                       simulate pairs and triples of 5.53 um particles from apart to contact,", //
+		"                             track them, print the distance errors, write an overlay PNG", //
+		"      [--reps N] [--out-dir DIR] [--threads N]", //
+		"  track INPUT.tif --threshold T --r-out R", //
+		"      [--min-area N] [--min-second-area N] [--connectivity 4|8] [--method M] [--channel C]", //
+		"      [--threads N] [--csv OUT.csv] [--trackmate-xml OUT.xml]", //
+		"                             localize the particles of every frame; CSV to stdout without --csv", //
+		"  simulate --scenario pair|triple --separation R_OVER_D --out stack.tif --truth truth.csv", //
+		"      [--frames N] [--seed S] [--particle 5.53|2.06] [--bit-depth 8|16]", //
+		"  bench [--frames N]          speed on a 512x512 8-bit stack with 12 particles", //
+		"", //
+		"Bad input exits with status 2 and a one-line error; no partial output file is left behind.");
+
+	private ContactTrackerCli() {}
+
+	public static void main(final String[] args) {
+		System.exit(run(args, System.out, System.err));
+	}
+
+	/** Runs a command; returns the exit status. */
+	public static int run(final String[] args, final PrintStream out, final PrintStream err) {
+		if (args.length == 0 || args[0].equals("-h") || args[0].equals("--help") || args[0].equals("help")) {
+			(args.length == 0 ? err : out).println(USAGE);
+			return args.length == 0 ? EXIT_BAD_INPUT : 0;
+		}
+		final String[] rest = Arrays.copyOfRange(args, 1, args.length);
+		try {
+			switch (args[0]) {
+				case "demo": return new DemoCommand(out).run(rest);
+				case "track": return new TrackCommand(out, err).run(rest);
+				case "simulate": return new SimulateCommand(out).run(rest);
+				case "bench": return new BenchCommand(out).run(rest);
+				default:
+					err.println("contact-tracker: error: unknown command '" + args[0] + "' (demo, track, simulate, bench)");
+					return EXIT_BAD_INPUT;
+			}
+		}
+		catch (final IllegalArgumentException | IOException e) {
+			err.println("contact-tracker: error: " + oneLine(e.getMessage()));
+			return EXIT_BAD_INPUT;
+		}
+		catch (final CancellationException e) {
+			err.println("contact-tracker: cancelled");
+			return 130;
+		}
+		catch (final RuntimeException | OutOfMemoryError e) {
+			err.println("contact-tracker: failed: " + e);
+			return 1;
+		}
+	}
+
+	private static String oneLine(final String message) {
+		return message == null ? "(no message)" : message.replace('\n', ' ');
+	}
+}

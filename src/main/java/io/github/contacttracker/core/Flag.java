@@ -1,0 +1,64 @@
+package io.github.contacttracker.core;
+
+import java.util.EnumSet;
+import java.util.Set;
+
+/**
+ * What happened while a spot was localized. A spot carries its flags as a bit mask
+ * ({@link Localization#flags()}); every fallback that changes a result sets one.
+ */
+public enum Flag {
+	/** The final centre comes from a second active area from which neighbours' discs were removed. */
+	SECOND_PASS("second pass applied"),
+	/**
+	 * The second pass was needed (a neighbour's disc overlaps the active area) but could not be done: too few
+	 * pixels were left ({@code min_second_area}) or the remaining lines were degenerate. The spot keeps its
+	 * first-pass centre, which is biased towards the neighbour.
+	 */
+	FELL_BACK("fell back to first pass"),
+	/**
+	 * A 2x2 system was near-singular (all gradient lines nearly parallel). If it was the first pass, the
+	 * reported centre is the intensity-weighted centroid of the active area.
+	 */
+	DEGENERATE("degenerate system"),
+	/** The active area reaches within 2 px of the image border; pixels there have no gradient. */
+	AT_BORDER("touches border"),
+	/** The active area looks like several particles merged into one component (see README). */
+	MERGED("suspected merge"),
+	/** An iterative method stopped at its iteration limit before the centres settled. */
+	NOT_CONVERGED("not converged");
+
+	private final String description;
+
+	Flag(final String description) {
+		this.description = description;
+	}
+
+	/** @return a short human-readable description */
+	public String description() {
+		return description;
+	}
+
+	/** @return the bit of this flag in a flag mask */
+	public int bit() {
+		return 1 << ordinal();
+	}
+
+	/** @return whether {@code mask} has this flag */
+	public boolean isSet(final int mask) {
+		return (mask & bit()) != 0;
+	}
+
+	/** @return whether this flag warns the user (every flag but {@link #SECOND_PASS}, which is the normal case) */
+	public boolean isWarning() {
+		return this != SECOND_PASS;
+	}
+
+	/** @return the flags set in {@code mask} */
+	public static Set<Flag> decode(final int mask) {
+		final EnumSet<Flag> set = EnumSet.noneOf(Flag.class);
+		for (final Flag f : values())
+			if (f.isSet(mask)) set.add(f);
+		return set;
+	}
+}

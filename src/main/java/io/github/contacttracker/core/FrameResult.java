@@ -1,0 +1,23 @@
+package io.github.contacttracker.core;
+
+import java.util.List;
+
+/**
+ * The spots of one frame, with the regions behind them when they were asked for (for overlays).
+ *
+ * @param spots the spots, in the frame's coordinates
+ * @param activeAreas each spot's active area {@code L_k}, or empty when regions were not kept
+ * @param secondAreas each spot's second active area {@code L_k_sec}, or empty when regions were not kept
+ * @param noiseSigma the frame's estimated pixel-noise standard deviation (grey levels)
+ * @param discarded components above threshold that gave no spot: smaller than {@code min_area}, or without
+ *        any non-zero gradient (a flat plateau, or an area lying wholly within 2 px of the border)
+ */
+public record FrameResult(List<Localization> spots, List<Region> activeAreas, List<Region> secondAreas,
+	double noiseSigma, int discarded)
+{
+	public FrameResult {
+		spots = List.copyOf(spots);
+		activeAreas = List.copyOf(activeAreas);
+		secondAreas = List.copyOf(secondAreas);
+	}
+}

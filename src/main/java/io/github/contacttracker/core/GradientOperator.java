@@ -1,0 +1,94 @@
+package io.github.contacttracker.core;
+
+import net.imglib2.RandomAccessibleInterval;
+import net.imglib2.type.numeric.RealType;
+
+/**
+ * The paper's 5x3 gradient operators (Ma et al. 2012), as a convolution:
+ * <pre>
+ * gx(x, y) = sum over rows y-1..y+1 of [ I(x+1) + I(x+2) - I(x-1) - I(x-2) ]
+ * gy(x, y) = sum over columns x-1..x+1 of [ I(y+1) + I(y+2) - I(y-1) - I(y-2) ]
+ * </pre>
+ * so the gradient points uphill, sits on the pixel centre, and y grows downwards.
+ * <p>
+ * <b>Border rule:</b> a gradient exists only where the whole 5x5 footprint of both operators lies inside the
+ * image ({@code 2 <= x < width-2} and {@code 2 <= y < height-2}). Padding would invent intensity steps at
+ * the border and bend the lines, so pixels closer than 2 px to the border carry no gradient and no weight;
+ * the spots they belong to are flagged {@link Flag#AT_BORDER}.
+ * <p>
+ * Gradients are evaluated only where needed (active pixels), never as a full-frame convolution.
+ */
+public final class GradientOperator {
+
+	/** Half-width of the operators' footprint (px). */
+	public static final int MARGIN = 2;
+
+	private GradientOperator() {}
+
+	/** @return whether (x, y) of {@code plane} has a gradient under the border rule */
+	public static boolean hasGradient(final Plane plane, final int x, final int y) {
+		return x >= MARGIN && y >= MARGIN && x < plane.width() - MARGIN && y < plane.height() - MARGIN;
+	}
+
+	/**
+	 * The gradient at one pixel, by the direct 5x3 sums.
+	 *
+	 * @return {gx, gy}
+	 * @throws IllegalArgumentException if the pixel has no gradient under the border rule
+	 */
+	public static <T extends RealType<T>> double[] at(final RandomAccessibleInterval<T> image, final long x,
+		final long y)
+	{
+		final Plane plane = Plane.of(image);
+		final int lx = (int) (x - plane.minX()), ly = (int) (y - plane.minY());
+		if (!hasGradient(plane, lx, ly))
+			throw new IllegalArgumentException("pixel (" + x + ", " + y + ") is within " + MARGIN +
+				" px of the border: no gradient there");
+		return new double[] { gx(plane, lx, ly), gy(plane, lx, ly) };
+	}
+
+	static double gx(final Plane p, final int x, final int y) {
+		double s = 0;
+		for (int dy = -1; dy <= 1; dy++)
+			s += p.get(x + 1, y + dy) + p.get(x + 2, y + dy) - p.get(x - 1, y + dy) - p.get(x - 2, y + dy);
+		return s;
+	}
+
+	static double gy(final Plane p, final int x, final int y) {
+		double s = 0;
+		for (int dx = -1; dx <= 1; dx++)
+			s += p.get(x + dx, y + 1) + p.get(x + dx, y + 2) - p.get(x + dx, y - 1) - p.get(x + dx, y - 2);
+		return s;
+	}
+
+	/**
+	 * Gradients along one run {@code (y, x0..x1)} whose pixels all have gradients, by running sums: about 7
+	 * reads a pixel instead of 24. Writes {@code gx[off + x - x0]} and {@code gy[...]}.
+	 */
+	static void alongRun(final Plane p, final int y, final int x0, final int x1, final double[] gx,
+		final double[] gy, final int off, final double[] scratch)
+	{
+		final int n = x1 - x0 + 1;
+		// col[k] = I(x, y-1) + I(x, y) + I(x, y+1) for x = x0-2+k, k in 0..n+3
+		// dv[k]  = I(x, y+1) + I(x, y+2) - I(x, y-1) - I(x, y-2) for x = x0-1+k, k in 0..n+1
+		final double[] col = scratch;
+		final int dvOff = n + 4;
+		for (int k = 0; k < n + 4; k++) {
+			final int x = x0 - 2 + k;
+			col[k] = p.get(x, y - 1) + p.get(x, y) + p.get(x, y + 1);
+		}
+		for (int k = 0; k < n + 2; k++) {
+			final int x = x0 - 1 + k;
+			col[dvOff + k] = p.get(x, y + 1) + p.get(x, y + 2) - p.get(x, y - 1) - p.get(x, y - 2);
+		}
+		for (int k = 0; k < n; k++) {
+			gx[off + k] = col[k + 3] + col[k + 4] - col[k + 1] - col[k];
+			gy[off + k] = col[dvOff + k] + col[dvOff + k + 1] + col[dvOff + k + 2];
+		}
+	}
+
+	/** @return the scratch length {@link #alongRun} needs for runs up to {@code maxRun} pixels */
+	static int scratchLength(final int maxRun) {
+		return 2 * maxRun + 6;
+	}
+}

@@ -1,0 +1,59 @@
+package io.github.contacttracker.core;
+
+import java.util.Set;
+
+/**
+ * One localized particle in one frame: an immutable record in pixel units.
+ * <p>
+ * Coordinates follow TrackMate's convention: the centre of pixel (0,0) is at x = 0, y = 0, x grows to the
+ * right and y downwards. Callers convert to calibrated units by multiplying by the pixel size.
+ *
+ * @param frame frame index (0-based)
+ * @param x final x centre (px)
+ * @param y final y centre (px)
+ * @param firstX first-pass x centre, on the whole active area (px)
+ * @param firstY first-pass y centre, on the whole active area (px)
+ * @param activeArea pixels in the active area {@code L_k}
+ * @param secondArea pixels in the second active area {@code L_k_sec} (equals {@code activeArea} when no
+ *        neighbour reaches the particle)
+ * @param quality integrated intensity above threshold over the active area (grey levels x px; higher is better)
+ * @param radius equivalent radius of the active area, {@code sqrt(activeArea / pi)} (px)
+ * @param flags bit mask of {@link Flag}s
+ * @param iterations solves of the final centre (1 for the first pass, 2 for the paper's method, more for
+ *        iterative methods)
+ * @param sigmaX estimated standard error of x (px), NaN when it could not be estimated
+ * @param sigmaY estimated standard error of y (px), NaN when it could not be estimated
+ */
+public record Localization(int frame, double x, double y, double firstX, double firstY, int activeArea,
+	int secondArea, double quality, double radius, int flags, int iterations, double sigmaX, double sigmaY)
+{
+
+	/** @return whether {@code flag} is set */
+	public boolean has(final Flag flag) {
+		return flag.isSet(flags);
+	}
+
+	/** @return whether any warning flag is set (see {@link Flag#isWarning()}) */
+	public boolean isFlagged() {
+		for (final Flag f : Flag.values())
+			if (f.isWarning() && f.isSet(flags)) return true;
+		return false;
+	}
+
+	/** @return the flags as a set */
+	public Set<Flag> flagSet() {
+		return Flag.decode(flags);
+	}
+
+	/** @return a copy with another frame index */
+	public Localization withFrame(final int newFrame) {
+		return new Localization(newFrame, x, y, firstX, firstY, activeArea, secondArea, quality, radius, flags,
+			iterations, sigmaX, sigmaY);
+	}
+
+	/** @return a copy moved by (dx, dy) pixels, e.g. from a crop's frame into the whole image's */
+	public Localization translate(final double dx, final double dy) {
+		return new Localization(frame, x + dx, y + dy, firstX + dx, firstY + dy, activeArea, secondArea, quality,
+			radius, flags, iterations, sigmaX, sigmaY);
+	}
+}

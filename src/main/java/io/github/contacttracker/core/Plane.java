@@ -1,0 +1,243 @@
+package io.github.contacttracker.core;
+
+import net.imglib2.RandomAccess;
+import net.imglib2.RandomAccessibleInterval;
+import net.imglib2.img.array.ArrayImg;
+import net.imglib2.img.basictypeaccess.array.ByteArray;
+import net.imglib2.img.basictypeaccess.array.FloatArray;
+import net.imglib2.img.basictypeaccess.array.ShortArray;
+import net.imglib2.img.planar.PlanarImg;
+import net.imglib2.type.numeric.IntegerType;
+import net.imglib2.type.numeric.RealType;
+import net.imglib2.type.numeric.integer.UnsignedByteType;
+import net.imglib2.type.numeric.integer.UnsignedShortType;
+import net.imglib2.type.numeric.real.FloatType;
+
+/**
+ * Read access to one 2D frame in local coordinates {@code 0 <= x < width, 0 <= y < height}.
+ * <p>
+ * {@link #of(RandomAccessibleInterval)} picks a fast path that reads the primitive array behind an
+ * {@link ArrayImg} or single-plane {@link PlanarImg} of unsigned bytes, unsigned shorts or floats, and falls
+ * back to a generic {@link RandomAccess} over any {@link RealType} otherwise. Both return the same values as
+ * {@code double}, so every algorithm gives identical results on either (tested).
+ * <p>
+ * Not thread-safe: one plane per thread.
+ */
+public abstract class Plane {
+
+	protected final int width;
+	protected final int height;
+	private final long minX;
+	private final long minY;
+
+	protected Plane(final int width, final int height, final long minX, final long minY) {
+		this.width = width;
+		this.height = height;
+		this.minX = minX;
+		this.minY = minY;
+	}
+
+	/** @return the grey value at local (x, y) */
+	public abstract double get(int x, int y);
+
+	/** @return whether pixels can be NaN or infinite (floating-point data) */
+	protected abstract boolean floatingPoint();
+
+	public final int width() {
+		return width;
+	}
+
+	public final int height() {
+		return height;
+	}
+
+	/** @return the source interval's minimum x: add it to local x to get the source's coordinate */
+	public final long minX() {
+		return minX;
+	}
+
+	/** @return the source interval's minimum y */
+	public final long minY() {
+		return minY;
+	}
+
+	/**
+	 * Appends the runs of row {@code y} whose pixels are {@code >= threshold} to {@code runs}.
+	 *
+	 * @throws IllegalArgumentException if the row holds a NaN or infinite pixel
+	 */
+	void scanRow(final int y, final double threshold, final RunList runs) {
+		final boolean checkFinite = floatingPoint();
+		int start = -1;
+		for (int x = 0; x < width; x++) {
+			final double v = get(x, y);
+			if (checkFinite && !Double.isFinite(v)) throw nonFinite(x, y, v);
+			if (v >= threshold) {
+				if (start < 0) start = x;
+			}
+			else if (start >= 0) {
+				runs.add(y, start, x - 1);
+				start = -1;
+			}
+		}
+		if (start >= 0) runs.add(y, start, width - 1);
+	}
+
+	IllegalArgumentException nonFinite(final int x, final int y, final double v) {
+		return new IllegalArgumentException("pixel (" + (x + minX) + ", " + (y + minY) + ") is " + v +
+			": images with NaN or infinite pixels cannot be tracked");
+	}
+
+	/**
+	 * Wraps a 2D interval, choosing the array fast path where it applies.
+	 *
+	 * @throws IllegalArgumentException if the interval is not 2D or too large for int indexing
+	 */
+	@SuppressWarnings({ "unchecked", "rawtypes" })
+	public static <T extends RealType<T>> Plane of(final RandomAccessibleInterval<T> frame) {
+		checkShape(frame);
+		final int w = (int) frame.dimension(0), h = (int) frame.dimension(1);
+		final T type = frame.getType();
+		Object storage = null;
+		if (frame instanceof ArrayImg) storage = ((ArrayImg) frame).update(null);
+		else if (frame instanceof PlanarImg && ((PlanarImg) frame).numSlices() == 1)
+			storage = ((PlanarImg) frame).getPlane(0);
+		if (storage != null) {
+			final long mx = frame.min(0), my = frame.min(1);
+			if (type instanceof UnsignedByteType && storage instanceof ByteArray)
+				return new UnsignedBytePlane(((ByteArray) storage).getCurrentStorageArray(), w, h, mx, my);
+			if (type instanceof UnsignedShortType && storage instanceof ShortArray)
+				return new UnsignedShortPlane(((ShortArray) storage).getCurrentStorageArray(), w, h, mx, my);
+			if (type instanceof FloatType && storage instanceof FloatArray)
+				return new FloatPlane(((FloatArray) storage).getCurrentStorageArray(), w, h, mx, my);
+		}
+		return generic(frame);
+	}
+
+	/** Wraps a 2D interval through a {@link RandomAccess}, never the fast path (for any {@link RealType}). */
+	public static <T extends RealType<T>> Plane generic(final RandomAccessibleInterval<T> frame) {
+		checkShape(frame);
+		return new GenericPlane<>(frame);
+	}
+
+	private static void checkShape(final RandomAccessibleInterval<?> frame) {
+		if (frame.numDimensions() != 2)
+			throw new IllegalArgumentException("a frame must be 2D, not " + frame.numDimensions() + "D");
+		if (frame.dimension(0) * frame.dimension(1) > Integer.MAX_VALUE - 8)
+			throw new IllegalArgumentException("frame of " + frame.dimension(0) + " x " + frame.dimension(1) +
+				" pixels is too large");
+	}
+
+	private static final class GenericPlane<T extends RealType<T>> extends Plane {
+		private final RandomAccess<T> access;
+		private final boolean floating;
+
+		GenericPlane(final RandomAccessibleInterval<T> frame) {
+			super((int) frame.dimension(0), (int) frame.dimension(1), frame.min(0), frame.min(1));
+			access = frame.randomAccess();
+			floating = !(frame.getType() instanceof IntegerType);
+		}
+
+		@Override
+		public double get(final int x, final int y) {
+			access.setPosition(x + minX(), 0);
+			access.setPosition(y + minY(), 1);
+			return access.get().getRealDouble();
+		}
+
+		@Override
+		protected boolean floatingPoint() {
+			return floating;
+		}
+	}
+
+	/** Unsigned integer pixels in a primitive array: thresholds by integer compare, no NaN check needed. */
+	private abstract static class IntegerArrayPlane extends Plane {
+		private final int maxValue;
+
+		IntegerArrayPlane(final int w, final int h, final long mx, final long my, final int maxValue) {
+			super(w, h, mx, my);
+			this.maxValue = maxValue;
+		}
+
+		/** @return the unsigned value at linear index {@code i} */
+		abstract int at(int i);
+
+		@Override
+		public final double get(final int x, final int y) {
+			return at(y * width + x);
+		}
+
+		@Override
+		protected final boolean floatingPoint() {
+			return false;
+		}
+
+		@Override
+		final void scanRow(final int y, final double threshold, final RunList runs) {
+			// For integer v: v >= threshold  <=>  v >= ceil(threshold).
+			final double c = Math.ceil(threshold);
+			if (c > maxValue) return;
+			final int t = (int) Math.max(c, 0);
+			final int off = y * width;
+			int start = -1;
+			for (int x = 0; x < width; x++) {
+				if (at(off + x) >= t) {
+					if (start < 0) start = x;
+				}
+				else if (start >= 0) {
+					runs.add(y, start, x - 1);
+					start = -1;
+				}
+			}
+			if (start >= 0) runs.add(y, start, width - 1);
+		}
+	}
+
+	private static final class UnsignedBytePlane extends IntegerArrayPlane {
+		private final byte[] data;
+
+		UnsignedBytePlane(final byte[] data, final int w, final int h, final long mx, final long my) {
+			super(w, h, mx, my, 0xff);
+			this.data = data;
+		}
+
+		@Override
+		int at(final int i) {
+			return data[i] & 0xff;
+		}
+	}
+
+	private static final class UnsignedShortPlane extends IntegerArrayPlane {
+		private final short[] data;
+
+		UnsignedShortPlane(final short[] data, final int w, final int h, final long mx, final long my) {
+			super(w, h, mx, my, 0xffff);
+			this.data = data;
+		}
+
+		@Override
+		int at(final int i) {
+			return data[i] & 0xffff;
+		}
+	}
+
+	private static final class FloatPlane extends Plane {
+		private final float[] data;
+
+		FloatPlane(final float[] data, final int w, final int h, final long mx, final long my) {
+			super(w, h, mx, my);
+			this.data = data;
+		}
+
+		@Override
+		public double get(final int x, final int y) {
+			return data[y * width + x];
+		}
+
+		@Override
+		protected boolean floatingPoint() {
+			return true;
+		}
+	}
+}

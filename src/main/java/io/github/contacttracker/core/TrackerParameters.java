@@ -1,0 +1,65 @@
+package io.github.contacttracker.core;
+
+/**
+ * Parameters of the localizer, immutable and validated on construction.
+ *
+ * @param threshold grey level: pixels with {@code I >= threshold} form the active areas
+ * @param rOut radius (px) of a particle's effective disc: where its image has returned to background, plus 2 px
+ * @param minArea components with fewer active pixels are noise and dropped (px)
+ * @param connectivity pixel neighbourhood of the labelling
+ * @param minSecondArea below this many pixels in the second active area the spot keeps its first-pass centre
+ *        and is flagged {@link Flag#FELL_BACK}
+ * @param method how centres are computed
+ */
+public record TrackerParameters(double threshold, double rOut, int minArea, Connectivity connectivity,
+	int minSecondArea, Method method)
+{
+	/** Default {@code min_area} (px). */
+	public static final int DEFAULT_MIN_AREA = 20;
+	/** Default {@code min_second_area} (px). */
+	public static final int DEFAULT_MIN_SECOND_AREA = 50;
+
+	/** @throws IllegalArgumentException with a one-line message naming the bad parameter */
+	public TrackerParameters {
+		if (!Double.isFinite(threshold))
+			throw new IllegalArgumentException("threshold must be a finite grey level, not " + threshold);
+		if (!(rOut > 0) || !Double.isFinite(rOut))
+			throw new IllegalArgumentException("r_out must be a positive number of pixels, not " + rOut);
+		if (minArea < 1)
+			throw new IllegalArgumentException("min_area must be at least 1 pixel, not " + minArea);
+		if (minSecondArea < 3)
+			throw new IllegalArgumentException("min_second_area must be at least 3 pixels, not " + minSecondArea);
+		if (connectivity == null) throw new IllegalArgumentException("connectivity must be given (4 or 8)");
+		if (method == null) throw new IllegalArgumentException("method must be given");
+	}
+
+	/** @return parameters with the given threshold and r_out and defaults for the rest */
+	public static TrackerParameters of(final double threshold, final double rOut) {
+		return new TrackerParameters(threshold, rOut, DEFAULT_MIN_AREA, Connectivity.EIGHT, DEFAULT_MIN_SECOND_AREA,
+			Method.PAPER);
+	}
+
+	public TrackerParameters withThreshold(final double t) {
+		return new TrackerParameters(t, rOut, minArea, connectivity, minSecondArea, method);
+	}
+
+	public TrackerParameters withROut(final double r) {
+		return new TrackerParameters(threshold, r, minArea, connectivity, minSecondArea, method);
+	}
+
+	public TrackerParameters withMinArea(final int a) {
+		return new TrackerParameters(threshold, rOut, a, connectivity, minSecondArea, method);
+	}
+
+	public TrackerParameters withConnectivity(final Connectivity c) {
+		return new TrackerParameters(threshold, rOut, minArea, c, minSecondArea, method);
+	}
+
+	public TrackerParameters withMinSecondArea(final int a) {
+		return new TrackerParameters(threshold, rOut, minArea, connectivity, a, method);
+	}
+
+	public TrackerParameters withMethod(final Method m) {
+		return new TrackerParameters(threshold, rOut, minArea, connectivity, minSecondArea, m);
+	}
+}

@@ -1,0 +1,32 @@
+package io.github.contacttracker.io;
+
+/**
+ * Physical scale of an image: positions are {@code index * pixelWidth} (TrackMate's convention, no origin
+ * offset), times are {@code frame * frameInterval}.
+ *
+ * @param pixelWidth size of a pixel along x, in {@code unit}
+ * @param pixelHeight size of a pixel along y, in {@code unit}
+ * @param unit spatial unit ("pixel" when uncalibrated)
+ * @param frameInterval time between frames, in {@code timeUnit}
+ * @param timeUnit time unit ("frame" when unknown)
+ */
+public record Calibration(double pixelWidth, double pixelHeight, String unit, double frameInterval, String timeUnit) {
+
+	/** One pixel per unit, one frame per time unit. */
+	public static final Calibration PIXELS = new Calibration(1, 1, "pixel", 1, "frame");
+
+	/** @throws IllegalArgumentException when a size is not a positive finite number */
+	public Calibration {
+		if (!(pixelWidth > 0) || !Double.isFinite(pixelWidth) || !(pixelHeight > 0) || !Double.isFinite(pixelHeight))
+			throw new IllegalArgumentException("pixel size must be positive, not " + pixelWidth + " x " + pixelHeight);
+		if (!(frameInterval > 0) || !Double.isFinite(frameInterval))
+			throw new IllegalArgumentException("frame interval must be positive, not " + frameInterval);
+		if (unit == null || unit.isBlank()) unit = "pixel";
+		if (timeUnit == null || timeUnit.isBlank()) timeUnit = "frame";
+	}
+
+	/** @return a spatial calibration with isotropic pixels of {@code size} {@code unit}, time in frames */
+	public static Calibration ofPixelSize(final double size, final String unit) {
+		return new Calibration(size, size, unit, 1, "frame");
+	}
+}

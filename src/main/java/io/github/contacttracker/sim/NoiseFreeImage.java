@@ -1,0 +1,38 @@
+package io.github.contacttracker.sim;
+
+/**
+ * An exact (real-valued, noise-free) simulated image, row-major: pixel {@code (x, y)} is
+ * {@code pixels[y * width + x]}. The array is shared, not copied, so that rendering and re-noising stay cheap.
+ *
+ * @param width image width (px)
+ * @param height image height (px)
+ * @param pixels grey levels, {@code width * height} of them
+ */
+public record NoiseFreeImage(int width, int height, double[] pixels) {
+
+	/** @throws IllegalArgumentException when the array does not match the size */
+	public NoiseFreeImage {
+		if (width <= 0 || height <= 0 || pixels.length != (long) width * height)
+			throw new IllegalArgumentException("image of " + width + " x " + height + " px needs " + (long) width * height
+				+ " pixels, not " + pixels.length);
+	}
+
+	/** @return a uniform image at {@code background} */
+	public static NoiseFreeImage uniform(final int width, final int height, final double background) {
+		if (width <= 0 || height <= 0)
+			throw new IllegalArgumentException("image size must be positive, not " + width + " x " + height);
+		final double[] pixels = new double[Math.multiplyExact(width, height)];
+		java.util.Arrays.fill(pixels, background);
+		return new NoiseFreeImage(width, height, pixels);
+	}
+
+	/** @return the grey level of pixel {@code (x, y)} */
+	public double get(final int x, final int y) {
+		return pixels[y * width + x];
+	}
+
+	/** @return an independent copy */
+	public NoiseFreeImage copy() {
+		return new NoiseFreeImage(width, height, pixels.clone());
+	}
+}

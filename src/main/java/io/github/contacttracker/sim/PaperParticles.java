@@ -1,0 +1,82 @@
+package io.github.contacttracker.sim;
+
+/**
+ * The two particle kinds of the paper's simulations. The paper's profiles are experimental (an interpolated
+ * 5.53 um image and a Gaussian-Bessel fit to a 2.06 um image) and not published as numbers, so these are
+ * stand-ins with the properties that matter: a "5.53 um-like" short-range profile ({@code R_out <= D}) and a
+ * "2.06 um-like" long-range one whose rings reach beyond one diameter. Every tunable number is in the
+ * constants block below.
+ */
+public final class PaperParticles {
+
+	// ---- the tunable numbers, all in one place ------------------------------------------------------------
+
+	/** Grey level below which the profile counts as gone: half a grey level rounds to the background. */
+	public static final double REACH_LEVEL = 0.5;
+	/** Added to the reach for {@code R_out}: half the width of the 5x3 gradient operator. */
+	public static final double R_OUT_MARGIN_PX = 2;
+
+	private static final double SILICA553_DIAMETER_UM = 5.53;
+	private static final double SILICA553_PIXEL_NM = 84.7;
+	private static final double SILICA553_AMPLITUDE = 120;
+	private static final double SILICA553_BESSEL_SCALE = 0.14;
+	private static final double SILICA553_SIGMA_PX = 22;
+	private static final double SILICA553_BACKGROUND = 60;
+	private static final double SILICA553_THRESHOLD_ABOVE_BACKGROUND = 25;
+	private static final double SILICA553_NOISE_AMPLITUDE = 5;
+
+	private static final double SILICA206_DIAMETER_UM = 2.06;
+	private static final double SILICA206_PIXEL_NM = 37;
+	private static final double SILICA206_AMPLITUDE = 100;
+	private static final double SILICA206_BESSEL_SCALE = 0.16;
+	private static final double SILICA206_SIGMA_PX = 40;
+	private static final double SILICA206_BACKGROUND = 80;
+	private static final double SILICA206_THRESHOLD_ABOVE_BACKGROUND = 35;
+	private static final double SILICA206_NOISE_AMPLITUDE = 5;
+
+	// ---------------------------------------------------------------------------------------------------------
+
+	private static final ParticleType SILICA_553 = preset("silica 5.53 um", SILICA553_DIAMETER_UM, SILICA553_PIXEL_NM,
+		new GaussianBesselProfile(SILICA553_AMPLITUDE, SILICA553_BESSEL_SCALE, SILICA553_SIGMA_PX), SILICA553_BACKGROUND,
+		SILICA553_THRESHOLD_ABOVE_BACKGROUND, SILICA553_NOISE_AMPLITUDE);
+
+	private static final ParticleType SILICA_206 = preset("silica 2.06 um", SILICA206_DIAMETER_UM, SILICA206_PIXEL_NM,
+		new GaussianBesselProfile(SILICA206_AMPLITUDE, SILICA206_BESSEL_SCALE, SILICA206_SIGMA_PX), SILICA206_BACKGROUND,
+		SILICA206_THRESHOLD_ABOVE_BACKGROUND, SILICA206_NOISE_AMPLITUDE);
+
+	private PaperParticles() {}
+
+	/**
+	 * "5.53 um-like": D = 5.53 um at 84.7 nm/px (65.29 px), short range ({@code R_out <= D}); the paper's
+	 * favourable case. Gaussian-Bessel A = 120, k = 0.14 /px, s = 22 px on background 60: a bright core, a
+	 * dark ring (-15 grey levels at 27 px) that darkens the bridge between touching particles, a faint outer
+	 * ring, back to background within 58 px (so {@code R_out} = 61 px, just inside D as the paper requires).
+	 * Uniform noise of amplitude 5, {@code th} = background + 25 (the core, radius 13 px),
+	 * {@code R_out = ceil(reach(0.5) + 2)}.
+	 *
+	 * @return the preset
+	 */
+	public static ParticleType silica553() {
+		return SILICA_553;
+	}
+
+	/**
+	 * "2.06 um-like": D = 2.06 um at 37 nm/px (55.68 px), long range ({@code R_out > D}): at contact no
+	 * undistorted area is left. Gaussian-Bessel A = 100, k = 0.16 /px, s = 40 px on background 80, uniform noise
+	 * of amplitude 5, {@code th} = background + 35, {@code R_out = ceil(reach(0.5) + 2)}.
+	 *
+	 * @return the preset
+	 */
+	public static ParticleType silica206() {
+		return SILICA_206;
+	}
+
+	private static ParticleType preset(final String name, final double diameterMicrons, final double pixelSizeNm,
+		final RadialProfile profile, final double background, final double thresholdAboveBackground,
+		final double noiseAmplitude)
+	{
+		final double rOut = Math.ceil(profile.reach(REACH_LEVEL) + R_OUT_MARGIN_PX);
+		return new ParticleType(name, diameterMicrons, pixelSizeNm, profile, background,
+			background + thresholdAboveBackground, rOut, NoiseModel.uniform(noiseAmplitude));
+	}
+}

@@ -1,0 +1,49 @@
+package io.github.contacttracker.sim;
+
+import java.util.Objects;
+
+/**
+ * Everything needed to simulate images of one kind of particle, and the tracking parameters that suit them.
+ *
+ * @param name short label, e.g. for reports
+ * @param diameterMicrons particle diameter (um), which sets the contact distance
+ * @param pixelSizeNm size of one image pixel (nm)
+ * @param profile the single-particle image above background
+ * @param background background grey level {@code I0}
+ * @param threshold suggested active-area threshold {@code th} (grey level)
+ * @param rOut suggested range parameter {@code R_out} (px)
+ * @param noise per-pixel noise added before quantisation
+ */
+public record ParticleType(String name, double diameterMicrons, double pixelSizeNm, RadialProfile profile,
+	double background, double threshold, double rOut, NoiseModel noise)
+{
+
+	/** @throws IllegalArgumentException for a missing part or a non-positive size */
+	public ParticleType {
+		Objects.requireNonNull(name, "name");
+		Objects.requireNonNull(profile, "profile");
+		Objects.requireNonNull(noise, "noise");
+		if (!(diameterMicrons > 0) || !Double.isFinite(diameterMicrons) || !(pixelSizeNm > 0)
+			|| !Double.isFinite(pixelSizeNm))
+			throw new IllegalArgumentException("particle type " + name + " needs a positive diameter and pixel size, not "
+				+ diameterMicrons + " um and " + pixelSizeNm + " nm");
+		if (!Double.isFinite(background) || !Double.isFinite(threshold) || !(rOut > 0) || !Double.isFinite(rOut))
+			throw new IllegalArgumentException("particle type " + name + " needs a finite background and threshold and "
+				+ "a positive rOut, not " + background + ", " + threshold + ", " + rOut);
+	}
+
+	/** @return the diameter in pixels: the centre distance at contact */
+	public double diameterPx() {
+		return diameterMicrons * 1000 / pixelSizeNm;
+	}
+
+	/** @return the pixel size in micrometres */
+	public double pixelSizeMicrons() {
+		return pixelSizeNm / 1000;
+	}
+
+	/** @return a copy with other noise, e.g. {@link NoiseModel#none()} for exact images */
+	public ParticleType withNoise(final NoiseModel otherNoise) {
+		return new ParticleType(name, diameterMicrons, pixelSizeNm, profile, background, threshold, rOut, otherNoise);
+	}
+}

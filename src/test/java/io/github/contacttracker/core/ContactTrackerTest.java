@@ -1,0 +1,134 @@
+package io.github.contacttracker.core;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+import java.util.function.DoubleUnaryOperator;
+
+import org.junit.jupiter.api.Test;
+
+import net.imglib2.img.array.ArrayImgs;
+import net.imglib2.view.Views;
+
+class ContactTrackerTest {
+
+	private static final DoubleUnaryOperator BUMP = TestImages.gaussian(150, 9);
+
+	@Test
+	void noiseFreeIsolatedParticleWithinOneThousandthPixel() {
+		final int w = 80, h = 72;
+		final double[][] centres = { { 40.37, 33.81 }, { 39.5, 36.5 }, { 41.02, 35.93 } };
+		for (final double[] c : centres) {
+			final double[] img = TestImages.render(w, h, 20, BUMP, c);
+			for (final Method m : Method.values()) {
+				final List<Localization> spots = new ContactTracker(TrackerParameters.of(80, 40).withMethod(m))
+					.track(TestImages.floats(img, w, h), 0);
+				assertEquals(1, spots.size());
+				final Localization s = spots.get(0);
+				assertEquals(c[0], s.x(), 1e-3, "x with " + m);
+				assertEquals(c[1], s.y(), 1e-3, "y with " + m);
+				assertEquals(0, s.flags(), "no flags on an isolated particle");
+				assertEquals(s.activeArea(), s.secondArea());
+			}
+		}
+	}
+
+	@Test
+	void emptyImageGivesNoSpots() {
+		final var img = ArrayImgs.unsignedBytes(50, 40);
+		assertTrue(new ContactTracker(TrackerParameters.of(10, 20)).track(img, 0).isEmpty());
+	}
+
+	@Test
+	void thresholdAboveMaximumGivesNoSpots() {
+		final double[] img = TestImages.render(60, 60, 20, BUMP, new double[] { 30, 30 });
+		assertTrue(new ContactTracker(TrackerParameters.of(250, 20)).track(TestImages.bytes(img, 60, 60), 0)
+			.isEmpty());
+	}
+
+	@Test
+	void constantImageGivesNoSpotsAndCountsTheComponent() {
+		final byte[] px = new byte[40 * 30];
+		java.util.Arrays.fill(px, (byte) 100);
+		final FrameResult r = new ContactTracker(TrackerParameters.of(50, 20)).analyse(ArrayImgs.unsignedBytes(px,
+			40, 30), 0);
+		assertTrue(r.spots().isEmpty());
+		assertEquals(1, r.discarded());
+	}
+
+	@Test
+	void smallComponentsAreDroppedAndCounted() {
+		final double[] img = TestImages.render(60, 60, 20, BUMP, new double[] { 30, 30 });
+		img[5 * 60 + 50] = 255; // one hot pixel
+		final FrameResult r = new ContactTracker(TrackerParameters.of(80, 20)).analyse(TestImages.bytes(img, 60, 60),
+			0);
+		assertEquals(1, r.spots().size());
+		assertEquals(1, r.discarded());
+	}
+
+	@Test
+	void particleCutByTheBorderIsFlaggedAndStillCentred() {
+		final int w = 70, h = 60;
+		final double[] c = { 6.3, 30.6 };
+		final double[] img = TestImages.render(w, h, 20, BUMP, c);
+		final List<Localization> spots = new ContactTracker(TrackerParameters.of(80, 40)).track(TestImages.floats(img,
+			w, h), 0);
+		assertEquals(1, spots.size());
+		final Localization s = spots.get(0);
+		assertTrue(s.has(Flag.AT_BORDER));
+		assertFalse(s.has(Flag.MERGED), "a cut disc is not a merge");
+		assertEquals(c[0], s.x(), 0.01);
+		assertEquals(c[1], s.y(), 0.01);
+	}
+
+	@Test
+	void fastPathAndGenericPathGiveIdenticalSpots() {
+		final int w = 120, h = 90;
+		final double[] img = TestImages.withUniformNoise(TestImages.render(w, h, 20, BUMP, new double[] { 40.3, 44.1 },
+			new double[] { 76.9, 47.2 }, new double[] { 100.2, 20.4 }), 5, 11);
+		for (int i = 0; i < img.length; i++)
+			img[i] = Math.round(img[i]); // integer grey levels, so bytes, shorts and floats hold the same values
+		final TrackerParameters p = TrackerParameters.of(90, 30);
+		final ContactTracker t = new ContactTracker(p);
+		final var bytes = TestImages.bytes(img, w, h);
+		final var shorts = TestImages.shorts(img, w, h);
+		final var floats = TestImages.floats(img, w, h);
+		final List<Localization> fromBytes = t.analyse(Plane.of(bytes), 0, false).spots();
+		assertEquals(3, fromBytes.size());
+		assertEquals(fromBytes, t.analyse(Plane.generic(bytes), 0, false).spots());
+		assertEquals(fromBytes, t.analyse(Plane.of(shorts), 0, false).spots());
+		assertEquals(fromBytes, t.analyse(Plane.generic(shorts), 0, false).spots());
+		final List<Localization> fromFloats = t.analyse(Plane.of(floats), 0, false).spots();
+		assertEquals(fromFloats, t.analyse(Plane.generic(floats), 0, false).spots());
+		assertEquals(fromBytes, fromFloats, "integer-valued floats give the same spots as bytes");
+		// A view with an offset takes the generic path and reports positions in its own coordinates.
+		final List<Localization> shifted = t.track(Views.translate(bytes, 7, -5), 0);
+		for (int i = 0; i < 3; i++) {
+			assertEquals(fromBytes.get(i).x() + 7, shifted.get(i).x(), 1e-12);
+			assertEquals(fromBytes.get(i).y() - 5, shifted.get(i).y(), 1e-12);
+		}
+	}
+
+	@Test
+	void nanPixelIsRefusedWithItsPosition() {
+		final float[] px = new float[30 * 20];
+		px[5 * 30 + 7] = Float.NaN;
+		final IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+			() -> new ContactTracker(TrackerParameters.of(1, 5)).track(ArrayImgs.floats(px, 30, 20), 0));
+		assertTrue(e.getMessage().contains("(7, 5)"), e.getMessage());
+	}
+
+	@Test
+	void mergedPairIsFlagged() {
+		// Two bumps so close that the threshold bridges them: one component, flagged.
+		final int w = 90, h = 60;
+		final double[] img = TestImages.render(w, h, 20, BUMP, new double[] { 35, 30 }, new double[] { 52, 30 });
+		final List<Localization> spots = new ContactTracker(TrackerParameters.of(80, 40)).track(TestImages.floats(img,
+			w, h), 0);
+		assertEquals(1, spots.size());
+		assertTrue(spots.get(0).has(Flag.MERGED));
+	}
+}

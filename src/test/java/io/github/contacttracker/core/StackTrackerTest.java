@@ -1,0 +1,68 @@
+package io.github.contacttracker.core;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.CancellationException;
+import java.util.concurrent.atomic.AtomicInteger;
+
+import org.junit.jupiter.api.Test;
+
+import net.imglib2.RandomAccessibleInterval;
+import net.imglib2.img.array.ArrayImgs;
+import net.imglib2.type.numeric.real.FloatType;
+
+class StackTrackerTest {
+
+	private static List<RandomAccessibleInterval<FloatType>> frames(final int count) {
+		final List<RandomAccessibleInterval<FloatType>> frames = new ArrayList<>();
+		for (int t = 0; t < count; t++) {
+			final double[] img = TestImages.withUniformNoise(TestImages.render(64, 48, 20, TestImages.gaussian(150, 6),
+				new double[] { 16 + 0.7 * t, 24 }, new double[] { 50, 22 - 0.3 * t }), 4, t);
+			frames.add(TestImages.floats(img, 64, 48));
+		}
+		return frames;
+	}
+
+	@Test
+	void parallelRunEqualsSerialRunInFrameOrder() {
+		final TrackerParameters p = TrackerParameters.of(80, 20);
+		final List<RandomAccessibleInterval<FloatType>> frames = frames(9);
+		final List<FrameResult> serial = new StackTracker(p, 1).track(frames, false);
+		final AtomicInteger calls = new AtomicInteger();
+		final List<FrameResult> parallel = new StackTracker(p, 3).track(frames.size(), frames::get, false,
+			(done, total) -> {
+				calls.incrementAndGet();
+				assertEquals(9, total);
+			}, () -> false);
+		assertEquals(9, calls.get());
+		final List<Localization> a = StackTracker.spots(serial), b = StackTracker.spots(parallel);
+		assertEquals(18, a.size());
+		assertEquals(a, b);
+		for (int t = 0; t < 9; t++)
+			assertEquals(t, serial.get(t).spots().get(0).frame());
+		final double left = Math.min(serial.get(4).spots().get(0).x(), serial.get(4).spots().get(1).x());
+		assertEquals(16 + 0.7 * 4, left, 0.1);
+	}
+
+	@Test
+	void cancellationStopsTheRun() {
+		final List<RandomAccessibleInterval<FloatType>> frames = frames(4);
+		assertThrows(CancellationException.class, () -> new StackTracker(TrackerParameters.of(80, 20), 2).track(
+			frames.size(), frames::get, false, null, () -> true));
+	}
+
+	@Test
+	void badFrameIsNamed() {
+		final List<RandomAccessibleInterval<FloatType>> frames = new ArrayList<>(frames(3));
+		final float[] bad = new float[64 * 48];
+		bad[100] = Float.POSITIVE_INFINITY;
+		frames.set(1, ArrayImgs.floats(bad, 64, 48));
+		final IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+			() -> new StackTracker(TrackerParameters.of(80, 20), 2).track(frames, false));
+		assertTrue(e.getMessage().startsWith("frame 2: pixel (36, 1) is Infinity"), e.getMessage());
+	}
+}

@@ -1,0 +1,47 @@
+package io.github.contacttracker.sim;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import org.junit.jupiter.api.Test;
+
+class PaperParticlesTest {
+
+	@Test
+	void silica553IsShortRange() {
+		final ParticleType t = PaperParticles.silica553();
+		assertEquals(65.29, t.diameterPx(), 0.005);
+		assertEquals(Math.ceil(t.profile().reach(0.5) + 2), t.rOut(), 0);
+		assertTrue(t.rOut() <= t.diameterPx(), "rOut " + t.rOut() + " <= D " + t.diameterPx());
+		assertEquals(60, t.background(), 0);
+		assertEquals(85, t.threshold(), 0);
+		// At contact the bridge between two particles stays below threshold (no merged active areas).
+		assertTrue(t.background() + 2 * t.profile().value(t.diameterPx() / 2) + 5 < t.threshold());
+		assertEquals(NoiseModel.uniform(5), t.noise());
+		assertEquals(180, t.background() + t.profile().value(0), 1e-5);
+	}
+
+	@Test
+	void silica206IsLongRange() {
+		final ParticleType t = PaperParticles.silica206();
+		assertEquals(55.68, t.diameterPx(), 0.005);
+		assertEquals(Math.ceil(t.profile().reach(0.5) + 2), t.rOut(), 0);
+		assertTrue(t.rOut() > t.diameterPx(), "rOut " + t.rOut() + " > D " + t.diameterPx());
+		assertEquals(115, t.threshold(), 0);
+		assertEquals(NoiseModel.uniform(5), t.noise());
+	}
+
+	@Test
+	void presetsStayWithin8Bit() {
+		for (final ParticleType t : new ParticleType[] { PaperParticles.silica553(), PaperParticles.silica206() }) {
+			double min = Double.POSITIVE_INFINITY, max = Double.NEGATIVE_INFINITY;
+			for (double r = 0; r < t.rOut(); r += 0.05) {
+				min = Math.min(min, t.profile().value(r));
+				max = Math.max(max, t.profile().value(r));
+			}
+			final double amplitude = ((NoiseModel.Uniform) t.noise()).amplitude();
+			assertTrue(t.background() + min - amplitude >= 0 && t.background() + max + amplitude <= 255, t.name()
+				+ ": " + min + ".." + max);
+		}
+	}
+}

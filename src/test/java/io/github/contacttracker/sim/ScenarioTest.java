@@ -1,0 +1,60 @@
+package io.github.contacttracker.sim;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+
+import java.util.List;
+
+import org.junit.jupiter.api.Test;
+
+class ScenarioTest {
+
+	private static final double D = 65.29;
+
+	private static double distance(final double[] a, final double[] b) {
+		return Math.hypot(a[0] - b[0], a[1] - b[1]);
+	}
+
+	@Test
+	void pairIsSymmetricAtTheRequestedDistance() {
+		final List<double[]> c = Scenario.PAIR.centres(1.37, D, 100, 50);
+		assertEquals(2, c.size());
+		assertEquals(1.37 * D, distance(c.get(0), c.get(1)), 1e-12);
+		assertEquals(100, 0.5 * (c.get(0)[0] + c.get(1)[0]), 1e-12);
+		assertEquals(50, c.get(0)[1], 0);
+		assertEquals(50, c.get(1)[1], 0);
+		assertEquals(100 - 0.685 * D, c.get(0)[0], 1e-12);
+		assertArrayEquals(new int[] { 0, 1 }, Scenario.PAIR.measuredPair());
+	}
+
+	@Test
+	void tripleStartsAsATouchingEquilateralTriangle() {
+		final List<double[]> c = Scenario.TRIPLE.centres(1, D, 100, 80);
+		assertEquals(3, c.size());
+		assertEquals(D, distance(c.get(0), c.get(1)), 1e-9);
+		assertEquals(D, distance(c.get(0), c.get(2)), 1e-9);
+		assertEquals(D, distance(c.get(1), c.get(2)), 1e-9);
+		assertArrayEquals(new int[] { 0, 1 }, Scenario.TRIPLE.measuredPair());
+	}
+
+	@Test
+	void tripleMovesTheOuterPairApartAndKeepsTheMiddleFixed() {
+		final List<double[]> contact = Scenario.TRIPLE.centres(1, D, 100, 80);
+		final List<double[]> apart = Scenario.TRIPLE.centres(1.5, D, 100, 80);
+		assertEquals(1.5 * D, distance(apart.get(0), apart.get(1)), 1e-9);
+		assertArrayEquals(contact.get(2), apart.get(2), 0);
+		// the pair's midpoint stays put and the pair moves along its own line
+		assertEquals(100, 0.5 * (apart.get(0)[0] + apart.get(1)[0]), 1e-12);
+		assertEquals(contact.get(0)[1], apart.get(0)[1], 0);
+		// the middle particle is now further than D from both
+		assertEquals(Math.hypot(0.75 * D, Math.sqrt(3) / 2 * D), distance(apart.get(0), apart.get(2)), 1e-9);
+		assertEquals(distance(apart.get(0), apart.get(2)), distance(apart.get(1), apart.get(2)), 1e-9);
+	}
+
+	@Test
+	void rejectsNonPositiveSeparation() {
+		assertThrows(IllegalArgumentException.class, () -> Scenario.PAIR.centres(0, D, 0, 0));
+		assertThrows(IllegalArgumentException.class, () -> Scenario.TRIPLE.centres(1, -D, 0, 0));
+	}
+}
