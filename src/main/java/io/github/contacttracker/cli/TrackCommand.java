@@ -20,7 +20,9 @@ import io.github.contacttracker.core.StackTracker;
 import io.github.contacttracker.core.TrackerParameters;
 import io.github.contacttracker.io.ImageFiles;
 import io.github.contacttracker.io.ImagePlusFrames;
+import io.github.contacttracker.io.ImageSource;
 import io.github.contacttracker.io.SpotCsvWriter;
+import io.github.contacttracker.io.TrackMateXmlWriter;
 
 /** {@code track INPUT.tif --threshold T --r-out R ...}: localizes every frame of a TIFF stack. */
 final class TrackCommand {
@@ -59,7 +61,17 @@ final class TrackCommand {
 		final List<Localization> spots = StackTracker.spots(results);
 		final double seconds = (System.nanoTime() - start) * 1e-9;
 
-		if (csv != null) SpotCsvWriter.write(csv, spots, frames.calibration());
+		if (xml != null) TrackMateXmlWriter.write(xml, spots, frames.calibration(), ImageSource.of(input, frames
+			.width(), frames.height(), frames.frameCount()), params, frames.channel());
+		if (csv != null) {
+			try {
+				SpotCsvWriter.write(csv, spots, frames.calibration());
+			}
+			catch (final IOException e) {
+				if (xml != null) Files.deleteIfExists(xml); // both or neither
+				throw e;
+			}
+		}
 		else {
 			final Writer w = new OutputStreamWriter(out, StandardCharsets.UTF_8);
 			SpotCsvWriter.write(w, spots, frames.calibration());

@@ -1,0 +1,205 @@
+package io.github.contacttracker.io;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+
+import org.jdom2.Document;
+import org.jdom2.Element;
+import org.jdom2.output.Format;
+import org.jdom2.output.XMLOutputter;
+
+import io.github.contacttracker.core.Localization;
+import io.github.contacttracker.core.TrackerParameters;
+import io.github.contacttracker.trackmate.DetectorSettings;
+
+/**
+ * Writes spots as a TrackMate session file that TrackMate 8 opens with <i>File &gt; Load a TrackMate file</i>
+ * (or the "Load a TrackMate file" command): the spots, in physical units, with the source image opened beside
+ * them and our detector and its parameters recorded in the settings.
+ * <p>
+ * Layout (jdom2; no TrackMate class is needed to write it):
+ * <pre>
+ * &lt;TrackMate version="8.0.0"&gt;
+ *   &lt;Log&gt;provenance&lt;/Log&gt;
+ *   &lt;Model spatialunits=".." timeunits=".."&gt;
+ *     &lt;FeatureDeclarations&gt; SpotFeatures (every extra column of {@link SpotColumn}), EdgeFeatures, TrackFeatures
+ *     &lt;AllSpots nspots="N"&gt; &lt;SpotsInFrame frame="f"&gt; &lt;Spot ID name POSITION_X .. VISIBILITY="1" extras/&gt;
+ *     &lt;AllTracks/&gt; &lt;FilteredTracks/&gt;
+ *   &lt;Settings&gt;
+ *     &lt;ImageData filename folder width height nslices nframes pixelwidth pixelheight voxeldepth timeinterval/&gt;
+ *     &lt;DetectorSettings DETECTOR_NAME="CONTACT_TRACKER_DETECTOR" TARGET_CHANNEL .. METHOD/&gt;
+ *     &lt;InitialSpotFilter feature="QUALITY" value="0.0" isabove="true"/&gt; &lt;SpotFilterCollection/&gt;
+ *     &lt;TrackerSettings TRACKER_NAME="MANUAL_TRACKER"/&gt; &lt;TrackFilterCollection/&gt;
+ *     &lt;AnalyzerCollection&gt; empty SpotAnalyzers, EdgeAnalyzers, TrackAnalyzers
+ *   &lt;GUIState state="ConfigureViews"/&gt;
+ *   &lt;DisplaySettings/&gt;   (empty: TrackMate uses the user's defaults)
+ * </pre>
+ * Spot {@code ID}s are the spots' positions in the list given (0, 1, 2, ...), the same IDs the CSV tables use;
+ * every attribute other than {@code ID} and {@code name} is a finite number (TrackMate parses them all as
+ * numbers); an extra value that is not finite (an unestimated standard error) is left out, which TrackMate reads
+ * as "no value". Tracks are empty: link the spots in TrackMate.
+ */
+public final class TrackMateXmlWriter {
+
+	/** The TrackMate file-format version written. */
+	public static final String TRACKMATE_VERSION = "8.0.0";
+	/** Tracker named in the settings: TrackMate's "Manual tracking", which needs no parameter. */
+	public static final String TRACKER_KEY = "MANUAL_TRACKER";
+
+	private TrackMateXmlWriter() {}
+
+	/**
+	 * Writes the file, atomically (nothing is left behind when writing fails). The target channel recorded is 1.
+	 *
+	 * @param out the XML file to create or replace
+	 * @param spots the spots, in pixel units, in any frame order; their list positions become their IDs
+	 * @param cal the image's calibration
+	 * @param src the image the spots come from
+	 * @param params the parameters the spots were found with
+	 * @throws IOException naming the file when writing fails
+	 * @throws IllegalArgumentException when a spot lies outside the image's frames or has a non-finite position
+	 */
+	public static void write(final Path out, final List<Localization> spots, final Calibration cal,
+		final ImageSource src, final TrackerParameters params) throws IOException
+	{
+		write(out, spots, cal, src, params, DetectorSettings.DEFAULT_TARGET_CHANNEL);
+	}
+
+	/**
+	 * As {@link #write(Path, List, Calibration, ImageSource, TrackerParameters)}, recording the 1-based channel
+	 * the spots were found in.
+	 */
+	public static void write(final Path out, final List<Localization> spots, final Calibration cal,
+		final ImageSource src, final TrackerParameters params, final int targetChannel) throws IOException
+	{
+		final Document doc = document(spots, cal, src, params, targetChannel);
+		final XMLOutputter outputter = new XMLOutputter(Format.getPrettyFormat().setEncoding("UTF-8"));
+		AtomicFile.write(out, stream -> outputter.output(doc, stream));
+	}
+
+	/**
+	 * @return the TrackMate document for the spots (see {@link #write})
+	 * @throws IllegalArgumentException when a spot lies outside the image's frames or has a non-finite position
+	 */
+	public static Document document(final List<Localization> spots, final Calibration cal, final ImageSource src,
+		final TrackerParameters params, final int targetChannel)
+	{
+		final Element root = new Element("TrackMate").setAttribute("version", TRACKMATE_VERSION);
+		root.addContent(new Element("Log").setText(log(spots.size(), cal, src, params, targetChannel)));
+		root.addContent(model(spots, cal, src));
+		root.addContent(settings(cal, src, params, targetChannel));
+		root.addContent(new Element("GUIState").setAttribute("state", "ConfigureViews"));
+		root.addContent(new Element("DisplaySettings"));
+		return new Document(root);
+	}
+
+	private static Element model(final List<Localization> spots, final Calibration cal, final ImageSource src) {
+		final Element model = new Element("Model")
+			.setAttribute("spatialunits", SpotColumn.POSITION_X.unit(cal))
+			.setAttribute("timeunits", SpotColumn.POSITION_T.unit(cal));
+
+		final Element spotFeatures = new Element("SpotFeatures");
+		for (final SpotColumn c : SpotColumn.values())
+			if (!c.isTrackMateKey()) spotFeatures.addContent(new Element("Feature")
+				.setAttribute("feature", c.key())
+				.setAttribute("name", c.title())
+				.setAttribute("shortname", c.shortName())
+				.setAttribute("dimension", c.dimension().name())
+				.setAttribute("isint", Boolean.toString(c.isInteger())));
+		model.addContent(new Element("FeatureDeclarations")
+			.addContent(spotFeatures)
+			.addContent(new Element("EdgeFeatures"))
+			.addContent(new Element("TrackFeatures")));
+
+		// one SpotsInFrame per frame of the image, spots in list order within it
+		final List<List<Integer>> byFrame = new ArrayList<>(src.nframes());
+		for (int f = 0; f < src.nframes(); f++)
+			byFrame.add(new ArrayList<>());
+		for (int i = 0; i < spots.size(); i++) {
+			final int f = spots.get(i).frame();
+			if (f < 0 || f >= src.nframes())
+				throw new IllegalArgumentException("spot " + i + " is in frame " + f + " but the image has " +
+					src.nframes() + " frames");
+			byFrame.get(f).add(i);
+		}
+		final Element allSpots = new Element("AllSpots").setAttribute("nspots", Integer.toString(spots.size()));
+		for (int f = 0; f < byFrame.size(); f++) {
+			final Element inFrame = new Element("SpotsInFrame").setAttribute("frame", Integer.toString(f));
+			for (final int i : byFrame.get(f))
+				inFrame.addContent(spot(spots.get(i), i, cal));
+			allSpots.addContent(inFrame);
+		}
+		model.addContent(allSpots);
+		model.addContent(new Element("AllTracks"));
+		model.addContent(new Element("FilteredTracks"));
+		return model;
+	}
+
+	private static Element spot(final Localization loc, final int id, final Calibration cal) {
+		final Element e = new Element("Spot").setAttribute("ID", Integer.toString(id)).setAttribute("name", "ID" + id);
+		for (final SpotColumn c : SpotColumn.values()) {
+			if (c == SpotColumn.ID) continue;
+			final double v = c.value(loc, id, cal);
+			if (!Double.isFinite(v)) {
+				if (c.isTrackMateKey())
+					throw new IllegalArgumentException("spot " + id + " has " + c.key() + " = " + v + ", not a finite number");
+				continue;
+			}
+			e.setAttribute(c.key(), c.format(loc, id, cal));
+		}
+		return e;
+	}
+
+	private static Element settings(final Calibration cal, final ImageSource src, final TrackerParameters params,
+		final int targetChannel)
+	{
+		final Element settings = new Element("Settings");
+		settings.addContent(new Element("ImageData")
+			.setAttribute("filename", src.filename())
+			.setAttribute("folder", src.folder())
+			.setAttribute("width", Integer.toString(src.width()))
+			.setAttribute("height", Integer.toString(src.height()))
+			.setAttribute("nslices", Integer.toString(src.nslices()))
+			.setAttribute("nframes", Integer.toString(src.nframes()))
+			.setAttribute("pixelwidth", Double.toString(cal.pixelWidth()))
+			.setAttribute("pixelheight", Double.toString(cal.pixelHeight()))
+			.setAttribute("voxeldepth", Double.toString(1.0))
+			.setAttribute("timeinterval", Double.toString(cal.frameInterval())));
+
+		final Element detector = new Element("DetectorSettings")
+			.setAttribute(DetectorSettings.XML_ATTRIBUTE_DETECTOR_NAME, DetectorSettings.DETECTOR_KEY);
+		for (final Map.Entry<String, Object> e : DetectorSettings.toMap(params, targetChannel).entrySet())
+			detector.setAttribute(e.getKey(), e.getValue().toString());
+		settings.addContent(detector);
+
+		settings.addContent(new Element("InitialSpotFilter")
+			.setAttribute("feature", "QUALITY")
+			.setAttribute("value", "0.0")
+			.setAttribute("isabove", "true"));
+		settings.addContent(new Element("SpotFilterCollection"));
+		settings.addContent(new Element("TrackerSettings").setAttribute("TRACKER_NAME", TRACKER_KEY));
+		settings.addContent(new Element("TrackFilterCollection"));
+		settings.addContent(new Element("AnalyzerCollection")
+			.addContent(new Element("SpotAnalyzers"))
+			.addContent(new Element("EdgeAnalyzers"))
+			.addContent(new Element("TrackAnalyzers")));
+		return settings;
+	}
+
+	private static String log(final int n, final Calibration cal, final ImageSource src, final TrackerParameters params,
+		final int targetChannel)
+	{
+		final String version = TrackMateXmlWriter.class.getPackage().getImplementationVersion();
+		return "Written by Contact Tracker " + (version == null ? "(development build)" : version) +
+			": radial-symmetry localization of particles near contact (Yucel & Okumusoglu, " +
+			"J. Phys.: Condens. Matter 29, 465101, 2017).\n" +
+			n + " spots in " + src.nframes() + " frames of " + (src.filename().isEmpty() ? "an unsaved image"
+				: src.filename()) + ", pixel size " + cal.pixelWidth() + " x " + cal.pixelHeight() + " " + cal.unit() +
+			", frame interval " + cal.frameInterval() + " " + cal.timeUnit() + ".\nDetector settings: " +
+			DetectorSettings.echo(DetectorSettings.toMap(params, targetChannel)) + ".\n" +
+			"No tracks: link the spots with a tracker in TrackMate.";
+	}
+}

@@ -1,0 +1,123 @@
+package io.github.contacttracker.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+import ij.ImagePlus;
+import ij.process.ColorProcessor;
+import ij.process.FloatProcessor;
+import io.github.contacttracker.io.ImageFiles;
+import io.github.contacttracker.io.SpotColumn;
+import io.github.contacttracker.sim.PaperParticles;
+
+class ContactTrackerCliTest {
+
+	@TempDir
+	Path dir;
+
+	/** Runs the CLI; returns {exit status, stdout, stderr}. */
+	private static Object[] run(final String... args) {
+		final ByteArrayOutputStream out = new ByteArrayOutputStream(), err = new ByteArrayOutputStream();
+		final int status = ContactTrackerCli.run(args, new PrintStream(out, true, StandardCharsets.UTF_8),
+			new PrintStream(err, true, StandardCharsets.UTF_8));
+		return new Object[] { status, out.toString(StandardCharsets.UTF_8), err.toString(StandardCharsets.UTF_8) };
+	}
+
+	private Path simulated() {
+		final Path tif = dir.resolve("pair.tif"), truth = dir.resolve("truth.csv");
+		final Object[] r = run("simulate", "--scenario", "pair", "--separation", "1.0", "--frames", "4", "--seed",
+			"3", "--out", tif.toString(), "--truth", truth.toString());
+		assertEquals(0, r[0], (String) r[2]);
+		return tif;
+	}
+
+	@Test
+	void simulateThenTrackFindsTheTruthInCalibratedUnits() throws IOException {
+		final Path tif = simulated();
+		final Path csv = dir.resolve("spots.csv");
+		final Object[] r = run("track", tif.toString(), "--threshold", "85", "--r-out", "61", "--csv", csv.toString());
+		assertEquals(0, r[0], (String) r[2]);
+		assertTrue(((String) r[1]).contains("4 frames, 8 spots, 0 flagged"), (String) r[1]);
+		final List<String> lines = Files.readAllLines(csv);
+		assertEquals(9, lines.size());
+		assertTrue(lines.get(0).startsWith("ID,FRAME,POSITION_X,POSITION_Y,POSITION_Z,POSITION_T,RADIUS,QUALITY," +
+			"VISIBILITY,"), lines.get(0));
+		assertEquals(SpotColumn.values().length, lines.get(0).split(",").length);
+		// Truth (px) times the pixel size (um) equals the tracked positions within 0.01 um.
+		final List<String> truth = Files.readAllLines(dir.resolve("truth.csv"));
+		final double um = PaperParticles.silica553().pixelSizeMicrons();
+		for (int i = 1; i < truth.size(); i++) {
+			final String[] t = truth.get(i).split(",");
+			final double tx = Double.parseDouble(t[2]) * um, ty = Double.parseDouble(t[3]) * um;
+			boolean found = false;
+			for (int j = 1; j < lines.size(); j++) {
+				final String[] s = lines.get(j).split(",");
+				if (s[1].equals(t[0]) && Math.hypot(Double.parseDouble(s[2]) - tx, Double.parseDouble(s[3]) - ty) < 0.01)
+					found = true;
+			}
+			assertTrue(found, "truth " + truth.get(i));
+		}
+	}
+
+	@Test
+	void csvGoesToStdoutWithoutCsvOption() {
+		final Path tif = simulated();
+		final Object[] r = run("track", tif.toString(), "--threshold", "85", "--r-out", "61");
+		assertEquals(0, r[0]);
+		assertTrue(((String) r[1]).startsWith("ID,FRAME,POSITION_X"));
+		assertTrue(((String) r[2]).contains("8 spots"));
+	}
+
+	private void assertBadInput(final String expected, final Path mustNotExist, final String... args) {
+		final Object[] r = run(args);
+		assertEquals(ContactTrackerCli.EXIT_BAD_INPUT, r[0]);
+		final String err = ((String) r[2]).trim();
+		assertEquals(1, err.lines().count(), "one line: " + err);
+		assertTrue(err.contains(expected), err);
+		if (mustNotExist != null) assertFalse(Files.exists(mustNotExist), "no partial output");
+	}
+
+	@Test
+	void badInputGivesOneLineAndStatusTwoAndNoOutput() throws IOException {
+		final Path csv = dir.resolve("out.csv");
+		assertBadInput("file not found", csv, "track", dir.resolve("missing.tif").toString(), "--threshold", "1",
+			"--r-out", "5", "--csv", csv.toString());
+		final Path tif = simulated();
+		assertBadInput("r_out must be a positive", csv, "track", tif.toString(), "--threshold", "85", "--r-out", "0",
+			"--csv", csv.toString());
+		assertBadInput("threshold 300 is outside the data range", csv, "track", tif.toString(), "--threshold", "300",
+			"--r-out", "61", "--csv", csv.toString());
+		assertBadInput("must be a number", csv, "track", tif.toString(), "--threshold", "high", "--r-out", "61");
+		final Path rgb = dir.resolve("rgb.tif");
+		ImageFiles.saveTiff(new ImagePlus("rgb", new ColorProcessor(20, 20)), rgb);
+		assertBadInput("RGB", csv, "track", rgb.toString(), "--threshold", "1", "--r-out", "5", "--csv", csv
+			.toString());
+		final Path nan = dir.resolve("nan.tif");
+		final FloatProcessor fp = new FloatProcessor(20, 20);
+		fp.setf(3, 4, Float.NaN);
+		ImageFiles.saveTiff(new ImagePlus("nan", fp), nan);
+		assertBadInput("pixel (3, 4) is NaN", csv, "track", nan.toString(), "--threshold", "0", "--r-out", "5",
+			"--csv", csv.toString());
+		final Path notImage = dir.resolve("text.tif");
+		Files.writeString(notImage, "not an image");
+		assertBadInput("as an image", csv, "track", notImage.toString(), "--threshold", "1", "--r-out", "5", "--csv",
+			csv.toString());
+		assertBadInput("unknown option --bogus", null, "track", tif.toString(), "--bogus", "1");
+		assertBadInput("unknown command", null, "frobnicate");
+		try (var files = Files.list(dir)) {
+			assertTrue(files.noneMatch(p -> p.getFileName().toString().endsWith(".part")), "no temporary files left");
+		}
+	}
+}

@@ -1,0 +1,197 @@
+package io.github.contacttracker.trackmate;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.Arrays;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+
+import javax.swing.JComboBox;
+
+import org.jdom2.Element;
+import org.junit.jupiter.api.Test;
+import org.scijava.Context;
+import org.scijava.plugin.PluginInfo;
+import org.scijava.plugin.PluginService;
+
+import fiji.plugin.trackmate.Model;
+import fiji.plugin.trackmate.Settings;
+import fiji.plugin.trackmate.detection.SpotDetectorFactory;
+import fiji.plugin.trackmate.gui.components.ConfigurationPanel;
+import io.github.contacttracker.core.Connectivity;
+import io.github.contacttracker.core.Method;
+import io.github.contacttracker.core.TrackerParameters;
+import io.github.contacttracker.io.Calibration;
+import io.github.contacttracker.io.ImageSource;
+import io.github.contacttracker.io.TrackMateXmlWriter;
+import net.imglib2.type.numeric.real.FloatType;
+
+class ContactTrackerDetectorFactoryTest {
+
+	private final ContactTrackerDetectorFactory<FloatType> factory = new ContactTrackerDetectorFactory<>();
+
+	@Test
+	void identityAndInfoText() {
+		assertEquals("CONTACT_TRACKER_DETECTOR", factory.getKey());
+		assertFalse(factory.getName().isBlank());
+		final String info = factory.getInfoText();
+		assertTrue(info.startsWith("<html>") && info.endsWith("</html>"));
+		assertTrue(info.contains("465101") && info.contains("10.1088/1361-648X/aa908e"), "must cite the paper");
+		assertTrue(info.contains("RADIUS") && info.contains("QUALITY"), "must document radius and quality");
+		assertNull(factory.getIcon());
+		assertFalse(factory.forbidMultithreading());
+		assertFalse(factory.has2Dsegmentation());
+		assertFalse(factory.has3Dsegmentation());
+		assertTrue(factory.getUrl().startsWith("https://"));
+	}
+
+	@Test
+	void defaultSettingsHoldTheDocumentedKeysAndPassTheCheck() {
+		final Map<String, Object> d = factory.getDefaultSettings();
+		for (final String key : List.of("TARGET_CHANNEL", "THRESHOLD", "R_OUT", "MIN_AREA", "METHOD"))
+			assertTrue(d.containsKey(key), key);
+		assertEquals(Integer.class, d.get("TARGET_CHANNEL").getClass());
+		assertEquals(Double.class, d.get("THRESHOLD").getClass());
+		assertEquals(Double.class, d.get("R_OUT").getClass());
+		assertEquals(Integer.class, d.get("MIN_AREA").getClass());
+		assertNull(factory.checkSettings(d));
+		assertTrue(factory.toString(d).contains("R_OUT = "));
+	}
+
+	/** Marshal then unmarshal, as TrackMate does when it saves and re-opens a session. */
+	private Map<String, Object> roundTrip(final Map<String, Object> settings) {
+		final Element element = new Element("DetectorSettings");
+		assertNull(factory.marshal(settings, element));
+		assertEquals(factory.getKey(), element.getAttributeValue("DETECTOR_NAME"));
+		final Map<String, Object> back = new HashMap<>();
+		back.put("LEFTOVER", "must be cleared");
+		assertNull(factory.unmarshal(element, back));
+		return back;
+	}
+
+	@Test
+	void settingsSurviveMarshalAndUnmarshal() {
+		assertEquals(factory.getDefaultSettings(), roundTrip(factory.getDefaultSettings()));
+		for (final Method m : Method.values()) {
+			final Map<String, Object> s = DetectorSettings.toMap(new TrackerParameters(0.1 + 1e-13, 12.345678901234, 7,
+				Connectivity.FOUR, 31, m), 2);
+			final Map<String, Object> back = roundTrip(s);
+			assertEquals(s, back);
+			for (final String key : s.keySet())
+				assertEquals(s.get(key).getClass(), back.get(key).getClass(), key);
+		}
+	}
+
+	@Test
+	void unmarshalNamesUnknownAndUnreadableAttributesAndFillsMissingOnesWithDefaults() {
+		final Element unknown = new Element("DetectorSettings").setAttribute("DETECTOR_NAME", factory.getKey())
+			.setAttribute("RADIUS", "2.5");
+		String error = factory.unmarshal(unknown, new HashMap<>());
+		assertNotNull(error);
+		assertTrue(error.contains("RADIUS"), error);
+
+		final Element unreadable = new Element("DetectorSettings").setAttribute("R_OUT", "ten");
+		error = factory.unmarshal(unreadable, new HashMap<>());
+		assertTrue(error.contains("R_OUT") && error.contains("ten"), error);
+
+		final Element invalid = new Element("DetectorSettings").setAttribute("METHOD", "bogus");
+		error = factory.unmarshal(invalid, new HashMap<>());
+		assertTrue(error.contains("bogus"), error);
+
+		final Element older = new Element("DetectorSettings").setAttribute("THRESHOLD", "55.5");
+		final Map<String, Object> map = new HashMap<>();
+		assertNull(factory.unmarshal(older, map));
+		assertEquals(55.5, map.get("THRESHOLD"));
+		assertEquals(factory.getDefaultSettings().get("METHOD"), map.get("METHOD"));
+	}
+
+	/** TrackMate's XML reader hands our file's {@code <DetectorSettings>} to the factory's unmarshal. */
+	@Test
+	void ourTrackMateXmlDetectorSettingsUnmarshalIntoTheParameters() {
+		final TrackerParameters p = new TrackerParameters(87.5, 14.5, 11, Connectivity.FOUR, 40, Method.FIRST);
+		final Element detector = TrackMateXmlWriter.document(List.of(), Calibration.PIXELS,
+			new ImageSource("a.tif", "", 8, 8, 1, 1), p, 2).getRootElement().getChild("Settings")
+			.getChild("DetectorSettings");
+		assertEquals(factory.getKey(), detector.getAttributeValue("DETECTOR_NAME"));
+		final Map<String, Object> map = new HashMap<>();
+		assertNull(factory.unmarshal(detector, map));
+		assertEquals(DetectorSettings.toMap(p, 2), map);
+		assertEquals(p, DetectorSettings.parameters(map));
+	}
+
+	@Test
+	void marshalRefusesInvalidSettingsAndWritesNothing() {
+		final Map<String, Object> s = factory.getDefaultSettings();
+		s.put("MIN_AREA", 3.0);
+		final Element element = new Element("DetectorSettings");
+		final String error = factory.marshal(s, element);
+		assertNotNull(error);
+		assertTrue(error.contains("MIN_AREA"), error);
+		assertTrue(element.getAttributes().isEmpty());
+		assertEquals(error, factory.toString(s));
+	}
+
+	@Test
+	void checkSettingsNamesWhatIsWrong() {
+		final Map<String, Object> s = factory.getDefaultSettings();
+		s.remove("TARGET_CHANNEL");
+		s.put("R_OUT", "20");
+		final String error = factory.checkSettings(s);
+		assertTrue(error.contains("TARGET_CHANNEL") && error.contains("R_OUT"), error);
+	}
+
+	@Test
+	void trackMateCanInstantiateItThroughAPublicNoArgumentConstructor() throws Exception {
+		final Object copy = ContactTrackerDetectorFactory.class.getConstructor().newInstance();
+		assertEquals(factory.getKey(), ((ContactTrackerDetectorFactory<?>) copy).getKey());
+	}
+
+	/** TrackMate's DetectorProvider finds detectors through SciJava's plugin service, as here. */
+	@Test
+	void sciJavaDiscoversItAsASpotDetectorFactory() {
+		try (Context context = new Context(PluginService.class)) {
+			final PluginService plugins = context.service(PluginService.class);
+			@SuppressWarnings("rawtypes")
+			final List<PluginInfo<SpotDetectorFactory>> infos = plugins.getPluginsOfType(SpotDetectorFactory.class);
+			final PluginInfo<?> ours = infos.stream()
+				.filter(i -> i.getClassName().equals(ContactTrackerDetectorFactory.class.getName())).findFirst().orElse(null);
+			assertNotNull(ours, "not indexed as a SpotDetectorFactory plugin");
+			final SpotDetectorFactory<?> instance = (SpotDetectorFactory<?>) plugins.createInstance(ours);
+			assertEquals(ContactTrackerDetectorFactory.DETECTOR_KEY, instance.getKey());
+		}
+	}
+
+	@Test
+	void configurationPanelShowsAndReturnsEverySetting() {
+		final ConfigurationPanel panel = factory.getDetectorConfigurationPanel(new Settings(), new Model());
+		assertNotNull(panel);
+		assertNull(factory.checkSettings(panel.getSettings()), "the panel's own defaults must be valid");
+		assertEquals(factory.getDefaultSettings(), panel.getSettings());
+
+		final Map<String, Object> s = DetectorSettings.toMap(new TrackerParameters(123.456789, 7.75, 12,
+			Connectivity.FOUR, 33, Method.values()[0]), 1);
+		panel.setSettings(s);
+		assertEquals(s, panel.getSettings());
+		panel.clean();
+
+		// every method is offered, so new ones appear without touching the panel
+		final JComboBox<?> methods = Arrays.stream(panel.getComponents()).filter(c -> c instanceof JComboBox<?>)
+			.map(c -> (JComboBox<?>) c).filter(c -> c.getItemCount() > 0 && Method.values()[0].key().equals(c.getItemAt(0)))
+			.findFirst().orElse(null);
+		assertNotNull(methods);
+		assertEquals(Method.values().length, methods.getItemCount());
+		for (int i = 0; i < Method.values().length; i++)
+			assertEquals(Method.values()[i].key(), methods.getItemAt(i));
+
+		// channels beyond the image's are accepted from saved settings rather than silently changed
+		final Map<String, Object> ch3 = new HashMap<>(s);
+		ch3.put("TARGET_CHANNEL", 3);
+		panel.setSettings(ch3);
+		assertEquals(3, panel.getSettings().get("TARGET_CHANNEL"));
+	}
+}
