@@ -27,6 +27,9 @@ public final class ContactTrackerCli {
 		"  simulate --scenario pair|triple --separation R_OVER_D --out stack.tif --truth truth.csv", //
 		"      [--frames N] [--seed S] [--particle 5.53|2.06] [--bit-depth 8|16]", //
 		"  bench [--frames N]          speed on a 512x512 8-bit stack with 12 particles", //
+		"  accuracy [--reps N] [--particle 5.53,2.06] [--scenario pair,triple] [--methods M,...]", //
+		"      [--separations 2,1.5,1] [--csv OUT.csv]", //
+		"                             the paper's protocol for every method, against the Cramer-Rao bound", //
 		"", //
 		"Bad input exits with status 2 and a one-line error; no partial output file is left behind.");
 
@@ -49,8 +52,9 @@ public final class ContactTrackerCli {
 				case "track": return new TrackCommand(out, err).run(rest);
 				case "simulate": return new SimulateCommand(out).run(rest);
 				case "bench": return new BenchCommand(out).run(rest);
+				case "accuracy": return new AccuracyCommand(out).run(rest);
 				default:
-					err.println("contact-tracker: error: unknown command '" + args[0] + "' (demo, track, simulate, bench)");
+					err.println("contact-tracker: error: unknown command '" + args[0] + "' (demo, track, simulate, bench, accuracy)");
 					return EXIT_BAD_INPUT;
 			}
 		}

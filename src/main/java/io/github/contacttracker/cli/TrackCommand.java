@@ -100,7 +100,7 @@ final class TrackCommand {
 		final TrackerParameters p = new TrackerParameters(o.number("threshold"), o.number("r-out"), o.integer(
 			"min-area", TrackerParameters.DEFAULT_MIN_AREA), Connectivity.parse(o.string("connectivity", "8")), o
 				.integer("min-second-area", TrackerParameters.DEFAULT_MIN_SECOND_AREA), Method.parse(o.string("method",
-					Method.PAPER.key())));
+					Method.DEFAULT.key())));
 		return p;
 	}
 

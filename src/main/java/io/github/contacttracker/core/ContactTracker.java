@@ -63,8 +63,25 @@ public final class ContactTracker {
 		return analyse(Plane.of(frame), frameIndex, true);
 	}
 
+	/**
+	 * Localizes the particles of a 2D frame with a radial profile measured beforehand (for instance over a whole
+	 * stack, see {@link ProfileEstimator}); used by the {@code deblend} and {@code fit} methods, ignored by the
+	 * others. With {@code profile == null} those methods measure the profile on this frame alone.
+	 */
+	public <T extends RealType<T>> FrameResult analyse(final RandomAccessibleInterval<T> frame,
+		final int frameIndex, final EmpiricalProfile profile)
+	{
+		return analyse(Plane.of(frame), frameIndex, true, profile);
+	}
+
 	/** The whole pipeline on a plane; regions are kept only when asked for. */
 	FrameResult analyse(final Plane plane, final int frameIndex, final boolean keepRegions) {
+		return analyse(plane, frameIndex, keepRegions, null);
+	}
+
+	FrameResult analyse(final Plane plane, final int frameIndex, final boolean keepRegions,
+		final EmpiricalProfile profile)
+	{
 		final List<ParticleState> particles = new ArrayList<>();
 		int discarded = 0;
 		for (final Region r : ComponentLabeling.label(plane, params.threshold(), params.connectivity())) {
@@ -74,26 +91,26 @@ public final class ContactTracker {
 			if (p != null && firstPass(p)) particles.add(p);
 			else discarded++;
 		}
-		final int n = particles.size();
-		if (params.method() != Method.FIRST) {
-			final double[] cx = new double[n], cy = new double[n];
-			for (int k = 0; k < n; k++) {
-				cx[k] = particles.get(k).firstX;
-				cy[k] = particles.get(k).firstY;
-			}
-			for (int k = 0; k < n; k++)
-				secondPass(particles.get(k), k, cx, cy);
-		}
+		final ParticleState[] ps = particles.toArray(new ParticleState[0]);
 		flagShapes(particles);
+		final Method method = params.method();
+		double[][] discs = firstCentres(ps);
+		if (method == Method.PAPER) secondPasses(ps, discs);
+		else if (method != Method.FIRST) {
+			discs = iterate(ps);
+			if (method.needsProfile() && ps.length > 0) refineWithProfile(plane, ps, profile);
+		}
 		final double noise = NoiseEstimate.sigma(plane);
-		final List<Localization> spots = new ArrayList<>(n);
+		final List<Localization> spots = new ArrayList<>(ps.length);
 		final List<Region> active = new ArrayList<>(), second = new ArrayList<>();
 		final int dx = (int) plane.minX(), dy = (int) plane.minY();
-		for (int k = 0; k < n; k++) {
-			final ParticleState p = particles.get(k);
-			double sx = Double.NaN, sy = Double.NaN;
-			if (p.matrix != null) {
-				final double[] cov = CentreUncertainty.covariancePerUnitNoise(p.field, p.used, p.x, p.y, p.matrix);
+		for (int k = 0; k < ps.length; k++) {
+			final ParticleState p = ps[k];
+			double sx = p.fitSigmaX, sy = p.fitSigmaY;
+			if (Double.isNaN(sx) && p.lastSolve != null) {
+				final ParticleState.SolveContext c = p.lastSolve;
+				final double[] cov = CentreUncertainty.covariancePerUnitNoise(c.field(), c.used(), p.x - c.originX(), p.y -
+					c.originY(), c.matrix());
 				sx = noise * Math.sqrt(cov[0]);
 				sy = noise * Math.sqrt(cov[1]);
 			}
@@ -102,10 +119,108 @@ public final class ContactTracker {
 				p.iterations, sx, sy));
 			if (keepRegions) {
 				active.add(p.region.translate(dx, dy));
-				second.add(secondRegion(p.region, k, particles).translate(dx, dy));
+				second.add(secondRegion(p.region, k, discs).translate(dx, dy));
 			}
 		}
 		return new FrameResult(spots, active, second, noise, discarded);
+	}
+
+	/** Upper bound on the passes of the iterative methods. */
+	public static final int MAX_ITERATIONS = 100;
+	/** The iterative method stops when no centre moves more than this between passes (px). */
+	public static final double TOLERANCE = 1e-4;
+
+	private static double[][] firstCentres(final ParticleState[] ps) {
+		final double[][] c = new double[2][ps.length];
+		for (int k = 0; k < ps.length; k++) {
+			c[0][k] = ps[k].firstX;
+			c[1][k] = ps[k].firstY;
+		}
+		return c;
+	}
+
+	/** One second pass for every particle, with discs around {@code centres}; returns the largest move. */
+	private double secondPasses(final ParticleState[] ps, final double[][] centres) {
+		double move = 0;
+		for (int k = 0; k < ps.length; k++) {
+			final double x = ps[k].x, y = ps[k].y;
+			secondPass(ps[k], k, centres[0], centres[1]);
+			move = Math.max(move, Math.hypot(ps[k].x - x, ps[k].y - y));
+		}
+		return move;
+	}
+
+	/**
+	 * The iterative method: second passes with discs around the latest centres until they settle.
+	 *
+	 * @return the disc centres of the last pass
+	 */
+	private double[][] iterate(final ParticleState[] ps) {
+		double[][] centres = firstCentres(ps);
+		for (int it = 1; it <= MAX_ITERATIONS; it++) {
+			final double move = secondPasses(ps, centres);
+			for (final ParticleState p : ps)
+				if (p.has(Flag.SECOND_PASS)) p.iterations = it + 1;
+			if (move < TOLERANCE) return centres;
+			centres = new double[2][ps.length];
+			for (int k = 0; k < ps.length; k++) {
+				centres[0][k] = ps[k].x;
+				centres[1][k] = ps[k].y;
+			}
+		}
+		for (final ParticleState p : ps)
+			if (p.has(Flag.SECOND_PASS)) p.set(Flag.NOT_CONVERGED.bit());
+		return centres;
+	}
+
+	/**
+	 * deblend and fit: measure the profile on this frame unless given (twice, the second time around the
+	 * refined centres), then refine the centres with it.
+	 */
+	private void refineWithProfile(final Plane plane, final ParticleState[] ps, final EmpiricalProfile given) {
+		final int rounds = given == null ? 2 : 1;
+		EmpiricalProfile profile = given;
+		for (int round = 0; round < rounds; round++) {
+			if (given == null) {
+				final ProfileEstimator estimator = ProfileEstimator.forROut(params.rOut());
+				final double[] cx = new double[ps.length], cy = new double[ps.length];
+				final boolean[] masked = new boolean[ps.length];
+				for (int k = 0; k < ps.length; k++) {
+					cx[k] = ps[k].x;
+					cy[k] = ps[k].y;
+					masked[k] = !ps[k].reliable();
+				}
+				estimator.add(plane, cx, cy, masked);
+				try {
+					profile = estimator.estimate();
+				}
+				catch (final IllegalStateException e) {
+					for (final ParticleState p : ps)
+						p.set(Flag.FELL_BACK.bit()); // keeps the iterative centre
+					return;
+				}
+			}
+			final int iterations;
+			if (params.method() == Method.DEBLEND) {
+				double disc = profile.activeRadius(params.threshold());
+				if (disc < 3) disc = medianEquivalentRadius(ps);
+				iterations = Deblender.refine(plane, ps, profile, disc);
+			}
+			else iterations = GroupFit.refine(plane, ps, profile);
+			for (final ParticleState p : ps) {
+				p.clear(Flag.SECOND_PASS.bit() | Flag.FELL_BACK.bit() | Flag.NOT_CONVERGED.bit());
+				p.iterations = Math.abs(iterations);
+				if (iterations < 0) p.set(Flag.NOT_CONVERGED.bit());
+			}
+		}
+	}
+
+	private static double medianEquivalentRadius(final ParticleState[] ps) {
+		final double[] r = new double[ps.length];
+		for (int k = 0; k < ps.length; k++)
+			r[k] = Math.sqrt(ps[k].region.area() / Math.PI);
+		Arrays.sort(r);
+		return r[r.length / 2];
 	}
 
 	/** @return false when the particle has no gradient line at all */
@@ -119,30 +234,41 @@ public final class ContactTracker {
 		else {
 			p.firstX = p.centroidX;
 			p.firstY = p.centroidY;
+			p.firstDegenerate = true;
 			p.set(Flag.DEGENERATE.bit());
 		}
 		p.x = p.firstX;
 		p.y = p.firstY;
 		p.iterations = 1;
+		p.firstSolve = p.lastSolve;
 		return true;
 	}
 
-	/** The paper's second pass: solve again outside the other particles' discs around (cx, cy). */
+	/**
+	 * The paper's second pass: solve again outside the other particles' discs around (cx, cy). Sets the
+	 * particle's centre (its first-pass centre when nothing is excluded or the pass falls back) and flags.
+	 */
 	private void secondPass(final ParticleState p, final int self, final double[] cx, final double[] cy) {
+		p.clear(Flag.SECOND_PASS.bit() | Flag.FELL_BACK.bit());
+		p.x = p.firstX;
+		p.y = p.firstY;
+		p.lastSolve = p.firstSolve;
+		p.secondArea = p.region.area();
 		final int[] near = neighboursReaching(p.region, self, cx, cy);
 		if (near.length == 0) return; // nothing to exclude: the first centre is final
 		final double r2 = params.rOut() * params.rOut();
 		p.secondArea = countOutside(p.region, near, cx, cy, r2);
 		if (p.secondArea == p.region.area()) return;
-		final boolean[] use = new boolean[p.field.size];
-		for (int i = 0; i < p.field.size; i++)
-			use[i] = outside(p.field.x[i], p.field.y[i], near, cx, cy, r2);
 		if (p.secondArea < params.minSecondArea()) {
 			p.set(Flag.FELL_BACK.bit());
 			return;
 		}
+		final boolean[] use = new boolean[p.field.size];
+		for (int i = 0; i < p.field.size; i++)
+			use[i] = outside(p.field.x[i], p.field.y[i], near, cx, cy, r2);
 		final LineFit.Solution s = p.solve(use);
 		if (!s.ok()) {
+			p.lastSolve = p.firstSolve;
 			p.set(Flag.FELL_BACK.bit() | Flag.DEGENERATE.bit());
 			return;
 		}
@@ -189,15 +315,10 @@ public final class ContactTracker {
 		return count;
 	}
 
-	/** The second active area of particle {@code self} as a region, for display. */
-	private Region secondRegion(final Region region, final int self, final List<ParticleState> particles) {
+	/** The second active area of particle {@code self} with discs around {@code discs}, for display. */
+	private Region secondRegion(final Region region, final int self, final double[][] discs) {
 		if (params.method() == Method.FIRST) return region;
-		final int n = particles.size();
-		final double[] cx = new double[n], cy = new double[n];
-		for (int k = 0; k < n; k++) {
-			cx[k] = particles.get(k).firstX;
-			cy[k] = particles.get(k).firstY;
-		}
+		final double[] cx = discs[0], cy = discs[1];
 		final int[] near = neighboursReaching(region, self, cx, cy);
 		final double r2 = params.rOut() * params.rOut();
 		final RunList runs = new RunList();

@@ -20,9 +20,18 @@ final class ParticleState {
 	int flags;
 	int secondArea;
 	int iterations;
-	/** Pixels of {@link #field} in the final solve ({@code null}: all), and that solve's normal matrix. */
-	boolean[] used;
-	double[] matrix;
+	/** The last radial-symmetry solve behind (x, y), for its error propagation; null if none. */
+	SolveContext lastSolve;
+	/** The first pass's solve. */
+	SolveContext firstSolve;
+	/** Standard errors set by a method that estimates its own (the joint fit); NaN otherwise. */
+	double fitSigmaX = Double.NaN, fitSigmaY = Double.NaN;
+
+	/**
+	 * A solve's gradients, which of them were used ({@code used == null}: all), the normal matrix, and the
+	 * offset of the gradients' coordinates from the frame's.
+	 */
+	record SolveContext(GradientField field, boolean[] used, double[] matrix, int originX, int originY) {}
 
 	ParticleState(final Plane plane, final Region region, final double threshold) {
 		this.region = region;
@@ -63,16 +72,32 @@ final class ParticleState {
 		flags |= flag;
 	}
 
+	void clear(final int flag) {
+		flags &= ~flag;
+	}
+
+	/** Whether the first pass was degenerate (the centre is then the centroid). */
+	boolean firstDegenerate;
+
+	/**
+	 * @return whether the particle's centre describes one particle: not a suspected merge, and its first pass
+	 *         solved
+	 */
+	boolean reliable() {
+		return !has(Flag.MERGED) && !firstDegenerate;
+	}
+
+	boolean has(final Flag flag) {
+		return flag.isSet(flags);
+	}
+
 	/** Solves on the pixels marked in {@code use} ({@code null}: all); remembers them for the uncertainty. */
 	LineFit.Solution solve(final boolean[] use) {
 		final LineFit fit = new LineFit(centroidX, centroidY);
 		for (int i = 0; i < field.size; i++)
 			if (use == null || use[i]) fit.addPaperWeighted(field.x[i], field.y[i], field.gx[i], field.gy[i]);
 		final LineFit.Solution s = fit.solve();
-		if (s.ok()) {
-			used = use;
-			matrix = fit.matrix();
-		}
+		if (s.ok()) lastSolve = new SolveContext(field, use, fit.matrix(), 0, 0);
 		return s;
 	}
 }

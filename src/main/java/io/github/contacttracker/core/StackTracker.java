@@ -57,7 +57,8 @@ public final class StackTracker {
 	 * @param count number of frames
 	 * @param frame supplies frame {@code t}, 2D
 	 * @param keepRegions whether to keep the active and second areas (for overlays; costs memory)
-	 * @param listener progress, or null
+	 * @param listener progress, or null (for deblend and fit the stack is passed over three times, and the
+	 *        progress counts all three)
 	 * @param cancelled polled between frames; when it turns true the run stops with a
 	 *        {@link CancellationException}
 	 * @return one result per frame, in frame order
@@ -67,13 +68,58 @@ public final class StackTracker {
 		final IntFunction<? extends RandomAccessibleInterval<T>> frame, final boolean keepRegions,
 		final ProgressListener listener, final BooleanSupplier cancelled)
 	{
-		final AtomicInteger done = new AtomicInteger();
+		final TrackerParameters params = tracker.parameters();
+		if (!params.method().needsProfile() || count == 0)
+			return pass(tracker, null, count, frame, keepRegions, listener, cancelled, 0, count);
+		// deblend and fit: iterative centres first, then the profile measured over the stack (re-measured once
+		// around the refined centres), then the method with that profile.
+		final int total = count * (1 + PROFILE_ROUNDS);
+		List<FrameResult> results = pass(new ContactTracker(params.withMethod(Method.ITERATIVE)), null, count, frame,
+			false, listener, cancelled, 0, total);
+		for (int round = 0; round < PROFILE_ROUNDS; round++) {
+			final EmpiricalProfile profile = profile(results, frame, params.rOut());
+			results = pass(tracker, profile, count, frame, keepRegions && round == PROFILE_ROUNDS - 1, listener,
+				cancelled, count * (1 + round), total);
+		}
+		return results;
+	}
+
+	/** Rounds of profile measurement and refinement for deblend and fit. */
+	public static final int PROFILE_ROUNDS = 2;
+	/** At most this many frames, evenly spread over the stack, go into a profile measurement. */
+	public static final int PROFILE_FRAMES = 64;
+
+	/**
+	 * Measures the radial profile over up to {@link #PROFILE_FRAMES} frames; null (each frame then measures its
+	 * own) when the stack holds too few usable pixels.
+	 */
+	private static <T extends RealType<T>> EmpiricalProfile profile(final List<FrameResult> results,
+		final IntFunction<? extends RandomAccessibleInterval<T>> frame, final double rOut)
+	{
+		final ProfileEstimator estimator = ProfileEstimator.forROut(rOut);
+		final int step = Math.max(1, (int) Math.ceil(results.size() / (double) PROFILE_FRAMES));
+		for (int t = 0; t < results.size(); t += step)
+			estimator.add(frame.apply(t), results.get(t).spots());
+		try {
+			return estimator.estimate();
+		}
+		catch (final IllegalStateException e) {
+			return null;
+		}
+	}
+
+	private <T extends RealType<T>> List<FrameResult> pass(final ContactTracker tracker,
+		final EmpiricalProfile profile, final int count, final IntFunction<? extends RandomAccessibleInterval<T>> frame,
+		final boolean keepRegions, final ProgressListener listener, final BooleanSupplier cancelled,
+		final int doneBefore, final int total)
+	{
+		final AtomicInteger done = new AtomicInteger(doneBefore);
 		final List<FrameResult> results = new ArrayList<>(count);
 		if (threads == 1 || count < 2) {
 			for (int t = 0; t < count; t++) {
 				if (cancelled.getAsBoolean()) throw new CancellationException("cancelled after " + t + " frames");
-				results.add(one(frame, t, keepRegions));
-				if (listener != null) listener.progress(done.incrementAndGet(), count);
+				results.add(one(tracker, profile, frame, t, keepRegions));
+				if (listener != null) listener.progress(done.incrementAndGet(), total);
 			}
 			return results;
 		}
@@ -88,8 +134,8 @@ public final class StackTracker {
 				final int index = t;
 				futures.add(pool.submit(() -> {
 					if (cancelled.getAsBoolean()) throw new CancellationException("cancelled");
-					final FrameResult r = one(frame, index, keepRegions);
-					if (listener != null) listener.progress(done.incrementAndGet(), count);
+					final FrameResult r = one(tracker, profile, frame, index, keepRegions);
+					if (listener != null) listener.progress(done.incrementAndGet(), total);
 					return r;
 				}));
 			}
@@ -112,11 +158,12 @@ public final class StackTracker {
 		}
 	}
 
-	private <T extends RealType<T>> FrameResult one(final IntFunction<? extends RandomAccessibleInterval<T>> frame,
-		final int t, final boolean keepRegions)
+	private static <T extends RealType<T>> FrameResult one(final ContactTracker tracker,
+		final EmpiricalProfile profile, final IntFunction<? extends RandomAccessibleInterval<T>> frame, final int t,
+		final boolean keepRegions)
 	{
 		try {
-			return tracker.analyse(Plane.of(frame.apply(t)), t, keepRegions);
+			return tracker.analyse(Plane.of(frame.apply(t)), t, keepRegions, profile);
 		}
 		catch (final IllegalArgumentException e) {
 			throw new IllegalArgumentException("frame " + (t + 1) + ": " + e.getMessage(), e);

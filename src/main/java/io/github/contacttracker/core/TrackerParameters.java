@@ -36,7 +36,7 @@ public record TrackerParameters(double threshold, double rOut, int minArea, Conn
 	/** @return parameters with the given threshold and r_out and defaults for the rest */
 	public static TrackerParameters of(final double threshold, final double rOut) {
 		return new TrackerParameters(threshold, rOut, DEFAULT_MIN_AREA, Connectivity.EIGHT, DEFAULT_MIN_SECOND_AREA,
-			Method.PAPER);
+			Method.DEFAULT);
 	}
 
 	public TrackerParameters withThreshold(final double t) {

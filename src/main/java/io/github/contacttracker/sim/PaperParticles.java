@@ -31,7 +31,7 @@ public final class PaperParticles {
 	private static final double SILICA206_BESSEL_SCALE = 0.16;
 	private static final double SILICA206_SIGMA_PX = 40;
 	private static final double SILICA206_BACKGROUND = 80;
-	private static final double SILICA206_THRESHOLD_ABOVE_BACKGROUND = 35;
+	private static final double SILICA206_THRESHOLD_ABOVE_BACKGROUND = 60;
 	private static final double SILICA206_NOISE_AMPLITUDE = 5;
 
 	// ---------------------------------------------------------------------------------------------------------
@@ -63,7 +63,9 @@ public final class PaperParticles {
 	/**
 	 * "2.06 um-like": D = 2.06 um at 37 nm/px (55.68 px), long range ({@code R_out > D}): at contact no
 	 * undistorted area is left. Gaussian-Bessel A = 100, k = 0.16 /px, s = 40 px on background 80, uniform noise
-	 * of amplitude 5, {@code th} = background + 35, {@code R_out = ceil(reach(0.5) + 2)}.
+	 * of amplitude 5, {@code th} = background + 60: above where three overlapping first rings (16 grey levels each)
+	 * can reach, so no spurious component appears between particles at any separation;
+	 * {@code R_out = ceil(reach(0.5) + 2)}.
 	 *
 	 * @return the preset
 	 */

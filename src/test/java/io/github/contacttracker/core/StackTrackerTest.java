@@ -29,7 +29,7 @@ class StackTrackerTest {
 
 	@Test
 	void parallelRunEqualsSerialRunInFrameOrder() {
-		final TrackerParameters p = TrackerParameters.of(80, 20);
+		final TrackerParameters p = TrackerParameters.of(80, 20).withMethod(Method.PAPER);
 		final List<RandomAccessibleInterval<FloatType>> frames = frames(9);
 		final List<FrameResult> serial = new StackTracker(p, 1).track(frames, false);
 		final AtomicInteger calls = new AtomicInteger();
@@ -46,6 +46,23 @@ class StackTrackerTest {
 			assertEquals(t, serial.get(t).spots().get(0).frame());
 		final double left = Math.min(serial.get(4).spots().get(0).x(), serial.get(4).spots().get(1).x());
 		assertEquals(16 + 0.7 * 4, left, 0.1);
+	}
+
+	@Test
+	void profileMethodsPassOverTheStackThreeTimesAndStayDeterministic() {
+		final List<RandomAccessibleInterval<FloatType>> frames = frames(6);
+		final TrackerParameters p = TrackerParameters.of(80, 20).withMethod(Method.FIT);
+		final AtomicInteger last = new AtomicInteger();
+		final List<FrameResult> parallel = new StackTracker(p, 2).track(frames.size(), frames::get, false,
+			(done, total) -> {
+				assertEquals(6 * (1 + StackTracker.PROFILE_ROUNDS), total);
+				last.accumulateAndGet(done, Math::max);
+			}, () -> false);
+		assertEquals(6 * (1 + StackTracker.PROFILE_ROUNDS), last.get());
+		assertEquals(StackTracker.spots(new StackTracker(p, 1).track(frames, false)), StackTracker.spots(parallel));
+		for (final FrameResult r : parallel)
+			for (final Localization s : r.spots())
+				assertTrue(!s.isFlagged(), s.flagSet().toString());
 	}
 
 	@Test

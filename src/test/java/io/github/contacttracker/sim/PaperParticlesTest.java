@@ -27,7 +27,12 @@ class PaperParticlesTest {
 		assertEquals(55.68, t.diameterPx(), 0.005);
 		assertEquals(Math.ceil(t.profile().reach(0.5) + 2), t.rOut(), 0);
 		assertTrue(t.rOut() > t.diameterPx(), "rOut " + t.rOut() + " > D " + t.diameterPx());
-		assertEquals(115, t.threshold(), 0);
+		assertEquals(140, t.threshold(), 0);
+		// Three overlapping rings stay below threshold: no spurious component between particles.
+		double ring = 0;
+		for (double r = t.diameterPx() / 2; r < t.rOut(); r += 0.1)
+			ring = Math.max(ring, t.profile().value(r));
+		assertTrue(t.background() + 3 * ring + 5 < t.threshold(), "ring " + ring);
 		assertEquals(NoiseModel.uniform(5), t.noise());
 	}
 

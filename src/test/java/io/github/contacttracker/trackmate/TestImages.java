@@ -24,7 +24,8 @@ final class TestImages {
 
 	/** Parameters that find the three particles (the pair's discs reach each other: second pass). */
 	static TrackerParameters params() {
-		return TrackerParameters.of(80, 10).withMinArea(10).withMinSecondArea(10);
+		// The paper's method, so the close pair exercises the second pass the assertions look for.
+		return TrackerParameters.of(80, 10).withMinArea(10).withMinSecondArea(10).withMethod(io.github.contacttracker.core.Method.PAPER);
 	}
 
 	static Map<String, Object> settings(final int channel) {

@@ -1,0 +1,122 @@
+package io.github.contacttracker.cli;
+
+import java.io.IOException;
+import java.io.OutputStreamWriter;
+import java.io.PrintStream;
+import java.io.Writer;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Set;
+
+import io.github.contacttracker.core.Method;
+import io.github.contacttracker.eval.CramerRao;
+import io.github.contacttracker.eval.DistanceError;
+import io.github.contacttracker.eval.DistanceStudy;
+import io.github.contacttracker.io.AtomicFile;
+import io.github.contacttracker.sim.PaperParticles;
+import io.github.contacttracker.sim.ParticleType;
+import io.github.contacttracker.sim.Scenario;
+import io.github.contacttracker.sim.SimulatedStack;
+
+/**
+ * {@code accuracy}: the paper's protocol for every method: two and three particles of the 5.53 um-like and
+ * 2.06 um-like profiles, from 2 D down to contact, many noisy images per separation; prints per separation
+ * and method the bias and spread of the measured distance against the Cramer-Rao bound.
+ */
+final class AccuracyCommand {
+
+	static final double[] SEPARATIONS = { 2.0, 1.6, 1.4, 1.3, 1.2, 1.1, 1.05, 1.0 };
+	private static final Set<String> OPTIONS = Set.of("reps", "threads", "csv", "particle", "scenario", "methods",
+		"separations");
+
+	private final PrintStream out;
+
+	AccuracyCommand(final PrintStream out) {
+		this.out = out;
+	}
+
+	int run(final String[] args) throws IOException {
+		final Options o = new Options(args, OPTIONS);
+		final int reps = o.integer("reps", 200);
+		if (reps < 2) throw new IllegalArgumentException("--reps must be at least 2");
+		final int threads = o.integer("threads", 0);
+		final Path csv = o.path("csv");
+		if (csv != null && (csv.toAbsolutePath().getParent() == null || !Files.isDirectory(csv.toAbsolutePath()
+			.getParent()))) throw new IllegalArgumentException("cannot write " + csv + ": its folder does not exist");
+		final List<ParticleType> types = new ArrayList<>();
+		for (final String p : o.string("particle", "5.53,2.06").split(","))
+			types.add(SimulateCommand.particle(p));
+		final List<Scenario> scenarios = new ArrayList<>();
+		for (final String s : o.string("scenario", "pair,triple").split(","))
+			scenarios.add(SimulateCommand.scenario(s));
+		final List<Method> methods = new ArrayList<>();
+		for (final String m : o.string("methods", "first,paper,iterative,deblend,fit").split(","))
+			methods.add(Method.parse(m));
+		final double[] separations = parseList(o.string("separations", null));
+
+		final StringBuilder table = new StringBuilder(
+			"particle,scenario,separation_over_d,method,images,measured,failures,fallbacks,mean_error_nm,std_nm," +
+				"mean_reported_sigma_nm,crb_nm\n");
+		final long start = System.nanoTime();
+		for (final ParticleType type : types)
+			for (final Scenario scenario : scenarios) {
+				final DistanceStudy study = new DistanceStudy(type, scenario, threads);
+				out.printf(Locale.ROOT, "%n%s, %s (D = %.1f px at %.1f nm/px), threshold %.0f, r_out %.0f px, %d " +
+					"images per separation, %s%n", type.name(), scenario == Scenario.PAIR ? "two particles" :
+						"three particles", type.diameterPx(), type.pixelSizeNm(), type.threshold(), type.rOut(), reps, type
+							.noise());
+				out.println("  r/D  method     | mean err   std (nm) | std/CRB | reported sigma | lost  fell back | " +
+					"CRB (nm)");
+				for (int i = 0; i < separations.length; i++) {
+					final SimulatedStack<?> stack = study.simulate(separations[i], reps, 100L * i + 7);
+					final double crb = crbNm(type, scenario, stack);
+					for (final Method m : methods) {
+						final DistanceError e = study.measure(stack, study.track(stack, m), m);
+						out.printf(Locale.ROOT, "  %4.2f %-10s | %8.2f %7.2f | %7.2f | %14.2f | %4d %10d | %6.2f%n",
+							separations[i], m.key(), e.meanErrorNm(), e.stdNm(), e.stdNm() / crb, e.meanSigmaNm(), e
+								.failures(), e.fallbacks(), crb);
+						table.append(String.format(Locale.ROOT, "%s,%s,%.3f,%s,%d,%d,%d,%d,%.4f,%.4f,%.4f,%.4f%n", type
+							.name(), scenario.name().toLowerCase(Locale.ROOT), separations[i], m.key(), e.images(), e
+								.measured(), e.failures(), e.fallbacks(), e.meanErrorNm(), e.stdNm(), e.meanSigmaNm(), crb));
+					}
+				}
+			}
+		out.printf(Locale.ROOT, "%nAccuracy run took %.0f s.%n", (System.nanoTime() - start) * 1e-9);
+		if (csv != null) {
+			AtomicFile.write(csv, os -> {
+				final Writer w = new OutputStreamWriter(os, StandardCharsets.UTF_8);
+				w.write(table.toString());
+				w.flush();
+			});
+			out.println("Table written to " + csv);
+		}
+		return 0;
+	}
+
+	/** The bound for the configuration of the stack's first frame (the bound barely depends on the offset). */
+	private static double crbNm(final ParticleType type, final Scenario scenario, final SimulatedStack<?> stack) {
+		return CramerRao.distanceBound(type, stack.truth().get(0), scenario.measuredPair(), stack.width(), stack
+			.height()) * type.pixelSizeNm();
+	}
+
+	private static double[] parseList(final String text) {
+		if (text == null) return SEPARATIONS;
+		final String[] parts = text.split(",");
+		final double[] v = new double[parts.length];
+		for (int i = 0; i < parts.length; i++) {
+			try {
+				v[i] = Double.parseDouble(parts[i].trim());
+			}
+			catch (final NumberFormatException e) {
+				throw new IllegalArgumentException("--separations must be numbers separated by commas, not '" + text +
+					"'");
+			}
+			if (!(v[i] > 0)) throw new IllegalArgumentException("--separations must be positive (1 = contact)");
+		}
+		return v;
+	}
+}

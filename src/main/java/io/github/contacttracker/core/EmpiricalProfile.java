@@ -1,0 +1,112 @@
+package io.github.contacttracker.core;
+
+/**
+ * A single particle's radial intensity profile measured from the data: a smooth even function of the
+ * distance to the centre (a uniform cubic B-spline, mirrored at r = 0 so that P'(0) = 0), going to zero with
+ * zero slope at {@code radius}, above a constant background.
+ * <p>
+ * It is the pixel-integrated profile (values are fitted to pixel values at pixel-centre distances), so models
+ * built from it need no further pixel integration.
+ */
+public final class EmpiricalProfile {
+
+	private final double spacing;
+	private final double[] coefficients;
+	private final double background;
+	private final double radius;
+	private final int samples;
+
+	/**
+	 * @param spacing knot spacing (px)
+	 * @param coefficients B-spline coefficients c_0..c_m (c_-j = c_j; c_j = 0 beyond m)
+	 * @param background the background grey level
+	 * @param samples pixels that went into the estimate
+	 */
+	EmpiricalProfile(final double spacing, final double[] coefficients, final double background, final int samples) {
+		this.spacing = spacing;
+		this.coefficients = coefficients.clone();
+		this.background = background;
+		this.radius = (coefficients.length + 1) * spacing;
+		this.samples = samples;
+	}
+
+	/** @return the grey level above background at distance {@code r} (px) */
+	public double value(final double r) {
+		final double u = Math.abs(r) / spacing;
+		final int i = (int) u;
+		double s = 0;
+		for (int j = i - 1; j <= i + 2; j++)
+			s += coefficient(j) * bspline(u - j);
+		return s;
+	}
+
+	/** @return dP/dr at distance {@code r} (px) */
+	public double derivative(final double r) {
+		final double u = Math.abs(r) / spacing;
+		final int i = (int) u;
+		double s = 0;
+		for (int j = i - 1; j <= i + 2; j++)
+			s += coefficient(j) * bsplineDerivative(u - j);
+		return s / spacing;
+	}
+
+	/** @return the background grey level */
+	public double background() {
+		return background;
+	}
+
+	/** @return the distance beyond which the profile is zero (px) */
+	public double radius() {
+		return radius;
+	}
+
+	/** @return the number of pixel values the estimate rests on */
+	public int samples() {
+		return samples;
+	}
+
+	/**
+	 * @return the radius of the central area at or above {@code threshold} (the active area of an isolated
+	 *         particle), 0 if the centre itself is below it
+	 */
+	public double activeRadius(final double threshold) {
+		final double step = 0.05;
+		double r = 0;
+		while (r < radius && background + value(r) >= threshold)
+			r += step;
+		return r;
+	}
+
+	private double coefficient(final int j) {
+		final int a = Math.abs(j);
+		return a < coefficients.length ? coefficients[a] : 0;
+	}
+
+	/** Index of the coefficient for knot j (mirrored), or -1 beyond the last. */
+	static int coefficientIndex(final int j, final int count) {
+		final int a = Math.abs(j);
+		return a < count ? a : -1;
+	}
+
+	/** The centred cubic B-spline. */
+	static double bspline(final double t) {
+		final double a = Math.abs(t);
+		if (a < 1) return 2.0 / 3 - a * a + 0.5 * a * a * a;
+		if (a < 2) {
+			final double b = 2 - a;
+			return b * b * b / 6;
+		}
+		return 0;
+	}
+
+	static double bsplineDerivative(final double t) {
+		final double a = Math.abs(t);
+		final double sign = t < 0 ? -1 : 1;
+		if (a < 1) return sign * (-2 * a + 1.5 * a * a);
+		if (a < 2) {
+			final double b = 2 - a;
+			return -sign * 0.5 * b * b;
+		}
+		return 0;
+	}
+}

@@ -1,0 +1,154 @@
+package io.github.contacttracker.core;
+
+import java.util.List;
+
+import net.imglib2.RandomAccessibleInterval;
+import net.imglib2.type.numeric.RealType;
+
+/**
+ * Estimates a particle's radial profile from frames whose particle centres are (approximately) known: every
+ * pixel within {@code radius} of a particle is modelled as background plus the sum of the profiles of all
+ * particles reaching it, {@code I(x) = B + sum_k P(|x - c_k|)}, and the profile's spline coefficients and
+ * {@code B} are found by linear least squares. Overlaps are modelled, not avoided, so the profile can be
+ * measured even where no particle has an undistorted side (long-range profiles at contact).
+ * <p>
+ * A light penalty on the coefficients' second differences keeps sparsely sampled knots (near r = 0) stable.
+ * Pixels near spots flagged as merged or degenerate are left out, since their centres do not describe them.
+ * Not thread-safe.
+ */
+public final class ProfileEstimator {
+
+	/**
+	 * The profile is measured out to this multiple of {@code r_out}: {@code r_out} marks where the light falls
+	 * below the noise, but the faint tail beyond still tilts a neighbour's gradients at the nanometre level, so
+	 * the model must carry it.
+	 */
+	public static final double REACH_FACTOR = 1.5;
+	/** Knot spacing of the profile spline (px). */
+	public static final double SPACING = 1.0;
+	/** Weight of the smoothness penalty, relative to the mean diagonal of the normal matrix. */
+	static final double SMOOTHNESS = 1e-4;
+
+	private final double radius;
+	private final int count;
+	private final double[][] ata;
+	private final double[] atb;
+	private int samples;
+
+	/** @param radius the profile's reach (px): use {@code r_out} */
+	public ProfileEstimator(final double radius) {
+		if (!(radius > 3 * SPACING)) throw new IllegalArgumentException("profile radius must exceed " + 3 * SPACING +
+			" px, not " + radius);
+		this.count = (int) Math.round(radius / SPACING) - 1;
+		this.radius = (count + 1) * SPACING;
+		ata = new double[count + 1][count + 1];
+		atb = new double[count + 1];
+	}
+
+	/** @return an estimator reaching {@link #REACH_FACTOR} times {@code rOut} */
+	public static ProfileEstimator forROut(final double rOut) {
+		return new ProfileEstimator(REACH_FACTOR * rOut);
+	}
+
+	/** @return the number of pixel values added so far */
+	public int samples() {
+		return samples;
+	}
+
+	/**
+	 * Adds a frame with its spots (positions in the frame's coordinates). Spots flagged merged or degenerate
+	 * are masked out.
+	 */
+	public <T extends RealType<T>> void add(final RandomAccessibleInterval<T> frame, final List<Localization> spots) {
+		final Plane plane = Plane.of(frame);
+		final int n = spots.size();
+		final double[] cx = new double[n], cy = new double[n];
+		final boolean[] masked = new boolean[n];
+		for (int k = 0; k < n; k++) {
+			final Localization s = spots.get(k);
+			cx[k] = s.x() - plane.minX();
+			cy[k] = s.y() - plane.minY();
+			masked[k] = s.has(Flag.MERGED) || s.has(Flag.DEGENERATE);
+		}
+		add(plane, cx, cy, masked);
+	}
+
+	/** Adds a plane with centres in its local coordinates; pixels near masked centres are skipped. */
+	void add(final Plane plane, final double[] cx, final double[] cy, final boolean[] masked) {
+		final int n = cx.length, w = plane.width(), h = plane.height();
+		final double r2 = radius * radius;
+		final int[] near = new int[n];
+		final int[] idx = new int[4 * n + 1];
+		final double[] val = new double[4 * n + 1];
+		final int bIndex = count;
+		for (int y = 0; y < h; y++) {
+			int nn = 0;
+			for (int k = 0; k < n; k++)
+				if (Math.abs(y - cy[k]) < radius) near[nn++] = k;
+			for (int x = 0; x < w; x++) {
+				int len = 0;
+				boolean skip = false;
+				for (int q = 0; q < nn && !skip; q++) {
+					final int k = near[q];
+					final double dx = x - cx[k], dy = y - cy[k], d2 = dx * dx + dy * dy;
+					if (d2 >= r2) continue;
+					if (masked[k]) {
+						skip = true;
+						break;
+					}
+					final double u = Math.sqrt(d2) / SPACING;
+					final int i = (int) u;
+					for (int j = i - 1; j <= i + 2; j++) {
+						final int c = EmpiricalProfile.coefficientIndex(j, count);
+						if (c < 0) continue;
+						final double b = EmpiricalProfile.bspline(u - j);
+						if (b == 0) continue;
+						idx[len] = c;
+						val[len++] = b;
+					}
+				}
+				if (skip) continue;
+				idx[len] = bIndex;
+				val[len++] = 1;
+				final double v = plane.get(x, y);
+				for (int a = 0; a < len; a++) {
+					atb[idx[a]] += val[a] * v;
+					for (int b = 0; b < len; b++)
+						ata[idx[a]][idx[b]] += val[a] * val[b];
+				}
+				samples++;
+			}
+		}
+	}
+
+	/**
+	 * @return the profile
+	 * @throws IllegalStateException when the data cannot determine it
+	 */
+	public EmpiricalProfile estimate() {
+		final int m = count + 1;
+		final double[][] a = new double[m][m];
+		double trace = 0;
+		for (int i = 0; i < m; i++) {
+			a[i] = ata[i].clone();
+			trace += ata[i][i];
+		}
+		// Penalty on second differences d_j = c_{j-1} - 2 c_j + c_{j+1}, j = 0..count, with c_-1 = c_1 and
+		// c_count = 0 (beyond the last coefficient).
+		final double lambda = SMOOTHNESS * trace / m;
+		for (int j = 0; j <= count; j++) {
+			final int[] ci = { EmpiricalProfile.coefficientIndex(j - 1, count), EmpiricalProfile.coefficientIndex(j,
+				count), EmpiricalProfile.coefficientIndex(j + 1, count) };
+			final double[] cw = { 1, -2, 1 };
+			for (int p = 0; p < 3; p++)
+				for (int q = 0; q < 3; q++)
+					if (ci[p] >= 0 && ci[q] >= 0) a[ci[p]][ci[q]] += lambda * cw[p] * cw[q];
+		}
+		final double[] x = SymmetricSolver.solve(a, atb);
+		if (x == null || samples < 4 * m)
+			throw new IllegalStateException("too few pixels (" + samples + ") to estimate the particles' profile");
+		final double[] coefficients = new double[count];
+		System.arraycopy(x, 0, coefficients, 0, count);
+		return new EmpiricalProfile(SPACING, coefficients, x[count], samples);
+	}
+}
