@@ -206,7 +206,7 @@ public final class ContactTracker {
 				if (disc < 3) disc = medianEquivalentRadius(ps);
 				iterations = Deblender.refine(plane, ps, profile, disc);
 			}
-			else iterations = GroupFit.refine(plane, ps, profile);
+			else iterations = GroupFit.refine(plane, ps, profile, 2 * params.rOut());
 			for (final ParticleState p : ps) {
 				p.clear(Flag.SECOND_PASS.bit() | Flag.FELL_BACK.bit() | Flag.NOT_CONVERGED.bit());
 				p.iterations = Math.abs(iterations);

@@ -53,7 +53,7 @@ final class Deblender {
 					for (int y = 0; y < h; y++)
 						for (int x = 0; x < w; x++) {
 							final double r = Math.hypot(x0 + x - cx[q], y0 + y - cy[q]);
-							if (r < reach) data[y * w + x] -= profile.value(r);
+							if (r < reach) data[y * w + x] -= profile.lookup(r);
 						}
 				}
 				final DoublePlane local = new DoublePlane(data, w, h);

@@ -15,6 +15,12 @@ public final class EmpiricalProfile {
 	private final double background;
 	private final double radius;
 	private final int samples;
+	/** Tables of P and P' at {@link #TABLE_STEP} for fast lookups. */
+	private final double[] tableValue;
+	private final double[] tableDerivative;
+
+	/** Step of the lookup tables (px): linear interpolation errs by well under 1e-3 grey levels there. */
+	static final double TABLE_STEP = 1.0 / 32;
 
 	/**
 	 * @param spacing knot spacing (px)
@@ -28,6 +34,31 @@ public final class EmpiricalProfile {
 		this.background = background;
 		this.radius = (coefficients.length + 1) * spacing;
 		this.samples = samples;
+		final int n = (int) Math.ceil(radius / TABLE_STEP) + 2;
+		tableValue = new double[n];
+		tableDerivative = new double[n];
+		for (int i = 0; i < n; i++) {
+			tableValue[i] = value(i * TABLE_STEP);
+			tableDerivative[i] = derivative(i * TABLE_STEP);
+		}
+	}
+
+	/** P(r) from the table (linear interpolation); 0 beyond the radius. */
+	double lookup(final double r) {
+		final double u = r / TABLE_STEP;
+		final int i = (int) u;
+		if (i >= tableValue.length - 1) return 0;
+		final double f = u - i;
+		return tableValue[i] + f * (tableValue[i + 1] - tableValue[i]);
+	}
+
+	/** P'(r) from the table (linear interpolation); 0 beyond the radius. */
+	double lookupDerivative(final double r) {
+		final double u = r / TABLE_STEP;
+		final int i = (int) u;
+		if (i >= tableDerivative.length - 1) return 0;
+		final double f = u - i;
+		return tableDerivative[i] + f * (tableDerivative[i + 1] - tableDerivative[i]);
 	}
 
 	/** @return the grey level above background at distance {@code r} (px) */

@@ -4,17 +4,21 @@ import java.util.ArrayList;
 import java.util.List;
 
 /**
- * The {@code fit} method: the particles whose discs of radius {@code R} (the profile's reach) overlap form a
- * group, and each group is fitted jointly by least squares to the pixels within {@code R} of its members:
- * {@code I(x) = B + sum_k a_k P(|x - c_k|)} with the measured profile {@code P}, free centres {@code c_k},
- * amplitudes {@code a_k} and a local background {@code B} (Levenberg-Marquardt). All the light of every
- * particle is used, the neighbours' included, which is what the Cramer-Rao bound assumes.
+ * The {@code fit} method: particles closer than {@code 2 r_out} form a group (their significant light
+ * overlaps), and each group is fitted jointly by least squares to the pixels within {@code R} (the measured
+ * profile's reach) of its members: {@code I(x) = B + sum_k a_k P(|x - c_k|) + F(x)} with the measured profile
+ * {@code P}, free centres {@code c_k}, amplitudes {@code a_k} and local background {@code B}
+ * (Levenberg-Marquardt); {@code F} is the faint light of particles of other groups (all farther than
+ * {@code 2 r_out}), held at their current estimates: only its tail reaches the group, where a centre error of
+ * a few hundredths of a pixel changes nothing that matters. All the light of every particle is used, which is what the
+ * Cramer-Rao bound assumes. Unreliable particles (suspected merges, degenerate) are left as they are and are
+ * not modelled.
  */
 final class GroupFit {
 
 	static final int MAX_ITERATIONS = 50;
 	/** Converged when no centre moves more than this in an iteration (px). */
-	static final double TOLERANCE = 1e-6;
+	static final double TOLERANCE = 1e-5;
 
 	private GroupFit() {}
 
@@ -23,9 +27,12 @@ final class GroupFit {
 	 *
 	 * @return the largest number of iterations a group needed, negative if a group hit the limit
 	 */
-	static int refine(final Plane plane, final ParticleState[] particles, final EmpiricalProfile profile) {
+	static int refine(final Plane plane, final ParticleState[] particles, final EmpiricalProfile profile,
+		final double groupDistance)
+	{
+		final List<int[]> groups = groups(particles, groupDistance);
 		int worst = 0;
-		for (final int[] group : groups(particles, profile.radius())) {
+		for (final int[] group : groups) {
 			final int it = fitGroup(plane, particles, group, profile);
 			if (it < 0) worst = Math.min(worst, it);
 			else if (worst >= 0) worst = Math.max(worst, it);
@@ -33,15 +40,15 @@ final class GroupFit {
 		return worst;
 	}
 
-	/** Groups of particles whose discs overlap (transitively). */
-	static List<int[]> groups(final ParticleState[] ps, final double radius) {
+	/** Groups of particles closer than {@code distance} (transitively). */
+	static List<int[]> groups(final ParticleState[] ps, final double distance) {
 		final int n = ps.length;
 		final int[] parent = new int[n];
 		for (int i = 0; i < n; i++)
 			parent[i] = i;
 		for (int i = 0; i < n; i++)
 			for (int j = i + 1; j < n; j++)
-				if (ps[i].reliable() && ps[j].reliable() && Math.hypot(ps[i].x - ps[j].x, ps[i].y - ps[j].y) < 2 * radius) {
+				if (ps[i].reliable() && ps[j].reliable() && Math.hypot(ps[i].x - ps[j].x, ps[i].y - ps[j].y) < distance) {
 					final int ri = root(parent, i), rj = root(parent, j);
 					if (ri != rj) parent[Math.max(ri, rj)] = Math.min(ri, rj);
 				}
@@ -58,6 +65,12 @@ final class GroupFit {
 			groups.add(g);
 		}
 		return groups;
+	}
+
+	private static boolean contains(final int[] group, final int k) {
+		for (final int g : group)
+			if (g == k) return true;
+		return false;
 	}
 
 	private static int root(final int[] parent, int i) {
@@ -103,6 +116,17 @@ final class GroupFit {
 				pv[count++] = plane.get(x, y);
 			}
 		if (count <= np) return 0;
+		// The light of reliable particles outside the group, at their current centres and amplitude 1.
+		final double[] fixed = new double[count];
+		for (int k = 0; k < ps.length; k++) {
+			if (!ps[k].reliable() || contains(group, k)) continue;
+			final double kx = ps[k].x, ky = ps[k].y;
+			if (kx < x0 - R || kx > x1 + R || ky < y0 - R || ky > y1 + R) continue;
+			for (int i = 0; i < count; i++) {
+				final double dx = px[i] - kx, dy = py[i] - ky, d2 = dx * dx + dy * dy;
+				if (d2 < r2) fixed[i] += profile.lookup(Math.sqrt(d2));
+			}
+		}
 		final double[] p = new double[np];
 		for (int q = 0; q < n; q++) {
 			p[3 * q] = ps[group[q]].x;
@@ -112,7 +136,7 @@ final class GroupFit {
 		p[np - 1] = profile.background();
 		final double[][] jtj = new double[np][np];
 		final double[] jtr = new double[np];
-		double rss = accumulate(px, py, pv, count, p, n, profile, jtj, jtr);
+		double rss = accumulate(px, py, pv, fixed, count, p, n, profile, jtj, jtr);
 		double mu = 1e-3;
 		int it = 1;
 		boolean converged = false;
@@ -129,7 +153,7 @@ final class GroupFit {
 				trial[i] += step[i];
 			final double[][] tj = new double[np][np];
 			final double[] tr = new double[np];
-			final double trialRss = accumulate(px, py, pv, count, trial, n, profile, tj, tr);
+			final double trialRss = accumulate(px, py, pv, fixed, count, trial, n, profile, tj, tr);
 			double move = 0;
 			for (int q = 0; q < n; q++)
 				move = Math.max(move, Math.hypot(step[3 * q], step[3 * q + 1]));
@@ -168,7 +192,8 @@ final class GroupFit {
 	}
 
 	/** Fills J^T J and J^T r at parameters {@code p}; returns the residual sum of squares. */
-	private static double accumulate(final int[] px, final int[] py, final double[] pv, final int count,
+	private static double accumulate(final int[] px, final int[] py, final double[] pv, final double[] fixed,
+		final int count,
 		final double[] p, final int n, final EmpiricalProfile profile, final double[][] jtj, final double[] jtr)
 	{
 		final int np = 3 * n + 1;
@@ -176,18 +201,18 @@ final class GroupFit {
 		final double[] grad = new double[np];
 		double rss = 0;
 		for (int i = 0; i < count; i++) {
-			double model = p[np - 1];
+			double model = p[np - 1] + fixed[i];
 			java.util.Arrays.fill(grad, 0);
 			grad[np - 1] = 1;
 			for (int q = 0; q < n; q++) {
 				final double dx = px[i] - p[3 * q], dy = py[i] - p[3 * q + 1];
 				final double r = Math.sqrt(dx * dx + dy * dy);
 				if (r >= R) continue;
-				final double a = p[3 * q + 2], v = profile.value(r);
+				final double a = p[3 * q + 2], v = profile.lookup(r);
 				model += a * v;
 				grad[3 * q + 2] = v;
 				if (r > 1e-12) {
-					final double d = a * profile.derivative(r) / r;
+					final double d = a * profile.lookupDerivative(r) / r;
 					grad[3 * q] = -d * dx;
 					grad[3 * q + 1] = -d * dy;
 				}

@@ -34,6 +34,7 @@ public final class ProfileEstimator {
 	private final double[][] ata;
 	private final double[] atb;
 	private int samples;
+	private int profileSamples;
 
 	/** @param radius the profile's reach (px): use {@code r_out} */
 	public ProfileEstimator(final double radius) {
@@ -53,6 +54,11 @@ public final class ProfileEstimator {
 	/** @return the number of pixel values added so far */
 	public int samples() {
 		return samples;
+	}
+
+	/** @return the number of pixel values added so far that lie within reach of a particle */
+	public int profileSamples() {
+		return profileSamples;
 	}
 
 	/**
@@ -113,10 +119,12 @@ public final class ProfileEstimator {
 				final double v = plane.get(x, y);
 				for (int a = 0; a < len; a++) {
 					atb[idx[a]] += val[a] * v;
+					// Lower triangle only (by index): mirrored in estimate().
 					for (int b = 0; b < len; b++)
-						ata[idx[a]][idx[b]] += val[a] * val[b];
+						if (idx[b] <= idx[a]) ata[idx[a]][idx[b]] += val[a] * val[b];
 				}
 				samples++;
+				if (len > 1) profileSamples++;
 			}
 		}
 	}
@@ -130,7 +138,8 @@ public final class ProfileEstimator {
 		final double[][] a = new double[m][m];
 		double trace = 0;
 		for (int i = 0; i < m; i++) {
-			a[i] = ata[i].clone();
+			for (int j = 0; j <= i; j++)
+				a[i][j] = a[j][i] = ata[i][j];
 			trace += ata[i][i];
 		}
 		// Penalty on second differences d_j = c_{j-1} - 2 c_j + c_{j+1}, j = 0..count, with c_-1 = c_1 and

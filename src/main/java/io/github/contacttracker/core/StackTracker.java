@@ -86,8 +86,10 @@ public final class StackTracker {
 
 	/** Rounds of profile measurement and refinement for deblend and fit. */
 	public static final int PROFILE_ROUNDS = 2;
-	/** At most this many frames, evenly spread over the stack, go into a profile measurement. */
+	/** At most this many frames, evenly spread over the stack, go into a profile measurement... */
 	public static final int PROFILE_FRAMES = 64;
+	/** ...and no more once this many pixels within reach of a particle are in (plenty for the spline). */
+	public static final int PROFILE_SAMPLES = 4_000_000;
 
 	/**
 	 * Measures the radial profile over up to {@link #PROFILE_FRAMES} frames; null (each frame then measures its
@@ -98,7 +100,7 @@ public final class StackTracker {
 	{
 		final ProfileEstimator estimator = ProfileEstimator.forROut(rOut);
 		final int step = Math.max(1, (int) Math.ceil(results.size() / (double) PROFILE_FRAMES));
-		for (int t = 0; t < results.size(); t += step)
+		for (int t = 0; t < results.size() && estimator.profileSamples() < PROFILE_SAMPLES; t += step)
 			estimator.add(frame.apply(t), results.get(t).spots());
 		try {
 			return estimator.estimate();

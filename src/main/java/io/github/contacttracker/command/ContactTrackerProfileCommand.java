@@ -1,0 +1,198 @@
+package io.github.contacttracker.command;
+
+import java.awt.Color;
+import java.awt.GraphicsEnvironment;
+import java.awt.Point;
+import java.util.Locale;
+
+import org.scijava.ItemIO;
+import org.scijava.command.Command;
+import org.scijava.command.ContextCommand;
+import org.scijava.log.LogService;
+import org.scijava.plugin.Parameter;
+import org.scijava.plugin.Plugin;
+
+import ij.IJ;
+import ij.ImagePlus;
+import ij.gui.Plot;
+import ij.gui.PointRoi;
+import ij.gui.Roi;
+import io.github.contacttracker.core.ProfileAnalysis;
+import io.github.contacttracker.io.ImagePlusFrames;
+
+/**
+ * <i>Plugins &gt; Tracking &gt; Contact Tracker Profile</i>: the parameter helper. The user marks an isolated
+ * particle with the point tool; the command plots the particle's radial intensity profile with the background,
+ * the noise band and the suggested {@code threshold} and {@code r_out} marked (as in the paper's Fig. 2), and
+ * prints the numbers to the Log window. The rule is {@link ProfileAnalysis}'s.
+ * <p>
+ * The profile is taken in the channel and frame on display. Suggestions are rounded up: {@code r_out} to whole
+ * pixels, the threshold to a whole grey level for 8- and 16-bit images. They are also outputs, for scripts (the
+ * command prints and plots them itself; {@link ShownOutputs} keeps SciJava from displaying them again).
+ */
+@Plugin(type = Command.class, menuPath = "Plugins>Tracking>Contact Tracker Profile", headless = true,
+	label = "Contact Tracker Profile", description = "Radial profile of one particle and suggested threshold and " +
+		"r_out for Contact Tracker")
+public class ContactTrackerProfileCommand extends ContextCommand {
+
+	/** Title of the plot window (followed by the image title). */
+	public static final String PLOT_TITLE = "Contact Tracker Profile";
+
+	@Parameter
+	private LogService log;
+
+	@Parameter(label = "Image", persist = false)
+	private ImagePlus imp;
+
+	@Parameter(label = "Particle diameter (px)", persist = false, min = "0",
+		description = "The centre distance of two particles at contact, in pixels")
+	private double diameter = 0;
+
+	@Parameter(label = "Max radius (px, 0 = 2.5 diameters)", persist = false, min = "0",
+		description = "How far out the profile is measured; its outer 20% give the background")
+	private double max_radius = 0;
+
+	@Parameter(label = "Show plot", persist = false)
+	private boolean plot = true;
+
+	@Parameter(label = "Suggested threshold", type = ItemIO.OUTPUT)
+	private double suggested_threshold;
+
+	@Parameter(label = "Suggested r_out (px)", type = ItemIO.OUTPUT)
+	private double suggested_r_out;
+
+	@Parameter(label = "Background", type = ItemIO.OUTPUT)
+	private double background;
+
+	@Parameter(label = "Noise (sigma)", type = ItemIO.OUTPUT)
+	private double noise;
+
+	@Parameter(label = "Centre x (px)", type = ItemIO.OUTPUT)
+	private double centre_x;
+
+	@Parameter(label = "Centre y (px)", type = ItemIO.OUTPUT)
+	private double centre_y;
+
+	@Parameter(label = "Profile", type = ItemIO.OUTPUT)
+	private Plot profile;
+
+	@Override
+	public void run() {
+		try {
+			analyse();
+		}
+		catch (final IllegalArgumentException e) {
+			log.error(PLOT_TITLE + ": " + e.getMessage());
+			cancel(e.getMessage());
+		}
+	}
+
+	private void analyse() {
+		if (imp == null) throw new IllegalArgumentException("no image");
+		final double[] point = point(imp.getRoi());
+		final int[] position = imp.convertIndexToPosition(imp.getCurrentSlice());
+		final int frame = (imp.getNFrames() > 1 ? position[2] : position[1]) - 1;
+		final ImagePlusFrames frames = ImagePlusFrames.of(imp, position[0]);
+		final ProfileAnalysis.Result r = analyse(frames, frame, point);
+
+		final boolean integerData = imp.getBitDepth() != 32;
+		suggested_threshold = integerData ? Math.ceil(r.threshold() - 1e-9) : r.threshold();
+		suggested_r_out = Math.ceil(r.rOut() - 1e-9);
+		background = r.background();
+		noise = r.noise();
+		centre_x = r.x();
+		centre_y = r.y();
+		profile = plot(r, imp.getTitle(), suggested_threshold, suggested_r_out);
+		report(r, point, frame, frames.frameCount());
+		if (plot && !GraphicsEnvironment.isHeadless()) profile.show();
+	}
+
+	@SuppressWarnings({ "unchecked", "rawtypes" })
+	private ProfileAnalysis.Result analyse(final ImagePlusFrames frames, final int frame, final double[] point) {
+		return ProfileAnalysis.analyse((net.imglib2.RandomAccessibleInterval) frames.frames().get(frame), point[0],
+			point[1], diameter, max_radius);
+	}
+
+	/** @return the marked point in pixel units, TrackMate's convention (pixel (0,0)'s centre at 0,0) */
+	static double[] point(final Roi roi) {
+		if (roi == null)
+			throw new IllegalArgumentException("no point on the image: click on an isolated particle with the point " +
+				"tool first (in a macro: makePoint(x, y))");
+		if (roi instanceof PointRoi) {
+			final Point[] p = roi.getContainedPoints();
+			if (p.length == 0) throw new IllegalArgumentException("the point selection is empty");
+			return new double[] { p[0].x, p[0].y };
+		}
+		if (!roi.isArea())
+			throw new IllegalArgumentException("the selection is a line: click on an isolated particle with the " +
+				"point tool");
+		final double[] c = roi.getContourCentroid();
+		return new double[] { c[0] - 0.5, c[1] - 0.5 };
+	}
+
+	private Plot plot(final ProfileAnalysis.Result r, final String title, final double threshold,
+		final double rOut)
+	{
+		double lo = r.background() - r.noise(), hi = Math.max(threshold, r.background() + r.noise());
+		for (final double m : r.mean())
+			if (Double.isFinite(m)) {
+				lo = Math.min(lo, m);
+				hi = Math.max(hi, m);
+			}
+		final double pad = 0.05 * (hi - lo);
+		lo -= pad;
+		hi += pad;
+		final double right = r.maxRadius();
+		final Plot p = new Plot(PLOT_TITLE + ": " + title, "distance from centre (px)", "grey level");
+		p.setLimits(0, right, lo, hi);
+		p.setLineWidth(2);
+		p.setColor(Color.BLACK);
+		p.add("line", r.radius(), r.mean());
+		p.setLineWidth(1);
+		p.setColor(Color.BLACK);
+		p.add("line", new double[] { 0, right }, new double[] { r.background(), r.background() });
+		p.setColor(Color.GRAY);
+		p.add("line", new double[] { 0, right }, new double[] { r.background() + r.noise(), r.background() + r
+			.noise() });
+		p.add("line", new double[] { 0, right }, new double[] { r.background() - r.noise(), r.background() - r
+			.noise() });
+		p.setColor(Color.RED);
+		p.add("line", new double[] { 0, right }, new double[] { threshold, threshold });
+		p.setColor(Color.BLUE);
+		p.add("line", new double[] { rOut, rOut }, new double[] { lo, hi });
+		p.setColor(new Color(0, 150, 0));
+		p.add("line", new double[] { r.diameter() / 2, r.diameter() / 2 }, new double[] { lo, hi });
+		p.setColor(Color.BLACK);
+		p.addLegend("radial profile\tbackground\tbackground + noise\tbackground - noise\tsuggested threshold\t" +
+			"suggested r_out\tD/2", "top-right");
+		return p;
+	}
+
+	private void report(final ProfileAnalysis.Result r, final double[] point, final int frame, final int frames) {
+		final StringBuilder b = new StringBuilder();
+		b.append(String.format(Locale.ROOT, "%s: '%s'%s, particle at (%.2f, %.2f) px%s%n", PLOT_TITLE, imp.getTitle(),
+			frames > 1 ? ", frame " + (frame + 1) : "", r.x(), r.y(), r.refined() ? String.format(Locale.ROOT,
+				" (point given: %.0f, %.0f)", point[0], point[1]) : " (not refined)"));
+		b.append(String.format(Locale.ROOT, "  background %.2f, noise sigma %.2f, peak %.2f (grey levels)%n", r
+			.background(), r.noise(), r.peak()));
+		b.append(String.format(Locale.ROOT,
+			"  profile within the noise of the background beyond %.2f px; + %.0f px = %.2f -> r_out = %.0f px%n", r
+				.reach(), ProfileAnalysis.R_OUT_MARGIN_PX, r.rOut(), suggested_r_out));
+		b.append(String.format(Locale.ROOT,
+			"  brightest point between two particles at contact (D = %.2f px): %.2f; + %.0f sigma = %.2f -> " +
+				"threshold = %s%n", r.diameter(), r.bridge(), ProfileAnalysis.THRESHOLD_MARGIN_SIGMAS, r.threshold(),
+			fmt(suggested_threshold)));
+		b.append(String.format(Locale.ROOT, "  active area radius at this threshold: %.2f px (D/2 = %.2f px)%n", r
+			.activeRadius(), r.diameter() / 2));
+		for (final String w : r.warnings())
+			b.append("  warning: ").append(w).append('\n');
+		b.append(String.format(Locale.ROOT, "  macro: run(\"Contact Tracker\", \"threshold=%s r_out=%.0f\");",
+			fmt(suggested_threshold), suggested_r_out));
+		IJ.log(b.toString());
+	}
+
+	private static String fmt(final double v) {
+		return v == Math.rint(v) && Math.abs(v) < 1e15 ? Long.toString((long) v) : String.format(Locale.ROOT, "%.3f",
+			v);
+	}
+}

@@ -1,0 +1,127 @@
+package io.github.contacttracker.command;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.io.StringWriter;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+
+import javax.script.ScriptEngine;
+import javax.script.ScriptEngineManager;
+
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.scijava.Context;
+import org.scijava.module.Module;
+import org.scijava.script.ScriptService;
+
+import ij.ImagePlus;
+import ij.Macro;
+import ij.macro.Interpreter;
+import ij.process.ColorProcessor;
+import io.github.contacttracker.core.Connectivity;
+import io.github.contacttracker.core.Method;
+import io.github.contacttracker.core.StackTracker;
+import io.github.contacttracker.core.TrackerParameters;
+import io.github.contacttracker.io.ImageFiles;
+import io.github.contacttracker.io.ImagePlusFrames;
+import io.github.contacttracker.io.SpotCsvWriter;
+
+/**
+ * The batch scripts of {@code scripts/}. The Groovy one runs headless through SciJava's script service, as
+ * {@code ImageJ --headless --run} does; it needs a Groovy script engine on the test class path
+ * ({@code org.apache.groovy:groovy-jsr223}, test scope) and is skipped without one. The macro's
+ * {@code run("Contact Tracker", ...)} needs Fiji's ImageJ2 bridge (not on Maven Central), so only its parsing and
+ * argument handling are tested, in plain ImageJ's macro interpreter.
+ */
+class BatchScriptsTest {
+
+	private static Context context;
+
+	@BeforeAll
+	static void start() {
+		context = new Context();
+	}
+
+	@AfterAll
+	static void stop() {
+		context.dispose();
+	}
+
+	/** @return what the macro printed (headless, ImageJ prints to standard output) */
+	private static String runMacro(final String argument) throws Exception {
+		final String code = Files.readString(Path.of(System.getProperty("basedir", ".")).resolve(
+			"scripts/contact-tracker-batch.ijm"));
+		final PrintStream out = System.out;
+		final ByteArrayOutputStream printed = new ByteArrayOutputStream();
+		System.setOut(new PrintStream(printed, true, StandardCharsets.UTF_8));
+		try {
+			new Interpreter().run(code, argument);
+		}
+		catch (final RuntimeException e) {
+			if (!Macro.MACRO_CANCELED.equals(e.getMessage())) throw e; // exit("...") ends a macro this way
+		}
+		finally {
+			System.setOut(out);
+		}
+		return printed.toString(StandardCharsets.UTF_8);
+	}
+
+	@Test
+	void macroParsesItsArgumentsAndSkipsWhatIsNotATiff(@TempDir final Path dir) throws Exception {
+		final Path in = Files.createDirectories(dir.resolve("in folder")), out = Files.createDirectories(dir.resolve(
+			"out"));
+		Files.writeString(in.resolve("notes.txt"), "not an image");
+		final String printed = runMacro("input=[" + in + "] output=[" + out + "] threshold=110 r_out=55");
+		assertTrue(printed.contains("Contact Tracker batch: 0 image(s) done, 0 failed"), printed);
+		final String missing = runMacro("input=[" + dir.resolve("nowhere") + "] output=[" + out + "]");
+		assertTrue(missing.contains("Contact Tracker batch: input folder not found"), missing);
+	}
+
+	@SuppressWarnings({ "unchecked", "rawtypes" })
+	@Test
+	void groovyBatchWritesOneCsvPerTiff(@TempDir final Path dir) throws Exception {
+		final ScriptService scripts = context.service(ScriptService.class);
+		if (scripts.getLanguageByExtension("groovy") == null) {
+			// Fiji has SciJava's Groovy language plugin; here, adapt the plain javax.script engine (the #@ lines are
+			// parsed and stripped by SciJava either way)
+			final ScriptEngine groovy = new ScriptEngineManager().getEngineByExtension("groovy");
+			assumeTrue(groovy != null, "no Groovy script engine (org.apache.groovy:groovy-jsr223) on the class path");
+			scripts.getIndex().add(groovy.getFactory(), false);
+		}
+		final Path script = Path.of(System.getProperty("basedir", ".")).resolve("scripts/contact-tracker-batch.groovy");
+		final Path in = Files.createDirectories(dir.resolve("in")), out = Files.createDirectories(dir.resolve("out"));
+		final ImagePlus movie = Simulated.image();
+		ImageFiles.saveTiff(movie, in.resolve("movie.tif"));
+		ImageFiles.saveTiff(new ImagePlus("colour", new ColorProcessor(40, 30)), in.resolve("colour.tiff"));
+		Files.writeString(in.resolve("notes.txt"), "not an image");
+
+		final double threshold = Simulated.TYPE.threshold(), rOut = Simulated.TYPE.rOut();
+		final Module m = scripts.run(script.toFile(), true, "input", in.toFile(), "output", out.toFile(), "threshold",
+			threshold, "r_out", rOut, "min_area", 20, "method", "paper", "channel", 1, "trackmate", true).get();
+		assertEquals(1, m.getOutput("done"));
+		assertEquals(1, m.getOutput("failed"), "the RGB image is refused");
+
+		// the CSV is the command line's for the same image and parameters
+		final ImagePlus reopened = ImageFiles.open(in.resolve("movie.tif"));
+		final ImagePlusFrames frames = ImagePlusFrames.of(reopened, 0);
+		final TrackerParameters params = new TrackerParameters(threshold, rOut, 20, Connectivity.EIGHT,
+			TrackerParameters.DEFAULT_MIN_SECOND_AREA, Method.PAPER);
+		final StringWriter expected = new StringWriter();
+		SpotCsvWriter.write(expected, StackTracker.spots(new StackTracker(params, 1).track((List) frames.frames(),
+			false)), frames.calibration());
+		assertEquals(expected.toString(), Files.readString(out.resolve("movie.csv")));
+		assertTrue(Files.isRegularFile(out.resolve("movie.xml")), "TrackMate XML on request");
+		assertFalse(Files.exists(out.resolve("colour.csv")));
+		assertFalse(Files.exists(out.resolve("notes.csv")));
+	}
+}

@@ -1,0 +1,93 @@
+package io.github.contacttracker.command;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import java.io.IOException;
+import java.net.URL;
+import java.net.URLClassLoader;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.stream.Stream;
+import java.util.zip.ZipEntry;
+import java.util.zip.ZipFile;
+
+import org.junit.jupiter.api.Test;
+import org.scijava.annotations.Index;
+import org.scijava.annotations.IndexItem;
+import org.scijava.command.Command;
+import org.scijava.module.process.PreprocessorPlugin;
+import org.scijava.plugin.Plugin;
+
+/**
+ * Integration test on the PACKAGED plugin jar (failsafe, after {@code package}): its SciJava plugin index lists
+ * both commands with their menu paths, as Fiji reads it, and the macro-options check as a preprocessor.
+ */
+class CommandJarIT {
+
+	private static final String INDEX = "META-INF/json/org.scijava.plugin.Plugin";
+
+	private static Path pluginJar() throws IOException {
+		final Path target = Path.of(System.getProperty("basedir", ".")).resolve("target");
+		final List<Path> jars = new ArrayList<>();
+		try (Stream<Path> files = Files.list(target)) {
+			files.filter(p -> {
+				final String n = p.getFileName().toString();
+				return n.endsWith(".jar") && !n.startsWith("original-") && !n.matches(
+					".*-(sources|tests|test-sources|javadoc|cli)\\.jar");
+			}).forEach(jars::add);
+		}
+		assertEquals(1, jars.size(), "expected exactly one plugin jar in " + target + ": " + jars);
+		return jars.get(0);
+	}
+
+	@Test
+	void pluginIndexListsBothCommandsWithTheirMenuPaths() throws Exception {
+		// failsafe tests the packaged jar: our classes come from it (surefire, e.g. with -Dtest, has target/classes)
+		final Path loadedFrom = Path.of(ContactTrackerCommand.class.getProtectionDomain().getCodeSource().getLocation()
+			.toURI());
+		assumeTrue(loadedFrom.getFileName().toString().endsWith(".jar"), "not run on the packaged jar (mvn verify)");
+		final Path jar = pluginJar();
+		assertEquals(jar.toRealPath(), loadedFrom.toRealPath(), "the classes under test are the jar's");
+		try (ZipFile zip = new ZipFile(jar.toFile())) {
+			final ZipEntry index = zip.getEntry(INDEX);
+			assertNotNull(index, jar + " has no " + INDEX);
+			for (final String cls : List.of(ContactTrackerCommand.class, ContactTrackerProfileCommand.class,
+				MacroOptionsCheck.class).stream().map(Class::getName).toList())
+				assertNotNull(zip.getEntry(cls.replace('.', '/') + ".class"), cls + " is not in the jar");
+		}
+		// read the index the way SciJava does, from the jar alone: resources come only from the jar (no parent), the
+		// classes the annotations name (Command, PreprocessorPlugin) from the test class path
+		final ClassLoader classes = CommandJarIT.class.getClassLoader();
+		final Map<String, Plugin> plugins = new HashMap<>();
+		try (URLClassLoader jarOnly = new URLClassLoader(new URL[] { jar.toUri().toURL() }, null) {
+			@Override
+			protected Class<?> findClass(final String name) throws ClassNotFoundException {
+				return classes.loadClass(name);
+			}
+		})
+		{
+			for (final IndexItem<Plugin> item : Index.load(Plugin.class, jarOnly))
+				plugins.put(item.className(), item.annotation());
+		}
+		final Plugin tracker = plugins.get(ContactTrackerCommand.class.getName());
+		final Plugin profile = plugins.get(ContactTrackerProfileCommand.class.getName());
+		final Plugin check = plugins.get(MacroOptionsCheck.class.getName());
+		assertNotNull(tracker, "index: " + plugins.keySet());
+		assertNotNull(profile, "index: " + plugins.keySet());
+		assertNotNull(check, "index: " + plugins.keySet());
+		assertEquals("Plugins>Tracking>Contact Tracker", tracker.menuPath());
+		assertEquals(Command.class, tracker.type());
+		assertTrue(tracker.headless());
+		assertEquals("Plugins>Tracking>Contact Tracker Profile", profile.menuPath());
+		assertEquals(Command.class, profile.type());
+		assertTrue(profile.headless());
+		assertEquals(PreprocessorPlugin.class, check.type());
+	}
+}

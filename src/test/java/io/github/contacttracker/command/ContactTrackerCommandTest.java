@@ -1,0 +1,469 @@
+package io.github.contacttracker.command;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertSame;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.awt.Color;
+import java.io.StringWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.stream.Stream;
+
+import org.jdom2.Document;
+import org.jdom2.input.SAXBuilder;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.Arguments;
+import org.junit.jupiter.params.provider.MethodSource;
+import org.scijava.Cancelable;
+import org.scijava.Context;
+import org.scijava.app.event.StatusEvent;
+import org.scijava.command.CommandInfo;
+import org.scijava.command.CommandModule;
+import org.scijava.command.CommandService;
+import org.scijava.event.EventHandler;
+import org.scijava.event.EventService;
+import org.scijava.module.Module;
+import org.scijava.module.ModuleService;
+
+import ij.ImagePlus;
+import ij.ImageStack;
+import ij.gui.OvalRoi;
+import ij.gui.Overlay;
+import ij.gui.Roi;
+import ij.measure.ResultsTable;
+import ij.process.ByteProcessor;
+import ij.process.ColorProcessor;
+import io.github.contacttracker.core.Connectivity;
+import io.github.contacttracker.core.FrameResult;
+import io.github.contacttracker.core.Localization;
+import io.github.contacttracker.core.Method;
+import io.github.contacttracker.core.Region;
+import io.github.contacttracker.core.StackTracker;
+import io.github.contacttracker.core.TrackerParameters;
+import io.github.contacttracker.io.Calibration;
+import io.github.contacttracker.io.ImagePlusFrames;
+import io.github.contacttracker.io.OverlayPng;
+import io.github.contacttracker.io.SpotColumn;
+import io.github.contacttracker.io.SpotCsvWriter;
+
+/**
+ * The Contact Tracker command, headless through SciJava's {@link ModuleService} (what {@code CommandService},
+ * scripts and Fiji's macro bridge use), on the simulated 5-frame stack of {@link Simulated}.
+ */
+class ContactTrackerCommandTest {
+
+	private static Context context;
+
+	private static final double THRESHOLD = Simulated.TYPE.threshold();
+	private static final double R_OUT = Simulated.TYPE.rOut();
+
+	@BeforeAll
+	static void start() {
+		context = new Context();
+	}
+
+	@AfterAll
+	static void stop() {
+		context.dispose();
+	}
+
+	private static Module run(final ImagePlus imp, final Object... more) throws Exception {
+		final List<Object> inputs = new ArrayList<>(Arrays.asList("imp", imp, "threshold", THRESHOLD, "r_out", R_OUT));
+		inputs.addAll(Arrays.asList(more));
+		return Simulated.run(context, ContactTrackerCommand.class, inputs.toArray());
+	}
+
+	private static TrackerParameters params() {
+		return new TrackerParameters(THRESHOLD, R_OUT, TrackerParameters.DEFAULT_MIN_AREA, Connectivity.EIGHT,
+			TrackerParameters.DEFAULT_MIN_SECOND_AREA, Method.DEFAULT);
+	}
+
+	/** What the core finds on the image, regions kept. */
+	@SuppressWarnings({ "unchecked", "rawtypes" })
+	private static List<FrameResult> core(final ImagePlus imp, final int channel) {
+		final List frames = ImagePlusFrames.of(imp, channel).frames();
+		return new StackTracker(params(), 1).track(frames, true);
+	}
+
+	private static void assertSucceeded(final Module m) {
+		final Cancelable c = (Cancelable) m;
+		assertFalse(c.isCanceled(), () -> "cancelled: " + c.getCancelReason());
+	}
+
+	private static void assertSameTable(final ResultsTable expected, final ResultsTable actual) {
+		assertArrayEquals(expected.getHeadings(), actual.getHeadings());
+		assertEquals(expected.size(), actual.size());
+		for (final String h : expected.getHeadings())
+			for (int row = 0; row < expected.size(); row++)
+				assertEquals(expected.getValue(h, row), actual.getValue(h, row), 0, h + " row " + row);
+	}
+
+	@Test
+	void tableRowsAreTheCoreSpotsInCalibratedUnits(@TempDir final Path dir) throws Exception {
+		final ImagePlus imp = Simulated.image();
+		final Path csv = dir.resolve("spots.csv");
+		final Module m = run(imp, "csv", csv.toFile());
+		assertSucceeded(m);
+		final ResultsTable rt = (ResultsTable) m.getOutput("spots");
+		assertNotNull(rt);
+		assertEquals(SpotTables.SPOTS_TITLE, rt.getTitle());
+		assertEquals("Contact Tracker spots", rt.getTitle());
+		assertNull(m.getOutput("pairs"), "no pair table without pair_cutoff");
+		assertTrue(m.isOutputResolved("spots"), "the command shows its table itself: SciJava must not display it");
+
+		final Calibration cal = ImagePlusFrames.of(imp, 0).calibration();
+		assertEquals(Simulated.TYPE.pixelSizeMicrons(), cal.pixelWidth(), 1e-12);
+		final List<Localization> spots = StackTracker.spots(core(imp, 0));
+		assertEquals(2 * Simulated.FRAMES, spots.size(), "two particles in each frame");
+		assertEquals(spots.size(), rt.size(), "one row per spot");
+
+		final SpotColumn[] columns = SpotColumn.values();
+		final String[] keys = new String[columns.length];
+		for (int c = 0; c < columns.length; c++)
+			keys[c] = columns[c].key();
+		assertArrayEquals(keys, rt.getHeadings(), "the CSV's columns, in its order");
+		for (int id = 0; id < spots.size(); id++)
+			for (final SpotColumn c : columns)
+				assertEquals(c.value(spots.get(id), id, cal), rt.getValue(c.key(), id), 0, c.key() + " of spot " + id);
+
+		// calibrated positions of the true centres, TrackMate's convention
+		for (int id = 0; id < spots.size(); id++) {
+			final int t = (int) rt.getValue("FRAME", id);
+			assertEquals(t * Simulated.FRAME_INTERVAL, rt.getValue("POSITION_T", id), 1e-12);
+			final double x = rt.getValue("POSITION_X", id) / cal.pixelWidth(), y = rt.getValue("POSITION_Y", id) / cal
+				.pixelHeight();
+			double nearest = Double.POSITIVE_INFINITY;
+			for (final double[] c : Simulated.truth(t))
+				nearest = Math.min(nearest, Math.hypot(c[0] - x, c[1] - y));
+			assertTrue(nearest < 0.5, "spot " + id + " is " + nearest + " px from the nearest true centre");
+		}
+
+		// the CSV is the command line's, byte for byte
+		final StringWriter expected = new StringWriter();
+		SpotCsvWriter.write(expected, spots, cal);
+		assertEquals(expected.toString(), Files.readString(csv));
+
+		// frames in parallel give the same table
+		final Module parallel = run(Simulated.image(), "threads", 3, "overlay", false);
+		assertSucceeded(parallel);
+		assertSameTable(rt, (ResultsTable) parallel.getOutput("spots"));
+	}
+
+	@Test
+	void overlayRoisSitOnTheirFramesAndPixels() throws Exception {
+		final ImagePlus imp = Simulated.image();
+		final Roi mine = new OvalRoi(1, 1, 5, 5);
+		imp.setOverlay(new Overlay(mine));
+		assertSucceeded(run(imp));
+		final List<FrameResult> results = core(imp, 0);
+		final List<Localization> spots = StackTracker.spots(results);
+		final List<Region> seconds = new ArrayList<>();
+		for (final FrameResult r : results)
+			seconds.addAll(r.secondAreas());
+
+		final Overlay overlay = imp.getOverlay();
+		assertNotNull(overlay);
+		assertTrue(overlay.contains(mine), "the user's own overlay elements stay");
+		assertEquals(1 + 4 * spots.size(), overlay.size(), "disc, outline, first-pass dot and final cross per spot");
+		final Map<String, Roi> byKey = new HashMap<>();
+		for (final Roi roi : overlay.toArray())
+			if (SpotOverlay.kind(roi) != null) byKey.put(SpotOverlay.spotId(roi) + " " + SpotOverlay.kind(roi), roi);
+
+		for (int id = 0; id < spots.size(); id++) {
+			final Localization s = spots.get(id);
+			final Roi cross = byKey.get(id + " FINAL"), dot = byKey.get(id + " FIRST_PASS");
+			final Roi disc = byKey.get(id + " DISC"), outline = byKey.get(id + " SECOND_AREA");
+			for (final Roi roi : new Roi[] { cross, dot, disc, outline }) {
+				assertNotNull(roi, "spot " + id);
+				assertEquals(s.frame() + 1, roi.getPosition(), "spot " + id + " " + roi.getName() + " on its frame");
+			}
+			// ImageJ puts pixel (0,0)'s centre at (0.5, 0.5), TrackMate at (0, 0)
+			assertEquals(s.x() + 0.5, cross.getFloatPolygon().xpoints[0], 1e-4);
+			assertEquals(s.y() + 0.5, cross.getFloatPolygon().ypoints[0], 1e-4);
+			assertEquals(s.firstX() + 0.5, dot.getFloatPolygon().xpoints[0], 1e-4);
+			assertEquals(s.firstY() + 0.5, dot.getFloatPolygon().ypoints[0], 1e-4);
+			final java.awt.geom.Rectangle2D.Double b = disc.getFloatBounds();
+			assertEquals(s.firstX() + 0.5 - R_OUT, b.x, 1e-9);
+			assertEquals(s.firstY() + 0.5 - R_OUT, b.y, 1e-9);
+			assertEquals(2 * R_OUT, b.width, 1e-9);
+			assertEquals(2 * R_OUT, b.height, 1e-9);
+			assertOutlines(seconds.get(id), outline);
+
+			assertEquals(OverlayPng.FINAL, cross.getStrokeColor());
+			assertEquals(OverlayPng.FIRST_PASS, dot.getStrokeColor());
+			assertEquals(OverlayPng.SECOND_AREA, outline.getStrokeColor());
+			assertEquals(s.isFlagged() ? OverlayPng.FLAGGED : OverlayPng.DISC, disc.getStrokeColor());
+		}
+
+		// a second run replaces our ROIs and keeps the user's
+		assertSucceeded(run(imp));
+		assertEquals(1 + 4 * spots.size(), imp.getOverlay().size());
+		assertTrue(imp.getOverlay().contains(mine));
+	}
+
+	/** The outline covers exactly the region's pixels. */
+	private static void assertOutlines(final Region region, final Roi outline) {
+		for (int y = region.minY() - 1; y <= region.maxY() + 1; y++)
+			for (int x = region.minX() - 1; x <= region.maxX() + 1; x++)
+				assertEquals(region.contains(x, y), outline.containsPoint(x + 0.5, y + 0.5), "pixel " + x + "," + y);
+	}
+
+	@Test
+	void hyperstackChannelAndPlainStack() throws Exception {
+		final ImagePlus single = Simulated.image();
+		final ResultsTable reference = (ResultsTable) run(single, "overlay", false).getOutput("spots");
+
+		// two channels, the particles in channel 2: ROIs get hyperstack positions (every channel, frame t)
+		final ImageStack stack = new ImageStack(single.getWidth(), single.getHeight());
+		for (int t = 1; t <= Simulated.FRAMES; t++) {
+			stack.addSlice(new ByteProcessor(single.getWidth(), single.getHeight()));
+			stack.addSlice(single.getStack().getProcessor(t));
+		}
+		final ImagePlus twoChannels = new ImagePlus("two channels", stack);
+		twoChannels.setDimensions(2, 1, Simulated.FRAMES);
+		twoChannels.setOpenAsHyperStack(true);
+		twoChannels.setCalibration(single.getCalibration());
+		final Module m = run(twoChannels, "channel", 2);
+		assertSucceeded(m);
+		assertSameTable(reference, (ResultsTable) m.getOutput("spots"));
+		for (final Roi roi : twoChannels.getOverlay().toArray()) {
+			final int id = SpotOverlay.spotId(roi);
+			assertEquals(0, roi.getCPosition(), "drawn on every channel");
+			assertEquals((int) reference.getValue("FRAME", id) + 1, roi.getTPosition());
+		}
+
+		// a plain stack of 5 slices is a time series of 5 frames
+		final ImagePlus plain = new ImagePlus("plain", single.getStack());
+		plain.setCalibration(single.getCalibration());
+		assertEquals(Simulated.FRAMES, plain.getNSlices());
+		final Module p = run(plain);
+		assertSucceeded(p);
+		final ResultsTable rt = (ResultsTable) p.getOutput("spots");
+		assertArrayEquals(reference.getColumn("FRAME"), rt.getColumn("FRAME"));
+		assertArrayEquals(reference.getColumn("POSITION_X"), rt.getColumn("POSITION_X"));
+		for (final Roi roi : plain.getOverlay().toArray())
+			assertEquals((int) rt.getValue("FRAME", SpotOverlay.spotId(roi)) + 1, roi.getPosition());
+	}
+
+	@Test
+	void stringValuesConvertAsAMacroPassesThem() throws Exception {
+		final ImagePlus imp = Simulated.image();
+		final ResultsTable numeric = (ResultsTable) run(Simulated.image(), "overlay", false).getOutput("spots");
+		final Module m = Simulated.run(context, ContactTrackerCommand.class, "imp", imp, "threshold", Double.toString(
+			THRESHOLD), "r_out", Double.toString(R_OUT), "min_area", "20", "min_second_area", "50", "connectivity", "8",
+			"method", Method.DEFAULT.name(), "channel", "1", "pair_cutoff", "0", "threads", "2", "overlay", "false", "table", "false");
+		assertSucceeded(m);
+		assertSameTable(numeric, (ResultsTable) m.getOutput("spots"));
+		assertNull(imp.getOverlay(), "overlay=false leaves the image alone");
+
+		// and they do reach the core: first-pass centres differ from the paper's
+		final Module first = Simulated.run(context, ContactTrackerCommand.class, "imp", Simulated.image(), "threshold",
+			Double.toString(THRESHOLD), "r_out", Double.toString(R_OUT), "method", "first", "overlay", "false");
+		assertSucceeded(first);
+		final ResultsTable f = (ResultsTable) first.getOutput("spots");
+		assertArrayEquals(f.getColumn("FIRST_PASS_X"), f.getColumn("POSITION_X"));
+		assertEquals(1, f.getValue("ITERATIONS", 0));
+	}
+
+	@Test
+	void commandServiceReturnsTheModuleAndItsOutputs() throws Exception {
+		// what scripts do (see scripts/contact-tracker-batch.groovy)
+		final CommandModule m = context.service(CommandService.class).run(ContactTrackerCommand.class, true, "imp",
+			Simulated.image(), "threshold", THRESHOLD, "r_out", R_OUT, "table", false).get();
+		assertSucceeded(m);
+		assertEquals(2 * Simulated.FRAMES, ((ResultsTable) m.getOutput("spots")).size());
+	}
+
+	static Stream<Arguments> badInputs() {
+		final ImageStack zt = new ImageStack(32, 32);
+		for (int i = 0; i < 4; i++)
+			zt.addSlice(new ByteProcessor(32, 32));
+		final ImagePlus zAndT = new ImagePlus("zt", zt);
+		zAndT.setDimensions(1, 2, 2);
+		return Stream.of(
+			Arguments.of(new ImagePlus("rgb", new ColorProcessor(32, 32)), new Object[0],
+				"'rgb' is an RGB image: convert it to 8-bit, 16-bit or 32-bit grey"),
+			Arguments.of(zAndT, new Object[0],
+				"'zt' has 2 Z slices and 2 time frames: the method is 2D; make a projection or pick one slice first"),
+			Arguments.of(Simulated.image(), new Object[] { "r_out", 0.0 }, "r_out must be a positive number of pixels, not 0.0"),
+			Arguments.of(Simulated.image(), new Object[] { "r_out", "-3" }, "r_out must be a positive number of pixels, not -3.0"),
+			Arguments.of(Simulated.image(), new Object[] { "method", "best" }, "method must be one of " + methodKeys() +
+				", not 'best'"),
+			Arguments.of(Simulated.image(), new Object[] { "connectivity", "6" }, "connectivity must be 4 or 8, not '6'"),
+			Arguments.of(Simulated.image(), new Object[] { "channel", 2 },
+				"channel 2 does not exist: 'simulated pair' has 1 channel"),
+			Arguments.of(Simulated.image(), new Object[] { "threshold", 1000.0 }, "threshold 1000 is outside the data range"),
+			Arguments.of(Simulated.image(), new Object[] { "min_area", 0 }, "min_area must be at least 1 pixel, not 0"),
+			Arguments.of(Simulated.image(), new Object[] { "csv", new java.io.File("/no/such/folder/x.csv") },
+				"cannot write csv /no/such/folder/x.csv: folder /no/such/folder does not exist"),
+			Arguments.of(null, new Object[0], "'imp' is required but unset"));
+	}
+
+	/** @return every method's key, as Method.parse lists them */
+	private static String methodKeys() {
+		final List<String> keys = new ArrayList<>();
+		for (final Method m : Method.values())
+			keys.add(m.key());
+		return String.join(", ", keys);
+	}
+
+	@ParameterizedTest
+	@MethodSource("badInputs")
+	void badInputsCancelWithAClearMessage(final ImagePlus imp, final Object[] more, final String message)
+		throws Exception
+	{
+		final Module m = run(imp, more);
+		final Cancelable c = (Cancelable) m;
+		assertTrue(c.isCanceled(), "should have been refused");
+		assertNotNull(c.getCancelReason());
+		assertTrue(c.getCancelReason().startsWith(message), () -> "reason: " + c.getCancelReason());
+		assertFalse(c.getCancelReason().contains("\n"), "one line");
+		assertFalse(c.getCancelReason().contains("Exception"), "no stack trace or exception name");
+		assertNull(m.getOutput("spots"));
+		if (imp != null) assertNull(imp.getOverlay());
+	}
+
+	@Test
+	void pairTableListsCloseSpotsOfEachFrameInCalibratedUnits() throws Exception {
+		final double pw = Simulated.TYPE.pixelSizeMicrons();
+		final double cutoff = 1.2 * Simulated.SEPARATION * Simulated.TYPE.diameterPx() * pw;
+		final Module m = run(Simulated.image(), "pair_cutoff", cutoff, "overlay", false);
+		assertSucceeded(m);
+		final ResultsTable spots = (ResultsTable) m.getOutput("spots");
+		final ResultsTable pairs = (ResultsTable) m.getOutput("pairs");
+		assertEquals(SpotTables.PAIRS_TITLE, pairs.getTitle());
+		assertEquals(Simulated.FRAMES, pairs.size(), "the pair of each frame");
+		for (int row = 0; row < pairs.size(); row++) {
+			final int a = (int) pairs.getValue("SPOT_A", row), b = (int) pairs.getValue("SPOT_B", row);
+			assertEquals(row, (int) pairs.getValue("FRAME", row));
+			assertEquals(row, (int) spots.getValue("FRAME", a));
+			assertEquals(row, (int) spots.getValue("FRAME", b));
+			final double d = Math.hypot(spots.getValue("POSITION_X", a) - spots.getValue("POSITION_X", b), spots
+				.getValue("POSITION_Y", a) - spots.getValue("POSITION_Y", b));
+			assertEquals(d, pairs.getValue("DISTANCE", row), 1e-9);
+			assertEquals(Simulated.SEPARATION * Simulated.TYPE.diameterPx() * pw, d, 0.1 * pw, "true distance");
+		}
+		// a cutoff below the pair distance lists none
+		final Module none = run(Simulated.image(), "pair_cutoff", 0.5 * cutoff, "overlay", false);
+		assertEquals(0, ((ResultsTable) none.getOutput("pairs")).size());
+	}
+
+	@Test
+	void trackMateXmlIsWrittenWhenAsked(@TempDir final Path dir) throws Exception {
+		final Path xml = dir.resolve("spots.xml");
+		final Module m = run(Simulated.image(), "trackmate_xml", xml.toFile(), "overlay", false);
+		assertSucceeded(m);
+		final Document doc = new SAXBuilder().build(xml.toFile());
+		assertEquals("TrackMate", doc.getRootElement().getName());
+		assertEquals(Integer.toString(((ResultsTable) m.getOutput("spots")).size()), doc.getRootElement().getChild(
+			"Model").getChild("AllSpots").getAttributeValue("nspots"));
+	}
+
+	/** Cancels the module it watches at its first progress report (SciJava delivers status events later). */
+	public static final class CancelAtFirstFrame {
+		final AtomicInteger reports = new AtomicInteger();
+		volatile Cancelable module;
+
+		@EventHandler
+		public void onEvent(final StatusEvent e) {
+			if (e.getProgressMaximum() > 0 && e.getProgressValue() >= 1 && module != null && reports
+				.getAndIncrement() == 0) module.cancel("stop");
+		}
+	}
+
+	@Test
+	void canBeCancelledBetweenFrames() throws Exception {
+		// a long movie (the 5 frames over and over, sharing their pixels) so that the cancel arrives in time
+		final int frames = 60;
+		final ImagePlus five = Simulated.image();
+		final ImageStack stack = new ImageStack(five.getWidth(), five.getHeight());
+		for (int t = 0; t < frames; t++)
+			stack.addSlice(five.getStack().getProcessor(1 + t % Simulated.FRAMES));
+		final ImagePlus imp = new ImagePlus("long", stack);
+		imp.setDimensions(1, 1, frames);
+
+		final CommandInfo info = context.service(CommandService.class).getCommand(ContactTrackerCommand.class);
+		final ModuleService modules = context.service(ModuleService.class);
+		final Module module = modules.createModule(info);
+		final CancelAtFirstFrame watcher = new CancelAtFirstFrame();
+		watcher.module = (Cancelable) module;
+		final EventService events = context.service(EventService.class);
+		final List<org.scijava.event.EventSubscriber<?>> subscribers = events.subscribe(watcher);
+		final Module m;
+		try {
+			m = modules.run(module, true, "imp", imp, "threshold", THRESHOLD, "r_out", R_OUT, "threads", 1).get();
+		}
+		finally {
+			events.unsubscribe(subscribers);
+		}
+		assertSame(module, m);
+		final String reason = ((Cancelable) m).getCancelReason();
+		assertTrue(((Cancelable) m).isCanceled());
+		final java.util.regex.Matcher done = java.util.regex.Pattern.compile("cancelled after (\\d+) frames").matcher(
+			reason);
+		assertTrue(done.matches(), reason);
+		assertTrue(Integer.parseInt(done.group(1)) < frames, reason);
+		assertNull(m.getOutput("spots"));
+		assertNull(imp.getOverlay());
+
+		// cancelled before it starts: nothing is done, the first reason stays
+		final Module early = modules.createModule(info);
+		((Cancelable) early).cancel("user");
+		final ImagePlus untouched = Simulated.image();
+		modules.run(early, true, "imp", untouched, "threshold", THRESHOLD, "r_out", R_OUT).get();
+		assertTrue(((Cancelable) early).isCanceled());
+		assertEquals("user", ((Cancelable) early).getCancelReason());
+		assertNull(early.getOutput("spots"));
+		assertNull(untouched.getOverlay());
+	}
+
+	@Test
+	void menuPathsAndParameters() throws Exception {
+		final CommandService commands = context.service(CommandService.class);
+		assertEquals("Plugins > Tracking > Contact Tracker", commands.getCommand(ContactTrackerCommand.class)
+			.getMenuPath().getMenuString());
+		assertEquals("Plugins > Tracking > Contact Tracker Profile", commands.getCommand(
+			ContactTrackerProfileCommand.class).getMenuPath().getMenuString());
+		assertTrue(commands.getCommand(ContactTrackerCommand.class).canRunHeadless());
+
+		final Module m = context.service(ModuleService.class).createModule(commands.getCommand(
+			ContactTrackerCommand.class));
+		// every parameter input is left out of the user's preferences
+		m.getInfo().inputs().forEach(item -> {
+			if (!org.scijava.service.Service.class.isAssignableFrom(item.getType()) && item.getType() != Context.class)
+				assertFalse(item.isPersisted(), item.getName() + " persists");
+		});
+	}
+
+	@Test
+	void flaggedSpotsStandOut() {
+		final Localization ok = new Localization(0, 10, 10, 10, 10, 50, 50, 1, 4, 0, 2, 0.01, 0.01);
+		final Localization flagged = new Localization(0, 30, 10, 30.5, 10, 50, 10, 1, 4,
+			io.github.contacttracker.core.Flag.FELL_BACK.bit(), 1, 0.01, 0.01);
+		final List<Roi> rois = SpotOverlay.rois(List.of(new FrameResult(List.of(ok, flagged), List.of(), List.of(), 1,
+			0)), 8, (roi, frame) -> {});
+		assertEquals(6, rois.size(), "no outline without regions");
+		final Roi okDisc = rois.get(0), badDisc = rois.get(3);
+		assertEquals(SpotOverlay.Kind.DISC, SpotOverlay.kind(badDisc));
+		assertEquals(OverlayPng.DISC, okDisc.getStrokeColor());
+		assertEquals(OverlayPng.FLAGGED, badDisc.getStrokeColor());
+		assertTrue(badDisc.getStrokeWidth() > okDisc.getStrokeWidth());
+		assertTrue(badDisc.getName().contains("fell back to first pass"), badDisc.getName());
+		assertEquals(Color.MAGENTA, OverlayPng.FLAGGED);
+	}
+}

@@ -1,0 +1,178 @@
+package io.github.contacttracker.command;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+import java.util.SplittableRandom;
+import java.util.stream.Stream;
+
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.Arguments;
+import org.junit.jupiter.params.provider.MethodSource;
+import org.scijava.Cancelable;
+import org.scijava.Context;
+import org.scijava.module.Module;
+
+import ij.ImagePlus;
+import ij.gui.Plot;
+import ij.gui.PointRoi;
+import io.github.contacttracker.core.ProfileAnalysis;
+import io.github.contacttracker.io.Calibration;
+import io.github.contacttracker.io.ImageFiles;
+import io.github.contacttracker.sim.GaussianBesselProfile;
+import io.github.contacttracker.sim.NoiseModel;
+import io.github.contacttracker.sim.ParticleType;
+import io.github.contacttracker.sim.QuantisedFrame;
+import io.github.contacttracker.sim.RadialProfile;
+import io.github.contacttracker.sim.SimulatedStack;
+import net.imglib2.img.array.ArrayImg;
+
+/**
+ * The parameter helper on a simulated isolated particle of known profile: its suggestions land within 2 px
+ * ({@code r_out}) and within the noise margin (threshold) of the same rule applied to the true profile.
+ * <p>
+ * The particles are defined here (not taken from the paper presets, which may be retuned): a short-range one
+ * whose dark first ring stays below the background at contact, and a long-range one whose bright second ring
+ * lies beyond {@code D/2} and so sets the threshold.
+ */
+class ProfileHelperTest {
+
+	/** Short range, the 5.53 um kind: D = 65 px. */
+	static final ParticleType SHORT = new ParticleType("short range", 6.5, 100, new GaussianBesselProfile(120, 0.1,
+		18), 60, 100, 52, NoiseModel.uniform(5));
+	/** Long range, the 2.06 um kind: D = 56 px, second bright ring at 44 px. */
+	static final ParticleType LONG = new ParticleType("long range", 5.6, 100, new GaussianBesselProfile(100, 0.16, 40),
+		80, 115, 80, NoiseModel.uniform(5));
+
+	private static Context context;
+
+	@BeforeAll
+	static void start() {
+		context = new Context();
+	}
+
+	@AfterAll
+	static void stop() {
+		context.dispose();
+	}
+
+	/** One particle at (cx, cy) in a frame with room for 2.5 diameters around it. */
+	record Scene(ParticleType type, ArrayImg<?, ?> frame, double cx, double cy) {}
+
+	static Scene scene(final ParticleType type, final long seed) {
+		final int size = (int) Math.ceil(2 * ProfileAnalysis.AUTO_RADIUS_DIAMETERS * type.diameterPx()) + 12;
+		final double cx = size / 2.0 + 0.31, cy = size / 2.0 - 0.27;
+		final QuantisedFrame<?> q = SimulatedStack.renderFrame(type, List.of(new double[] { cx, cy }), size, size, type
+			.noise(), new SplittableRandom(seed), 8);
+		return new Scene(type, q.image(), cx, cy);
+	}
+
+	/** The rule on the true profile: pixel noise = the noise model's plus rounding to integers. */
+	static double trueSigma(final ParticleType type) {
+		return Math.sqrt(type.noise().sigma() * type.noise().sigma() + 1.0 / 12);
+	}
+
+	static double trueROut(final ParticleType type) {
+		return type.profile().reach(trueSigma(type)) + ProfileAnalysis.R_OUT_MARGIN_PX;
+	}
+
+	static double trueThreshold(final ParticleType type) {
+		final RadialProfile p = type.profile();
+		final double reach = p.reach(trueSigma(type));
+		double brightest = 0;
+		for (double r = type.diameterPx() / 2; r <= reach; r += 0.01)
+			brightest = Math.max(brightest, p.value(r));
+		return type.background() + 2 * brightest + ProfileAnalysis.THRESHOLD_MARGIN_SIGMAS * trueSigma(type);
+	}
+
+	static Stream<Arguments> particles() {
+		return Stream.of(Arguments.of(SHORT, 11L), Arguments.of(LONG, 12L));
+	}
+
+	@ParameterizedTest
+	@MethodSource("particles")
+	void suggestionsMatchTheRuleOnTheTrueProfile(final ParticleType type, final long seed) {
+		final Scene s = scene(type, seed);
+		// the user clicks a couple of pixels off the centre
+		final ProfileAnalysis.Result r = ProfileAnalysis.analyse(rai(s), Math.round(s.cx() + 2), Math.round(s.cy() - 1),
+			type.diameterPx(), 0);
+		final double sigma = trueSigma(type);
+		assertTrue(r.refined());
+		assertEquals(s.cx(), r.x(), 0.1, "centre x");
+		assertEquals(s.cy(), r.y(), 0.1, "centre y");
+		assertEquals(type.background(), r.background(), 0.5, "background");
+		assertEquals(sigma, r.noise(), 0.1 * sigma, "noise");
+		assertEquals(trueROut(type), r.rOut(), 2, "r_out within 2 px");
+		assertEquals(trueThreshold(type), r.threshold(), ProfileAnalysis.THRESHOLD_MARGIN_SIGMAS * sigma,
+			"threshold within the noise margin");
+		// the measured profile is the true one
+		for (int k = 1; k < r.radius().length; k += 7)
+			assertEquals(type.background() + type.profile().value(r.radius()[k]), r.mean()[k], 1.5, "ring " + k);
+	}
+
+	@Test
+	void theLongRangeRingSetsTheThresholdAndIsWarnedAbout() {
+		final ProfileAnalysis.Result r = atCentre(scene(LONG, 3L));
+		assertTrue(r.bridge() > LONG.background() + 20, "the second ring beyond D/2 is bright: " + r.bridge());
+		assertTrue(r.rOut() > LONG.diameterPx());
+		assertTrue(r.warnings().stream().anyMatch(w -> w.contains("r_out <= D")), r.warnings().toString());
+		final ProfileAnalysis.Result s = atCentre(scene(SHORT, 3L));
+		assertEquals(List.of(), s.warnings());
+		assertTrue(s.activeRadius() > 0.25 * SHORT.diameterPx(), "a usable active area: " + s.activeRadius());
+	}
+
+	@Test
+	void badInputsAreRefused() {
+		final Scene s = scene(SHORT, 5L);
+		assertEquals("diameter must be the particle diameter in pixels (> 0), not 0", assertThrows(
+			IllegalArgumentException.class, () -> ProfileAnalysis.analyse(rai(s), s.cx(), s.cy(), 0, 0)).getMessage());
+		assertTrue(assertThrows(IllegalArgumentException.class, () -> ProfileAnalysis.analyse(rai(s), -5, 3, 65, 0))
+			.getMessage().contains("is outside the image"));
+		// a point on the background
+		assertTrue(assertThrows(IllegalArgumentException.class, () -> ProfileAnalysis.analyse(rai(s), 3, 3, 65, 0))
+			.getMessage().startsWith("no bright particle at (3, 3)"));
+	}
+
+	@Test
+	void theCommandPlotsAndReturnsTheRoundedSuggestions() throws Exception {
+		final Scene s = scene(SHORT, 7L);
+		final ImagePlus imp = ImageFiles.timeSeries("one particle", List.of(s.frame()), Calibration.PIXELS);
+		imp.setRoi(new PointRoi((int) Math.round(s.cx()) + 1, (int) Math.round(s.cy())));
+		final Module m = Simulated.run(context, ContactTrackerProfileCommand.class, "imp", imp, "diameter", Double
+			.toString(SHORT.diameterPx()), "max_radius", "0", "plot", "false");
+		assertFalse(((Cancelable) m).isCanceled(), () -> ((Cancelable) m).getCancelReason());
+		final ProfileAnalysis.Result r = ProfileAnalysis.analyse(rai(s), Math.round(s.cx()) + 1, Math.round(s.cy()),
+			SHORT.diameterPx(), 0);
+		assertEquals(Math.ceil(r.threshold()), (double) m.getOutput("suggested_threshold"), 1e-9);
+		assertEquals(Math.ceil(r.rOut()), (double) m.getOutput("suggested_r_out"), 1e-9);
+		assertEquals(r.background(), (double) m.getOutput("background"), 1e-9);
+		assertEquals(r.noise(), (double) m.getOutput("noise"), 1e-9);
+		assertEquals(s.cx(), (double) m.getOutput("centre_x"), 0.1);
+		final Plot plot = (Plot) m.getOutput("profile");
+		assertNotNull(plot);
+		assertNotNull(plot.getProcessor(), "the plot renders headless");
+
+		// without a point: a clear message
+		imp.deleteRoi();
+		final Module none = Simulated.run(context, ContactTrackerProfileCommand.class, "imp", imp, "diameter", 65.0);
+		assertTrue(((Cancelable) none).isCanceled());
+		assertTrue(((Cancelable) none).getCancelReason().startsWith("no point on the image: click on an isolated " +
+			"particle with the point tool"), ((Cancelable) none).getCancelReason());
+	}
+
+	private static ProfileAnalysis.Result atCentre(final Scene s) {
+		return ProfileAnalysis.analyse(rai(s), Math.round(s.cx()), Math.round(s.cy()), s.type().diameterPx(), 0);
+	}
+
+	@SuppressWarnings({ "unchecked", "rawtypes" })
+	private static net.imglib2.RandomAccessibleInterval rai(final Scene s) {
+		return (net.imglib2.RandomAccessibleInterval) s.frame();
+	}
+}

@@ -1,0 +1,50 @@
+package io.github.contacttracker.command;
+
+import java.util.List;
+
+import org.scijava.Context;
+import org.scijava.command.CommandService;
+import org.scijava.module.Module;
+import org.scijava.module.ModuleService;
+
+import ij.ImagePlus;
+import io.github.contacttracker.io.Calibration;
+import io.github.contacttracker.io.ImageFiles;
+import io.github.contacttracker.sim.PaperParticles;
+import io.github.contacttracker.sim.ParticleType;
+import io.github.contacttracker.sim.Scenario;
+import io.github.contacttracker.sim.SimulatedStack;
+
+/** The simulated 5-frame stack the command tests share, and a headless way to run commands. */
+final class Simulated {
+
+	static final ParticleType TYPE = PaperParticles.silica553();
+	static final int FRAMES = 5;
+	/** Centre distance of the pair, in diameters: apart enough that every frame has exactly two spots. */
+	static final double SEPARATION = 1.5;
+	static final double FRAME_INTERVAL = 0.5;
+	static final SimulatedStack<?> STACK = SimulatedStack.simulate(TYPE, Scenario.PAIR, SEPARATION, FRAMES, 20260415L,
+		8);
+	static final Calibration CALIBRATION = new Calibration(TYPE.pixelSizeMicrons(), TYPE.pixelSizeMicrons(), "micron",
+		FRAME_INTERVAL, "s");
+
+	private Simulated() {}
+
+	/** @return a fresh calibrated time series (T = 5) sharing the simulated pixels */
+	static ImagePlus image() {
+		return ImageFiles.timeSeries("simulated pair", STACK.frames(), CALIBRATION);
+	}
+
+	/** @return the true centres of frame {@code t} (px) */
+	static List<double[]> truth(final int t) {
+		return STACK.truth().get(t);
+	}
+
+	/** Runs a command headless, with pre- and postprocessing, as scripts and macros do. */
+	static Module run(final Context context, final Class<? extends org.scijava.command.Command> command,
+		final Object... inputs) throws Exception
+	{
+		final ModuleService modules = context.service(ModuleService.class);
+		return modules.run(context.service(CommandService.class).getCommand(command), true, inputs).get();
+	}
+}
