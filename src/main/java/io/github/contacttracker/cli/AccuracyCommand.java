@@ -29,7 +29,6 @@ import io.github.contacttracker.sim.SimulatedStack;
  */
 final class AccuracyCommand {
 
-	static final double[] SEPARATIONS = { 2.0, 1.6, 1.4, 1.3, 1.2, 1.1, 1.05, 1.0 };
 	private static final Set<String> OPTIONS = Set.of("reps", "threads", "csv", "particle", "scenario", "methods",
 		"separations");
 
@@ -104,7 +103,7 @@ final class AccuracyCommand {
 	}
 
 	private static double[] parseList(final String text) {
-		if (text == null) return SEPARATIONS;
+		if (text == null) return DistanceStudy.SEPARATIONS;
 		final String[] parts = text.split(",");
 		final double[] v = new double[parts.length];
 		for (int i = 0; i < parts.length; i++) {

@@ -22,11 +22,11 @@ import io.github.contacttracker.sim.SimulatedStack;
 
 /**
  * {@code demo}: the paper's two scenarios for 5.53 um particles, from well apart to contact, tracked with the
- * first pass and the paper's method; prints the distance errors and writes an overlay PNG at contact.
+ * first pass, the paper's method and the default method; prints the distance errors and writes an overlay PNG
+ * at contact.
  */
 final class DemoCommand {
 
-	static final double[] SEPARATIONS = { 2.0, 1.6, 1.4, 1.3, 1.2, 1.1, 1.05, 1.0 };
 	private static final Set<String> OPTIONS = Set.of("reps", "out-dir", "threads");
 
 	private final PrintStream out;
@@ -51,15 +51,17 @@ final class DemoCommand {
 				"%d images per separation, noise %s%n", scenario == Scenario.PAIR ? "Two" : "Three", type.name(), type
 					.pixelSizeNm(), type.diameterPx(), type.threshold(), type.rOut(), reps, type.noise());
 			out.println("Error of the measured distance of the pair (measured - true), mean and standard deviation in nm:");
-			out.println("  r/D  |  first pass: mean    std |  paper:  mean    std | lost | fell back");
-			for (int i = 0; i < SEPARATIONS.length; i++) {
-				final SimulatedStack<?> stack = study.simulate(SEPARATIONS[i], reps, 1000L * scenario.ordinal() + i);
-				final List<DistanceError> e = study.measure(stack, List.of(Method.FIRST, Method.PAPER));
-				final DistanceError first = e.get(0), paper = e.get(1);
-				out.printf(Locale.ROOT, "  %4.2f | %19.2f %6.2f | %13.2f %6.2f | %4d | %4d%n", SEPARATIONS[i],
-					first.meanErrorNm(), first.stdNm(), paper.meanErrorNm(), paper.stdNm(), first.failures() + paper
-						.failures(), paper.fallbacks());
-				if (SEPARATIONS[i] == 1.0) panels.add(panel(study, stack, scenario));
+			out.printf(Locale.ROOT, "  r/D  |  first pass: mean    std |  paper:  mean    std | %6s:  mean    std | lost " +
+				"| paper fell back%n", Method.DEFAULT.key());
+			for (int i = 0; i < DistanceStudy.SEPARATIONS.length; i++) {
+				final SimulatedStack<?> stack = study.simulate(DistanceStudy.SEPARATIONS[i], reps, 1000L * scenario.ordinal() + i);
+				final List<DistanceError> e = study.measure(stack, List.of(Method.FIRST, Method.PAPER, Method.DEFAULT));
+				final DistanceError first = e.get(0), paper = e.get(1), best = e.get(2);
+				out.printf(Locale.ROOT, "  %4.2f | %19.2f %6.2f | %13.2f %6.2f | %14.2f %6.2f | %4d | %4d%n",
+					DistanceStudy.SEPARATIONS[i], first.meanErrorNm(), first.stdNm(), paper.meanErrorNm(), paper.stdNm(), best
+						.meanErrorNm(), best.stdNm(), first.failures() + paper.failures() + best.failures(), paper
+							.fallbacks());
+				if (DistanceStudy.SEPARATIONS[i] == 1.0) panels.add(panel(study, stack, scenario));
 			}
 		}
 		final Path png = dir.resolve("contact-tracker-demo.png");
@@ -77,6 +79,6 @@ final class DemoCommand {
 		final FrameResult r = new ContactTracker(study.parameters()).analyse((net.imglib2.RandomAccessibleInterval) stack
 			.frames().get(0), 0);
 		return new OverlayPng.Panel(stack.frames().get(0), r, study.parameters().rOut(), scenario.name().toLowerCase(
-			Locale.ROOT) + " at contact, paper's method");
+			Locale.ROOT) + " at contact, method " + study.parameters().method().key());
 	}
 }

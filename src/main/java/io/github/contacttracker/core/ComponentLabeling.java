@@ -46,18 +46,10 @@ public final class ComponentLabeling {
 		final RunList runs = new RunList();
 		for (int y = 0; y < h; y++) {
 			ra.setPosition(mask.min(1) + y, 1);
-			int start = -1;
-			for (int x = 0; x < w; x++) {
+			runs.addWhere(y, 0, w - 1, x -> {
 				ra.setPosition(mask.min(0) + x, 0);
-				if (ra.get().get()) {
-					if (start < 0) start = x;
-				}
-				else if (start >= 0) {
-					runs.add(y, start, x - 1);
-					start = -1;
-				}
-			}
-			if (start >= 0) runs.add(y, start, w - 1);
+				return ra.get().get();
+			});
 		}
 		return translate(label(runs, connectivity), mask.min(0), mask.min(1));
 	}

@@ -324,20 +324,9 @@ public final class ContactTracker {
 		final RunList runs = new RunList();
 		for (int r = 0; r < region.runCount(); r++) {
 			final int y = region.runY(r);
-			int start = -1;
-			for (int x = region.runStart(r); x <= region.runEnd(r); x++) {
-				if (outside(x, y, near, cx, cy, r2)) {
-					if (start < 0) start = x;
-				}
-				else if (start >= 0) {
-					runs.add(y, start, x - 1);
-					start = -1;
-				}
-			}
-			if (start >= 0) runs.add(y, start, region.runEnd(r));
+			runs.addWhere(y, region.runStart(r), region.runEnd(r), x -> outside(x, y, near, cx, cy, r2));
 		}
-		return new Region(Arrays.copyOf(runs.y, runs.size), Arrays.copyOf(runs.x0, runs.size),
-			Arrays.copyOf(runs.x1, runs.size));
+		return runs.toRegion();
 	}
 
 	/** Flags spots at the border and components that look like several particles merged. */

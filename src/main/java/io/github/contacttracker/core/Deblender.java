@@ -83,7 +83,6 @@ final class Deblender {
 			final int a = Math.max(0, (int) Math.ceil(cx - half)), b = Math.min(w - 1, (int) Math.floor(cx + half));
 			if (a <= b) runs.add(y, a, b);
 		}
-		return new Region(java.util.Arrays.copyOf(runs.y, runs.size), java.util.Arrays.copyOf(runs.x0, runs.size),
-			java.util.Arrays.copyOf(runs.x1, runs.size));
+		return runs.toRegion();
 	}
 }

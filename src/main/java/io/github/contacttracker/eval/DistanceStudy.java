@@ -19,6 +19,9 @@ import io.github.contacttracker.sim.SimulatedStack;
  */
 public final class DistanceStudy {
 
+	/** The separations (in diameters) of the paper's protocol, from well apart down to contact. */
+	public static final double[] SEPARATIONS = { 2.0, 1.6, 1.4, 1.3, 1.2, 1.1, 1.05, 1.0 };
+
 	private final ParticleType type;
 	private final Scenario scenario;
 	private final TrackerParameters base;
