@@ -129,6 +129,18 @@ public final class ProfileEstimator {
 		}
 	}
 
+	/** Adds what {@code other} (of the same radius) has accumulated, so frames can be measured in parallel. */
+	public void merge(final ProfileEstimator other) {
+		if (other.count != count) throw new IllegalArgumentException("profile radii differ");
+		for (int i = 0; i <= count; i++) {
+			atb[i] += other.atb[i];
+			for (int j = 0; j <= count; j++)
+				ata[i][j] += other.ata[i][j];
+		}
+		samples += other.samples;
+		profileSamples += other.profileSamples;
+	}
+
 	/**
 	 * @return the profile
 	 * @throws IllegalStateException when the data cannot determine it

@@ -57,8 +57,8 @@ public final class StackTracker {
 	 * @param count number of frames
 	 * @param frame supplies frame {@code t}, 2D
 	 * @param keepRegions whether to keep the active and second areas (for overlays; costs memory)
-	 * @param listener progress, or null (for deblend and fit the stack is passed over three times, and the
-	 *        progress counts all three)
+	 * @param listener progress, or null (for deblend and fit the progress also counts the iterative pass over
+	 *        all frames and the refinement of the frames the profile is measured on)
 	 * @param cancelled polled between frames; when it turns true the run stops with a
 	 *        {@link CancellationException}
 	 * @return one result per frame, in frame order
@@ -69,58 +69,112 @@ public final class StackTracker {
 		final ProgressListener listener, final BooleanSupplier cancelled)
 	{
 		final TrackerParameters params = tracker.parameters();
+		final int[] all = range(count);
 		if (!params.method().needsProfile() || count == 0)
-			return pass(tracker, null, count, frame, keepRegions, listener, cancelled, 0, count);
-		// deblend and fit: iterative centres first, then the profile measured over the stack (re-measured once
-		// around the refined centres), then the method with that profile.
-		final int total = count * (1 + PROFILE_ROUNDS);
-		List<FrameResult> results = pass(new ContactTracker(params.withMethod(Method.ITERATIVE)), null, count, frame,
-			false, listener, cancelled, 0, total);
-		for (int round = 0; round < PROFILE_ROUNDS; round++) {
-			final EmpiricalProfile profile = profile(results, frame, params.rOut());
-			results = pass(tracker, profile, count, frame, keepRegions && round == PROFILE_ROUNDS - 1, listener,
-				cancelled, count * (1 + round), total);
-		}
-		return results;
+			return pass(tracker, null, all, frame, keepRegions, listener, cancelled, 0, count);
+		// deblend and fit: iterative centres first; the profile measured on a spread of frames; those frames
+		// refined with it and the profile measured again around the refined centres; then every frame.
+		final int[] sample = profileFrames(count, frame);
+		final int total = 2 * count + sample.length;
+		final List<FrameResult> iterative = pass(new ContactTracker(params.withMethod(Method.ITERATIVE)), null, all,
+			frame, false, listener, cancelled, 0, total);
+		final List<FrameResult> firstRound = pass(tracker, profile(pick(iterative, sample), sample, frame, params
+			.rOut()), sample, frame, false, listener, cancelled, count, total);
+		return pass(tracker, profile(firstRound, sample, frame, params.rOut()), all, frame, keepRegions, listener,
+			cancelled, count + sample.length, total);
 	}
 
-	/** Rounds of profile measurement and refinement for deblend and fit. */
-	public static final int PROFILE_ROUNDS = 2;
 	/** At most this many frames, evenly spread over the stack, go into a profile measurement... */
 	public static final int PROFILE_FRAMES = 64;
-	/** ...and no more once this many pixels within reach of a particle are in (plenty for the spline). */
-	public static final int PROFILE_SAMPLES = 4_000_000;
+	/** ...and at most this many pixels in all (plenty for the profile's spline). */
+	public static final long PROFILE_PIXELS = 8_000_000;
+
+	/** The frames the profile is measured on: evenly spread, within both limits. */
+	private static <T extends RealType<T>> int[] profileFrames(final int count,
+		final IntFunction<? extends RandomAccessibleInterval<T>> frame)
+	{
+		final RandomAccessibleInterval<T> first = frame.apply(0);
+		final long pixels = Math.max(1, first.dimension(0) * first.dimension(1));
+		final int n = (int) Math.max(1, Math.min(Math.min(count, PROFILE_FRAMES), PROFILE_PIXELS / pixels));
+		final int[] frames = new int[n];
+		for (int i = 0; i < n; i++)
+			frames[i] = (int) ((long) i * count / n);
+		return frames;
+	}
+
+	private static int[] range(final int count) {
+		final int[] r = new int[count];
+		for (int i = 0; i < count; i++)
+			r[i] = i;
+		return r;
+	}
+
+	private static List<FrameResult> pick(final List<FrameResult> results, final int[] indices) {
+		final List<FrameResult> picked = new ArrayList<>(indices.length);
+		for (final int t : indices)
+			picked.add(results.get(t));
+		return picked;
+	}
 
 	/**
-	 * Measures the radial profile over up to {@link #PROFILE_FRAMES} frames; null (each frame then measures its
-	 * own) when the stack holds too few usable pixels.
+	 * Measures the radial profile on frames {@code indices} (with their results, in the same order), the frames
+	 * shared among the threads; null (each frame then measures its own) when they hold too few usable pixels.
 	 */
-	private static <T extends RealType<T>> EmpiricalProfile profile(final List<FrameResult> results,
+	private <T extends RealType<T>> EmpiricalProfile profile(final List<FrameResult> results, final int[] indices,
 		final IntFunction<? extends RandomAccessibleInterval<T>> frame, final double rOut)
 	{
-		final ProfileEstimator estimator = ProfileEstimator.forROut(rOut);
-		final int step = Math.max(1, (int) Math.ceil(results.size() / (double) PROFILE_FRAMES));
-		for (int t = 0; t < results.size() && estimator.profileSamples() < PROFILE_SAMPLES; t += step)
-			estimator.add(frame.apply(t), results.get(t).spots());
+		// One estimator per frame, merged in frame order: the sums, and so the results, do not depend on the
+		// number of threads.
+		final int workers = Math.min(threads, indices.length);
+		final ProfileEstimator[] parts = new ProfileEstimator[indices.length];
+		final AtomicInteger next = new AtomicInteger();
+		final Runnable work = () -> {
+			for (int i = next.getAndIncrement(); i < indices.length; i = next.getAndIncrement()) {
+				final ProfileEstimator part = ProfileEstimator.forROut(rOut);
+				part.add(frame.apply(indices[i]), results.get(i).spots());
+				parts[i] = part;
+			}
+		};
+		final List<Thread> running = new ArrayList<>();
+		for (int w = 1; w < workers; w++) {
+			final Thread th = new Thread(work, "contact-tracker-profile");
+			th.setDaemon(true);
+			running.add(th);
+			th.start();
+		}
+		work.run();
 		try {
-			return estimator.estimate();
+			for (final Thread th : running)
+				th.join();
+		}
+		catch (final InterruptedException e) {
+			Thread.currentThread().interrupt();
+			throw new CancellationException("interrupted");
+		}
+		final ProfileEstimator all = parts[0];
+		for (int i = 1; i < parts.length; i++)
+			all.merge(parts[i]);
+		try {
+			return all.estimate();
 		}
 		catch (final IllegalStateException e) {
 			return null;
 		}
 	}
 
+	/** Localizes frames {@code indices}; results in that order. */
 	private <T extends RealType<T>> List<FrameResult> pass(final ContactTracker tracker,
-		final EmpiricalProfile profile, final int count, final IntFunction<? extends RandomAccessibleInterval<T>> frame,
-		final boolean keepRegions, final ProgressListener listener, final BooleanSupplier cancelled,
-		final int doneBefore, final int total)
+		final EmpiricalProfile profile, final int[] indices,
+		final IntFunction<? extends RandomAccessibleInterval<T>> frame, final boolean keepRegions,
+		final ProgressListener listener, final BooleanSupplier cancelled, final int doneBefore, final int total)
 	{
+		final int count = indices.length;
 		final AtomicInteger done = new AtomicInteger(doneBefore);
 		final List<FrameResult> results = new ArrayList<>(count);
 		if (threads == 1 || count < 2) {
 			for (int t = 0; t < count; t++) {
 				if (cancelled.getAsBoolean()) throw new CancellationException("cancelled after " + t + " frames");
-				results.add(one(tracker, profile, frame, t, keepRegions));
+				results.add(one(tracker, profile, frame, indices[t], keepRegions));
 				if (listener != null) listener.progress(done.incrementAndGet(), total);
 			}
 			return results;
@@ -133,7 +187,7 @@ public final class StackTracker {
 		try {
 			final List<Future<FrameResult>> futures = new ArrayList<>(count);
 			for (int t = 0; t < count; t++) {
-				final int index = t;
+				final int index = indices[t];
 				futures.add(pool.submit(() -> {
 					if (cancelled.getAsBoolean()) throw new CancellationException("cancelled");
 					final FrameResult r = one(tracker, profile, frame, index, keepRegions);
