@@ -5,7 +5,6 @@ import java.io.OutputStreamWriter;
 import java.io.PrintStream;
 import java.io.Writer;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -43,9 +42,7 @@ final class AccuracyCommand {
 		final int reps = o.integer("reps", 200);
 		if (reps < 2) throw new IllegalArgumentException("--reps must be at least 2");
 		final int threads = o.integer("threads", 0);
-		final Path csv = o.path("csv");
-		if (csv != null && (csv.toAbsolutePath().getParent() == null || !Files.isDirectory(csv.toAbsolutePath()
-			.getParent()))) throw new IllegalArgumentException("cannot write " + csv + ": its folder does not exist");
+		final Path csv = o.outputPath("csv");
 		final List<ParticleType> types = new ArrayList<>();
 		for (final String p : o.string("particle", "5.53,2.06").split(","))
 			types.add(SimulateCommand.particle(p));

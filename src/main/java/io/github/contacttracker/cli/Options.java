@@ -96,6 +96,20 @@ final class Options {
 		return has(name) ? Path.of(values.get(name)) : null;
 	}
 
+	/**
+	 * An output file's path, checked before any work is done: its folder must exist.
+	 *
+	 * @return the path, or null when the option is absent
+	 */
+	Path outputPath(final String name) {
+		final Path file = path(name);
+		if (file == null) return null;
+		final Path dir = file.toAbsolutePath().getParent();
+		if (dir == null || !java.nio.file.Files.isDirectory(dir))
+			throw new IllegalArgumentException("cannot write " + file + ": folder " + dir + " does not exist");
+		return file;
+	}
+
 	private static double parseDouble(final String name, final String text) {
 		try {
 			final double v = Double.parseDouble(text.trim());

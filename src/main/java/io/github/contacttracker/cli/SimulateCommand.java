@@ -38,12 +38,9 @@ final class SimulateCommand {
 		final int bits = o.integer("bit-depth", 8);
 		if (bits != 8 && bits != 16) throw new IllegalArgumentException("--bit-depth must be 8 or 16");
 		final ParticleType type = particle(o.string("particle", "5.53"));
-		final Path stackFile = Path.of(o.required("out")), truthFile = Path.of(o.required("truth"));
-		for (final Path p : new Path[] { stackFile, truthFile }) {
-			final Path dir = p.toAbsolutePath().getParent();
-			if (dir == null || !Files.isDirectory(dir))
-				throw new IllegalArgumentException("cannot write " + p + ": folder " + dir + " does not exist");
-		}
+		o.required("out");
+		o.required("truth");
+		final Path stackFile = o.outputPath("out"), truthFile = o.outputPath("truth");
 		final SimulatedStack<?> stack = SimulatedStack.simulate(type, scenario, separation, frames, o.longInteger(
 			"seed", 1), bits);
 		final Calibration cal = Calibration.ofPixelSize(type.pixelSizeMicrons(), "micron");

@@ -44,9 +44,7 @@ final class TrackCommand {
 			throw new IllegalArgumentException("track needs exactly one input file, got " + o.positional().size());
 		final Path input = Path.of(o.positional().get(0));
 		final TrackerParameters params = parameters(o);
-		final Path csv = o.path("csv"), xml = o.path("trackmate-xml");
-		checkFolder(csv);
-		checkFolder(xml);
+		final Path csv = o.outputPath("csv"), xml = o.outputPath("trackmate-xml");
 		final int threads = o.integer("threads", 0);
 
 		final long start = System.nanoTime();
@@ -102,13 +100,6 @@ final class TrackCommand {
 				.integer("min-second-area", TrackerParameters.DEFAULT_MIN_SECOND_AREA), Method.parse(o.string("method",
 					Method.DEFAULT.key())));
 		return p;
-	}
-
-	private static void checkFolder(final Path file) {
-		if (file == null) return;
-		final Path dir = file.toAbsolutePath().getParent();
-		if (dir == null || !Files.isDirectory(dir))
-			throw new IllegalArgumentException("cannot write " + file + ": folder " + dir + " does not exist");
 	}
 
 	private static String fmt(final double v) {
