@@ -1,180 +1,100 @@
 package fiji.plugin.trackmate;
 
 import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.atomic.AtomicInteger;
 
-import net.imglib2.EuclideanSpace;
-import net.imglib2.Localizable;
-import net.imglib2.RealInterval;
+import net.imglib2.AbstractEuclideanSpace;
 import net.imglib2.RealLocalizable;
-import net.imglib2.RealPositionable;
 
 /**
- * Compile-only mirror of TrackMate's {@code Spot}. Since TrackMate 7.11 (and in 8.x) {@code Spot} is an
- * INTERFACE; the plain implementation is {@link SpotBase}. Calling {@code new Spot(...)} would compile against
- * an old class-shaped mirror and fail inside Fiji with {@code InstantiationError}. Never packaged.
- * <p>
- * Abstract members kept here are the ones Contact Tracker calls ({@code putFeature}, {@code getFeature}) and the
- * ones the real interface leaves to implementations; defaults stand in for the real interface's defaults.
+ * Compile-only mirror of TrackMate's {@code Spot} as RELEASED in TrackMate 8.0.0 to 8.1.6: a concrete CLASS
+ * extending {@code AbstractEuclideanSpace}, implementing {@code RealLocalizable} and {@code Comparable<Spot>},
+ * built with {@code new Spot(x, y, z, radius, quality)}. ({@code SpotBase} and a {@code Spot} interface exist only
+ * on unreleased development branches; code compiled against them dies in every released Fiji.) Only the members
+ * Contact Tracker and its tests call are mirrored. Never packaged.
  */
-public interface Spot extends RealLocalizable, RealPositionable, RealInterval, Comparable<Spot>, EuclideanSpace {
+public class Spot extends AbstractEuclideanSpace implements RealLocalizable, Comparable<Spot> {
 
-	String QUALITY = "QUALITY";
-	String RADIUS = "RADIUS";
-	String POSITION_X = "POSITION_X";
-	String POSITION_Y = "POSITION_Y";
-	String POSITION_Z = "POSITION_Z";
-	String POSITION_T = "POSITION_T";
-	String FRAME = "FRAME";
-	String[] POSITION_FEATURES = { POSITION_X, POSITION_Y, POSITION_Z };
+	private static final AtomicInteger IDS = new AtomicInteger(-1);
 
-	@Override
-	default int compareTo(final Spot o) {
-		return ID() - o.ID();
+	public static final String QUALITY = "QUALITY";
+	public static final String RADIUS = "RADIUS";
+	public static final String POSITION_X = "POSITION_X";
+	public static final String POSITION_Y = "POSITION_Y";
+	public static final String POSITION_Z = "POSITION_Z";
+	public static final String POSITION_T = "POSITION_T";
+	public static final String FRAME = "FRAME";
+
+	private final Map<String, Double> features = new ConcurrentHashMap<>();
+	private final int id;
+	private String name;
+
+	public Spot(final double x, final double y, final double z, final double radius, final double quality,
+		final String name)
+	{
+		super(3);
+		this.id = IDS.incrementAndGet();
+		this.name = name == null ? "ID" + id : name;
+		putFeature(POSITION_X, x);
+		putFeature(POSITION_Y, y);
+		putFeature(POSITION_Z, z);
+		putFeature(RADIUS, radius);
+		putFeature(QUALITY, quality);
 	}
 
-	Spot copy();
-
-	void scale(double alpha);
-
-	String getName();
-
-	void setName(String name);
-
-	int ID();
-
-	Map<String, Double> getFeatures();
-
-	Double getFeature(String feature);
-
-	void putFeature(String feature, Double value);
-
-	@Override
-	default int numDimensions() {
-		return 3;
+	public Spot(final double x, final double y, final double z, final double radius, final double quality) {
+		this(x, y, z, radius, quality, null);
 	}
 
-	@Override
-	default double getDoublePosition(final int d) {
-		return getFeature(POSITION_FEATURES[d]);
+	public String getName() {
+		return name;
 	}
 
-	@Override
-	default void move(final float distance, final int d) {
-		move((double) distance, d);
+	public void setName(final String name) {
+		this.name = name;
 	}
 
-	@Override
-	default void move(final double distance, final int d) {
-		putFeature(POSITION_FEATURES[d], getFeature(POSITION_FEATURES[d]) + distance);
+	public int ID() {
+		return id;
 	}
 
-	@Override
-	default void move(final RealLocalizable distance) {
-		for (int d = 0; d < 3; d++)
-			move(distance.getDoublePosition(d), d);
+	public Map<String, Double> getFeatures() {
+		return features;
 	}
 
-	@Override
-	default void move(final float[] distance) {
-		for (int d = 0; d < 3; d++)
-			move(distance[d], d);
+	public Double getFeature(final String feature) {
+		return features.get(feature);
+	}
+
+	public void putFeature(final String feature, final Double value) {
+		features.put(feature, value);
 	}
 
 	@Override
-	default void move(final double[] distance) {
-		for (int d = 0; d < 3; d++)
-			move(distance[d], d);
+	public int compareTo(final Spot o) {
+		return Integer.compare(id, o.id);
 	}
 
 	@Override
-	default void setPosition(final RealLocalizable position) {
-		for (int d = 0; d < 3; d++)
-			setPosition(position.getDoublePosition(d), d);
+	public double getDoublePosition(final int d) {
+		return getFeature(d == 0 ? POSITION_X : d == 1 ? POSITION_Y : POSITION_Z);
 	}
 
 	@Override
-	default void setPosition(final float[] position) {
-		for (int d = 0; d < 3; d++)
-			setPosition(position[d], d);
+	public float getFloatPosition(final int d) {
+		return (float) getDoublePosition(d);
 	}
 
 	@Override
-	default void setPosition(final double[] position) {
-		for (int d = 0; d < 3; d++)
-			setPosition(position[d], d);
+	public void localize(final float[] position) {
+		for (int d = 0; d < n; d++)
+			position[d] = getFloatPosition(d);
 	}
 
 	@Override
-	default void setPosition(final float position, final int d) {
-		setPosition((double) position, d);
-	}
-
-	@Override
-	default void setPosition(final double position, final int d) {
-		putFeature(POSITION_FEATURES[d], position);
-	}
-
-	@Override
-	default void fwd(final int d) {
-		move(1., d);
-	}
-
-	@Override
-	default void bck(final int d) {
-		move(-1., d);
-	}
-
-	@Override
-	default void move(final int distance, final int d) {
-		move((double) distance, d);
-	}
-
-	@Override
-	default void move(final long distance, final int d) {
-		move((double) distance, d);
-	}
-
-	@Override
-	default void move(final Localizable distance) {
-		move((RealLocalizable) distance);
-	}
-
-	@Override
-	default void move(final int[] distance) {
-		for (int d = 0; d < 3; d++)
-			move(distance[d], d);
-	}
-
-	@Override
-	default void move(final long[] distance) {
-		for (int d = 0; d < 3; d++)
-			move(distance[d], d);
-	}
-
-	@Override
-	default void setPosition(final Localizable position) {
-		setPosition((RealLocalizable) position);
-	}
-
-	@Override
-	default void setPosition(final int[] position) {
-		for (int d = 0; d < 3; d++)
-			setPosition(position[d], d);
-	}
-
-	@Override
-	default void setPosition(final long[] position) {
-		for (int d = 0; d < 3; d++)
-			setPosition(position[d], d);
-	}
-
-	@Override
-	default void setPosition(final int position, final int d) {
-		setPosition((double) position, d);
-	}
-
-	@Override
-	default void setPosition(final long position, final int d) {
-		setPosition((double) position, d);
+	public void localize(final double[] position) {
+		for (int d = 0; d < n; d++)
+			position[d] = getDoublePosition(d);
 	}
 }

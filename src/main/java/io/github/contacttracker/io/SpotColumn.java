@@ -16,7 +16,7 @@ public enum SpotColumn {
 	POSITION_T("POSITION_T", "T", "T", Dimension.TIME, false),
 	RADIUS("RADIUS", "Radius", "R", Dimension.LENGTH, false),
 	QUALITY("QUALITY", "Quality", "Quality", Dimension.QUALITY, false),
-	VISIBILITY("VISIBILITY", "Visibility", "Visible", Dimension.NONE, true),
+	VISIBILITY("VISIBILITY", "Visibility", "Visibility", Dimension.NONE, true),
 	FIRST_PASS_X("FIRST_PASS_X", "First-pass X", "X1", Dimension.POSITION, false),
 	FIRST_PASS_Y("FIRST_PASS_Y", "First-pass Y", "Y1", Dimension.POSITION, false),
 	SIGMA_X("SIGMA_X", "Std. error X", "dX", Dimension.LENGTH, false),

@@ -25,7 +25,8 @@ import io.github.contacttracker.trackmate.DetectorSettings;
  * &lt;TrackMate version="8.0.0"&gt;
  *   &lt;Log&gt;provenance&lt;/Log&gt;
  *   &lt;Model spatialunits=".." timeunits=".."&gt;
- *     &lt;FeatureDeclarations&gt; SpotFeatures (every extra column of {@link SpotColumn}), EdgeFeatures, TrackFeatures
+ *     &lt;FeatureDeclarations&gt; SpotFeatures (TrackMate's standard spot features, then every extra column of
+ *       {@link SpotColumn}), EdgeFeatures, TrackFeatures
  *     &lt;AllSpots nspots="N"&gt; &lt;SpotsInFrame frame="f"&gt; &lt;Spot ID name POSITION_X .. VISIBILITY="1" extras/&gt;
  *     &lt;AllTracks/&gt; &lt;FilteredTracks/&gt;
  *   &lt;Settings&gt;
@@ -38,9 +39,9 @@ import io.github.contacttracker.trackmate.DetectorSettings;
  *   &lt;DisplaySettings/&gt;   (empty: TrackMate uses the user's defaults)
  * </pre>
  * Spot {@code ID}s are the spots' positions in the list given (0, 1, 2, ...), the same IDs the CSV tables use;
- * every attribute other than {@code ID} and {@code name} is a finite number (TrackMate parses them all as
- * numbers); an extra value that is not finite (an unestimated standard error) is left out, which TrackMate reads
- * as "no value". Tracks are empty: link the spots in TrackMate.
+ * every attribute other than {@code ID} and {@code name} is a number (TrackMate parses them all with
+ * {@code Double.valueOf}): TrackMate's own features finite, an undefined extra value (an unestimated standard
+ * error) {@code NaN}, so every spot carries every declared feature. Tracks are empty: link the spots in TrackMate.
  */
 public final class TrackMateXmlWriter {
 
@@ -101,14 +102,13 @@ public final class TrackMateXmlWriter {
 			.setAttribute("spatialunits", SpotColumn.POSITION_X.unit(cal))
 			.setAttribute("timeunits", SpotColumn.POSITION_T.unit(cal));
 
+		// TrackMate's own spot features first, in the order TrackMate declares them (third-party readers such as
+		// pytrackmate build their tables from these declarations), then ours
 		final Element spotFeatures = new Element("SpotFeatures");
+		for (final SpotColumn c : TRACKMATE_SPOT_FEATURES)
+			spotFeatures.addContent(declaration(c));
 		for (final SpotColumn c : SpotColumn.values())
-			if (!c.isTrackMateKey()) spotFeatures.addContent(new Element("Feature")
-				.setAttribute("feature", c.key())
-				.setAttribute("name", c.title())
-				.setAttribute("shortname", c.shortName())
-				.setAttribute("dimension", c.dimension().name())
-				.setAttribute("isint", Boolean.toString(c.isInteger())));
+			if (!c.isTrackMateKey()) spotFeatures.addContent(declaration(c));
 		model.addContent(new Element("FeatureDeclarations")
 			.addContent(spotFeatures)
 			.addContent(new Element("EdgeFeatures"))
@@ -138,16 +138,29 @@ public final class TrackMateXmlWriter {
 		return model;
 	}
 
+	/** TrackMate's standard spot features, in the order of its {@code Spot.FEATURES}. */
+	private static final List<SpotColumn> TRACKMATE_SPOT_FEATURES = List.of(SpotColumn.QUALITY, SpotColumn.POSITION_X,
+		SpotColumn.POSITION_Y, SpotColumn.POSITION_Z, SpotColumn.POSITION_T, SpotColumn.FRAME, SpotColumn.RADIUS,
+		SpotColumn.VISIBILITY);
+
+	private static Element declaration(final SpotColumn c) {
+		return new Element("Feature")
+			.setAttribute("feature", c.key())
+			.setAttribute("name", c.title())
+			.setAttribute("shortname", c.shortName())
+			.setAttribute("dimension", c.dimension().name())
+			.setAttribute("isint", Boolean.toString(c.isInteger()));
+	}
+
 	private static Element spot(final Localization loc, final int id, final Calibration cal) {
 		final Element e = new Element("Spot").setAttribute("ID", Integer.toString(id)).setAttribute("name", "ID" + id);
 		for (final SpotColumn c : SpotColumn.values()) {
 			if (c == SpotColumn.ID) continue;
 			final double v = c.value(loc, id, cal);
-			if (!Double.isFinite(v)) {
-				if (c.isTrackMateKey())
-					throw new IllegalArgumentException("spot " + id + " has " + c.key() + " = " + v + ", not a finite number");
-				continue;
-			}
+			if (!Double.isFinite(v) && c.isTrackMateKey())
+				throw new IllegalArgumentException("spot " + id + " has " + c.key() + " = " + v + ", not a finite number");
+			// an undefined extra value is written as NaN (TrackMate reads it with Double.valueOf), never left out:
+			// third-party readers (pytrackmate) refuse a spot that lacks a declared feature
 			e.setAttribute(c.key(), c.format(loc, id, cal));
 		}
 		return e;

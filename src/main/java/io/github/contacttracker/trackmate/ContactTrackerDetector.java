@@ -3,12 +3,17 @@ package io.github.contacttracker.trackmate;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import java.util.concurrent.CancellationException;
 
+import org.scijava.Cancelable;
+
+import fiji.plugin.trackmate.Logger;
 import fiji.plugin.trackmate.Spot;
-import fiji.plugin.trackmate.SpotBase;
-import fiji.plugin.trackmate.detection.SpotDetector;
-import io.github.contacttracker.core.ContactTracker;
+import fiji.plugin.trackmate.SpotCollection;
+import fiji.plugin.trackmate.detection.SpotGlobalDetector;
+import io.github.contacttracker.core.FrameResult;
 import io.github.contacttracker.core.Localization;
+import io.github.contacttracker.core.StackTracker;
 import io.github.contacttracker.core.TrackerParameters;
 import io.github.contacttracker.io.Calibration;
 import io.github.contacttracker.io.SpotColumn;
@@ -16,83 +21,67 @@ import net.imagej.ImgPlus;
 import net.imagej.axis.Axes;
 import net.imglib2.Interval;
 import net.imglib2.RandomAccessibleInterval;
+import net.imglib2.algorithm.MultiThreaded;
 import net.imglib2.type.NativeType;
 import net.imglib2.type.numeric.RealType;
 import net.imglib2.view.Views;
 
 /**
- * Runs Contact Tracker on one frame of a TrackMate image, the way TrackMate drives every per-frame detector:
- * {@link #checkInput()}, {@link #process()}, {@link #getResult()}, and {@link #getErrorMessage()} when one of
+ * Runs Contact Tracker on a whole TrackMate movie at once, as a TrackMate 8 {@code SpotGlobalDetector}: TrackMate
+ * calls {@link #checkInput()}, {@link #process()}, {@link #getResult()}, and {@link #getErrorMessage()} when one of
  * them returned {@code false}.
  * <p>
- * TrackMate hands over the WHOLE image (all channels and frames) and the crop interval (no time axis, maybe a
- * one-wide channel axis). The detector takes out the target channel and the frame itself, crops to the
- * interval and runs {@link ContactTracker#track} on the resulting 2D view. Images with more than one Z slice
- * are refused in {@link #checkInput()}.
+ * Whole-movie detection is what makes TrackMate's spots equal to the command line's: the {@code deblend} and
+ * {@code fit} methods measure the particles' profile over frames spread through the movie, exactly as
+ * {@link StackTracker} does for every other front end. (A per-frame detector would measure it on each frame
+ * alone and give other numbers.)
+ * <p>
+ * TrackMate hands over the WHOLE image (all channels and frames) and the interval to analyse: X, Y, Z (if the
+ * image has it) and time, without a channel axis. The detector takes out the target channel and every frame of
+ * the interval's time range itself. Images with more than one Z slice are refused in {@link #checkInput()}.
  * <p>
  * Spots are in TrackMate's convention: physical units, whole-image coordinates, pixel centre at
- * {@code index * pixel size}, {@code z = 0}. They are {@link SpotBase}s with
- * <ul>
- * <li>{@code POSITION_X/Y} = final centre x {@code dx}, y {@code dy};</li>
- * <li>{@code RADIUS} = equivalent radius of the active area, {@code sqrt(area / pi)}, times
- * {@code sqrt(dx dy)};</li>
- * <li>{@code QUALITY} = integrated intensity above the threshold over the active area (grey levels x pixels):
- * brighter and larger particles score higher;</li>
- * <li>every extra {@link SpotColumn} (first-pass position, active and second areas, solves, standard errors,
- * flags as 0/1) as a spot feature, skipped when not a finite number.</li>
- * </ul>
+ * {@code index * pixel size}, {@code z = 0}; {@code FRAME} is the movie's frame index. See
+ * {@link #toSpot(Localization, double, double)} for the values.
  */
-public final class ContactTrackerDetector<T extends RealType<T> & NativeType<T>> implements SpotDetector<T> {
-
+public final class ContactTrackerDetector<T extends RealType<T> & NativeType<T>> implements SpotGlobalDetector<T>,
+	MultiThreaded, Cancelable
+{
 	private final ImgPlus<T> img;
 	private final Interval interval;
-	private final int frame;
 	private final TrackerParameters params;
 	private final int targetChannel;
 	private final String settingsError;
 
-	private RandomAccessibleInterval<T> plane;
+	private final List<RandomAccessibleInterval<T>> frames = new ArrayList<>();
+	private int firstFrame;
 	private double dx;
 	private double dy;
-	private List<Spot> result = new ArrayList<>();
+	private SpotCollection result = new SpotCollection();
 	private String errorMessage;
 	private long processingTime;
+	private int numThreads = Runtime.getRuntime().availableProcessors();
+	private Logger logger;
+	private volatile String cancelReason;
 
 	/**
 	 * @param img the whole image, as TrackMate gives it (X, Y and optionally channel, Z of size 1 and time axes)
-	 * @param interval the region to analyse, without time axis (as TrackMate gives it); {@code null} for the
-	 *        whole frame
-	 * @param frame the 0-based frame index
-	 * @param params the localizer parameters
-	 * @param targetChannel the 1-based channel to analyse
+	 * @param interval the region to analyse as TrackMate gives it (the image's axes without channel, time
+	 *        included), or one with every axis of the image; {@code null} for the whole movie
+	 * @param settings a Contact Tracker settings map ({@link DetectorSettings}); invalid settings make
+	 *        {@link #checkInput()} fail with their message
 	 */
-	public ContactTrackerDetector(final ImgPlus<T> img, final Interval interval, final int frame,
-		final TrackerParameters params, final int targetChannel)
-	{
-		this(img, interval, frame, params, targetChannel, params == null ? "Contact Tracker: no parameters given." : null);
-	}
-
-	/** From a TrackMate settings map: invalid settings make {@link #checkInput()} fail with their message. */
-	ContactTrackerDetector(final ImgPlus<T> img, final Interval interval, final int frame,
-		final Map<String, Object> settings)
-	{
-		this(img, interval, frame, parametersOrNull(settings), channelOrZero(settings), DetectorSettings.check(settings));
-	}
-
-	private ContactTrackerDetector(final ImgPlus<T> img, final Interval interval, final int frame,
-		final TrackerParameters params, final int targetChannel, final String settingsError)
-	{
+	public ContactTrackerDetector(final ImgPlus<T> img, final Interval interval, final Map<String, Object> settings) {
 		this.img = img;
 		this.interval = interval;
-		this.frame = frame;
-		this.params = params;
-		this.targetChannel = targetChannel;
-		this.settingsError = settingsError;
+		this.settingsError = DetectorSettings.check(settings);
+		this.params = settingsError == null ? DetectorSettings.parameters(settings) : null;
+		this.targetChannel = settingsError == null ? DetectorSettings.targetChannel(settings) : 0;
 	}
 
 	@Override
 	public boolean checkInput() {
-		plane = null;
+		frames.clear();
 		if (settingsError != null) return fail("Invalid Contact Tracker settings:\n" + settingsError);
 		if (img == null) return fail("Contact Tracker: no image given.");
 		final int n = img.numDimensions();
@@ -111,77 +100,96 @@ public final class ContactTrackerDetector<T extends RealType<T> & NativeType<T>>
 				return fail("Contact Tracker: the image has an axis of unknown type (dimension " + d + ", size " +
 					img.dimension(d) + "); only X, Y, channel, time and a single Z slice are supported.");
 		final long channels = cd < 0 ? 1 : img.dimension(cd);
-		if (targetChannel < 1 || targetChannel > channels)
+		if (targetChannel > channels)
 			return fail("Contact Tracker: TARGET_CHANNEL is " + targetChannel + " but the image has " + channels +
 				(channels == 1 ? " channel." : " channels."));
-		final long frames = td < 0 ? 1 : img.dimension(td);
-		if (frame < 0 || frame >= frames)
-			return fail("Contact Tracker: frame " + frame + " does not exist; the image has " + frames +
-				(frames == 1 ? " frame." : " frames."));
 		dx = img.averageScale(xd);
 		dy = img.averageScale(yd);
 		if (!(dx > 0) || !(dy > 0) || !Double.isFinite(dx) || !Double.isFinite(dy))
 			return fail("Contact Tracker: the pixel size must be positive, not " + dx + " x " + dy + ".");
 
-		// the crop, in whole-image pixel indices
+		// the crop and the frames, in whole-image indices
 		final long[] xr = { img.min(xd), img.max(xd) };
 		final long[] yr = { img.min(yd), img.max(yd) };
+		final long[] tr = td < 0 ? new long[] { 0, 0 } : new long[] { img.min(td), img.max(td) };
 		if (interval != null) {
-			final int nNoTime = n - (td < 0 ? 0 : 1);
-			final int ix, iy;
-			if (interval.numDimensions() == nNoTime) {
-				ix = td >= 0 && td < xd ? xd - 1 : xd;
-				iy = td >= 0 && td < yd ? yd - 1 : yd;
-			}
-			else if (interval.numDimensions() == n) {
-				ix = xd;
-				iy = yd;
-			}
-			else return fail("Contact Tracker: the detection interval has " + interval.numDimensions() +
-				" dimensions, but the image has " + n + (td < 0 ? "." : " (" + nNoTime + " without time)."));
-			xr[0] = Math.max(xr[0], interval.min(ix));
-			xr[1] = Math.min(xr[1], interval.max(ix));
-			yr[0] = Math.max(yr[0], interval.min(iy));
-			yr[1] = Math.min(yr[1], interval.max(iy));
-			if (xr[0] > xr[1] || yr[0] > yr[1])
+			final boolean channelDropped = cd >= 0 && interval.numDimensions() == n - 1;
+			if (!channelDropped && interval.numDimensions() != n)
+				return fail("Contact Tracker: the detection interval has " + interval.numDimensions() +
+					" dimensions, but the image has " + n + (cd < 0 ? "." : " (" + (n - 1) + " without channel)."));
+			clip(xr, interval, intervalIndex(xd, cd, channelDropped));
+			clip(yr, interval, intervalIndex(yd, cd, channelDropped));
+			if (td >= 0) clip(tr, interval, intervalIndex(td, cd, channelDropped));
+			if (xr[0] > xr[1] || yr[0] > yr[1] || tr[0] > tr[1])
 				return fail("Contact Tracker: the detection interval does not overlap the image.");
 		}
+		firstFrame = (int) (tr[0] - (td < 0 ? 0 : img.min(td)));
+		for (long t = tr[0]; t <= tr[1]; t++)
+			frames.add(plane(n, xd, yd, cd, td, t, xr, yr));
+		errorMessage = null;
+		return true;
+	}
 
-		// one plane: slice off every axis but X and Y, highest dimension first so indices stay valid
+	/** One 2D plane: every axis but X and Y sliced off, highest dimension first so indices stay valid. */
+	private RandomAccessibleInterval<T> plane(final int n, final int xd, final int yd, final int cd, final int td,
+		final long t, final long[] xr, final long[] yr)
+	{
 		RandomAccessibleInterval<T> view = img;
 		for (int d = n - 1; d >= 0; d--) {
 			if (d == xd || d == yd) continue;
-			final long pos = d == td ? img.min(d) + frame : d == cd ? img.min(d) + targetChannel - 1 : img.min(d);
+			final long pos = d == td ? t : d == cd ? img.min(d) + targetChannel - 1 : img.min(d);
 			view = Views.hyperSlice(view, d, pos);
 		}
 		if (yd < xd) view = Views.permute(view, 0, 1);
-		plane = Views.interval(view, new long[] { xr[0], yr[0] }, new long[] { xr[1], yr[1] });
-		errorMessage = null;
-		return true;
+		return Views.interval(view, new long[] { xr[0], yr[0] }, new long[] { xr[1], yr[1] });
+	}
+
+	private static int intervalIndex(final int d, final int cd, final boolean channelDropped) {
+		return channelDropped && cd < d ? d - 1 : d;
+	}
+
+	private static void clip(final long[] range, final Interval interval, final int d) {
+		range[0] = Math.max(range[0], interval.min(d));
+		range[1] = Math.min(range[1], interval.max(d));
 	}
 
 	@Override
 	public boolean process() {
 		final long start = System.currentTimeMillis();
-		if (plane == null && !checkInput()) return false;
-		final List<Localization> found;
+		if (frames.isEmpty() && !checkInput()) return false;
+		final int count = frames.size();
+		final List<FrameResult> results;
 		try {
-			found = new ContactTracker(params).track(plane, frame);
+			status("Contact Tracker: " + params.method().key() + " on " + count + (count == 1 ? " frame" : " frames"));
+			results = new StackTracker(params, numThreads).track(count, frames::get, false,
+				(done, total) -> progress((double) done / total), this::isCanceled);
+		}
+		catch (final CancellationException e) {
+			return fail("Contact Tracker: detection cancelled" + (cancelReason == null ? "." : ": " + cancelReason));
 		}
 		catch (final IllegalArgumentException e) {
-			return fail("Contact Tracker failed on frame " + frame + ": " + e.getMessage());
+			// the core counts frames from 1 within what it was given; say where that starts in the movie
+			return fail("Contact Tracker failed: " + e.getMessage() + (firstFrame == 0 ? "" : " (frames counted from " +
+				"frame " + (firstFrame + 1) + " of the movie, the first one analysed)"));
 		}
-		final List<Spot> spots = new ArrayList<>(found.size());
-		for (final Localization loc : found)
-			spots.add(toSpot(loc, dx, dy));
+		finally {
+			status("");
+		}
+		final SpotCollection spots = new SpotCollection();
+		for (int i = 0; i < count; i++) {
+			final List<Spot> inFrame = new ArrayList<>();
+			for (final Localization loc : results.get(i).spots())
+				inFrame.add(toSpot(loc.withFrame(firstFrame + i), dx, dy));
+			spots.put(firstFrame + i, inFrame);
+		}
 		result = spots;
 		processingTime = System.currentTimeMillis() - start;
 		return true;
 	}
 
-	/** @return the spots of the last successful {@link #process()} (a new, modifiable list) */
+	/** @return the spots of the last successful {@link #process()}, by frame */
 	@Override
-	public List<Spot> getResult() {
+	public SpotCollection getResult() {
 		return result;
 	}
 
@@ -195,9 +203,47 @@ public final class ContactTrackerDetector<T extends RealType<T> & NativeType<T>>
 		return processingTime;
 	}
 
+	@Override
+	public void setLogger(final Logger logger) {
+		this.logger = logger;
+	}
+
+	@Override
+	public void setNumThreads() {
+		numThreads = Runtime.getRuntime().availableProcessors();
+	}
+
+	@Override
+	public void setNumThreads(final int numThreads) {
+		this.numThreads = Math.max(1, numThreads);
+	}
+
+	@Override
+	public int getNumThreads() {
+		return numThreads;
+	}
+
+	@Override
+	public boolean isCanceled() {
+		return cancelReason != null;
+	}
+
+	@Override
+	public void cancel(final String reason) {
+		cancelReason = reason == null ? "cancelled" : reason;
+	}
+
+	@Override
+	public String getCancelReason() {
+		return cancelReason;
+	}
+
 	/**
 	 * Converts a localization (pixels) into a TrackMate spot (physical units), with the same numbers as every
-	 * other output through {@link SpotColumn}.
+	 * other output through {@link SpotColumn}: {@code POSITION_X/Y}, {@code RADIUS}, {@code QUALITY} and every
+	 * extra column (first-pass position, areas, solves, standard errors, flags as 0/1) as a spot feature, NaN where
+	 * undefined (so every spot has every declared feature; TrackMate saves and reloads NaN).
+	 * {@code FRAME} and {@code VISIBILITY} are TrackMate's to set.
 	 *
 	 * @param loc the localization, in whole-image pixel indices
 	 * @param pixelWidth pixel size along x
@@ -206,37 +252,24 @@ public final class ContactTrackerDetector<T extends RealType<T> & NativeType<T>>
 	 */
 	public static Spot toSpot(final Localization loc, final double pixelWidth, final double pixelHeight) {
 		final Calibration cal = new Calibration(pixelWidth, pixelHeight, null, 1, null);
-		final Spot spot = new SpotBase(SpotColumn.POSITION_X.value(loc, 0, cal), SpotColumn.POSITION_Y.value(loc, 0, cal),
+		final Spot spot = new Spot(SpotColumn.POSITION_X.value(loc, 0, cal), SpotColumn.POSITION_Y.value(loc, 0, cal),
 			0, SpotColumn.RADIUS.value(loc, 0, cal), SpotColumn.QUALITY.value(loc, 0, cal));
-		for (final SpotColumn c : SpotColumn.values()) {
-			if (c.isTrackMateKey()) continue;
-			final double v = c.value(loc, 0, cal);
-			if (Double.isFinite(v)) spot.putFeature(c.key(), v);
-		}
+		for (final SpotColumn c : SpotColumn.values())
+			if (!c.isTrackMateKey()) spot.putFeature(c.key(), c.value(loc, 0, cal));
 		return spot;
+	}
+
+	private void status(final String status) {
+		if (logger != null) logger.setStatus(status);
+	}
+
+	private void progress(final double fraction) {
+		if (logger != null) logger.setProgress(fraction);
 	}
 
 	private boolean fail(final String message) {
 		errorMessage = message;
-		plane = null;
+		frames.clear();
 		return false;
-	}
-
-	private static TrackerParameters parametersOrNull(final Map<String, Object> settings) {
-		try {
-			return DetectorSettings.parameters(settings);
-		}
-		catch (final IllegalArgumentException e) {
-			return null;
-		}
-	}
-
-	private static int channelOrZero(final Map<String, Object> settings) {
-		try {
-			return DetectorSettings.targetChannel(settings);
-		}
-		catch (final IllegalArgumentException e) {
-			return 0;
-		}
 	}
 }

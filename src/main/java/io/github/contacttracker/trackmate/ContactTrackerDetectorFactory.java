@@ -10,8 +10,9 @@ import org.scijava.plugin.Plugin;
 
 import fiji.plugin.trackmate.Model;
 import fiji.plugin.trackmate.Settings;
-import fiji.plugin.trackmate.detection.SpotDetector;
-import fiji.plugin.trackmate.detection.SpotDetectorFactory;
+import fiji.plugin.trackmate.detection.SpotDetectorFactoryBase;
+import fiji.plugin.trackmate.detection.SpotGlobalDetector;
+import fiji.plugin.trackmate.detection.SpotGlobalDetectorFactory;
 import fiji.plugin.trackmate.gui.components.ConfigurationPanel;
 import net.imagej.ImgPlus;
 import net.imglib2.Interval;
@@ -19,21 +20,31 @@ import net.imglib2.type.NativeType;
 import net.imglib2.type.numeric.RealType;
 
 /**
- * The Contact Tracker detector for TrackMate 8 ({@code fiji.plugin.trackmate.detection.SpotDetectorFactory}),
- * discovered by SciJava through {@link Plugin} and keyed {@value #DETECTOR_KEY}.
+ * The Contact Tracker detector for TrackMate 8.0.0 to 8.1.x, a
+ * {@code fiji.plugin.trackmate.detection.SpotGlobalDetectorFactory}: TrackMate hands it the whole movie at once,
+ * so the profile methods measure the particles' profile over the movie exactly as the command line does, and
+ * TrackMate's spots equal the command line's. Discovered by SciJava through {@link Plugin}, keyed
+ * {@value #DETECTOR_KEY}; its spot features are declared by {@link ContactTrackerSpotFeatures}.
  * <p>
  * TrackMate instantiates it through the public no-argument constructor; it keeps no state. Every method of
  * TrackMate's module and factory interfaces is implemented here (except {@code copy()}), so the class links
  * against TrackMate whether a given 8.x release declares a method abstract or default. Settings: see
  * {@link DetectorSettings}.
  */
-@Plugin(type = SpotDetectorFactory.class)
-public class ContactTrackerDetectorFactory<T extends RealType<T> & NativeType<T>> implements SpotDetectorFactory<T> {
+// Registered under the type TrackMate's DetectorProvider asks SciJava for, so it is found by exact type.
+@Plugin(type = SpotDetectorFactoryBase.class)
+public class ContactTrackerDetectorFactory<T extends RealType<T> & NativeType<T>> implements SpotGlobalDetectorFactory<T> {
 
 	/** The key of this detector in TrackMate (settings maps, XML files, scripts). */
 	public static final String DETECTOR_KEY = DetectorSettings.DETECTOR_KEY;
 
 	public static final String NAME = "Contact Tracker (particles near contact)";
+
+	/** The name on the configuration panel's title line. */
+	static final String SHORT_NAME = "Contact Tracker detector";
+
+	/** The detector's icon (two touching particles), shown in TrackMate's detector list and panel. */
+	static final ImageIcon ICON = ContactTrackerConfigurationPanel.icon();
 
 	public static final String KEY_TARGET_CHANNEL = DetectorSettings.KEY_TARGET_CHANNEL;
 	public static final String KEY_THRESHOLD = DetectorSettings.KEY_THRESHOLD;
@@ -43,38 +54,38 @@ public class ContactTrackerDetectorFactory<T extends RealType<T> & NativeType<T>
 	public static final String KEY_CONNECTIVITY = DetectorSettings.KEY_CONNECTIVITY;
 	public static final String KEY_METHOD = DetectorSettings.KEY_METHOD;
 
-	/** Project page. */
-	public static final String URL = "https://github.com/contact-tracker/contact-tracker";
+	/** The paper the method comes from (its DOI page). */
+	public static final String URL = "https://doi.org/10.1088/1361-648X/aa908e";
 
 	public static final String INFO_TEXT = "<html>"
-		+ "Sub-pixel localization of bright colloidal particles, including particles close to contact whose "
-		+ "images overlap, with the radial-symmetry method of Y&uuml;cel and Okumu&#351;o&#287;lu."
+		+ "Sub-pixel centres of bright colloidal particles, also when they touch and their images overlap "
+		+ "(Y&uuml;cel &amp; Okumu&#351;o&#287;lu, J. Phys.: Condens. Matter 29, 465101, 2017)."
 		+ "<p>"
-		+ "Pixels at or above THRESHOLD (a grey level) form active areas, one per particle; areas smaller than "
-		+ "MIN_AREA pixels are noise. Each particle's centre is where its intensity-gradient lines meet. "
-		+ "With the <i>paper</i> method, the centre is computed again on the active area outside the other "
-		+ "particles' discs of radius R_OUT (pixels), which removes most of the bias from overlapping "
-		+ "neighbours.</p>"
+		+ "Pixels at or above THRESHOLD (a grey level) form one active area per particle. Each centre is found by "
+		+ "radial symmetry, then refined away from its neighbours, whose images reach R_OUT pixels. The default "
+		+ "method, fit, fits touching particles jointly with their profile measured over the movie: unbiased at "
+		+ "contact.</p>"
 		+ "<p>"
-		+ "Spots: RADIUS is the equivalent radius of the active area, sqrt(area/&pi;); QUALITY is the "
-		+ "integrated intensity above THRESHOLD over the active area. 2D images and 2D time-lapses only.</p>"
-		+ "<p>"
-		+ "If you use it, please cite: H. Y&uuml;cel and N. T. Okumu&#351;o&#287;lu, <i>A new tracking algorithm "
-		+ "for multiple colloidal particles close to contact</i>, J. Phys.: Condens. Matter <b>29</b>, 465101 "
-		+ "(2017), doi:10.1088/1361-648X/aa908e.</p>"
+		+ "Spots: RADIUS is the active area's equivalent radius; QUALITY the intensity above THRESHOLD summed over "
+		+ "it; SIGMA_X/Y the standard errors; FLAG_... what happened. 2D images and time-lapses only.</p>"
 		+ "</html>";
 
+	/**
+	 * @param img the whole image (every channel and frame)
+	 * @param settings the detector settings ({@link DetectorSettings})
+	 * @param interval what to analyse: X, Y, Z and time, no channel axis (TrackMate's
+	 *        {@code TMUtils.getIntervalWithTime}); {@code null} for the whole movie
+	 */
 	@Override
-	public SpotDetector<T> getDetector(final ImgPlus<T> img, final Map<String, Object> settings,
-		final Interval interval, final int frame)
+	public SpotGlobalDetector<T> getDetector(final ImgPlus<T> img, final Map<String, Object> settings,
+		final Interval interval)
 	{
-		return new ContactTrackerDetector<>(img, interval, frame, settings);
+		return new ContactTrackerDetector<>(img, interval, settings);
 	}
 
 	@Override
 	public ConfigurationPanel getDetectorConfigurationPanel(final Settings settings, final Model model) {
-		final int channels = settings == null || settings.imp == null ? 1 : Math.max(1, settings.imp.getNChannels());
-		return new ContactTrackerConfigurationPanel(channels, settings == null ? null : settings.imp);
+		return new ContactTrackerConfigurationPanel(settings, model, this);
 	}
 
 	@Override
@@ -151,7 +162,7 @@ public class ContactTrackerDetectorFactory<T extends RealType<T> & NativeType<T>
 
 	@Override
 	public ImageIcon getIcon() {
-		return null;
+		return ICON;
 	}
 
 	@Override

@@ -11,6 +11,7 @@ import java.io.IOException;
 import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.HashSet;
 import java.util.List;
@@ -75,12 +76,18 @@ class TrackMateXmlWriterTest {
 		return v;
 	}
 
+	/** A finite number, as TrackMate's own spot features must be. */
 	private static double number(final Element e, final String name) {
+		final double d = parsable(e, name);
+		assertTrue(Double.isFinite(d), name + " = " + d);
+		return d;
+	}
+
+	/** A number TrackMate's reader parses ({@code Double.valueOf}): NaN allowed, as for an unestimated error. */
+	private static double parsable(final Element e, final String name) {
 		final String v = attr(e, name);
 		try {
-			final double d = Double.parseDouble(v);
-			assertTrue(Double.isFinite(d), name + " = " + v);
-			return d;
+			return Double.valueOf(v);
 		}
 		catch (final NumberFormatException x) {
 			throw new AssertionError("<" + e.getName() + "> " + name + " = '" + v + "' is not a number");
@@ -148,9 +155,9 @@ class TrackMateXmlWriterTest {
 				assertEquals("1", attr(s, "VISIBILITY"));
 				for (final Attribute a : s.getAttributes()) {
 					if (a.getName().equals("ID") || a.getName().equals("name")) continue;
-					number(s, a.getName()); // every other attribute is parsed as a number by TrackMate
-					if (!trackMateAttributes.contains(a.getName()))
-						assertTrue(declared.containsKey(a.getName()), a.getName() + " is not declared");
+					parsable(s, a.getName()); // every other attribute is parsed as a number by TrackMate
+					if (trackMateAttributes.contains(a.getName())) number(s, a.getName());
+					else assertTrue(declared.containsKey(a.getName()), a.getName() + " is not declared");
 				}
 				// positions in physical units: pixels times calibration
 				final Localization l = spots.get(id);
@@ -205,18 +212,34 @@ class TrackMateXmlWriterTest {
 		assertFalse(child(root, "Log").getText().isBlank());
 	}
 
+	/**
+	 * TrackMate's standard spot features are declared as TrackMate 8.0.0's {@code Spot} declares them (first, in its
+	 * order: pytrackmate builds its tables from the declarations and fails without QUALITY), then every extra column
+	 * with its dimension and integer flag.
+	 */
 	@Test
-	void declaresEveryExtraColumnWithItsDimensionAndIntegerFlag() throws Exception {
+	void declaresTrackMatesStandardFeaturesThenEveryExtraColumn() throws Exception {
 		final Element decl = writeAndParse(spots()).getRootElement().getChild("Model").getChild("FeatureDeclarations")
 			.getChild("SpotFeatures");
+		final List<String> order = new ArrayList<>();
 		final Map<String, Element> byKey = new HashMap<>();
-		for (final Element f : decl.getChildren("Feature"))
+		for (final Element f : decl.getChildren("Feature")) {
+			order.add(f.getAttributeValue("feature"));
 			byKey.put(f.getAttributeValue("feature"), f);
+		}
+		// name, short name, dimension, isint: from TrackMate 8.0.0's Spot (git show TrackMate-8.0.0:.../Spot.java)
+		final String[][] trackMate = { { "QUALITY", "Quality", "Quality", "QUALITY", "false" },
+			{ "POSITION_X", "X", "X", "POSITION", "false" }, { "POSITION_Y", "Y", "Y", "POSITION", "false" },
+			{ "POSITION_Z", "Z", "Z", "POSITION", "false" }, { "POSITION_T", "T", "T", "TIME", "false" },
+			{ "FRAME", "Frame", "Frame", "NONE", "true" }, { "RADIUS", "Radius", "R", "LENGTH", "false" },
+			{ "VISIBILITY", "Visibility", "Visibility", "NONE", "true" } };
+		for (int i = 0; i < trackMate.length; i++) {
+			final Element f = decl.getChildren("Feature").get(i);
+			assertEquals(List.of(trackMate[i]), List.of(f.getAttributeValue("feature"), f.getAttributeValue("name"), f
+				.getAttributeValue("shortname"), f.getAttributeValue("dimension"), f.getAttributeValue("isint")));
+		}
 		for (final SpotColumn c : SpotColumn.values()) {
-			if (c.isTrackMateKey()) {
-				assertFalse(byKey.containsKey(c.key()), "TrackMate declares its own " + c.key());
-				continue;
-			}
+			if (c.isTrackMateKey()) continue;
 			final Element f = byKey.get(c.key());
 			assertNotNull(f, c.key());
 			assertEquals(c.title(), f.getAttributeValue("name"));
@@ -224,18 +247,22 @@ class TrackMateXmlWriterTest {
 			assertEquals(c.dimension().name(), f.getAttributeValue("dimension"));
 			assertEquals(Boolean.toString(c.isInteger()), f.getAttributeValue("isint"));
 		}
+		assertEquals(new HashSet<>(order).size(), order.size(), "a feature declared twice: " + order);
+		assertFalse(byKey.containsKey("ID"), "ID is an attribute, not a feature");
 	}
 
 	@Test
-	void nonFiniteExtraValuesAreLeftOutAndIntegersHaveNoDecimalPoint() throws Exception {
+	void nonFiniteExtraValuesAreWrittenAsNaNAndIntegersHaveNoDecimalPoint() throws Exception {
 		final Element allSpots = writeAndParse(spots()).getRootElement().getChild("Model").getChild("AllSpots");
 		Element third = null;
 		for (final Element f : allSpots.getChildren("SpotsInFrame"))
 			for (final Element s : f.getChildren("Spot"))
 				if ("2".equals(s.getAttributeValue("ID"))) third = s;
 		assertNotNull(third);
-		assertNull(third.getAttribute("SIGMA_X"));
-		assertNull(third.getAttribute("SIGMA_Y"));
+		// every declared feature on every spot (pytrackmate refuses a spot that lacks one); TrackMate reads "NaN"
+		assertEquals("NaN", third.getAttributeValue("SIGMA_X"));
+		assertEquals("NaN", third.getAttributeValue("SIGMA_Y"));
+		assertTrue(Double.isNaN(Double.valueOf(third.getAttributeValue("SIGMA_X"))));
 		assertEquals("1", third.getAttributeValue("FLAG_FELL_BACK"));
 		assertEquals("0", third.getAttributeValue("FLAG_SECOND_PASS"));
 		assertEquals("90", third.getAttributeValue("ACTIVE_AREA"));

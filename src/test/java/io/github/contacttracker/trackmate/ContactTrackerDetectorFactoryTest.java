@@ -6,12 +6,16 @@ import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.util.Arrays;
+import java.awt.Component;
+import java.awt.Container;
+import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 
 import javax.swing.JComboBox;
+import javax.swing.JLabel;
+import javax.swing.JSpinner;
 
 import org.jdom2.Element;
 import org.junit.jupiter.api.Test;
@@ -21,8 +25,12 @@ import org.scijava.plugin.PluginService;
 
 import fiji.plugin.trackmate.Model;
 import fiji.plugin.trackmate.Settings;
-import fiji.plugin.trackmate.detection.SpotDetectorFactory;
+import fiji.plugin.trackmate.detection.SpotDetectorFactoryBase;
+import fiji.plugin.trackmate.detection.SpotGlobalDetectorFactory;
+import fiji.plugin.trackmate.features.spot.SpotAnalyzerFactory;
 import fiji.plugin.trackmate.gui.components.ConfigurationPanel;
+import ij.IJ;
+import ij.ImagePlus;
 import io.github.contacttracker.core.Connectivity;
 import io.github.contacttracker.core.Method;
 import io.github.contacttracker.core.TrackerParameters;
@@ -41,13 +49,14 @@ class ContactTrackerDetectorFactoryTest {
 		assertFalse(factory.getName().isBlank());
 		final String info = factory.getInfoText();
 		assertTrue(info.startsWith("<html>") && info.endsWith("</html>"));
-		assertTrue(info.contains("465101") && info.contains("10.1088/1361-648X/aa908e"), "must cite the paper");
+		assertTrue(info.contains("465101"), "must cite the paper");
 		assertTrue(info.contains("RADIUS") && info.contains("QUALITY"), "must document radius and quality");
-		assertNull(factory.getIcon());
+		assertNotNull(factory.getIcon());
+		assertEquals(32, factory.getIcon().getIconWidth());
 		assertFalse(factory.forbidMultithreading());
 		assertFalse(factory.has2Dsegmentation());
 		assertFalse(factory.has3Dsegmentation());
-		assertTrue(factory.getUrl().startsWith("https://"));
+		assertEquals("https://doi.org/10.1088/1361-648X/aa908e", factory.getUrl(), "a link that exists: the paper");
 	}
 
 	@Test
@@ -151,19 +160,29 @@ class ContactTrackerDetectorFactoryTest {
 		assertEquals(factory.getKey(), ((ContactTrackerDetectorFactory<?>) copy).getKey());
 	}
 
-	/** TrackMate's DetectorProvider finds detectors through SciJava's plugin service, as here. */
+	/**
+	 * TrackMate finds detectors and spot analyzers through SciJava's plugin service: its DetectorProvider asks for
+	 * {@code SpotDetectorFactoryBase} plugins, its SpotAnalyzerProvider for {@code SpotAnalyzerFactory} plugins.
+	 */
 	@Test
-	void sciJavaDiscoversItAsASpotDetectorFactory() {
+	void sciJavaDiscoversTheDetectorAndTheSpotFeatures() {
 		try (Context context = new Context(PluginService.class)) {
 			final PluginService plugins = context.service(PluginService.class);
-			@SuppressWarnings("rawtypes")
-			final List<PluginInfo<SpotDetectorFactory>> infos = plugins.getPluginsOfType(SpotDetectorFactory.class);
-			final PluginInfo<?> ours = infos.stream()
-				.filter(i -> i.getClassName().equals(ContactTrackerDetectorFactory.class.getName())).findFirst().orElse(null);
-			assertNotNull(ours, "not indexed as a SpotDetectorFactory plugin");
-			final SpotDetectorFactory<?> instance = (SpotDetectorFactory<?>) plugins.createInstance(ours);
-			assertEquals(ContactTrackerDetectorFactory.DETECTOR_KEY, instance.getKey());
+			final Object detector = instanceOf(plugins, SpotDetectorFactoryBase.class, ContactTrackerDetectorFactory.class);
+			assertTrue(detector instanceof SpotGlobalDetectorFactory, "TrackMate must drive it as a global detector");
+			assertEquals(ContactTrackerDetectorFactory.DETECTOR_KEY, ((SpotDetectorFactoryBase<?>) detector).getKey());
+			final Object features = instanceOf(plugins, SpotAnalyzerFactory.class, ContactTrackerSpotFeatures.class);
+			assertEquals(ContactTrackerSpotFeatures.KEY, ((SpotAnalyzerFactory<?>) features).getKey());
 		}
+	}
+
+	@SuppressWarnings({ "rawtypes", "unchecked" })
+	private static Object instanceOf(final PluginService plugins, final Class type, final Class<?> ours) {
+		final List<PluginInfo<?>> infos = plugins.getPluginsOfType(type);
+		final PluginInfo info = infos.stream().filter(i -> i.getClassName().equals(ours.getName())).findFirst()
+			.orElse(null);
+		assertNotNull(info, ours.getSimpleName() + " is not indexed as a " + type.getSimpleName() + " plugin");
+		return plugins.createInstance(info);
 	}
 
 	@Test
@@ -180,7 +199,7 @@ class ContactTrackerDetectorFactoryTest {
 		panel.clean();
 
 		// every method is offered, so new ones appear without touching the panel
-		final JComboBox<?> methods = Arrays.stream(panel.getComponents()).filter(c -> c instanceof JComboBox<?>)
+		final JComboBox<?> methods = allComponents(panel).stream().filter(c -> c instanceof JComboBox<?>)
 			.map(c -> (JComboBox<?>) c).filter(c -> c.getItemCount() > 0 && Method.values()[0].key().equals(c.getItemAt(0)))
 			.findFirst().orElse(null);
 		assertNotNull(methods);
@@ -193,5 +212,52 @@ class ContactTrackerDetectorFactoryTest {
 		ch3.put("TARGET_CHANNEL", 3);
 		panel.setSettings(ch3);
 		assertEquals(3, panel.getSettings().get("TARGET_CHANNEL"));
+	}
+
+	/** On a calibrated image r_out is shown in its units and still returned in pixels, exactly. */
+	@Test
+	void panelAsksRoutInPhysicalUnitsAndReturnsPixels() {
+		final ImagePlus imp = IJ.createImage("calibrated", "8-bit black", 64, 48, 1);
+		imp.getCalibration().pixelWidth = imp.getCalibration().pixelHeight = 0.0847;
+		imp.getCalibration().setUnit("micron");
+		final ConfigurationPanel panel = factory.getDetectorConfigurationPanel(new Settings(imp), new Model());
+		final Map<String, Object> s = factory.getDefaultSettings();
+		s.put("R_OUT", 61.0);
+		panel.setSettings(s);
+		assertEquals(61.0, panel.getSettings().get("R_OUT"));
+		final List<Component> all = allComponents(panel);
+		assertTrue(all.stream().anyMatch(c -> c instanceof JLabel && "micron".equals(((JLabel) c).getText())),
+			"r_out's unit must be shown");
+		assertTrue(all.stream().anyMatch(c -> c instanceof JSpinner && Math.abs(((Number) ((JSpinner) c).getValue())
+			.doubleValue() - 61 * 0.0847) < 1e-9), "r_out must be shown in microns");
+		assertTrue(all.stream().anyMatch(c -> c instanceof JLabel && "= 61 pixels".equals(((JLabel) c).getText())));
+	}
+
+	/**
+	 * TrackMate's wizard gives a detector panel about 300 x 511 pixels and no scroll bar; TrackMate's Preview panel
+	 * (histogram at most 150 px, plus its button row) takes the bottom. Everything else must fit above it.
+	 */
+	@Test
+	void panelFitsTheWizardAboveTrackMatesPreview() {
+		final ImagePlus imp = IJ.createImage("two channels", "8-bit black", 64, 48, 2);
+		imp.setDimensions(2, 1, 1);
+		final ConfigurationPanel panel = factory.getDetectorConfigurationPanel(new Settings(imp), new Model());
+		final java.awt.Dimension natural = panel.getLayout().preferredLayoutSize(panel);
+		final int previewHeight = 150 + 40;
+		assertTrue(natural.height + previewHeight <= ContactTrackerConfigurationPanel.WIZARD_SIZE.height,
+			"panel too tall for the wizard: " + natural);
+		assertTrue(natural.width <= ContactTrackerConfigurationPanel.WIZARD_SIZE.width + 20,
+			"panel too wide for the wizard: " + natural);
+		assertTrue(allComponents(panel).stream().anyMatch(c -> c instanceof fiji.plugin.trackmate.util.DetectionPreviewPanel),
+			"TrackMate's Preview must be on the panel");
+	}
+
+	private static List<Component> allComponents(final Container root) {
+		final List<Component> all = new ArrayList<>();
+		for (final Component c : root.getComponents()) {
+			all.add(c);
+			if (c instanceof Container) all.addAll(allComponents((Container) c));
+		}
+		return all;
 	}
 }

@@ -6,15 +6,19 @@ import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.awt.Color;
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.List;
 import java.util.Map;
 
 import org.junit.jupiter.api.Test;
 
+import fiji.plugin.trackmate.Logger;
 import fiji.plugin.trackmate.Spot;
-import fiji.plugin.trackmate.detection.SpotDetector;
-import fiji.plugin.trackmate.detection.SpotDetectorFactory;
+import fiji.plugin.trackmate.SpotCollection;
+import fiji.plugin.trackmate.detection.SpotGlobalDetector;
+import fiji.plugin.trackmate.detection.SpotGlobalDetectorFactory;
 import io.github.contacttracker.core.ContactTracker;
 import io.github.contacttracker.core.Flag;
 import io.github.contacttracker.core.Localization;
@@ -25,40 +29,46 @@ import net.imagej.axis.AxisType;
 import net.imglib2.FinalInterval;
 import net.imglib2.Interval;
 import net.imglib2.RandomAccessibleInterval;
+import net.imglib2.algorithm.MultiThreaded;
 import net.imglib2.img.array.ArrayImg;
 import net.imglib2.img.basictypeaccess.array.FloatArray;
 import net.imglib2.type.numeric.real.FloatType;
 import net.imglib2.view.Views;
 
 /**
- * The detector driven the way TrackMate 8 drives it: {@code factory.getDetector(img, settings, interval, frame)}
- * on the WHOLE calibrated image, then {@code checkInput()}, {@code process()}, {@code getResult()}, and
- * {@code getErrorMessage()} on failure. Its spots must be the core's localizations times the calibration.
+ * The detector driven the way TrackMate 8 drives a global detector ({@code TrackMate.processGlobal}):
+ * {@code factory.getDetector(img, settings, interval)} on the WHOLE calibrated image with TrackMate's interval
+ * (the image's axes without channel, time included), then {@code setLogger}, {@code setNumThreads},
+ * {@code checkInput()}, {@code process()}, {@code getResult()}, and {@code getErrorMessage()} on failure. Its
+ * spots must be the core's localizations times the calibration, filed under the movie's frame numbers.
  */
 class ContactTrackerDetectorTest {
 
 	private static final double DX = 0.1, DY = 0.2, DT = 0.5; // anisotropic, to catch x/y mix-ups
 
-	private final SpotDetectorFactory<FloatType> factory = new ContactTrackerDetectorFactory<>();
+	private final SpotGlobalDetectorFactory<FloatType> factory = new ContactTrackerDetectorFactory<>();
 
-	/** What TrackMate does per frame; fails the test with TrackMate's error message when the detector fails. */
-	private List<Spot> detect(final ImgPlus<FloatType> img, final Map<String, Object> settings, final Interval interval,
-		final int frame)
+	/** What TrackMate does; fails the test with TrackMate's error message when the detector fails. */
+	private SpotCollection detect(final ImgPlus<FloatType> img, final Map<String, Object> settings,
+		final Interval interval)
 	{
 		assertNull(factory.checkSettings(settings));
-		final SpotDetector<FloatType> detector = factory.getDetector(img, settings, interval, frame);
+		final SpotGlobalDetector<FloatType> detector = factory.getDetector(img, settings, interval);
+		((MultiThreaded) detector).setNumThreads(2);
 		final boolean ok = detector.checkInput() && detector.process();
 		assertTrue(ok, () -> detector.getErrorMessage());
-		assertTrue(detector.getProcessingTime() >= 0);
 		return detector.getResult();
 	}
 
-	/** The interval TrackMate builds: the image's dimensions without time, a one-wide channel axis if any. */
-	private static Interval trackMateInterval(final ImgPlus<?> img, final int channel) {
+	/**
+	 * The interval TrackMate builds for a global detector ({@code TMUtils.getIntervalWithTime}): every axis of
+	 * the image but the channel, time limited to {@code [tstart, tend]}.
+	 */
+	static Interval trackMateInterval(final ImgPlus<?> img, final long tstart, final long tend) {
 		final List<long[]> ranges = new ArrayList<>();
 		for (int d = 0; d < img.numDimensions(); d++) {
-			if (d == img.dimensionIndex(Axes.TIME)) continue;
-			if (d == img.dimensionIndex(Axes.CHANNEL)) ranges.add(new long[] { channel - 1, channel - 1 });
+			if (d == img.dimensionIndex(Axes.CHANNEL)) continue;
+			if (d == img.dimensionIndex(Axes.TIME)) ranges.add(new long[] { tstart, tend });
 			else ranges.add(new long[] { img.min(d), img.max(d) });
 		}
 		final long[] min = new long[ranges.size()], max = new long[ranges.size()];
@@ -69,6 +79,11 @@ class ContactTrackerDetectorTest {
 		return new FinalInterval(min, max);
 	}
 
+	private static Interval wholeMovie(final ImgPlus<?> img) {
+		final int td = img.dimensionIndex(Axes.TIME);
+		return trackMateInterval(img, 0, td < 0 ? 0 : img.max(td));
+	}
+
 	private static ImgPlus<FloatType> imgPlus(final ArrayImg<FloatType, FloatArray> img, final AxisType... axes) {
 		final double[] cal = new double[axes.length];
 		for (int d = 0; d < axes.length; d++)
@@ -76,27 +91,35 @@ class ContactTrackerDetectorTest {
 		return new ImgPlus<>(img, "test", axes, cal);
 	}
 
+	/** The spots of one frame, sorted as the core sorts its localizations (by ID, i.e. creation order). */
+	private static List<Spot> spotsOf(final SpotCollection spots, final int frame) {
+		final List<Spot> list = new ArrayList<>();
+		final Iterable<Spot> it = spots.iterable(frame, false);
+		if (it != null) it.forEach(list::add);
+		list.sort(Comparator.naturalOrder());
+		return list;
+	}
+
 	/** Asserts the spots are exactly the localizations scaled by the calibration, in the same order. */
-	private static void assertSpotsEqualCoreTimesCalibration(final List<Localization> expected, final List<Spot> spots) {
-		assertEquals(expected.size(), spots.size());
+	private static void assertSpotsEqualCoreTimesCalibration(final List<Localization> expected, final List<Spot> spots,
+		final int frame)
+	{
+		assertEquals(expected.size(), spots.size(), "spots in frame " + frame);
 		for (int i = 0; i < spots.size(); i++) {
 			final Localization l = expected.get(i);
 			final Spot s = spots.get(i);
 			assertEquals(l.x() * DX, s.getFeature(Spot.POSITION_X), 0, "x of spot " + i);
 			assertEquals(l.y() * DY, s.getFeature(Spot.POSITION_Y), 0, "y of spot " + i);
 			assertEquals(0, s.getFeature(Spot.POSITION_Z), 0);
+			assertEquals(frame, s.getFeature(Spot.FRAME), 0, "FRAME is the movie's frame number");
 			assertEquals(l.radius() * Math.sqrt(DX * DY), s.getFeature(Spot.RADIUS), 1e-12);
 			assertEquals(l.quality(), s.getFeature(Spot.QUALITY), 0);
 			assertEquals(l.firstX() * DX, s.getFeature(SpotColumn.FIRST_PASS_X.key()), 0);
 			assertEquals(l.firstY() * DY, s.getFeature(SpotColumn.FIRST_PASS_Y.key()), 0);
+			assertEquals(l.sigmaX() * DX, s.getFeature(SpotColumn.SIGMA_X.key()), 0);
 			assertEquals(l.activeArea(), s.getFeature(SpotColumn.ACTIVE_AREA.key()), 0);
 			assertEquals(l.secondArea(), s.getFeature(SpotColumn.SECOND_AREA.key()), 0);
 			assertEquals(l.has(Flag.SECOND_PASS) ? 1 : 0, s.getFeature(SpotColumn.FLAG_SECOND_PASS.key()), 0);
-			for (final SpotColumn c : SpotColumn.values())
-				if (!c.isTrackMateKey()) {
-					final Double v = s.getFeature(c.key());
-					if (v != null) assertTrue(Double.isFinite(v), c.key());
-				}
 		}
 	}
 
@@ -108,32 +131,38 @@ class ContactTrackerDetectorTest {
 	void calibrated2DFrameGivesTheCoreTimesTheCalibration() {
 		final ArrayImg<FloatType, FloatArray> raw = TestImages.image(TestImages.WIDTH, TestImages.HEIGHT);
 		final ImgPlus<FloatType> img = imgPlus(raw, Axes.X, Axes.Y);
-		final List<Spot> spots = detect(img, TestImages.settings(1), trackMateInterval(img, 1), 0);
+		final SpotCollection spots = detect(img, TestImages.settings(1), wholeMovie(img));
 		final List<Localization> expected = core(raw, 0);
 		assertEquals(3, expected.size(), "the test frame must hold three particles");
 		assertTrue(expected.stream().anyMatch(l -> l.has(Flag.SECOND_PASS)), "the close pair must use the second pass");
-		assertSpotsEqualCoreTimesCalibration(expected, spots);
+		assertSpotsEqualCoreTimesCalibration(expected, spotsOf(spots, 0), 0);
 		// and the positions are where the particles are, in physical units
 		for (final double[] c : TestImages.CENTRES)
-			assertTrue(spots.stream().anyMatch(s -> Math.abs(s.getFeature(Spot.POSITION_X) - c[0] * DX) < 0.5 * DX &&
-				Math.abs(s.getFeature(Spot.POSITION_Y) - c[1] * DY) < 0.5 * DY), "no spot near " + c[0] + ", " + c[1]);
+			assertTrue(spotsOf(spots, 0).stream().anyMatch(s -> Math.abs(s.getFeature(Spot.POSITION_X) - c[0] * DX) < 0.5 *
+				DX && Math.abs(s.getFeature(Spot.POSITION_Y) - c[1] * DY) < 0.5 * DY), "no spot near " + c[0] + ", " + c[1]);
+		// as in TrackMate's SpotCollection.put: invisible until TrackMate's filters run
+		assertEquals(0, spots.getNSpots(true));
 	}
 
 	@Test
-	void timeLapseTakesOutTheRequestedFrame() {
-		final ArrayImg<FloatType, FloatArray> raw = TestImages.image(TestImages.WIDTH, TestImages.HEIGHT, 3);
+	void timeLapseDetectsEveryFrameOfTheIntervalUnderItsOwnFrameNumber() {
+		final ArrayImg<FloatType, FloatArray> raw = TestImages.image(TestImages.WIDTH, TestImages.HEIGHT, 4);
 		final ImgPlus<FloatType> img = imgPlus(raw, Axes.X, Axes.Y, Axes.TIME);
-		final Interval interval = trackMateInterval(img, 1);
-		assertEquals(2, interval.numDimensions(), "TrackMate's interval has no time axis");
+		final SpotCollection all = detect(img, TestImages.settings(1), wholeMovie(img));
+		assertEquals(List.of(0, 1, 2, 3), new ArrayList<>(all.keySet()));
 		double previousX = Double.NEGATIVE_INFINITY;
-		for (int t = 0; t < 3; t++) {
-			final List<Spot> spots = detect(img, TestImages.settings(1), interval, t);
-			assertSpotsEqualCoreTimesCalibration(core(Views.hyperSlice(raw, 2, t), t), spots);
-			assertEquals(3, spots.size(), "frame " + t);
+		for (int t = 0; t < 4; t++) {
+			final List<Spot> spots = spotsOf(all, t);
+			assertSpotsEqualCoreTimesCalibration(core(Views.hyperSlice(raw, 2, t), t), spots, t);
 			final double x = spots.stream().mapToDouble(s -> s.getFeature(Spot.POSITION_X)).min().getAsDouble();
 			assertTrue(x > previousX, "frames must differ: the particles move right");
 			previousX = x;
 		}
+		// TrackMate's tstart/tend: only frames 1 and 2, filed as frames 1 and 2
+		final SpotCollection part = detect(img, TestImages.settings(1), trackMateInterval(img, 1, 2));
+		assertEquals(List.of(1, 2), new ArrayList<>(part.keySet()));
+		for (int t = 1; t <= 2; t++)
+			assertSpotsEqualCoreTimesCalibration(core(Views.hyperSlice(raw, 2, t), t), spotsOf(part, t), t);
 	}
 
 	@Test
@@ -143,13 +172,15 @@ class ContactTrackerDetectorTest {
 		for (int t = 0; t < 2; t++)
 			TestImages.blank(Views.flatIterable(Views.hyperSlice(Views.hyperSlice(raw, 3, t), 2, 0)).cursor());
 		final ImgPlus<FloatType> img = imgPlus(raw, Axes.X, Axes.Y, Axes.CHANNEL, Axes.TIME);
-		final Interval interval = trackMateInterval(img, 2);
-		assertEquals(3, interval.numDimensions(), "TrackMate's interval keeps a one-wide channel axis");
+		final Interval interval = wholeMovie(img);
+		assertEquals(3, interval.numDimensions(), "TrackMate's global interval drops the channel axis");
 
-		final List<Spot> spots = detect(img, TestImages.settings(2), interval, 1);
-		assertSpotsEqualCoreTimesCalibration(core(Views.hyperSlice(Views.hyperSlice(raw, 3, 1), 2, 1), 1), spots);
-		assertEquals(3, spots.size());
-		assertTrue(detect(img, TestImages.settings(1), trackMateInterval(img, 1), 1).isEmpty(), "channel 1 is empty");
+		final SpotCollection spots = detect(img, TestImages.settings(2), interval);
+		for (int t = 0; t < 2; t++)
+			assertSpotsEqualCoreTimesCalibration(core(Views.hyperSlice(Views.hyperSlice(raw, 3, t), 2, 1), t),
+				spotsOf(spots, t), t);
+		assertEquals(6, spots.getNSpots(false));
+		assertEquals(0, detect(img, TestImages.settings(1), interval).getNSpots(false), "channel 1 is empty");
 	}
 
 	@Test
@@ -157,10 +188,10 @@ class ContactTrackerDetectorTest {
 		final ArrayImg<FloatType, FloatArray> raw = TestImages.image(TestImages.WIDTH, TestImages.HEIGHT);
 		final ImgPlus<FloatType> img = imgPlus(raw, Axes.X, Axes.Y);
 		final Interval crop = new FinalInterval(new long[] { 38, 30 }, new long[] { 60, 52 }); // around the lone particle
-		final List<Spot> spots = detect(img, TestImages.settings(1), crop, 0);
+		final List<Spot> spots = spotsOf(detect(img, TestImages.settings(1), crop), 0);
 		final List<Localization> expected = core(Views.interval(raw, crop), 0);
 		assertEquals(1, expected.size());
-		assertSpotsEqualCoreTimesCalibration(expected, spots);
+		assertSpotsEqualCoreTimesCalibration(expected, spots, 0);
 		assertEquals(TestImages.CENTRES[2][0] * DX, spots.get(0).getFeature(Spot.POSITION_X), 0.5 * DX);
 		assertEquals(TestImages.CENTRES[2][1] * DY, spots.get(0).getFeature(Spot.POSITION_Y), 0.5 * DY);
 	}
@@ -169,22 +200,22 @@ class ContactTrackerDetectorTest {
 	void singleZSliceIsAccepted() {
 		final ArrayImg<FloatType, FloatArray> raw = TestImages.image(TestImages.WIDTH, TestImages.HEIGHT, 1, 2);
 		final ImgPlus<FloatType> img = imgPlus(raw, Axes.X, Axes.Y, Axes.Z, Axes.TIME);
-		final List<Spot> spots = detect(img, TestImages.settings(1), trackMateInterval(img, 1), 1);
-		assertSpotsEqualCoreTimesCalibration(core(Views.hyperSlice(Views.hyperSlice(raw, 3, 1), 2, 0), 1), spots);
+		final SpotCollection spots = detect(img, TestImages.settings(1), wholeMovie(img));
+		assertSpotsEqualCoreTimesCalibration(core(Views.hyperSlice(Views.hyperSlice(raw, 3, 1), 2, 0), 1),
+			spotsOf(spots, 1), 1);
 	}
 
 	@Test
 	void stackWithSeveralZSlicesIsRefusedWithAClearMessage() {
 		final ArrayImg<FloatType, FloatArray> raw = TestImages.image(TestImages.WIDTH, TestImages.HEIGHT, 4);
 		final ImgPlus<FloatType> img = imgPlus(raw, Axes.X, Axes.Y, Axes.Z);
-		final SpotDetector<FloatType> detector = factory.getDetector(img, TestImages.settings(1),
-			trackMateInterval(img, 1), 0);
+		final SpotGlobalDetector<FloatType> detector = factory.getDetector(img, TestImages.settings(1), wholeMovie(img));
 		assertFalse(detector.checkInput());
 		final String message = detector.getErrorMessage();
 		assertNotNull(message);
 		assertTrue(message.contains("4 Z slices") && message.contains("2D"), message);
 		assertFalse(detector.process(), "process() must refuse too");
-		assertTrue(detector.getResult().isEmpty());
+		assertEquals(0, detector.getResult().getNSpots(false));
 	}
 
 	@Test
@@ -192,21 +223,32 @@ class ContactTrackerDetectorTest {
 		final ImgPlus<FloatType> img = imgPlus(TestImages.image(TestImages.WIDTH, TestImages.HEIGHT), Axes.X, Axes.Y);
 		final Map<String, Object> settings = TestImages.settings(1);
 		settings.put(DetectorSettings.KEY_THRESHOLD, 80); // an Integer, not a Double
-		final SpotDetector<FloatType> detector = factory.getDetector(img, settings, null, 0);
+		final SpotGlobalDetector<FloatType> detector = factory.getDetector(img, settings, null);
 		assertFalse(detector.checkInput());
 		assertTrue(detector.getErrorMessage().contains("THRESHOLD"), detector.getErrorMessage());
 	}
 
 	@Test
-	void missingChannelAndFrameAreNamed() {
+	void missingChannelIsNamed() {
 		final ImgPlus<FloatType> img = imgPlus(TestImages.image(TestImages.WIDTH, TestImages.HEIGHT, 2), Axes.X, Axes.Y,
 			Axes.TIME);
-		final SpotDetector<FloatType> noChannel = factory.getDetector(img, TestImages.settings(2), null, 0);
+		final SpotGlobalDetector<FloatType> noChannel = factory.getDetector(img, TestImages.settings(2), null);
 		assertFalse(noChannel.checkInput());
 		assertTrue(noChannel.getErrorMessage().contains("TARGET_CHANNEL is 2"), noChannel.getErrorMessage());
-		final SpotDetector<FloatType> noFrame = factory.getDetector(img, TestImages.settings(1), null, 5);
-		assertFalse(noFrame.checkInput());
-		assertTrue(noFrame.getErrorMessage().contains("frame 5"), noFrame.getErrorMessage());
+	}
+
+	@Test
+	void intervalOfTheWrongShapeOrOutsideTheImageIsRefused() {
+		final ImgPlus<FloatType> img = imgPlus(TestImages.image(TestImages.WIDTH, TestImages.HEIGHT, 2), Axes.X, Axes.Y,
+			Axes.TIME);
+		final SpotGlobalDetector<FloatType> wrongShape = factory.getDetector(img, TestImages.settings(1),
+			new FinalInterval(10, 10, 1, 1));
+		assertFalse(wrongShape.checkInput());
+		assertTrue(wrongShape.getErrorMessage().contains("4 dimensions"), wrongShape.getErrorMessage());
+		final SpotGlobalDetector<FloatType> outside = factory.getDetector(img, TestImages.settings(1),
+			new FinalInterval(new long[] { 0, 0, 5 }, new long[] { 9, 9, 6 }));
+		assertFalse(outside.checkInput());
+		assertTrue(outside.getErrorMessage().contains("does not overlap"), outside.getErrorMessage());
 	}
 
 	@Test
@@ -214,18 +256,49 @@ class ContactTrackerDetectorTest {
 		final ArrayImg<FloatType, FloatArray> raw = TestImages.image(TestImages.WIDTH, TestImages.HEIGHT);
 		raw.update(null).getCurrentStorageArray()[5 * TestImages.WIDTH + 7] = Float.NaN;
 		final ImgPlus<FloatType> img = imgPlus(raw, Axes.X, Axes.Y);
-		final SpotDetector<FloatType> detector = factory.getDetector(img, TestImages.settings(1), null, 0);
+		final SpotGlobalDetector<FloatType> detector = factory.getDetector(img, TestImages.settings(1), null);
 		assertTrue(detector.checkInput());
 		assertFalse(detector.process());
-		assertTrue(detector.getErrorMessage().startsWith("Contact Tracker failed on frame 0"), detector.getErrorMessage());
+		assertTrue(detector.getErrorMessage().startsWith("Contact Tracker failed: frame 1: pixel (7, 5) is NaN"),
+			detector.getErrorMessage());
 	}
 
 	@Test
-	void publicConstructorWorksWithoutSettingsMap() {
-		final ArrayImg<FloatType, FloatArray> raw = TestImages.image(TestImages.WIDTH, TestImages.HEIGHT);
-		final ContactTrackerDetector<FloatType> detector = new ContactTrackerDetector<>(imgPlus(raw, Axes.X, Axes.Y), null,
-			0, TestImages.params(), 1);
+	void reportsProgressToTrackMatesLoggerAndHonoursCancel() {
+		final ImgPlus<FloatType> img = imgPlus(TestImages.image(TestImages.WIDTH, TestImages.HEIGHT, 3), Axes.X, Axes.Y,
+			Axes.TIME);
+		final List<Double> progress = new ArrayList<>();
+		final List<String> status = new ArrayList<>();
+		final Logger logger = new Logger() {
+
+			@Override
+			public void log(final String message, final Color color) {}
+
+			@Override
+			public void error(final String message) {}
+
+			@Override
+			public synchronized void setProgress(final double val) {
+				progress.add(val);
+			}
+
+			@Override
+			public void setStatus(final String s) {
+				status.add(s);
+			}
+		};
+		final ContactTrackerDetector<FloatType> detector = new ContactTrackerDetector<>(img, null, TestImages.settings(1));
+		detector.setLogger(logger);
 		assertTrue(detector.checkInput() && detector.process(), detector.getErrorMessage());
-		assertSpotsEqualCoreTimesCalibration(core(raw, 0), detector.getResult());
+		assertEquals(3, progress.size(), "one progress report per frame");
+		assertEquals(1.0, progress.stream().mapToDouble(Double::doubleValue).max().getAsDouble(), 0);
+		assertTrue(status.get(0).contains("3 frames"), status.toString());
+		assertEquals("", status.get(status.size() - 1), "the status line is cleared at the end");
+
+		final ContactTrackerDetector<FloatType> cancelled = new ContactTrackerDetector<>(img, null, TestImages.settings(1));
+		cancelled.cancel("user pressed cancel");
+		assertTrue(cancelled.isCanceled());
+		assertFalse(cancelled.checkInput() && cancelled.process());
+		assertTrue(cancelled.getErrorMessage().contains("cancelled: user pressed cancel"), cancelled.getErrorMessage());
 	}
 }

@@ -31,8 +31,9 @@ import io.github.contacttracker.io.TrackMateXmlWriter;
 
 /**
  * Integration test on the PACKAGED jar (failsafe, phase {@code integration-test}, after {@code package}): the
- * TrackMate mirror must not ship, and the SciJava plugin index must list the detector factory as a
- * {@code fiji.plugin.trackmate.detection.SpotDetectorFactory}.
+ * TrackMate mirror must not ship, and the SciJava plugin index must list the detector factory under the type
+ * TrackMate's DetectorProvider asks for ({@code fiji.plugin.trackmate.detection.SpotDetectorFactoryBase}) and the
+ * spot features under {@code fiji.plugin.trackmate.features.spot.SpotAnalyzerFactory}.
  * <p>
  * Failsafe puts the built jar, not {@code target/classes}, on the class path, so this test also shows that the
  * TrackMate-free parts (XML writer, detector settings) run without any TrackMate class. It must therefore not
@@ -43,6 +44,7 @@ class TrackMateJarIT {
 	private static final List<String> FORBIDDEN = List.of("fiji/plugin/trackmate/", "net/imagej/",
 		"net/imglib2/algorithm/");
 	private static final String FACTORY = "io.github.contacttracker.trackmate.ContactTrackerDetectorFactory";
+	private static final String FEATURES = "io.github.contacttracker.trackmate.ContactTrackerSpotFeatures";
 	private static final String INDEX = "META-INF/json/org.scijava.plugin.Plugin";
 
 	private static Path target() {
@@ -94,7 +96,7 @@ class TrackMateJarIT {
 	}
 
 	@Test
-	void pluginIndexListsTheFactoryAsASpotDetectorFactory() throws IOException {
+	void pluginIndexListsTheFactoryAndTheSpotFeaturesUnderTrackMatesTypes() throws IOException {
 		final Path jar = pluginJar();
 		final String index;
 		try (ZipFile zip = new ZipFile(jar.toFile())) {
@@ -106,18 +108,17 @@ class TrackMateJarIT {
 		}
 		// the index is a run of JSON objects {"class":"..","values":{"type":"..",...}}
 		final Matcher m = Pattern.compile("\\{\"class\":\"([^\"]+)\",\"values\":\\{([^{}]*)\\}\\}").matcher(index);
-		String type = null;
+		final java.util.Map<String, String> types = new java.util.HashMap<>();
 		int entries = 0;
 		while (m.find()) {
 			entries++;
-			if (m.group(1).equals(FACTORY)) {
-				final Matcher t = Pattern.compile("\"type\":\"([^\"]+)\"").matcher(m.group(2));
-				assertTrue(t.find(), "no type for the factory in " + m.group());
-				type = t.group(1);
-			}
+			final Matcher t = Pattern.compile("\"type\":\"([^\"]+)\"").matcher(m.group(2));
+			assertTrue(t.find(), "no type in " + m.group());
+			types.put(m.group(1), t.group(1));
 		}
 		assertTrue(entries > 0, "unreadable plugin index: " + index);
-		assertEquals("fiji.plugin.trackmate.detection.SpotDetectorFactory", type, "factory entry in " + index);
+		assertEquals("fiji.plugin.trackmate.detection.SpotDetectorFactoryBase", types.get(FACTORY), "factory entry in " + index);
+		assertEquals("fiji.plugin.trackmate.features.spot.SpotAnalyzerFactory", types.get(FEATURES), "features entry in " + index);
 	}
 
 	@Test

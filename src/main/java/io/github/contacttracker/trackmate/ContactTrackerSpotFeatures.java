@@ -1,0 +1,130 @@
+package io.github.contacttracker.trackmate;
+
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+
+import javax.swing.ImageIcon;
+
+import org.scijava.plugin.Plugin;
+
+import fiji.plugin.trackmate.Dimension;
+import fiji.plugin.trackmate.features.spot.SpotAnalyzer;
+import fiji.plugin.trackmate.features.spot.SpotAnalyzerFactory;
+import io.github.contacttracker.io.SpotColumn;
+import net.imagej.ImgPlus;
+import net.imglib2.type.NativeType;
+import net.imglib2.type.numeric.RealType;
+
+/**
+ * Declares Contact Tracker's per-spot values ({@code SIGMA_X}, {@code SIGMA_Y}, the first-pass position, the
+ * areas, the number of solves and the {@code FLAG_...} columns) as TrackMate spot features.
+ * <p>
+ * TrackMate shows, filters, colours by and saves only the spot features its {@code FeatureModel} declares, and
+ * it fills that model from the spot analyzers it discovers ({@code Settings.addAllAnalyzers()}, which its GUI
+ * calls). Our detector already puts the values on each spot, so the analyzer computes nothing
+ * ({@link #isManualFeature()} is {@code true}, like TrackMate's own manual features); spots from another
+ * detector simply have no value for these features.
+ */
+@Plugin(type = SpotAnalyzerFactory.class)
+public class ContactTrackerSpotFeatures<T extends RealType<T> & NativeType<T>> implements SpotAnalyzerFactory<T> {
+
+	/** The key of this analyzer in TrackMate. */
+	public static final String KEY = "CONTACT_TRACKER_SPOT_FEATURES";
+
+	private static final List<String> FEATURES;
+	private static final Map<String, String> NAMES = new LinkedHashMap<>();
+	private static final Map<String, String> SHORT_NAMES = new LinkedHashMap<>();
+	private static final Map<String, Dimension> DIMENSIONS = new LinkedHashMap<>();
+	private static final Map<String, Boolean> IS_INT = new LinkedHashMap<>();
+
+	static {
+		final List<String> features = new ArrayList<>();
+		for (final SpotColumn c : SpotColumn.values()) {
+			if (c.isTrackMateKey()) continue;
+			features.add(c.key());
+			NAMES.put(c.key(), c.title());
+			SHORT_NAMES.put(c.key(), c.shortName());
+			DIMENSIONS.put(c.key(), Dimension.valueOf(c.dimension().name()));
+			IS_INT.put(c.key(), c.isInteger());
+		}
+		FEATURES = Collections.unmodifiableList(features);
+	}
+
+	/** The values are already on the spots; nothing to compute. */
+	private static final SpotAnalyzer<?> NOTHING_TO_COMPUTE = spots -> {};
+
+	@SuppressWarnings("unchecked")
+	@Override
+	public SpotAnalyzer<T> getAnalyzer(final ImgPlus<T> img, final int frame, final int channel) {
+		return (SpotAnalyzer<T>) NOTHING_TO_COMPUTE;
+	}
+
+	@Override
+	public void setNChannels(final int nChannels) {
+		// one set of features whatever the number of channels: the detector works on its target channel
+	}
+
+	@Override
+	public List<String> getFeatures() {
+		return FEATURES;
+	}
+
+	@Override
+	public Map<String, String> getFeatureShortNames() {
+		return Collections.unmodifiableMap(SHORT_NAMES);
+	}
+
+	@Override
+	public Map<String, String> getFeatureNames() {
+		return Collections.unmodifiableMap(NAMES);
+	}
+
+	@Override
+	public Map<String, Dimension> getFeatureDimensions() {
+		return Collections.unmodifiableMap(DIMENSIONS);
+	}
+
+	@Override
+	public Map<String, Boolean> getIsIntFeature() {
+		return Collections.unmodifiableMap(IS_INT);
+	}
+
+	@Override
+	public boolean isManualFeature() {
+		return true;
+	}
+
+	@Override
+	public String getInfoText() {
+		return "<html>Contact Tracker's per-spot values (standard errors, first-pass position, areas, flags), "
+			+ "set by the Contact Tracker detector.</html>";
+	}
+
+	@Override
+	public ImageIcon getIcon() {
+		return null;
+	}
+
+	@Override
+	public String getKey() {
+		return KEY;
+	}
+
+	@Override
+	public String getName() {
+		return "Contact Tracker spot values";
+	}
+
+	@Override
+	public boolean forbidMultithreading() {
+		return false;
+	}
+
+	@Override
+	public String getUrl() {
+		return ContactTrackerDetectorFactory.URL;
+	}
+}
