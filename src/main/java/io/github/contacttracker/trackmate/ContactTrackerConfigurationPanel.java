@@ -55,7 +55,7 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 	/** The wizard's panel size, which this panel must fit (TrackMate's own detector panels use it). */
 	public static final Dimension WIZARD_SIZE = new Dimension(300, 511);
 
-	private static final String SHORT_INFO = "<html><body style='font-family:Arial; font-size:9px'>"
+	private static final String SHORT_INFO = "<html><body style='font-family:Arial; font-size:8pt'>"
 		+ "Centres of bright particles, also when they touch: pixels at or above the <b>threshold</b> form one "
 		+ "active area per particle; each centre is found by radial symmetry and refined away from the neighbours "
 		+ "(within <b>r_out</b>, where a particle's image ends). <b>fit</b> (default) is unbiased at contact.<br>"
@@ -152,8 +152,6 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 		final JEditorPane info = new JEditorPane("text/html", SHORT_INFO);
 		info.setEditable(false);
 		info.setOpaque(false);
-		info.putClientProperty(JEditorPane.HONOR_DISPLAY_PROPERTIES, Boolean.TRUE);
-		info.setFont(FONT);
 		info.addHyperlinkListener(e -> {
 			if (e.getEventType() == javax.swing.event.HyperlinkEvent.EventType.ACTIVATED && e.getURL() != null)
 				ij.IJ.runPlugIn("ij.plugin.BrowserLauncher", e.getURL().toString());
@@ -162,6 +160,9 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 			ScrollPaneConstants.HORIZONTAL_SCROLLBAR_NEVER);
 		scroll.setBorder(BorderFactory.createEmptyBorder());
 		scroll.setPreferredSize(new Dimension(280, 72));
+		// the wizard is a little shorter than the panel's preferred size, so GridBagLayout falls back to minimum
+		// sizes: keep the text readable and let TrackMate's histogram give way instead
+		scroll.setMinimumSize(new Dimension(200, 72));
 		return scroll;
 	}
 
