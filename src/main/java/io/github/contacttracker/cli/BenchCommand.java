@@ -59,15 +59,16 @@ final class BenchCommand {
 		final List<ArrayImg<UnsignedByteType, ?>> few = imgs.subList(0, Math.min(frames, 20));
 		for (int w = 0; w < 3; w++)
 			for (final Method m : Method.values())
-				new StackTracker(base.withMethod(m), 1).track(few, false);
+				new StackTracker(base.withMethod(m)).track(few, false); // imglib2's default: one thread
 		for (final Method m : Method.values()) {
 			// The profile methods are slower: they run on the first --profile-frames frames (and pass over them
 			// three times: iterative centres, then the profile measured twice).
 			final List<ArrayImg<UnsignedByteType, ?>> set = m.needsProfile() ? imgs.subList(0, profileFrames) : imgs;
 			final double setMpx = mpx * set.size() / frames;
 			for (final int threads : new int[] { 1, cores }) {
-				final StackTracker tracker = new StackTracker(base.withMethod(m), threads);
-				final double s = best(rounds, () -> tracker.track(set, false));
+				final StackTracker tracker = new StackTracker(base.withMethod(m));
+				final int n = threads;
+				final double s = best(rounds, () -> StackTracker.withThreads(n, () -> tracker.track(set, false)));
 				row(m.key() + " (" + threads + " thread" + (threads == 1 ? "" : "s") + ")", set.size(), setMpx, s,
 					readSeconds * set.size() / frames);
 			}

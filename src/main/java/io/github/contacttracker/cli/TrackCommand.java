@@ -91,7 +91,7 @@ final class TrackCommand {
 		final int threads)
 	{
 		final List list = frames.frames();
-		return new StackTracker(params, threads).track(list, false);
+		return StackTracker.withThreads(threads, () -> new StackTracker(params).track(list, false));
 	}
 
 	static TrackerParameters parameters(final Options o) {

@@ -168,7 +168,7 @@ public class ContactTrackerCommand extends ContextCommand {
 		final int count = frames.frameCount();
 		final Thread caller = Thread.currentThread();
 		final BooleanSupplier cancelled = () -> isCanceled() || caller.isInterrupted() || IJ.escapePressed();
-		final StackTracker tracker = new StackTracker(params, threads > 0 ? threads : Prefs.getThreads());
+		final StackTracker tracker = new StackTracker(params);
 		progress(0, count);
 		final List<FrameResult> results = track(tracker, frames, overlay, cancelled);
 		final List<Localization> all = StackTracker.spots(results);
@@ -205,7 +205,8 @@ public class ContactTrackerCommand extends ContextCommand {
 		final boolean keepRegions, final BooleanSupplier cancelled)
 	{
 		final List<RandomAccessibleInterval> list = (List) frames.frames();
-		return tracker.track(list.size(), t -> list.get(t), keepRegions, this::progress, cancelled);
+		return StackTracker.withThreads(threads > 0 ? threads : Prefs.getThreads(), () -> tracker.track(list
+			.size(), t -> list.get(t), keepRegions, this::progress, cancelled));
 	}
 
 	private void progress(final int done, final int count) {

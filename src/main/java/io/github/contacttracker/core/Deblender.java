@@ -16,26 +16,28 @@ final class Deblender {
 	private Deblender() {}
 
 	/**
-	 * Refines {@code particles}' centres in place (from their current x, y).
+	 * Refines the centres of the reliable particles, starting from {@code start}.
 	 *
 	 * @param discRadius radius of the solving disc (px)
-	 * @return the number of iterations, negative if the limit was reached
+	 * @return the new estimates (the others unchanged) and the number of iterations, negative if the limit was
+	 *         reached
 	 */
-	static int refine(final Plane plane, final ParticleState[] particles, final EmpiricalProfile profile,
-		final double discRadius)
+	static ProfileRefinement.Refined refine(final Plane plane, final Particle[] particles, final Estimate[] start,
+		final EmpiricalProfile profile, final double discRadius)
 	{
 		final int n = particles.length;
+		final Estimate[] e = start.clone();
 		final double reach = profile.radius();
 		final int margin = (int) Math.ceil(discRadius) + GradientOperator.MARGIN + 1;
 		final double[] cx = new double[n], cy = new double[n];
 		for (int it = 1; it <= MAX_ITERATIONS; it++) {
 			for (int k = 0; k < n; k++) {
-				cx[k] = particles[k].x;
-				cy[k] = particles[k].y;
+				cx[k] = e[k].x();
+				cy[k] = e[k].y();
 			}
 			double move = 0;
 			for (int k = 0; k < n; k++) {
-				final ParticleState p = particles[k];
+				final Particle p = particles[k];
 				if (!p.reliable()) continue;
 				// Local window around the particle, clipped to the frame.
 				final int x0 = Math.max(0, (int) Math.floor(cx[k]) - margin), y0 = Math.max(0, (int) Math.floor(cy[k]) -
@@ -59,19 +61,15 @@ final class Deblender {
 				final DoublePlane local = new DoublePlane(data, w, h);
 				final Region disc = disc(cx[k] - x0, cy[k] - y0, discRadius, w, h);
 				final GradientField field = GradientField.compute(local, disc);
-				final LineFit fit = new LineFit(cx[k] - x0, cy[k] - y0);
-				for (int i = 0; i < field.size; i++)
-					fit.addPaperWeighted(field.x[i], field.y[i], field.gx[i], field.gy[i]);
-				final LineFit.Solution s = fit.solve();
-				if (!s.ok()) continue; // keeps its previous centre; the caller flags it
-				p.x = s.x() + x0;
-				p.y = s.y() + y0;
-				p.lastSolve = new ParticleState.SolveContext(field, null, fit.matrix(), x0, y0);
-				move = Math.max(move, Math.hypot(p.x - cx[k], p.y - cy[k]));
+				final Solve s = Solve.on(field, null, cx[k] - x0, cy[k] - y0, x0, y0);
+				if (!s.ok()) continue; // keeps its previous centre
+				e[k] = new Estimate(s.solution().x(), s.solution().y(), e[k].flags(), e[k].secondArea(), e[k].iterations(),
+					s, e[k].sigmaX(), e[k].sigmaY());
+				move = Math.max(move, Math.hypot(e[k].x() - cx[k], e[k].y() - cy[k]));
 			}
-			if (move < TOLERANCE) return it;
+			if (move < TOLERANCE) return new ProfileRefinement.Refined(e, it);
 		}
-		return -MAX_ITERATIONS;
+		return new ProfileRefinement.Refined(e, -MAX_ITERATIONS);
 	}
 
 	/** Pixels whose centres lie within {@code r} of (cx, cy), clipped to a w x h window. */

@@ -23,32 +23,35 @@ final class GroupFit {
 	private GroupFit() {}
 
 	/**
-	 * Refines the centres of {@code particles} in place, from their current x, y.
+	 * Refines the centres of the reliable particles, starting from {@code start}, group by group; a group's
+	 * neighbours are held at their latest estimates (those of groups already fitted included).
 	 *
-	 * @return the largest number of iterations a group needed, negative if a group hit the limit
+	 * @return the new estimates (the others unchanged) and the largest number of iterations a group needed,
+	 *         negative if a group hit the limit
 	 */
-	static int refine(final Plane plane, final ParticleState[] particles, final EmpiricalProfile profile,
-		final double groupDistance)
+	static ProfileRefinement.Refined refine(final Plane plane, final Particle[] particles, final Estimate[] start,
+		final EmpiricalProfile profile, final double groupDistance)
 	{
-		final List<int[]> groups = groups(particles, groupDistance);
+		final Estimate[] e = start.clone();
+		final List<int[]> groups = groups(particles, e, groupDistance);
 		int worst = 0;
 		for (final int[] group : groups) {
-			final int it = fitGroup(plane, particles, group, profile);
+			final int it = fitGroup(plane, particles, e, group, profile);
 			if (it < 0) worst = Math.min(worst, it);
 			else if (worst >= 0) worst = Math.max(worst, it);
 		}
-		return worst;
+		return new ProfileRefinement.Refined(e, worst);
 	}
 
-	/** Groups of particles closer than {@code distance} (transitively). */
-	static List<int[]> groups(final ParticleState[] ps, final double distance) {
+	/** Groups of reliable particles closer than {@code distance} (transitively), at centres {@code e}. */
+	static List<int[]> groups(final Particle[] ps, final Estimate[] e, final double distance) {
 		final int n = ps.length;
 		final int[] parent = new int[n];
 		for (int i = 0; i < n; i++)
 			parent[i] = i;
 		for (int i = 0; i < n; i++)
 			for (int j = i + 1; j < n; j++)
-				if (ps[i].reliable() && ps[j].reliable() && Math.hypot(ps[i].x - ps[j].x, ps[i].y - ps[j].y) < distance) {
+				if (ps[i].reliable() && ps[j].reliable() && e[i].distanceTo(e[j]) < distance) {
 					final int ri = root(parent, i), rj = root(parent, j);
 					if (ri != rj) parent[Math.max(ri, rj)] = Math.min(ri, rj);
 				}
@@ -79,7 +82,8 @@ final class GroupFit {
 		return i;
 	}
 
-	private static int fitGroup(final Plane plane, final ParticleState[] ps, final int[] group,
+	/** Fits one group, replacing its members' estimates in {@code e} on success; returns the iterations. */
+	private static int fitGroup(final Plane plane, final Particle[] ps, final Estimate[] e, final int[] group,
 		final EmpiricalProfile profile)
 	{
 		final int n = group.length, np = 3 * n + 1;
@@ -87,10 +91,10 @@ final class GroupFit {
 		// The pixels: within R of any member (taken at the starting centres).
 		int x0 = Integer.MAX_VALUE, y0 = Integer.MAX_VALUE, x1 = Integer.MIN_VALUE, y1 = Integer.MIN_VALUE;
 		for (final int k : group) {
-			x0 = Math.min(x0, (int) Math.floor(ps[k].x - R));
-			x1 = Math.max(x1, (int) Math.ceil(ps[k].x + R));
-			y0 = Math.min(y0, (int) Math.floor(ps[k].y - R));
-			y1 = Math.max(y1, (int) Math.ceil(ps[k].y + R));
+			x0 = Math.min(x0, (int) Math.floor(e[k].x() - R));
+			x1 = Math.max(x1, (int) Math.ceil(e[k].x() + R));
+			y0 = Math.min(y0, (int) Math.floor(e[k].y() - R));
+			y1 = Math.max(y1, (int) Math.ceil(e[k].y() + R));
 		}
 		x0 = Math.max(0, x0);
 		y0 = Math.max(0, y0);
@@ -104,7 +108,7 @@ final class GroupFit {
 			for (int x = x0; x <= x1; x++) {
 				boolean inside = false;
 				for (final int k : group) {
-					final double dx = x - ps[k].x, dy = y - ps[k].y;
+					final double dx = x - e[k].x(), dy = y - e[k].y();
 					if (dx * dx + dy * dy < r2) {
 						inside = true;
 						break;
@@ -120,7 +124,7 @@ final class GroupFit {
 		final double[] fixed = new double[count];
 		for (int k = 0; k < ps.length; k++) {
 			if (!ps[k].reliable() || contains(group, k)) continue;
-			final double kx = ps[k].x, ky = ps[k].y;
+			final double kx = e[k].x(), ky = e[k].y();
 			if (kx < x0 - R || kx > x1 + R || ky < y0 - R || ky > y1 + R) continue;
 			for (int i = 0; i < count; i++) {
 				final double dx = px[i] - kx, dy = py[i] - ky, d2 = dx * dx + dy * dy;
@@ -129,8 +133,8 @@ final class GroupFit {
 		}
 		final double[] p = new double[np];
 		for (int q = 0; q < n; q++) {
-			p[3 * q] = ps[group[q]].x;
-			p[3 * q + 1] = ps[group[q]].y;
+			p[3 * q] = e[group[q]].x();
+			p[3 * q + 1] = e[group[q]].y();
 			p[3 * q + 2] = 1;
 		}
 		p[np - 1] = profile.background();
@@ -182,11 +186,9 @@ final class GroupFit {
 		if (inv == null) return converged ? it : -it;
 		final double s2 = rss / (count - np);
 		for (int q = 0; q < n; q++) {
-			final ParticleState st = ps[group[q]];
-			st.x = p[3 * q];
-			st.y = p[3 * q + 1];
-			st.fitSigmaX = Math.sqrt(s2 * inv[3 * q][3 * q]);
-			st.fitSigmaY = Math.sqrt(s2 * inv[3 * q + 1][3 * q + 1]);
+			final Estimate old = e[group[q]];
+			e[group[q]] = new Estimate(p[3 * q], p[3 * q + 1], old.flags(), old.secondArea(), old.iterations(), old.solve(),
+				Math.sqrt(s2 * inv[3 * q][3 * q]), Math.sqrt(s2 * inv[3 * q + 1][3 * q + 1]));
 		}
 		return converged ? it : -it;
 	}

@@ -2,11 +2,13 @@ package io.github.contacttracker.core;
 
 import net.imglib2.RandomAccess;
 import net.imglib2.RandomAccessibleInterval;
+import net.imglib2.blocks.PrimitiveBlocks;
 import net.imglib2.img.array.ArrayImg;
 import net.imglib2.img.basictypeaccess.array.ByteArray;
 import net.imglib2.img.basictypeaccess.array.FloatArray;
 import net.imglib2.img.basictypeaccess.array.ShortArray;
 import net.imglib2.img.planar.PlanarImg;
+import net.imglib2.type.NativeType;
 import net.imglib2.type.numeric.IntegerType;
 import net.imglib2.type.numeric.RealType;
 import net.imglib2.type.numeric.integer.UnsignedByteType;
@@ -17,8 +19,9 @@ import net.imglib2.type.numeric.real.FloatType;
  * Read access to one 2D frame in local coordinates {@code 0 <= x < width, 0 <= y < height}.
  * <p>
  * {@link #of(RandomAccessibleInterval)} picks a fast path that reads the primitive array behind an
- * {@link ArrayImg} or single-plane {@link PlanarImg} of unsigned bytes, unsigned shorts or floats, and falls
- * back to a generic {@link RandomAccess} over any {@link RealType} otherwise. Both return the same values as
+ * {@link ArrayImg} or single-plane {@link PlanarImg} of unsigned bytes, unsigned shorts or floats, copies any other
+ * view of those types into a primitive array with imglib2's {@link PrimitiveBlocks}, and falls back to a generic
+ * {@link RandomAccess} over any other {@link RealType}. Both return the same values as
  * {@code double}, so every algorithm gives identical results on either (tested).
  * <p>
  * Not thread-safe: one plane per thread.
@@ -111,7 +114,30 @@ public abstract class Plane {
 			if (type instanceof FloatType && storage instanceof FloatArray)
 				return new FloatPlane(((FloatArray) storage).getCurrentStorageArray(), w, h, mx, my);
 		}
+		// Any other view of those types (a slice of a stack, a crop: what TrackMate and hyperstacks hand over):
+		// one bulk copy into a primitive array, far cheaper than a RandomAccess per pixel read
+		final long mx = frame.min(0), my = frame.min(1);
+		if (type instanceof UnsignedByteType) {
+			final byte[] data = new byte[w * h];
+			copy((RandomAccessibleInterval) frame, data);
+			return new UnsignedBytePlane(data, w, h, mx, my);
+		}
+		if (type instanceof UnsignedShortType) {
+			final short[] data = new short[w * h];
+			copy((RandomAccessibleInterval) frame, data);
+			return new UnsignedShortPlane(data, w, h, mx, my);
+		}
+		if (type instanceof FloatType) {
+			final float[] data = new float[w * h];
+			copy((RandomAccessibleInterval) frame, data);
+			return new FloatPlane(data, w, h, mx, my);
+		}
 		return generic(frame);
+	}
+
+	/** Copies a 2D interval of a native type into {@code dest}, row by row, with imglib2's {@link PrimitiveBlocks}. */
+	private static <T extends NativeType<T>> void copy(final RandomAccessibleInterval<T> frame, final Object dest) {
+		PrimitiveBlocks.of(frame).copy(frame, dest);
 	}
 
 	/** Wraps a 2D interval through a {@link RandomAccess}, never the fast path (for any {@link RealType}). */

@@ -3,20 +3,23 @@ package io.github.contacttracker.core;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CancellationException;
-import java.util.concurrent.ExecutionException;
-import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
-import java.util.concurrent.Future;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.BooleanSupplier;
 import java.util.function.IntFunction;
+import java.util.function.Supplier;
 
 import net.imglib2.RandomAccessibleInterval;
+import net.imglib2.parallel.Parallelization;
+import net.imglib2.parallel.TaskExecutor;
 import net.imglib2.type.numeric.RealType;
 
 /**
  * Localizes every frame of a time series, frames in parallel. Results come back in frame order whatever the
  * number of threads, so a run is reproducible.
+ * <p>
+ * The threads are the caller's: every pass runs on {@link Parallelization#getTaskExecutor()} of the calling thread
+ * (the imglib2 idiom), so a front end decides once, e.g. {@code Parallelization.runWithNumThreads(n, () ->
+ * stackTracker.track(...))}; without that, imglib2's default is one thread. No thread pool is created here.
  */
 public final class StackTracker {
 
@@ -28,20 +31,31 @@ public final class StackTracker {
 	}
 
 	private final ContactTracker tracker;
-	private final int threads;
 
-	/**
-	 * @param params the localizer's parameters
-	 * @param threads worker threads (1 for serial; values below 1 mean all available processors)
-	 */
-	public StackTracker(final TrackerParameters params, final int threads) {
+	/** @param params the localizer's parameters */
+	public StackTracker(final TrackerParameters params) {
 		this.tracker = new ContactTracker(params);
-		this.threads = threads < 1 ? Runtime.getRuntime().availableProcessors() : threads;
 	}
 
-	/** @return the number of worker threads */
-	public int threads() {
-		return threads;
+	/**
+	 * @param requested a number of threads asked for; below 1 means "all available processors"
+	 * @return the number of threads to run with
+	 */
+	public static int threads(final int requested) {
+		return requested < 1 ? Runtime.getRuntime().availableProcessors() : requested;
+	}
+
+	/**
+	 * Runs {@code work} with {@code threads} threads as imglib2's task executor of this thread (below 1: all
+	 * processors), the way a front end owns the threads of a run. Unlike {@code Parallelization.runWithNumThreads
+	 * (int, Callable)}, exceptions pass unchanged (a user error stays an {@code IllegalArgumentException}).
+	 */
+	public static <R> R withThreads(final int threads, final Supplier<R> work) {
+		final List<R> out = new ArrayList<>(1);
+		Parallelization.runWithNumThreads(threads(threads), () -> {
+			out.add(work.get()); // a block, so the Runnable overload is chosen: it does not wrap exceptions
+		});
+		return out.get(0);
 	}
 
 	/** Localizes all frames of a list. */
@@ -55,14 +69,16 @@ public final class StackTracker {
 	 * Localizes {@code count} frames supplied by index (so a long stack need not be held as views at once).
 	 *
 	 * @param count number of frames
-	 * @param frame supplies frame {@code t}, 2D
+	 * @param frame supplies frame {@code t}, 2D; called from the worker threads, so it must be thread-safe, and
+	 *        may be called more than once for a frame (the profile methods read their sample frames twice)
 	 * @param keepRegions whether to keep the active and second areas (for overlays; costs memory)
 	 * @param listener progress, or null (for deblend and fit the progress also counts the iterative pass over
 	 *        all frames and the refinement of the frames the profile is measured on)
-	 * @param cancelled polled between frames; when it turns true the run stops with a
+	 * @param cancelled polled before each frame; when it turns true the run stops with a
 	 *        {@link CancellationException}
 	 * @return one result per frame, in frame order
-	 * @throws IllegalArgumentException if a frame is not 2D or holds NaN/infinite pixels (naming the frame)
+	 * @throws IllegalArgumentException if a frame is not 2D or holds NaN/infinite pixels (naming the first such
+	 *         frame, counted from 1)
 	 */
 	public <T extends RealType<T>> List<FrameResult> track(final int count,
 		final IntFunction<? extends RandomAccessibleInterval<T>> frame, final boolean keepRegions,
@@ -70,18 +86,35 @@ public final class StackTracker {
 	{
 		final TrackerParameters params = tracker.parameters();
 		final int[] all = range(count);
+		final Progress progress = new Progress(listener, params.method().needsProfile() ? 2 * count : count);
 		if (!params.method().needsProfile() || count == 0)
-			return pass(tracker, null, all, frame, keepRegions, listener, cancelled, 0, count);
+			return pass(tracker, null, all, frame, keepRegions, progress, cancelled);
 		// deblend and fit: iterative centres first; the profile measured on a spread of frames; those frames
 		// refined with it and the profile measured again around the refined centres; then every frame.
 		final int[] sample = profileFrames(count, frame);
-		final int total = 2 * count + sample.length;
+		progress.total += sample.length;
 		final List<FrameResult> iterative = pass(new ContactTracker(params.withMethod(Method.ITERATIVE)), null, all,
-			frame, false, listener, cancelled, 0, total);
+			frame, false, progress, cancelled);
 		final List<FrameResult> firstRound = pass(tracker, profile(pick(iterative, sample), sample, frame, params
-			.rOut()), sample, frame, false, listener, cancelled, count, total);
-		return pass(tracker, profile(firstRound, sample, frame, params.rOut()), all, frame, keepRegions, listener,
-			cancelled, count + sample.length, total);
+			.rOut()), sample, frame, false, progress, cancelled);
+		return pass(tracker, profile(firstRound, sample, frame, params.rOut()), all, frame, keepRegions, progress,
+			cancelled);
+	}
+
+	/** Frames done over frames to do, across the passes of one run. */
+	private static final class Progress {
+		final ProgressListener listener;
+		final AtomicInteger done = new AtomicInteger();
+		int total;
+
+		Progress(final ProgressListener listener, final int total) {
+			this.listener = listener;
+			this.total = total;
+		}
+
+		void frameDone() {
+			if (listener != null) listener.progress(done.incrementAndGet(), total);
+		}
 	}
 
 	/** At most this many frames, evenly spread over the stack, go into a profile measurement... */
@@ -109,6 +142,13 @@ public final class StackTracker {
 		return r;
 	}
 
+	private static List<Integer> positions(final int n) {
+		final List<Integer> list = new ArrayList<>(n);
+		for (int i = 0; i < n; i++)
+			list.add(i);
+		return list;
+	}
+
 	private static List<FrameResult> pick(final List<FrameResult> results, final int[] indices) {
 		final List<FrameResult> picked = new ArrayList<>(indices.length);
 		for (final int t : indices)
@@ -120,40 +160,20 @@ public final class StackTracker {
 	 * Measures the radial profile on frames {@code indices} (with their results, in the same order), the frames
 	 * shared among the threads; null (each frame then measures its own) when they hold too few usable pixels.
 	 */
-	private <T extends RealType<T>> EmpiricalProfile profile(final List<FrameResult> results, final int[] indices,
-		final IntFunction<? extends RandomAccessibleInterval<T>> frame, final double rOut)
+	private static <T extends RealType<T>> EmpiricalProfile profile(final List<FrameResult> results,
+		final int[] indices, final IntFunction<? extends RandomAccessibleInterval<T>> frame, final double rOut)
 	{
 		// One estimator per frame, merged in frame order: the sums, and so the results, do not depend on the
 		// number of threads.
-		final int workers = Math.min(threads, indices.length);
-		final ProfileEstimator[] parts = new ProfileEstimator[indices.length];
-		final AtomicInteger next = new AtomicInteger();
-		final Runnable work = () -> {
-			for (int i = next.getAndIncrement(); i < indices.length; i = next.getAndIncrement()) {
+		final List<ProfileEstimator> parts = Parallelization.getTaskExecutor().forEachApply(positions(indices.length),
+			i -> {
 				final ProfileEstimator part = ProfileEstimator.forROut(rOut);
 				part.add(frame.apply(indices[i]), results.get(i).spots());
-				parts[i] = part;
-			}
-		};
-		final List<Thread> running = new ArrayList<>();
-		for (int w = 1; w < workers; w++) {
-			final Thread th = new Thread(work, "contact-tracker-profile");
-			th.setDaemon(true);
-			running.add(th);
-			th.start();
-		}
-		work.run();
-		try {
-			for (final Thread th : running)
-				th.join();
-		}
-		catch (final InterruptedException e) {
-			Thread.currentThread().interrupt();
-			throw new CancellationException("interrupted");
-		}
-		final ProfileEstimator all = parts[0];
-		for (int i = 1; i < parts.length; i++)
-			all.merge(parts[i]);
+				return part;
+			});
+		final ProfileEstimator all = parts.get(0);
+		for (int i = 1; i < parts.size(); i++)
+			all.merge(parts.get(i));
 		try {
 			return all.estimate();
 		}
@@ -162,56 +182,34 @@ public final class StackTracker {
 		}
 	}
 
-	/** Localizes frames {@code indices}; results in that order. */
-	private <T extends RealType<T>> List<FrameResult> pass(final ContactTracker tracker,
+	/**
+	 * Localizes frames {@code indices} on the caller's task executor; results in that order. A frame's failure is
+	 * caught in its task and the first failure in frame order rethrown as it was, so the error a user sees does
+	 * not depend on the threads.
+	 */
+	private static <T extends RealType<T>> List<FrameResult> pass(final ContactTracker tracker,
 		final EmpiricalProfile profile, final int[] indices,
 		final IntFunction<? extends RandomAccessibleInterval<T>> frame, final boolean keepRegions,
-		final ProgressListener listener, final BooleanSupplier cancelled, final int doneBefore, final int total)
+		final Progress progress, final BooleanSupplier cancelled)
 	{
-		final int count = indices.length;
-		final AtomicInteger done = new AtomicInteger(doneBefore);
-		final List<FrameResult> results = new ArrayList<>(count);
-		if (threads == 1 || count < 2) {
-			for (int t = 0; t < count; t++) {
-				if (cancelled.getAsBoolean()) throw new CancellationException("cancelled after " + t + " frames");
-				results.add(one(tracker, profile, frame, indices[t], keepRegions));
-				if (listener != null) listener.progress(done.incrementAndGet(), total);
+		final TaskExecutor executor = Parallelization.getTaskExecutor();
+		final RuntimeException[] failures = new RuntimeException[indices.length];
+		final List<FrameResult> results = executor.forEachApply(positions(indices.length), i -> {
+			try {
+				if (cancelled.getAsBoolean()) throw new CancellationException("cancelled after " + progress.done.get() +
+					" frames");
+				final FrameResult r = one(tracker, profile, frame, indices[i], keepRegions);
+				progress.frameDone();
+				return r;
 			}
-			return results;
-		}
-		final ExecutorService pool = Executors.newFixedThreadPool(Math.min(threads, count), r -> {
-			final Thread th = new Thread(r, "contact-tracker");
-			th.setDaemon(true);
-			return th;
+			catch (final RuntimeException e) {
+				failures[i] = e;
+				return null;
+			}
 		});
-		try {
-			final List<Future<FrameResult>> futures = new ArrayList<>(count);
-			for (int t = 0; t < count; t++) {
-				final int index = indices[t];
-				futures.add(pool.submit(() -> {
-					if (cancelled.getAsBoolean()) throw new CancellationException("cancelled");
-					final FrameResult r = one(tracker, profile, frame, index, keepRegions);
-					if (listener != null) listener.progress(done.incrementAndGet(), total);
-					return r;
-				}));
-			}
-			for (final Future<FrameResult> f : futures)
-				results.add(f.get());
-			return results;
-		}
-		catch (final InterruptedException e) {
-			Thread.currentThread().interrupt();
-			throw new CancellationException("interrupted");
-		}
-		catch (final ExecutionException e) {
-			final Throwable cause = e.getCause();
-			if (cause instanceof RuntimeException) throw (RuntimeException) cause;
-			if (cause instanceof Error) throw (Error) cause;
-			throw new IllegalStateException(cause);
-		}
-		finally {
-			pool.shutdownNow();
-		}
+		for (final RuntimeException e : failures)
+			if (e != null) throw e;
+		return results;
 	}
 
 	private static <T extends RealType<T>> FrameResult one(final ContactTracker tracker,

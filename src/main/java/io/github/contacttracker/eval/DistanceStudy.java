@@ -60,8 +60,8 @@ public final class DistanceStudy {
 	/** Tracks a stack with one method. */
 	@SuppressWarnings({ "unchecked", "rawtypes" })
 	public List<FrameResult> track(final SimulatedStack<?> stack, final Method method) {
-		final StackTracker tracker = new StackTracker(base.withMethod(method), threads);
-		return tracker.track((List) stack.frames(), false);
+		final StackTracker tracker = new StackTracker(base.withMethod(method));
+		return StackTracker.withThreads(threads, () -> tracker.track((List) stack.frames(), false));
 	}
 
 	/** Compares frames tracked with {@code method} with the stack's truth. */

@@ -161,8 +161,8 @@ public final class ContactTrackerDetector<T extends RealType<T> & NativeType<T>>
 		final List<FrameResult> results;
 		try {
 			status("Contact Tracker: " + params.method().key() + " on " + count + (count == 1 ? " frame" : " frames"));
-			results = new StackTracker(params, numThreads).track(count, frames::get, false,
-				(done, total) -> progress((double) done / total), this::isCanceled);
+			results = StackTracker.withThreads(numThreads, () -> new StackTracker(params).track(count,
+				frames::get, false, (done, total) -> progress((double) done / total), this::isCanceled));
 		}
 		catch (final CancellationException e) {
 			return fail("Contact Tracker: detection cancelled" + (cancelReason == null ? "." : ": " + cancelReason));

@@ -117,7 +117,7 @@ class BatchScriptsTest {
 		final TrackerParameters params = new TrackerParameters(threshold, rOut, 20, Connectivity.EIGHT,
 			TrackerParameters.DEFAULT_MIN_SECOND_AREA, Method.PAPER);
 		final StringWriter expected = new StringWriter();
-		SpotCsvWriter.write(expected, StackTracker.spots(new StackTracker(params, 1).track((List) frames.frames(),
+		SpotCsvWriter.write(expected, StackTracker.spots(new StackTracker(params).track((List) frames.frames(),
 			false)), frames.calibration());
 		assertEquals(expected.toString(), Files.readString(out.resolve("movie.csv")));
 		assertTrue(Files.isRegularFile(out.resolve("movie.xml")), "TrackMate XML on request");

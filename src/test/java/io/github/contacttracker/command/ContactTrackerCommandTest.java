@@ -97,7 +97,7 @@ class ContactTrackerCommandTest {
 	@SuppressWarnings({ "unchecked", "rawtypes" })
 	private static List<FrameResult> core(final ImagePlus imp, final int channel) {
 		final List frames = ImagePlusFrames.of(imp, channel).frames();
-		return new StackTracker(params(), 1).track(frames, true);
+		return new StackTracker(params()).track(frames, true);
 	}
 
 	private static void assertSucceeded(final Module m) {

@@ -11,6 +11,8 @@ import java.util.function.DoubleUnaryOperator;
 import org.junit.jupiter.api.Test;
 
 import net.imglib2.img.array.ArrayImgs;
+import net.imglib2.type.numeric.RealType;
+import net.imglib2.RandomAccessibleInterval;
 import net.imglib2.view.Views;
 
 class ContactTrackerTest {
@@ -104,11 +106,57 @@ class ContactTrackerTest {
 		final List<Localization> fromFloats = t.analyse(Plane.of(floats), 0, false).spots();
 		assertEquals(fromFloats, t.analyse(Plane.generic(floats), 0, false).spots());
 		assertEquals(fromBytes, fromFloats, "integer-valued floats give the same spots as bytes");
-		// A view with an offset takes the generic path and reports positions in its own coordinates.
+		// A view with an offset is copied into an array and reports positions in its own coordinates.
 		final List<Localization> shifted = t.track(Views.translate(bytes, 7, -5), 0);
 		for (int i = 0; i < 3; i++) {
 			assertEquals(fromBytes.get(i).x() + 7, shifted.get(i).x(), 1e-12);
 			assertEquals(fromBytes.get(i).y() - 5, shifted.get(i).y(), 1e-12);
+		}
+	}
+
+	/**
+	 * Views (a plane of a stack, a crop: what TrackMate and hyperstacks hand over) take the bulk-copy path, not the
+	 * per-pixel one, and give exactly the array path's spots.
+	 */
+	@Test
+	void viewsTakeTheCopyPathAndGiveIdenticalSpots() {
+		final int w = 120, h = 90;
+		final double[] img = TestImages.withUniformNoise(TestImages.render(w, h, 20, BUMP, new double[] { 40.3, 44.1 },
+			new double[] { 76.9, 47.2 }, new double[] { 100.2, 20.4 }), 5, 11);
+		for (int i = 0; i < img.length; i++)
+			img[i] = Math.round(img[i]);
+		final ContactTracker t = new ContactTracker(TrackerParameters.of(90, 30));
+		// the frame as plane 1 of a 3-plane stack of each type
+		final var bytes = ArrayImgs.unsignedBytes(w, h, 3);
+		final var shorts = ArrayImgs.unsignedShorts(w, h, 3);
+		final var floats = ArrayImgs.floats(w, h, 3);
+		final var b = Views.hyperSlice(bytes, 2, 1).cursor();
+		final var sh = Views.hyperSlice(shorts, 2, 1).cursor();
+		final var f = Views.hyperSlice(floats, 2, 1).cursor();
+		for (final double v : img) {
+			b.next().setReal(v);
+			sh.next().setReal(v);
+			f.next().setReal(v);
+		}
+		final List<Localization> expected = t.analyse(Plane.of(TestImages.bytes(img, w, h)), 0, false).spots();
+		assertEquals(3, expected.size());
+		for (final RandomAccessibleInterval<? extends RealType<?>> view : List.of(Views.hyperSlice(bytes, 2, 1), Views
+			.hyperSlice(shorts, 2, 1), Views.hyperSlice(floats, 2, 1))) {
+			@SuppressWarnings({ "unchecked", "rawtypes" })
+			final Plane plane = Plane.of((RandomAccessibleInterval) view);
+			assertFalse(plane.getClass().getSimpleName().startsWith("Generic"), "a view must not be read pixel by pixel");
+			assertEquals(expected, t.analyse(plane, 0, false).spots());
+		}
+		// a crop keeps its coordinates (the first pass: it depends on nothing outside the particle's own area)
+		final ContactTracker firstPass = new ContactTracker(TrackerParameters.of(90, 30).withMethod(Method.FIRST));
+		final List<Localization> whole = firstPass.analyse(Plane.of(TestImages.bytes(img, w, h)), 0, false).spots();
+		final var crop = Views.interval(Views.hyperSlice(bytes, 2, 1), new long[] { 60, 0 }, new long[] { 119, 89 });
+		final List<Localization> cropped = firstPass.track(crop, 0);
+		assertEquals(2, cropped.size());
+		for (final Localization c : cropped) {
+			final Localization full = whole.stream().filter(e -> Math.abs(e.x() - c.x()) < 0.5).findFirst().orElseThrow();
+			assertEquals(full.x(), c.x(), 1e-9, "whole-frame coordinates");
+			assertEquals(full.y(), c.y(), 1e-9);
 		}
 	}
 

@@ -6,6 +6,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CancellationException;
 import java.util.concurrent.atomic.AtomicInteger;
 
@@ -31,13 +33,18 @@ class StackTrackerTest {
 	void parallelRunEqualsSerialRunInFrameOrder() {
 		final TrackerParameters p = TrackerParameters.of(80, 20).withMethod(Method.PAPER);
 		final List<RandomAccessibleInterval<FloatType>> frames = frames(9);
-		final List<FrameResult> serial = new StackTracker(p, 1).track(frames, false);
+		final List<FrameResult> serial = new StackTracker(p).track(frames, false);
 		final AtomicInteger calls = new AtomicInteger();
-		final List<FrameResult> parallel = new StackTracker(p, 3).track(frames.size(), frames::get, false,
-			(done, total) -> {
+		final Set<String> workers = ConcurrentHashMap.newKeySet();
+		final List<FrameResult> parallel = StackTracker.withThreads(3, () -> new StackTracker(p).track(frames
+			.size(), t -> {
+				workers.add(Thread.currentThread().getName());
+				return frames.get(t);
+			}, false, (done, total) -> {
 				calls.incrementAndGet();
 				assertEquals(9, total);
-			}, () -> false);
+			}, () -> false));
+		assertTrue(workers.size() > 1, "the caller's three threads must share the frames: " + workers);
 		assertEquals(9, calls.get());
 		final List<Localization> a = StackTracker.spots(serial), b = StackTracker.spots(parallel);
 		assertEquals(18, a.size());
@@ -53,13 +60,13 @@ class StackTrackerTest {
 		final List<RandomAccessibleInterval<FloatType>> frames = frames(6);
 		final TrackerParameters p = TrackerParameters.of(80, 20).withMethod(Method.FIT);
 		final AtomicInteger last = new AtomicInteger();
-		final List<FrameResult> parallel = new StackTracker(p, 2).track(frames.size(), frames::get, false,
-			(done, total) -> {
+		final List<FrameResult> parallel = StackTracker.withThreads(2, () -> new StackTracker(p).track(frames
+			.size(), frames::get, false, (done, total) -> {
 				assertEquals(6 + 6 + 6, total); // iterative, refinement of the profile frames (all 6 here), final
 				last.accumulateAndGet(done, Math::max);
-			}, () -> false);
+			}, () -> false));
 		assertEquals(18, last.get());
-		assertEquals(StackTracker.spots(new StackTracker(p, 1).track(frames, false)), StackTracker.spots(parallel));
+		assertEquals(StackTracker.spots(new StackTracker(p).track(frames, false)), StackTracker.spots(parallel));
 		for (final FrameResult r : parallel)
 			for (final Localization s : r.spots())
 				assertTrue(!s.isFlagged(), s.flagSet().toString());
@@ -68,8 +75,8 @@ class StackTrackerTest {
 	@Test
 	void cancellationStopsTheRun() {
 		final List<RandomAccessibleInterval<FloatType>> frames = frames(4);
-		assertThrows(CancellationException.class, () -> new StackTracker(TrackerParameters.of(80, 20), 2).track(
-			frames.size(), frames::get, false, null, () -> true));
+		assertThrows(CancellationException.class, () -> StackTracker.withThreads(2, () -> new StackTracker(
+			TrackerParameters.of(80, 20)).track(frames.size(), frames::get, false, null, () -> true)));
 	}
 
 	@Test
@@ -79,7 +86,8 @@ class StackTrackerTest {
 		bad[100] = Float.POSITIVE_INFINITY;
 		frames.set(1, ArrayImgs.floats(bad, 64, 48));
 		final IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
-			() -> new StackTracker(TrackerParameters.of(80, 20), 2).track(frames, false));
+			() -> StackTracker.withThreads(2, () -> new StackTracker(TrackerParameters.of(80, 20)).track(frames,
+				false)));
 		assertTrue(e.getMessage().startsWith("frame 2: pixel (36, 1) is Infinity"), e.getMessage());
 	}
 }

@@ -1,0 +1,40 @@
+package io.github.contacttracker.core;
+
+/**
+ * A particle's centre as a method leaves it, immutable.
+ *
+ * @param x centre x (frame pixels)
+ * @param y centre y
+ * @param flags {@link Flag} bits
+ * @param secondArea pixels used by the last radial-symmetry pass (the whole active area if none excluded)
+ * @param iterations solves (radial-symmetry methods) or fit iterations behind the centre
+ * @param solve the radial-symmetry solve behind (x, y), for its error propagation; {@code null} if none
+ * @param sigmaX standard error the method estimated itself (the joint fit); NaN to propagate it from
+ *        {@code solve}
+ * @param sigmaY likewise along y
+ */
+record Estimate(double x, double y, int flags, int secondArea, int iterations, Solve solve, double sigmaX,
+	double sigmaY)
+{
+	/** A first-pass estimate: one solve, no self-estimated error. */
+	static Estimate first(final double x, final double y, final int flags, final int area, final Solve solve) {
+		return new Estimate(x, y, flags, area, 1, solve, Double.NaN, Double.NaN);
+	}
+
+	Estimate withFlags(final int newFlags) {
+		return new Estimate(x, y, newFlags, secondArea, iterations, solve, sigmaX, sigmaY);
+	}
+
+	Estimate withIterations(final int newIterations) {
+		return new Estimate(x, y, flags, secondArea, newIterations, solve, sigmaX, sigmaY);
+	}
+
+	boolean has(final Flag flag) {
+		return flag.isSet(flags);
+	}
+
+	/** @return the distance from this centre to {@code other}'s */
+	double distanceTo(final Estimate other) {
+		return Math.hypot(x - other.x, y - other.y);
+	}
+}

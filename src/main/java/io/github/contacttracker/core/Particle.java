@@ -1,0 +1,101 @@
+package io.github.contacttracker.core;
+
+/**
+ * One particle of a frame as the first pass leaves it, immutable: its active area, the gradients on it, its shape,
+ * and its first-pass {@link Estimate}. Every {@link Refinement} starts from these and returns new estimates.
+ */
+final class Particle {
+
+	final Region region;
+	final GradientField field;
+	/** Integrated intensity above threshold over the active area. */
+	final double quality;
+	/** Intensity-above-threshold weighted centroid: the fallback of a degenerate first pass. */
+	final double centroidX, centroidY;
+	final boolean atBorder;
+	/** sqrt of the ratio of the principal second moments of the active area (1 for a disc). */
+	final double elongation;
+	/** The first pass on the whole active area (its flags include the shape flags once {@link #withShapeFlags}). */
+	final Estimate first;
+
+	private Particle(final Region region, final GradientField field, final double quality, final double centroidX,
+		final double centroidY, final boolean atBorder, final double elongation, final Estimate first)
+	{
+		this.region = region;
+		this.field = field;
+		this.quality = quality;
+		this.centroidX = centroidX;
+		this.centroidY = centroidY;
+		this.atBorder = atBorder;
+		this.elongation = elongation;
+		this.first = first;
+	}
+
+	/**
+	 * Measures a component and runs the first pass on it.
+	 *
+	 * @return the particle, or {@code null} when its active area holds no gradient line (a flat plateau: nothing
+	 *         to localize)
+	 */
+	static Particle firstPass(final Plane plane, final Region region, final double threshold) {
+		final GradientField field = GradientField.compute(plane, region);
+		double q = 0, qx = 0, qy = 0;
+		double sx = 0, sy = 0, sxx = 0, syy = 0, sxy = 0;
+		for (int r = 0; r < region.runCount(); r++) {
+			final int yy = region.runY(r);
+			for (int xx = region.runStart(r); xx <= region.runEnd(r); xx++) {
+				final double v = plane.get(xx, yy) - threshold;
+				q += v;
+				qx += v * xx;
+				qy += v * yy;
+				sx += xx;
+				sy += yy;
+				sxx += (double) xx * xx;
+				syy += (double) yy * yy;
+				sxy += (double) xx * yy;
+			}
+		}
+		final int n = region.area();
+		// Every pixel is >= threshold, so q > 0 unless all sit exactly on it: then the plain centroid.
+		final double centroidX = q > 0 ? qx / q : sx / n;
+		final double centroidY = q > 0 ? qy / q : sy / n;
+		final double cxx = sxx / n - (sx / n) * (sx / n), cyy = syy / n - (sy / n) * (sy / n);
+		final double cxy = sxy / n - (sx / n) * (sy / n);
+		final double tr = cxx + cyy, det = cxx * cyy - cxy * cxy;
+		final double disc = Math.sqrt(Math.max(0, tr * tr / 4 - det));
+		final double l1 = tr / 2 + disc, l2 = tr / 2 - disc;
+		final double elongation = l2 > 0 ? Math.sqrt(l1 / l2) : Double.POSITIVE_INFINITY;
+		final boolean atBorder = field.withoutGradient > 0 || region.minX() == 0 || region.minY() == 0 ||
+			region.maxX() == plane.width() - 1 || region.maxY() == plane.height() - 1;
+
+		final Solve solve = Solve.on(field, null, centroidX, centroidY);
+		if (solve.solution().lines() == 0) return null;
+		final Estimate first = solve.solution().ok() ? Estimate.first(solve.solution().x(), solve.solution().y(), 0, n,
+			solve) : Estimate.first(centroidX, centroidY, Flag.DEGENERATE.bit(), n, null);
+		return new Particle(region, field, q, centroidX, centroidY, atBorder, elongation, first);
+	}
+
+	/** @return this particle with {@code flags} (border, merge) added to its first-pass estimate */
+	Particle withShapeFlags(final int flags) {
+		return new Particle(region, field, quality, centroidX, centroidY, atBorder, elongation, first.withFlags(
+			first.flags() | flags));
+	}
+
+	/** Whether the first pass was degenerate (the centre is then the centroid). */
+	boolean firstDegenerate() {
+		return Flag.DEGENERATE.isSet(first.flags());
+	}
+
+	/**
+	 * @return whether the particle's centre describes one particle: not a suspected merge, and its first pass
+	 *         solved. Unreliable particles are neither refined by the profile methods nor modelled as neighbours.
+	 */
+	boolean reliable() {
+		return !Flag.MERGED.isSet(first.flags()) && !firstDegenerate();
+	}
+
+	/** Solves on the gradient lines marked in {@code use} ({@code null}: all), referenced at the centroid. */
+	Solve solve(final boolean[] use) {
+		return Solve.on(field, use, centroidX, centroidY);
+	}
+}

@@ -1,0 +1,96 @@
+package io.github.contacttracker.core;
+
+import java.util.Arrays;
+
+/**
+ * The profile methods, {@code deblend} and {@code fit}: iterative centres first; then the particles' radial profile
+ * (given, or measured on this frame: twice, the second time around the refined centres); then the centres
+ * refined with it by {@link Deblender} or {@link GroupFit}. If the frame's profile cannot be measured the
+ * iterative centres are kept, flagged {@code FELL_BACK}.
+ */
+final class ProfileRefinement implements Refinement {
+
+	/** The {@code deblend} method. */
+	static final Refinement DEBLEND = new ProfileRefinement(true);
+	/** The {@code fit} method. */
+	static final Refinement FIT = new ProfileRefinement(false);
+
+	/**
+	 * What {@link Deblender} and {@link GroupFit} return: every particle's estimate (unchanged where not refined)
+	 * and the iterations needed, negative if the limit was reached.
+	 */
+	record Refined(Estimate[] estimates, int iterations) {}
+
+	private final boolean deblend;
+
+	private ProfileRefinement(final boolean deblend) {
+		this.deblend = deblend;
+	}
+
+	@Override
+	public Outcome refine(final Plane plane, final Particle[] ps, final TrackerParameters params,
+		final EmpiricalProfile given)
+	{
+		final Outcome iterative = SecondPass.iterate(ps, params);
+		Estimate[] e = iterative.estimates();
+		if (ps.length == 0) return iterative;
+		final int rounds = given == null ? 2 : 1;
+		EmpiricalProfile profile = given;
+		for (int round = 0; round < rounds; round++) {
+			if (given == null) {
+				profile = measure(plane, ps, e, params.rOut());
+				if (profile == null) {
+					final Estimate[] kept = e.clone();
+					for (int k = 0; k < kept.length; k++)
+						kept[k] = kept[k].withFlags(kept[k].flags() | Flag.FELL_BACK.bit());
+					return new Outcome(kept, iterative.discs());
+				}
+			}
+			final Refined r;
+			if (deblend) {
+				double disc = profile.activeRadius(params.threshold());
+				if (disc < 3) disc = medianEquivalentRadius(ps);
+				r = Deblender.refine(plane, ps, e, profile, disc);
+			}
+			else r = GroupFit.refine(plane, ps, e, profile, 2 * params.rOut());
+			final int clear = Flag.SECOND_PASS.bit() | Flag.FELL_BACK.bit() | Flag.NOT_CONVERGED.bit();
+			final Estimate[] next = r.estimates();
+			for (int k = 0; k < next.length; k++) {
+				final int flags = (next[k].flags() & ~clear) | (r.iterations() < 0 ? Flag.NOT_CONVERGED.bit() : 0);
+				next[k] = new Estimate(next[k].x(), next[k].y(), flags, next[k].secondArea(), Math.abs(r.iterations()),
+					next[k].solve(), next[k].sigmaX(), next[k].sigmaY());
+			}
+			e = next;
+		}
+		return new Outcome(e, iterative.discs());
+	}
+
+	/** The profile on this frame around centres {@code e}, unreliable particles masked; null if too few pixels. */
+	private static EmpiricalProfile measure(final Plane plane, final Particle[] ps, final Estimate[] e,
+		final double rOut)
+	{
+		final ProfileEstimator estimator = ProfileEstimator.forROut(rOut);
+		final double[] cx = new double[ps.length], cy = new double[ps.length];
+		final boolean[] masked = new boolean[ps.length];
+		for (int k = 0; k < ps.length; k++) {
+			cx[k] = e[k].x();
+			cy[k] = e[k].y();
+			masked[k] = !ps[k].reliable();
+		}
+		estimator.add(plane, cx, cy, masked);
+		try {
+			return estimator.estimate();
+		}
+		catch (final IllegalStateException ex) {
+			return null;
+		}
+	}
+
+	private static double medianEquivalentRadius(final Particle[] ps) {
+		final double[] r = new double[ps.length];
+		for (int k = 0; k < ps.length; k++)
+			r[k] = Math.sqrt(ps[k].region.area() / Math.PI);
+		Arrays.sort(r);
+		return r[r.length / 2];
+	}
+}

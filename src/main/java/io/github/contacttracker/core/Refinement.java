@@ -1,0 +1,33 @@
+package io.github.contacttracker.core;
+
+/**
+ * How a {@link Method} turns the first-pass particles of a frame into final centres: one strategy per method. A
+ * refinement reads the immutable {@link Particle}s and returns new {@link Estimate}s; it keeps no state, so one
+ * instance serves every frame and thread.
+ */
+interface Refinement {
+
+	/**
+	 * The estimates of a frame and the disc centres the last radial-symmetry pass excluded ({@code null} when
+	 * nothing was excluded): the overlay draws each second active area from them.
+	 */
+	record Outcome(Estimate[] estimates, double[][] discs) {}
+
+	/**
+	 * @param plane the frame
+	 * @param particles its particles, first pass done and shape flags set
+	 * @param params the parameters
+	 * @param profile a radial profile measured beforehand (over a stack), or {@code null}; only the profile
+	 *        methods use it, and measure their own on this frame when it is {@code null}
+	 * @return one estimate per particle, same order
+	 */
+	Outcome refine(Plane plane, Particle[] particles, TrackerParameters params, EmpiricalProfile profile);
+
+	/** The {@code first} method: the first pass is final. */
+	Refinement FIRST_PASS = (plane, ps, params, profile) -> {
+		final Estimate[] e = new Estimate[ps.length];
+		for (int k = 0; k < ps.length; k++)
+			e[k] = ps[k].first;
+		return new Outcome(e, null);
+	};
+}
