@@ -46,10 +46,13 @@ import net.imglib2.RandomAccessibleInterval;
  * close-contact radial-symmetry method; shows the spots as a results table and as ROIs on the image.
  * <p>
  * The {@code @Parameter} field names are the keys of an ImageJ macro call, e.g.
- * {@code run("Contact Tracker", "threshold=110 r_out=55 min_area=20");}. Invalid values (an RGB image, Z and T
- * both above 1, {@code r_out <= 0}, an unknown method, ...) cancel the command with a one-line reason
- * ({@link #getCancelReason()}), which is also logged as an error. It is a plain {@link ContextCommand}, so
- * {@code commandService.run(ContactTrackerCommand.class, true, ...)} returns its module and outputs.
+ * {@code run("Contact Tracker", "threshold=110 r_out=55 min_area=20");}. After a run, ImageJ's system Results
+ * table holds the spots (or the pairs, or is left alone: {@code results}), which is what a macro reads. Invalid
+ * values (an RGB image, Z and T both above 1, {@code r_out <= 0}, an unknown method, ...) cancel the command with
+ * a one-line reason ({@link #getCancelReason()}), which is also logged as an error and stops a calling macro
+ * ({@link MacroFailure}). It is a plain {@link ContextCommand}, so
+ * {@code commandService.run(ContactTrackerCommand.class, true, ...)} returns its module and outputs. In Fiji's
+ * dialog it previews the current frame ({@link #preview()}).
  * <p>
  * Outputs {@code spots} (and {@code pairs} when {@code pair_cutoff > 0}) are ImageJ results tables, returned to
  * scripts also when they are not shown. The command shows them itself ({@code table=true}, not headless), so

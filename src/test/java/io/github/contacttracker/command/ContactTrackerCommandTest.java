@@ -485,6 +485,9 @@ class ContactTrackerCommandTest {
 		assertEquals(SpotOverlay.Kind.DISC, SpotOverlay.kind(badDisc));
 		assertEquals(OverlayPng.DISC, okDisc.getStrokeColor());
 		assertEquals(OverlayPng.FLAGGED, badDisc.getStrokeColor());
+		// the first-pass dot comes after (is drawn over) the final cross
+		assertEquals(SpotOverlay.Kind.FINAL, SpotOverlay.kind(rois.get(1)));
+		assertEquals(SpotOverlay.Kind.FIRST_PASS, SpotOverlay.kind(rois.get(2)));
 		assertTrue(badDisc.getStrokeWidth() > okDisc.getStrokeWidth());
 		assertTrue(badDisc.getName().contains("fell back to first pass"), badDisc.getName());
 		assertEquals(Color.MAGENTA, OverlayPng.FLAGGED);
