@@ -5,6 +5,7 @@
 #@ Integer (label = "Min area (px)", value = 20) min_area
 #@ String (label = "Method", value = "paper") method
 #@ Integer (label = "Channel", value = 1) channel
+#@ Double (label = "Particle diameter (px, 0 = not given)", value = 0) diameter
 #@ Boolean (label = "Also save a TrackMate XML per image", value = false) trackmate
 #@ CommandService commands
 #@ LogService log
@@ -16,7 +17,7 @@
 // command line writes. In Fiji: open it in the script editor and Run, or File > Open... and Run.
 // Headless:
 //   ImageJ-linux64 --headless --console --run contact-tracker-batch.groovy \
-//     'input="/data/movies",output="/data/spots",threshold=110,r_out=55,min_area=20,method="paper",channel=1,trackmate=false'
+//     'input="/data/movies",output="/data/spots",threshold=110,r_out=55,min_area=20,method="paper",channel=1,diameter=0,trackmate=false'
 
 import ij.IJ
 import io.github.contacttracker.command.ContactTrackerCommand
@@ -37,12 +38,12 @@ for (f in tiffs) {
 	def base = f.name.replaceFirst(/(?i)\.tiff?$/, "")
 	def csv = new File(output, base + ".csv")
 	def xml = trackmate ? new File(output, base + ".xml") : null
-	// every input is given, so that no dialog opens for a missing one
+	// every input is given, so that no dialog opens for a missing one and none takes the dialog's last value
 	def module = commands.run(ContactTrackerCommand, true,
 		"imp", imp, "threshold", threshold, "r_out", r_out, "min_area", min_area,
 		"min_second_area", TrackerParameters.DEFAULT_MIN_SECOND_AREA, "connectivity", "8", "method", method,
-		"channel", channel, "pair_cutoff", 0d, "overlay", false, "table", false, "threads", 0,
-		"csv", csv, "trackmate_xml", xml).get()
+		"channel", channel, "diameter", diameter, "pair_cutoff", 0d, "overlay", false, "table", false,
+		"results", "spots", "threads", 0, "csv", csv, "trackmate_xml", xml).get()
 	if (module.isCanceled()) {
 		log.error("Contact Tracker batch: " + f.name + ": " + module.getCancelReason())
 		failed++

@@ -3,11 +3,11 @@
 //
 // Headless (Fiji):
 //   ImageJ-linux64 --headless --console -macro /path/to/contact-tracker-batch.ijm \
-//     "input=[/data/movies] output=[/data/spots] threshold=110 r_out=55 min_area=20 method=paper channel=1"
+//     "input=[/data/movies] output=[/data/spots] threshold=110 r_out=55 min_area=20 method=paper channel=1 diameter=0"
 // In Fiji: Plugins > Macros > Run... and pick this file; without an argument it asks for the values.
 //
 // Keys not given take the defaults below. An image that fails (RGB, Z and T both > 1, a bad value, ...) is
-// reported with its reason and the batch goes on with the next one.
+// reported with its name and reason and the batch goes on with the next one; no image is left open.
 
 args = getArgument();
 if (args == "") {
@@ -19,6 +19,7 @@ if (args == "") {
 	Dialog.addNumber("Min area (px)", 20);
 	Dialog.addString("Method", "paper");
 	Dialog.addNumber("Channel", 1);
+	Dialog.addNumber("Particle diameter (px, 0 = not given)", 0);
 	Dialog.show();
 	input = Dialog.getString();
 	output = Dialog.getString();
@@ -27,6 +28,7 @@ if (args == "") {
 	min_area = Dialog.getNumber();
 	method = Dialog.getString();
 	channel = Dialog.getNumber();
+	diameter = Dialog.getNumber();
 } else {
 	input = value(args, "input", "");
 	output = value(args, "output", "");
@@ -35,13 +37,14 @@ if (args == "") {
 	min_area = value(args, "min_area", "20");
 	method = value(args, "method", "paper");
 	channel = value(args, "channel", "1");
+	diameter = value(args, "diameter", "0");
 }
 if (input == "" || !File.isDirectory(input)) exit("Contact Tracker batch: input folder not found: '" + input + "'");
 if (output == "" || !File.isDirectory(output)) exit("Contact Tracker batch: output folder not found: '" + output + "'");
 if (!endsWith(input, "/") && !endsWith(input, File.separator)) input = input + File.separator;
 if (!endsWith(output, "/") && !endsWith(output, File.separator)) output = output + File.separator;
 options = "threshold=" + threshold + " r_out=" + r_out + " min_area=" + min_area + " method=" + method +
-	" channel=" + channel + " overlay=false table=false";
+	" channel=" + channel + " diameter=" + diameter + " overlay=false table=false";
 
 setBatchMode(true);
 list = getFileList(input);
@@ -53,18 +56,22 @@ for (i = 0; i < list.length; i++) {
 	csv = output + File.getNameWithoutExtension(name) + ".csv";
 	if (File.exists(csv)) deleted = File.delete(csv); // so that a failure cannot leave an old CSV looking new
 	open(input + name);
+	// a failing image is reported in the Log ("Contact Tracker ('name'): reason") instead of stopping the batch
+	IJ.redirectErrorMessages();
 	run("Contact Tracker", options + " csv=[" + csv + "]");
+	spots = nResults; // the spots are also in the Results table (getResult("POSITION_X", i), ...)
 	close("*");
 	if (File.exists(csv)) {
 		done++;
-		print(name + " -> " + csv);
+		print(name + ": " + spots + " spots -> " + csv);
 	} else {
 		failed++;
-		print(name + ": FAILED (the reason is in the log above)");
+		print(name + ": FAILED (the reason is in the line above)");
 	}
 }
 setBatchMode(false);
 print("Contact Tracker batch: " + done + " image(s) done, " + failed + " failed");
+print("open images: " + nImages);
 
 // The value of key in "key=value key=[value with spaces] ...", or the default.
 function value(options, key, default) {

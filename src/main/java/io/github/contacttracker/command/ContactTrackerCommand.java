@@ -5,6 +5,7 @@ import java.io.File;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.CancellationException;
@@ -14,6 +15,7 @@ import org.scijava.ItemIO;
 import org.scijava.app.StatusService;
 import org.scijava.command.Command;
 import org.scijava.command.ContextCommand;
+import org.scijava.command.Previewable;
 import org.scijava.log.LogService;
 import org.scijava.plugin.Parameter;
 import org.scijava.plugin.Plugin;
@@ -22,6 +24,8 @@ import org.scijava.widget.FileWidget;
 import ij.IJ;
 import ij.ImagePlus;
 import ij.Prefs;
+import ij.WindowManager;
+import ij.gui.Overlay;
 import ij.io.FileInfo;
 import ij.measure.ResultsTable;
 import io.github.contacttracker.core.Connectivity;
@@ -42,10 +46,13 @@ import net.imglib2.RandomAccessibleInterval;
  * close-contact radial-symmetry method; shows the spots as a results table and as ROIs on the image.
  * <p>
  * The {@code @Parameter} field names are the keys of an ImageJ macro call, e.g.
- * {@code run("Contact Tracker", "threshold=110 r_out=55 min_area=20");}. Invalid values (an RGB image, Z and T
- * both above 1, {@code r_out <= 0}, an unknown method, ...) cancel the command with a one-line reason
- * ({@link #getCancelReason()}), which is also logged as an error. It is a plain {@link ContextCommand}, so
- * {@code commandService.run(ContactTrackerCommand.class, true, ...)} returns its module and outputs.
+ * {@code run("Contact Tracker", "threshold=110 r_out=55 min_area=20");}. After a run, ImageJ's system Results
+ * table holds the spots (or the pairs, or is left alone: {@code results}), which is what a macro reads. Invalid
+ * values (an RGB image, Z and T both above 1, {@code r_out <= 0}, an unknown method, ...) cancel the command with
+ * a one-line reason ({@link #getCancelReason()}), which is also logged as an error and stops a calling macro
+ * ({@link MacroFailure}). It is a plain {@link ContextCommand}, so
+ * {@code commandService.run(ContactTrackerCommand.class, true, ...)} returns its module and outputs. In Fiji's
+ * dialog it previews the current frame ({@link #preview()}).
  * <p>
  * Outputs {@code spots} (and {@code pairs} when {@code pair_cutoff > 0}) are ImageJ results tables, returned to
  * scripts also when they are not shown. The command shows them itself ({@code table=true}, not headless), so
@@ -54,7 +61,12 @@ import net.imglib2.RandomAccessibleInterval;
 @Plugin(type = Command.class, menuPath = "Plugins>Tracking>Contact Tracker", headless = true,
 	label = "Contact Tracker", description = "Sub-pixel centres of colloidal particles close to contact " +
 		"(Yucel & Okumusoglu 2017)")
-public class ContactTrackerCommand extends ContextCommand {
+public class ContactTrackerCommand extends ContextCommand implements Previewable, InputCheck.Checked {
+
+	/** Values of {@code results}: what ImageJ's system Results table gets. */
+	public static final String RESULTS_SPOTS = "spots", RESULTS_PAIRS = "pairs", RESULTS_NONE = "none";
+
+	private static final String TITLE = "Contact Tracker";
 
 	@Parameter
 	private LogService log;
@@ -65,46 +77,58 @@ public class ContactTrackerCommand extends ContextCommand {
 	@Parameter(label = "Image", persist = false)
 	private ImagePlus imp;
 
-	@Parameter(label = "Threshold (grey level)", persist = false,
+	@Parameter(label = "Threshold (grey level)",
 		description = "Pixels at or above it form the active areas, one per particle; above the brightest point " +
 			"between two particles at contact (see Contact Tracker Profile)")
 	private double threshold = DetectorSettings.DEFAULT_THRESHOLD;
 
-	@Parameter(label = "r_out (px)", persist = false, min = "0", stepSize = "0.5",
+	@Parameter(label = "r_out (px)", min = "0", stepSize = "0.5",
 		description = "Radius of a particle's effective disc: where its image has returned to background, plus 2 px")
 	private double r_out = DetectorSettings.DEFAULT_R_OUT;
 
-	@Parameter(label = "Min area (px)", persist = false, min = "1",
+	@Parameter(label = "Min area (px)", min = "1",
 		description = "Smaller active areas are noise and dropped")
 	private int min_area = TrackerParameters.DEFAULT_MIN_AREA;
 
-	@Parameter(label = "Min second area (px)", persist = false, min = "3",
+	@Parameter(label = "Min second area (px)", min = "3",
 		description = "Below this many pixels outside the neighbours' discs a spot keeps its first-pass centre " +
 			"(flagged)")
 	private int min_second_area = TrackerParameters.DEFAULT_MIN_SECOND_AREA;
 
-	@Parameter(label = "Connectivity", persist = false, choices = { "8", "4" },
+	@Parameter(label = "Connectivity", choices = { "8", "4" },
 		description = "Pixel neighbourhood of the active areas")
 	private String connectivity = "8";
 
-	@Parameter(label = "Method", persist = false,
-		description = "How centres are computed, e.g. paper (the paper's two passes) or first (one pass, biased " +
-			"near contact); the README lists every method, and an unknown name is refused with the valid ones")
+	// the keys of Method, in its order (checked by a test); a macro may still pass any text, which is refused
+	// with the valid ones when unknown
+	@Parameter(label = "Method", choices = { "first", "paper", "iterative", "deblend", "fit" },
+		description = "How centres are computed: first (one pass, biased near contact), paper (the paper's two " +
+			"passes), iterative, deblend, fit (the README compares them)")
 	private String method = Method.DEFAULT.key();
 
-	@Parameter(label = "Channel", persist = false, min = "1",
+	@Parameter(label = "Particle diameter (px, 0 = not given)", min = "0", stepSize = "0.5",
+		description = "The particles' diameter (the Profile helper measures it): RADIUS is half of it. Without it, " +
+			"RADIUS is the active area's equivalent radius (ACTIVE_RADIUS), smaller than the particle")
+	private double diameter = 0;
+
+	@Parameter(label = "Channel", min = "1",
 		description = "The channel to track (1-based); single-channel images have only channel 1")
 	private int channel = 1;
 
-	@Parameter(label = "Pair cutoff (calibrated units, 0 = none)", persist = false, min = "0",
+	@Parameter(label = "Pair cutoff (calibrated units, 0 = none)", min = "0",
 		description = "List the distances of spot pairs of the same frame closer than this in a second table")
 	private double pair_cutoff = 0;
 
-	@Parameter(label = "Show overlay", persist = false)
+	@Parameter(label = "Show overlay")
 	private boolean overlay = true;
 
-	@Parameter(label = "Show table", persist = false)
+	@Parameter(label = "Show table")
 	private boolean table = true;
+
+	@Parameter(label = "Results table gets", choices = { RESULTS_SPOTS, RESULTS_PAIRS, RESULTS_NONE },
+		description = "What goes into ImageJ's Results table, which macros read with nResults and getResult: the " +
+			"spots, the pairs (with pair_cutoff > 0) or nothing (the Results table is left alone)")
+	private String results = RESULTS_SPOTS;
 
 	@Parameter(label = "Save spots as CSV", persist = false, required = false, style = FileWidget.SAVE_STYLE,
 		description = "Optional: the spots table as CSV, the same file the command line writes")
@@ -114,7 +138,7 @@ public class ContactTrackerCommand extends ContextCommand {
 		description = "Optional: a TrackMate file with the spots (File > Load a TrackMate file)")
 	private File trackmate_xml;
 
-	@Parameter(label = "Threads (0 = ImageJ's setting)", persist = false, min = "0",
+	@Parameter(label = "Threads (0 = ImageJ's setting)", min = "0",
 		description = "Frames are localized in parallel on this many threads")
 	private int threads = 0;
 
@@ -124,9 +148,14 @@ public class ContactTrackerCommand extends ContextCommand {
 	@Parameter(label = "Pairs", type = ItemIO.OUTPUT, required = false)
 	private ResultsTable pairs;
 
+	/** The image's overlay before the first preview, put back when the dialog is cancelled. */
+	private Overlay beforePreview;
+	private boolean previewShown;
+
 	@Override
 	public void run() {
 		IJ.resetEscape();
+		clearPreview(false); // a real run replaces the preview's ROIs (or leaves the image alone)
 		try {
 			analyse();
 		}
@@ -137,7 +166,7 @@ public class ContactTrackerCommand extends ContextCommand {
 			final String m = e.getMessage();
 			final String reason = m != null && m.startsWith("cancelled") ? m : "cancelled" + (m == null ? "" : " (" + m +
 				")");
-			log.warn("Contact Tracker: " + reason);
+			log.warn(TITLE + ": " + reason);
 			stop(reason);
 		}
 	}
@@ -148,63 +177,161 @@ public class ContactTrackerCommand extends ContextCommand {
 			Method.parse(method));
 	}
 
-	private void analyse() throws IOException {
-		final TrackerParameters params = parameters();
+	/** Checks every input that does not depend on the image (before SciJava remembers the values). */
+	@Override
+	public void checkInputs() {
+		parameters();
+		checkOwnInputs();
+	}
+
+	/** Checks what the core does not: the command's own inputs. */
+	private void checkOwnInputs() {
 		if (pair_cutoff < 0 || !Double.isFinite(pair_cutoff))
 			throw new IllegalArgumentException("pair_cutoff must be a distance >= 0 (0 = no pair table), not " +
 				pair_cutoff);
 		if (threads < 0) throw new IllegalArgumentException("threads must be >= 0 (0 = ImageJ's setting), not " +
 			threads);
-		final File csvFile = given(csv), xmlFile = given(trackmate_xml);
-		checkFolder("csv", csvFile);
-		checkFolder("trackmate_xml", xmlFile);
+		if (diameter < 0 || !Double.isFinite(diameter))
+			throw new IllegalArgumentException("diameter must be a number of pixels >= 0 (0 = not given), not " +
+				diameter);
+		final String r = results == null ? "" : results.trim();
+		if (!r.equals(RESULTS_SPOTS) && !r.equals(RESULTS_PAIRS) && !r.equals(RESULTS_NONE))
+			throw new IllegalArgumentException("results must be one of " + RESULTS_SPOTS + ", " + RESULTS_PAIRS + ", " +
+				RESULTS_NONE + ", not '" + results + "'");
+		if (r.equals(RESULTS_PAIRS) && pair_cutoff == 0)
+			throw new IllegalArgumentException("results=pairs needs pair_cutoff > 0 (the distance up to which pairs are " +
+				"listed)");
+	}
+
+	/** @return the image's frames, checked against the parameters */
+	private ImagePlusFrames frames(final TrackerParameters params) {
 		final ImagePlusFrames frames = ImagePlusFrames.of(imp, channel);
 		final double[] range = frames.dataRange();
 		if (params.threshold() < range[0] || params.threshold() > range[1])
 			throw new IllegalArgumentException(String.format(Locale.ROOT,
 				"threshold %s is outside the data range [%s, %s] of '%s'", fmt(params.threshold()), fmt(range[0]), fmt(
 					range[1]), imp.getTitle()));
+		return frames;
+	}
+
+	private void analyse() throws IOException {
+		final TrackerParameters params = parameters();
+		checkOwnInputs();
+		final File csvFile = given(csv), xmlFile = given(trackmate_xml);
+		checkFolder("csv", csvFile);
+		checkFolder("trackmate_xml", xmlFile);
+		final ImagePlusFrames frames = frames(params);
 
 		final int count = frames.frameCount();
 		final Thread caller = Thread.currentThread();
 		final BooleanSupplier cancelled = () -> isCanceled() || caller.isInterrupted() || IJ.escapePressed();
 		final StackTracker tracker = new StackTracker(params);
 		progress(0, count);
-		final List<FrameResult> results = track(tracker, frames, overlay, cancelled);
-		final List<Localization> all = StackTracker.spots(results);
+		final List<FrameResult> found = track(tracker, frames.frames(), overlay, cancelled);
+		final List<Localization> all = withDiameter(StackTracker.spots(found));
 
+		// everything is computed before anything is written or shown: a failure leaves no half-done output
 		final TitledResultsTable spotTable = SpotTables.spots(all, frames.calibration());
-		final TitledResultsTable pairTable = pair_cutoff > 0 ? SpotTables.pairs(PairDistances.within(all, frames
-			.calibration(), pair_cutoff)) : null;
+		final List<PairDistances.Pair> pairList = pair_cutoff > 0 ? PairDistances.within(all, frames.calibration(),
+			pair_cutoff) : null;
+		final TitledResultsTable pairTable = pairList == null ? null : SpotTables.pairs(pairList);
 		if (csvFile != null) SpotCsvWriter.write(csvFile.toPath(), all, frames.calibration());
 		if (xmlFile != null) TrackMateXmlWriter.write(xmlFile.toPath(), all, frames.calibration(), source(
 			imp, frames), params, frames.channel());
-		if (overlay) SpotOverlay.show(imp, SpotOverlay.rois(results, params.rOut(), SpotOverlay.placer(imp)));
+		if (overlay) SpotOverlay.show(imp, SpotOverlay.rois(found, params.rOut(), SpotOverlay.placer(imp)));
 
 		// We show the tables ourselves (or not); ShownOutputs keeps SciJava from displaying them again.
 		spots = spotTable;
 		pairs = pairTable;
+		final ResultsTable system = switch (results.trim()) {
+			case RESULTS_SPOTS -> SpotTables.spotsToSystemTable(all, frames.calibration());
+			case RESULTS_PAIRS -> SpotTables.pairsToSystemTable(pairList);
+			default -> null;
+		};
 		if (table && !GraphicsEnvironment.isHeadless()) {
 			spotTable.show();
 			if (pairTable != null) pairTable.show();
+			// refresh an open Results window; none is opened, the named tables show the same
+			if (system != null && WindowManager.getWindow("Results") != null) system.show("Results");
 		}
 		int flagged = 0;
 		for (final Localization s : all)
 			if (s.isFlagged()) flagged++;
-		final String summary = String.format(Locale.ROOT, "Contact Tracker: %d spots in %d frame%s of '%s', %d flagged",
+		final String summary = String.format(Locale.ROOT, "%s: %d spots in %d frame%s of '%s', %d flagged", TITLE,
 			all.size(), count, count == 1 ? "" : "s", imp.getTitle(), flagged);
 		log.info(summary);
+		// the Log window (standard output headless): where ImageJ users and batch macros see results
+		IJ.log(summary);
 		if (status != null) {
 			status.showProgress(count, count);
 			status.showStatus(summary);
 		}
+		MacroFailure.succeeded();
+	}
+
+	/** @return the spots, their radius set to half the particle diameter when one was given */
+	private List<Localization> withDiameter(final List<Localization> spots) {
+		if (diameter <= 0) return spots;
+		final List<Localization> out = new ArrayList<>(spots.size());
+		for (final Localization s : spots)
+			out.add(s.withRadius(diameter / 2));
+		return out;
+	}
+
+	/**
+	 * Shows the spots and {@code r_out} discs of the current frame as the dialog's values change (called by
+	 * Fiji's dialog). Invalid values show nothing new; {@link #cancel()} puts the overlay back as it was.
+	 */
+	@Override
+	public void preview() {
+		if (imp == null) return;
+		try {
+			final TrackerParameters params = parameters();
+			final ImagePlusFrames frames = frames(params);
+			final int t = currentFrame(frames.frameCount());
+			final FrameResult r = track(new StackTracker(params), frames.frames().subList(t, t + 1), true, () -> false)
+				.get(0);
+			if (!previewShown) {
+				beforePreview = imp.getOverlay() == null ? null : imp.getOverlay().duplicate();
+				previewShown = true;
+			}
+			final SpotOverlay.FramePlacer placer = SpotOverlay.placer(imp);
+			SpotOverlay.show(imp, SpotOverlay.rois(List.of(r), params.rOut(), (roi, frame) -> placer.place(roi, t)));
+			if (status != null) status.showStatus(TITLE + " preview: " + r.spots().size() + " spots on this frame");
+		}
+		catch (final RuntimeException e) {
+			// while values are being typed they are often invalid: say why, keep the last preview
+			if (status != null) status.showStatus(TITLE + " preview: " + e.getMessage());
+		}
+	}
+
+	/** Takes the preview off the image: the dialog was cancelled. */
+	@Override
+	public void cancel() {
+		clearPreview(true);
+	}
+
+	/** @param restore whether to put back the overlay as it was before the preview (else it is left to the run) */
+	private void clearPreview(final boolean restore) {
+		if (!previewShown) return;
+		previewShown = false;
+		if (restore) imp.setOverlay(beforePreview);
+		else if (beforePreview == null) SpotOverlay.clear(imp);
+		else imp.setOverlay(beforePreview);
+		beforePreview = null;
+	}
+
+	/** @return the frame shown, as {@link ImagePlusFrames} counts frames (time points, or a plain stack's slices) */
+	private int currentFrame(final int count) {
+		final int t = imp.getNFrames() > 1 ? imp.getT() - 1 : imp.getNSlices() > 1 ? imp.getZ() - 1 : 0;
+		return Math.max(0, Math.min(count - 1, t));
 	}
 
 	@SuppressWarnings({ "unchecked", "rawtypes" })
-	private List<FrameResult> track(final StackTracker tracker, final ImagePlusFrames frames,
+	private List<FrameResult> track(final StackTracker tracker, final List<? extends RandomAccessibleInterval<?>> frames,
 		final boolean keepRegions, final BooleanSupplier cancelled)
 	{
-		final List<RandomAccessibleInterval> list = (List) frames.frames();
+		final List<RandomAccessibleInterval> list = (List) frames;
 		return StackTracker.withThreads(threads > 0 ? threads : Prefs.getThreads(), () -> tracker.track(list
 			.size(), t -> list.get(t), keepRegions, this::progress, cancelled));
 	}
@@ -215,10 +342,18 @@ public class ContactTrackerCommand extends ContextCommand {
 			"%");
 	}
 
-	/** Cancels with a one-line reason, logged as an error (the Console in Fiji, stderr headless). */
+	/**
+	 * Cancels with a one-line reason, logged as an error (the Console in Fiji, stderr headless), and stops the
+	 * calling ImageJ macro, if any, as ImageJ's own commands do ({@link MacroFailure}).
+	 */
 	private void fail(final String reason) {
-		log.error("Contact Tracker: " + reason);
+		log.error(TITLE + ": " + reason);
 		stop(reason);
+		final boolean redirected = MacroFailure.macroRunning() && IJ.redirectingErrorMessages();
+		if (MacroFailure.report(TITLE, imp == null ? null : imp.getTitle(), reason) && redirected && !RESULTS_NONE
+			.equals(results))
+			// the macro goes on: its nResults must not show the previous image's spots as this one's
+			ResultsTable.getResultsTable().reset();
 	}
 
 	private void stop(final String reason) {

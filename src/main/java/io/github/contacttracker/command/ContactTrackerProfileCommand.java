@@ -37,6 +37,10 @@ public class ContactTrackerProfileCommand extends ContextCommand {
 
 	/** Title of the plot window (followed by the image title). */
 	public static final String PLOT_TITLE = "Contact Tracker Profile";
+	/** Longest line written to the Log window: it does not wrap, and a default Log window is about this wide. */
+	static final int LOG_WIDTH = 90;
+	/** Colour of the noise band's lines: readable on the white plot and in its legend. */
+	static final Color NOISE_BAND = new Color(90, 90, 90);
 
 	@Parameter
 	private LogService log;
@@ -44,15 +48,15 @@ public class ContactTrackerProfileCommand extends ContextCommand {
 	@Parameter(label = "Image", persist = false)
 	private ImagePlus imp;
 
-	@Parameter(label = "Particle diameter (px)", persist = false, min = "0",
+	@Parameter(label = "Particle diameter (px)", min = "0",
 		description = "The centre distance of two particles at contact, in pixels")
 	private double diameter = 0;
 
-	@Parameter(label = "Max radius (px, 0 = 2.5 diameters)", persist = false, min = "0",
+	@Parameter(label = "Max radius (px, 0 = 2.5 diameters)", min = "0",
 		description = "How far out the profile is measured; its outer 20% give the background")
 	private double max_radius = 0;
 
-	@Parameter(label = "Show plot", persist = false)
+	@Parameter(label = "Show plot")
 	private boolean plot = true;
 
 	@Parameter(label = "Suggested threshold", type = ItemIO.OUTPUT)
@@ -84,6 +88,7 @@ public class ContactTrackerProfileCommand extends ContextCommand {
 		catch (final IllegalArgumentException e) {
 			log.error(PLOT_TITLE + ": " + e.getMessage());
 			cancel(e.getMessage());
+			MacroFailure.report(PLOT_TITLE, imp == null ? null : imp.getTitle(), e.getMessage());
 		}
 	}
 
@@ -151,11 +156,14 @@ public class ContactTrackerProfileCommand extends ContextCommand {
 		p.setLineWidth(1);
 		p.setColor(Color.BLACK);
 		p.add("line", new double[] { 0, right }, new double[] { r.background(), r.background() });
-		p.setColor(Color.GRAY);
+		// dark enough to read in the legend on a white plot (light grey was barely visible)
+		p.setColor(NOISE_BAND);
+		p.setLineWidth(2);
 		p.add("line", new double[] { 0, right }, new double[] { r.background() + r.noise(), r.background() + r
 			.noise() });
 		p.add("line", new double[] { 0, right }, new double[] { r.background() - r.noise(), r.background() - r
 			.noise() });
+		p.setLineWidth(1);
 		p.setColor(Color.RED);
 		p.add("line", new double[] { 0, right }, new double[] { threshold, threshold });
 		p.setColor(Color.BLUE);
@@ -163,8 +171,8 @@ public class ContactTrackerProfileCommand extends ContextCommand {
 		p.setColor(new Color(0, 150, 0));
 		p.add("line", new double[] { r.diameter() / 2, r.diameter() / 2 }, new double[] { lo, hi });
 		p.setColor(Color.BLACK);
-		p.addLegend("radial profile\tbackground\tbackground + noise\tbackground - noise\tsuggested threshold\t" +
-			"suggested r_out\tD/2", "top-right");
+		p.addLegend("radial profile\tbackground\tnoise band (+1 sigma)\tnoise band (-1 sigma)\tsuggested " +
+			"threshold\tsuggested r_out\tD/2", "top-right");
 		return p;
 	}
 
@@ -185,10 +193,34 @@ public class ContactTrackerProfileCommand extends ContextCommand {
 		b.append(String.format(Locale.ROOT, "  active area radius at this threshold: %.2f px (D/2 = %.2f px)%n", r
 			.activeRadius(), r.diameter() / 2));
 		for (final String w : r.warnings())
-			b.append("  warning: ").append(w).append('\n');
-		b.append(String.format(Locale.ROOT, "  macro: run(\"Contact Tracker\", \"threshold=%s r_out=%.0f\");",
-			fmt(suggested_threshold), suggested_r_out));
+			b.append(wrap("  warning: " + w, LOG_WIDTH, "    ")).append('\n');
+		b.append(String.format(Locale.ROOT, "  macro: run(\"Contact Tracker\", \"threshold=%s r_out=%.0f diameter=%s\");",
+			fmt(suggested_threshold), suggested_r_out, fmt(r.diameter())));
 		IJ.log(b.toString());
+	}
+
+	/**
+	 * Breaks a line at spaces so that no part is longer than {@code width} characters (ImageJ's Log window does
+	 * not wrap: long warnings ran off its edge); continuation lines start with {@code indent}.
+	 */
+	static String wrap(final String text, final int width, final String indent) {
+		int lead = 0;
+		while (lead < text.length() && text.charAt(lead) == ' ')
+			lead++;
+		final StringBuilder out = new StringBuilder(text.substring(0, lead));
+		int lineStart = 0, lineWords = 0;
+		for (final String word : text.substring(lead).split(" +")) {
+			if (lineWords > 0 && out.length() - lineStart + 1 + word.length() > width) {
+				out.append('\n');
+				lineStart = out.length();
+				out.append(indent);
+				lineWords = 0;
+			}
+			if (lineWords > 0) out.append(' ');
+			out.append(word);
+			lineWords++;
+		}
+		return out.toString();
 	}
 
 	private static String fmt(final double v) {

@@ -1,5 +1,6 @@
 package io.github.contacttracker.command;
 
+import java.io.File;
 import java.util.Locale;
 
 import org.scijava.Priority;
@@ -20,8 +21,14 @@ import ij.Macro;
  * <p>
  * Fiji converts macro values with SciJava's converters; a value that does not convert ({@code threshold=abc},
  * {@code min_area=2.5}, {@code overlay=yes}) is silently replaced by 0 or false, and the command would run with
- * it. This check runs first and cancels the command with a one-line message instead. It only looks at the
- * modules of this package and only while a macro passes options.
+ * it. This check runs first and cancels the command with a one-line message instead (which also stops the
+ * macro: see {@link MacroFailure}). It only looks at the modules of this package and only while a macro passes
+ * options.
+ * <p>
+ * It also keeps macros reproducible although the dialog remembers its last values: an input the macro leaves
+ * out is marked resolved at its documented default, so SciJava does not load the remembered value into it nor
+ * ask for it (values the macro gives are set afterwards by Fiji's macro preprocessor, which runs after this
+ * one).
  */
 @Plugin(type = PreprocessorPlugin.class, priority = 2 * Priority.VERY_HIGH + 1)
 public class MacroOptionsCheck extends AbstractPreprocessorPlugin {
@@ -35,9 +42,29 @@ public class MacroOptionsCheck extends AbstractPreprocessorPlugin {
 		final String options = Macro.getOptions();
 		if (options == null) return;
 		final String problem = problem(module.getInfo(), options);
-		if (problem == null) return;
-		if (log != null) log.error(module.getInfo().getTitle() + ": " + problem);
-		cancel(problem);
+		if (problem == null) {
+			useDefaultsForLeftOut(module, options);
+			return;
+		}
+		InputCheck.refuse(this, log, module, problem);
+	}
+
+	/**
+	 * Resolves the inputs a macro leaves out, so that they keep their defaults: not the dialog's remembered
+	 * values, and no file chooser for an optional output file (SciJava's file preprocessor asks for a lone
+	 * unresolved file input, e.g. {@code trackmate_xml} when the macro gives only {@code csv}).
+	 */
+	static void useDefaultsForLeftOut(final Module module, final String options) {
+		for (final ModuleItem<?> input : module.getInfo().inputs()) {
+			if (module.isInputResolved(input.getName()) || !textual(input.getType())) continue;
+			if (Macro.getValue(options, input.getName(), null) == null) module.resolveInput(input.getName());
+		}
+	}
+
+	/** @return whether a macro gives a value of this type as text (not an image, a service, ...) */
+	private static boolean textual(final Class<?> type) {
+		return type.isPrimitive() || Number.class.isAssignableFrom(type) || type == Boolean.class ||
+			type == String.class || type == File.class;
 	}
 
 	/** @return whether the module is one of Contact Tracker's commands */

@@ -23,8 +23,8 @@ import io.github.contacttracker.io.OverlayPng;
 /**
  * The ROIs Contact Tracker draws on an image, in the colours of {@link OverlayPng} so that one scheme serves
  * both: per spot, the {@code r_out} disc around the first-pass centre (cyan; magenta and thicker when the spot
- * is flagged), the second active area's outline (green), the first-pass centre (yellow dot) and the final centre
- * (red cross). Each ROI sits on its frame.
+ * is flagged), the second active area's outline (green, 1.5 px), the final centre (red cross) and, drawn over
+ * it, the first-pass centre (yellow dot). Each ROI sits on its frame.
  * <p>
  * Coordinates: spots are in TrackMate's convention (pixel (0,0)'s centre at 0,0); ImageJ puts pixel (0,0)'s
  * centre at 0.5,0.5, so centres and discs are drawn at {@code position + 0.5}. The outline follows pixel edges.
@@ -41,6 +41,8 @@ public final class SpotOverlay {
 	public static final String SPOT_PROPERTY = "ContactTrackerSpot";
 	/** Stroke width of a flagged spot's disc (px). */
 	public static final float FLAGGED_STROKE = 2.5f;
+	/** Stroke width of the second active area's outline (px). */
+	public static final float OUTLINE_STROKE = 1.5f;
 
 	/** What a ROI shows. */
 	public enum Kind {
@@ -117,19 +119,23 @@ public final class SpotOverlay {
 					disc.setStrokeColor(OverlayPng.FLAGGED);
 					disc.setStrokeWidth(FLAGGED_STROKE);
 				}
-				if (k < r.secondAreas().size() && r.secondAreas().get(k).area() > 0)
-					add(rois, outline(r.secondAreas().get(k)), Kind.SECOND_AREA, id, name + " " + Kind.SECOND_AREA.label(),
-						s, placer);
-
-				final PointRoi first = new PointRoi(s.firstX() + 0.5, s.firstY() + 0.5);
-				first.setPointType(PointRoi.DOT);
-				first.setSize(1); // small
-				add(rois, first, Kind.FIRST_PASS, id, name + " " + Kind.FIRST_PASS.label(), s, placer);
+				if (k < r.secondAreas().size() && r.secondAreas().get(k).area() > 0) {
+					final Roi outline = outline(r.secondAreas().get(k));
+					// a 1 px line is lost on a saturated core: a wider one stays visible
+					outline.setStrokeWidth(OUTLINE_STROKE);
+					add(rois, outline, Kind.SECOND_AREA, id, name + " " + Kind.SECOND_AREA.label(), s, placer);
+				}
 
 				final PointRoi last = new PointRoi(s.x() + 0.5, s.y() + 0.5);
 				last.setPointType(PointRoi.CROSS);
 				last.setSize(3); // large
 				add(rois, last, Kind.FINAL, id, name + " " + Kind.FINAL.label() + flags, s, placer);
+
+				// after the cross, so that it is drawn on top: the two centres are often less than a pixel apart
+				final PointRoi first = new PointRoi(s.firstX() + 0.5, s.firstY() + 0.5);
+				first.setPointType(PointRoi.DOT);
+				first.setSize(2); // medium: a small dot vanished under the cross
+				add(rois, first, Kind.FIRST_PASS, id, name + " " + Kind.FIRST_PASS.label(), s, placer);
 			}
 		}
 		return rois;

@@ -1,15 +1,21 @@
 package io.github.contacttracker.command;
 
+import java.util.ArrayList;
 import java.util.List;
 
+import ij.measure.ResultsTable;
 import io.github.contacttracker.core.Localization;
 import io.github.contacttracker.io.Calibration;
 import io.github.contacttracker.io.SpotColumn;
 
 /**
- * The ImageJ results tables of Contact Tracker. The spots table has exactly the columns of the command line's
- * CSV ({@link SpotColumn}, TrackMate's keys first, then ours), one row per spot, the row index being the spot's
- * ID; positions are in calibrated units.
+ * The ImageJ results tables of Contact Tracker. The spots table has the columns of the command line's CSV
+ * ({@link SpotColumn}) with the same values, one row per spot, the row index being the spot's ID; positions are in
+ * calibrated units. Its columns are ordered for a reader ({@link #DISPLAY_ORDER}: position, its error and the
+ * flags first); the CSV keeps TrackMate's key order, which TrackMate's importer expects.
+ * <p>
+ * The same content can be written into ImageJ's system results table ({@link #toSystemTable}), which a macro
+ * reads with {@code nResults} and {@code getResult}.
  */
 public final class SpotTables {
 
@@ -18,14 +24,27 @@ public final class SpotTables {
 	/** Title of the pair-distance table. */
 	public static final String PAIRS_TITLE = "Contact Tracker pairs";
 
-	/** Decimal places shown for non-integer columns (the stored values are full doubles). */
+	/** Decimal places shown for non-integer values (the stored values are full doubles). */
 	static final int DECIMALS = 4;
+
+	/**
+	 * The spots table's columns, left to right: what a user reads first (which spot, where, how precisely, whether
+	 * to trust it), then the rest. Every {@link SpotColumn} appears once.
+	 */
+	public static final List<SpotColumn> DISPLAY_ORDER = List.of(SpotColumn.ID, SpotColumn.FRAME,
+		SpotColumn.POSITION_X, SpotColumn.POSITION_Y, SpotColumn.SIGMA_X, SpotColumn.SIGMA_Y,
+		SpotColumn.FLAG_FELL_BACK, SpotColumn.FLAG_DEGENERATE, SpotColumn.FLAG_AT_BORDER, SpotColumn.FLAG_MERGED,
+		SpotColumn.FLAG_NOT_CONVERGED, SpotColumn.FLAG_SECOND_PASS, SpotColumn.POSITION_T, SpotColumn.RADIUS,
+		SpotColumn.ACTIVE_RADIUS, SpotColumn.QUALITY, SpotColumn.FIRST_PASS_X, SpotColumn.FIRST_PASS_Y,
+		SpotColumn.ACTIVE_AREA, SpotColumn.SECOND_AREA, SpotColumn.ITERATIONS, SpotColumn.POSITION_Z,
+		SpotColumn.VISIBILITY);
 
 	/** Columns of the pair table, in order. */
 	public static final String PAIR_FRAME = "FRAME", PAIR_ID_A = "SPOT_A", PAIR_ID_B = "SPOT_B",
 		PAIR_DISTANCE = "DISTANCE", PAIR_FIRST_PASS_DISTANCE = "FIRST_PASS_DISTANCE", PAIR_FLAGGED = "FLAGGED";
 	private static final String[] PAIR_COLUMNS = { PAIR_FRAME, PAIR_ID_A, PAIR_ID_B, PAIR_DISTANCE,
 		PAIR_FIRST_PASS_DISTANCE, PAIR_FLAGGED };
+	private static final List<String> PAIR_INTEGERS = List.of(PAIR_FRAME, PAIR_ID_A, PAIR_ID_B, PAIR_FLAGGED);
 
 	private SpotTables() {}
 
@@ -33,18 +52,7 @@ public final class SpotTables {
 	public static TitledResultsTable spots(final List<Localization> spots, final Calibration cal) {
 		final TitledResultsTable rt = new TitledResultsTable(SPOTS_TITLE);
 		rt.showRowNumbers(false);
-		rt.setNaNEmptyCells(false);
-		final SpotColumn[] columns = SpotColumn.values();
-		for (int id = 0; id < spots.size(); id++) {
-			rt.incrementCounter();
-			for (final SpotColumn c : columns)
-				rt.addValue(c.key(), c.value(spots.get(id), id, cal));
-		}
-		if (spots.isEmpty()) // an empty table still has its columns
-			for (final SpotColumn c : columns)
-				rt.getFreeColumn(c.key());
-		for (final SpotColumn c : columns)
-			decimals(rt, c.key(), c.isInteger() ? 0 : DECIMALS);
+		fillSpots(rt, spots, cal);
 		return rt;
 	}
 
@@ -52,9 +60,48 @@ public final class SpotTables {
 	public static TitledResultsTable pairs(final List<PairDistances.Pair> pairs) {
 		final TitledResultsTable rt = new TitledResultsTable(PAIRS_TITLE);
 		rt.showRowNumbers(false);
-		if (pairs.isEmpty())
-			for (final String c : PAIR_COLUMNS)
-				rt.getFreeColumn(c);
+		fillPairs(rt, pairs);
+		return rt;
+	}
+
+	/**
+	 * Replaces the content of ImageJ's system results table (the one a macro's {@code nResults} and
+	 * {@code getResult} read, and <i>Analyze Particles</i> fills) with the spots table's.
+	 *
+	 * @return the system table
+	 */
+	public static ResultsTable spotsToSystemTable(final List<Localization> spots, final Calibration cal) {
+		// the same object is kept, so that an open "Results" window goes on showing it
+		final ResultsTable system = ResultsTable.getResultsTable();
+		system.reset();
+		fillSpots(system, spots, cal);
+		return system;
+	}
+
+	/** Like {@link #spotsToSystemTable}, with the pair table's content. */
+	public static ResultsTable pairsToSystemTable(final List<PairDistances.Pair> pairs) {
+		final ResultsTable system = ResultsTable.getResultsTable();
+		system.reset();
+		fillPairs(system, pairs);
+		return system;
+	}
+
+	private static void fillSpots(final ResultsTable rt, final List<Localization> spots, final Calibration cal) {
+		rt.setNaNEmptyCells(false);
+		for (int id = 0; id < spots.size(); id++) {
+			rt.incrementCounter();
+			for (final SpotColumn c : DISPLAY_ORDER)
+				rt.addValue(c.key(), c.value(spots.get(id), id, cal));
+		}
+		final List<String> keys = new ArrayList<>(), integers = new ArrayList<>();
+		for (final SpotColumn c : DISPLAY_ORDER) {
+			keys.add(c.key());
+			if (c.isInteger()) integers.add(c.key());
+		}
+		format(rt, keys, integers, spots.isEmpty());
+	}
+
+	private static void fillPairs(final ResultsTable rt, final List<PairDistances.Pair> pairs) {
 		for (final PairDistances.Pair p : pairs) {
 			rt.incrementCounter();
 			rt.addValue(PAIR_FRAME, p.frame());
@@ -64,15 +111,23 @@ public final class SpotTables {
 			rt.addValue(PAIR_FIRST_PASS_DISTANCE, p.firstPassDistance());
 			rt.addValue(PAIR_FLAGGED, p.flagged() ? 1 : 0);
 		}
-		for (final String c : new String[] { PAIR_FRAME, PAIR_ID_A, PAIR_ID_B, PAIR_FLAGGED })
-			decimals(rt, c, 0);
-		decimals(rt, PAIR_DISTANCE, DECIMALS);
-		decimals(rt, PAIR_FIRST_PASS_DISTANCE, DECIMALS);
-		return rt;
+		format(rt, List.of(PAIR_COLUMNS), PAIR_INTEGERS, pairs.isEmpty());
 	}
 
-	private static void decimals(final TitledResultsTable rt, final String column, final int places) {
-		final int index = rt.getColumnIndex(column);
-		if (index >= 0) rt.setDecimalPlaces(index, places);
+	/**
+	 * Integer columns without decimals; the others in ImageJ's automatic format: {@link #DECIMALS} places, none
+	 * for whole values (a QUALITY that counts pixels reads 25135, not 25135.0000).
+	 */
+	private static void format(final ResultsTable rt, final List<String> keys, final List<String> integers,
+		final boolean empty)
+	{
+		if (empty) // an empty table still has its columns
+			for (final String key : keys)
+				rt.getFreeColumn(key);
+		rt.setPrecision(DECIMALS);
+		for (final String key : keys) {
+			final int index = rt.getColumnIndex(key);
+			if (index >= 0) rt.setDecimalPlaces(index, integers.contains(key) ? 0 : ResultsTable.AUTO_FORMAT);
+		}
 	}
 }

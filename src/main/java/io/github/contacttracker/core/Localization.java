@@ -17,7 +17,8 @@ import java.util.Set;
  * @param secondArea pixels in the second active area {@code L_k_sec} (equals {@code activeArea} when no
  *        neighbour reaches the particle)
  * @param quality integrated intensity above threshold over the active area (grey levels x px; higher is better)
- * @param radius equivalent radius of the active area, {@code sqrt(activeArea / pi)} (px)
+ * @param radius the spot's radius (px): the equivalent radius of the active area, {@code sqrt(activeArea / pi)},
+ *        unless replaced by the particle's radius ({@link #withRadius(double)})
  * @param flags bit mask of {@link Flag}s
  * @param iterations solves of the final centre (1 for the first pass, 2 for the paper's method, more for
  *        iterative methods)
@@ -55,5 +56,11 @@ public record Localization(int frame, double x, double y, double firstX, double 
 	public Localization translate(final double dx, final double dy) {
 		return new Localization(frame, x + dx, y + dy, firstX + dx, firstY + dy, activeArea, secondArea, quality,
 			radius, flags, iterations, sigmaX, sigmaY);
+	}
+
+	/** @return a copy with another radius (px), e.g. half the particle diameter the user gave */
+	public Localization withRadius(final double newRadius) {
+		return new Localization(frame, x, y, firstX, firstY, activeArea, secondArea, quality, newRadius, flags,
+			iterations, sigmaX, sigmaY);
 	}
 }

@@ -34,7 +34,8 @@ public final class OverlayPng {
 	{}
 
 	public static final Color DISC = Color.CYAN;
-	public static final Color SECOND_AREA = Color.GREEN;
+	/** A mid-dark green: pure green (0, 255, 0) is nearly as light as the white of a saturated core. */
+	public static final Color SECOND_AREA = new Color(0, 190, 0);
 	public static final Color FIRST_PASS = Color.YELLOW;
 	public static final Color FINAL = Color.RED;
 	public static final Color FLAGGED = Color.MAGENTA;

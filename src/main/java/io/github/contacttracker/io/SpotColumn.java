@@ -22,6 +22,7 @@ public enum SpotColumn {
 	SIGMA_X("SIGMA_X", "Std. error X", "dX", Dimension.LENGTH, false),
 	SIGMA_Y("SIGMA_Y", "Std. error Y", "dY", Dimension.LENGTH, false),
 	ACTIVE_AREA("ACTIVE_AREA", "Active area (px)", "A", Dimension.NONE, true),
+	ACTIVE_RADIUS("ACTIVE_RADIUS", "Active-area radius", "Ra", Dimension.LENGTH, false),
 	SECOND_AREA("SECOND_AREA", "Second active area (px)", "A2", Dimension.NONE, true),
 	ITERATIONS("ITERATIONS", "Solves", "Solves", Dimension.NONE, true),
 	FLAG_SECOND_PASS("FLAG_SECOND_PASS", "Second pass applied", "2nd", Dimension.NONE, true),
@@ -106,6 +107,8 @@ public enum SpotColumn {
 			case POSITION_Z: return 0;
 			case POSITION_T: return spot.frame() * cal.frameInterval();
 			case RADIUS: return spot.radius() * Math.sqrt(cal.pixelWidth() * cal.pixelHeight());
+			case ACTIVE_RADIUS: return Math.sqrt(spot.activeArea() / Math.PI) * Math.sqrt(cal.pixelWidth() * cal
+				.pixelHeight());
 			case QUALITY: return spot.quality();
 			case VISIBILITY: return 1;
 			case FIRST_PASS_X: return spot.firstX() * cal.pixelWidth();

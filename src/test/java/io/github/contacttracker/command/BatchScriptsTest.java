@@ -5,10 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
-import java.io.ByteArrayOutputStream;
-import java.io.PrintStream;
 import java.io.StringWriter;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
@@ -25,8 +22,6 @@ import org.scijava.module.Module;
 import org.scijava.script.ScriptService;
 
 import ij.ImagePlus;
-import ij.Macro;
-import ij.macro.Interpreter;
 import ij.process.ColorProcessor;
 import io.github.contacttracker.core.Connectivity;
 import io.github.contacttracker.core.Method;
@@ -39,9 +34,9 @@ import io.github.contacttracker.io.SpotCsvWriter;
 /**
  * The batch scripts of {@code scripts/}. The Groovy one runs headless through SciJava's script service, as
  * {@code ImageJ --headless --run} does; it needs a Groovy script engine on the test class path
- * ({@code org.apache.groovy:groovy-jsr223}, test scope) and is skipped without one. The macro's
- * {@code run("Contact Tracker", ...)} needs Fiji's ImageJ2 bridge (not on Maven Central), so only its parsing and
- * argument handling are tested, in plain ImageJ's macro interpreter.
+ * ({@code org.apache.groovy:groovy-jsr223}, test scope) and is skipped without one. The macro's parsing and
+ * argument handling are tested here, in plain ImageJ's macro interpreter; {@link MacroTest} runs it on images
+ * through a stand-in for Fiji's bridge.
  */
 class BatchScriptsTest {
 
@@ -61,19 +56,7 @@ class BatchScriptsTest {
 	private static String runMacro(final String argument) throws Exception {
 		final String code = Files.readString(Path.of(System.getProperty("basedir", ".")).resolve(
 			"scripts/contact-tracker-batch.ijm"));
-		final PrintStream out = System.out;
-		final ByteArrayOutputStream printed = new ByteArrayOutputStream();
-		System.setOut(new PrintStream(printed, true, StandardCharsets.UTF_8));
-		try {
-			new Interpreter().run(code, argument);
-		}
-		catch (final RuntimeException e) {
-			if (!Macro.MACRO_CANCELED.equals(e.getMessage())) throw e; // exit("...") ends a macro this way
-		}
-		finally {
-			System.setOut(out);
-		}
-		return printed.toString(StandardCharsets.UTF_8);
+		return MacroTest.macro(code, argument);
 	}
 
 	@Test

@@ -24,6 +24,7 @@ import org.jdom2.Document;
 import org.jdom2.input.SAXBuilder;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -39,6 +40,7 @@ import org.scijava.event.EventHandler;
 import org.scijava.event.EventService;
 import org.scijava.module.Module;
 import org.scijava.module.ModuleService;
+import org.scijava.prefs.PrefService;
 
 import ij.ImagePlus;
 import ij.ImageStack;
@@ -82,7 +84,15 @@ class ContactTrackerCommandTest {
 		context.dispose();
 	}
 
+	/** The dialog remembers values: every test starts from the documented defaults. */
+	@BeforeEach
+	void forgetRememberedValues() {
+		context.service(PrefService.class).clearAll();
+	}
+
+	/** Runs the command from the documented defaults (nothing remembered from an earlier run) */
 	private static Module run(final ImagePlus imp, final Object... more) throws Exception {
+		context.service(PrefService.class).clearAll();
 		final List<Object> inputs = new ArrayList<>(Arrays.asList("imp", imp, "threshold", THRESHOLD, "r_out", R_OUT));
 		inputs.addAll(Arrays.asList(more));
 		return Simulated.run(context, ContactTrackerCommand.class, inputs.toArray());
@@ -133,10 +143,19 @@ class ContactTrackerCommandTest {
 		assertEquals(spots.size(), rt.size(), "one row per spot");
 
 		final SpotColumn[] columns = SpotColumn.values();
-		final String[] keys = new String[columns.length];
-		for (int c = 0; c < columns.length; c++)
-			keys[c] = columns[c].key();
-		assertArrayEquals(keys, rt.getHeadings(), "the CSV's columns, in its order");
+		assertEquals(columns.length, SpotTables.DISPLAY_ORDER.size());
+		assertEquals(new java.util.HashSet<>(Arrays.asList(columns)), new java.util.HashSet<>(SpotTables.DISPLAY_ORDER),
+			"every CSV column once");
+		final String[] keys = SpotTables.DISPLAY_ORDER.stream().map(SpotColumn::key).toArray(String[]::new);
+		assertArrayEquals(keys, rt.getHeadings(), "the CSV's columns, ordered for reading");
+		assertEquals(List.of("ID", "FRAME", "POSITION_X", "POSITION_Y", "SIGMA_X", "SIGMA_Y", "FLAG_FELL_BACK"), Arrays
+			.asList(rt.getHeadings()).subList(0, 7), "position, its error and the flags first");
+		// integers without decimals; whole values of real columns too, others with 4 decimals
+		assertEquals(Integer.toString((int) rt.getValue("ID", 1)), rt.getStringValue("ID", 1));
+		assertFalse(rt.getStringValue("POSITION_X", 0).isEmpty());
+		assertEquals(4, rt.getStringValue("POSITION_X", 0).length() - rt.getStringValue("POSITION_X", 0).indexOf('.') - 1,
+			rt.getStringValue("POSITION_X", 0));
+		assertEquals("0", rt.getStringValue("POSITION_Z", 0), "a whole value of a real column shows no decimals");
 		for (int id = 0; id < spots.size(); id++)
 			for (final SpotColumn c : columns)
 				assertEquals(c.value(spots.get(id), id, cal), rt.getValue(c.key(), id), 0, c.key() + " of spot " + id);
@@ -443,11 +462,15 @@ class ContactTrackerCommandTest {
 
 		final Module m = context.service(ModuleService.class).createModule(commands.getCommand(
 			ContactTrackerCommand.class));
-		// every parameter input is left out of the user's preferences
+		// the dialog remembers its values like Fiji's, except the image and the output files
+		final List<String> notRemembered = List.of("imp", "csv", "trackmate_xml");
 		m.getInfo().inputs().forEach(item -> {
 			if (!org.scijava.service.Service.class.isAssignableFrom(item.getType()) && item.getType() != Context.class)
-				assertFalse(item.isPersisted(), item.getName() + " persists");
+				assertEquals(!notRemembered.contains(item.getName()), item.isPersisted(), item.getName());
 		});
+		// method is a choice list of every method, in Method's order
+		assertEquals(methodKeys(), String.join(", ", m.getInfo().getInput("method", String.class).getChoices()));
+		assertEquals(List.of("spots", "pairs", "none"), m.getInfo().getInput("results", String.class).getChoices());
 	}
 
 	@Test
@@ -462,8 +485,131 @@ class ContactTrackerCommandTest {
 		assertEquals(SpotOverlay.Kind.DISC, SpotOverlay.kind(badDisc));
 		assertEquals(OverlayPng.DISC, okDisc.getStrokeColor());
 		assertEquals(OverlayPng.FLAGGED, badDisc.getStrokeColor());
+		// the first-pass dot comes after (is drawn over) the final cross
+		assertEquals(SpotOverlay.Kind.FINAL, SpotOverlay.kind(rois.get(1)));
+		assertEquals(SpotOverlay.Kind.FIRST_PASS, SpotOverlay.kind(rois.get(2)));
 		assertTrue(badDisc.getStrokeWidth() > okDisc.getStrokeWidth());
 		assertTrue(badDisc.getName().contains("fell back to first pass"), badDisc.getName());
 		assertEquals(Color.MAGENTA, OverlayPng.FLAGGED);
+	}
+
+	@Test
+	void systemResultsTableGetsTheSpotsOrThePairsOrIsLeftAlone() throws Exception {
+		final Module m = run(Simulated.image(), "overlay", false);
+		assertSucceeded(m);
+		final ResultsTable system = ResultsTable.getResultsTable();
+		assertSameTable((ResultsTable) m.getOutput("spots"), system);
+		assertEquals(2 * Simulated.FRAMES, system.size(), "what a macro's nResults reads");
+
+		final double cutoff = 1.2 * Simulated.SEPARATION * Simulated.TYPE.diameterPx() * Simulated.TYPE
+			.pixelSizeMicrons();
+		final Module pairs = run(Simulated.image(), "overlay", false, "pair_cutoff", cutoff, "results", "pairs");
+		assertSucceeded(pairs);
+		assertSameTable((ResultsTable) pairs.getOutput("pairs"), ResultsTable.getResultsTable());
+		assertEquals(Simulated.FRAMES, ResultsTable.getResultsTable().size(), "one pair per frame");
+
+		ResultsTable.getResultsTable().reset();
+		ResultsTable.getResultsTable().incrementCounter();
+		ResultsTable.getResultsTable().addValue("Mine", 42);
+		assertSucceeded(run(Simulated.image(), "overlay", false, "results", "none"));
+		assertEquals(42, ResultsTable.getResultsTable().getValue("Mine", 0), "results=none leaves it alone");
+
+		final Module refused = run(Simulated.image(), "results", "pairs");
+		assertTrue(((Cancelable) refused).isCanceled());
+		assertTrue(((Cancelable) refused).getCancelReason().startsWith("results=pairs needs pair_cutoff > 0"));
+		assertEquals(42, ResultsTable.getResultsTable().getValue("Mine", 0), "a refused run changes nothing");
+	}
+
+	@Test
+	void diameterGivesTheRadiusAndTheActiveAreaKeepsItsOwn() throws Exception {
+		final double px = Simulated.TYPE.pixelSizeMicrons();
+		final ResultsTable plain = (ResultsTable) run(Simulated.image(), "overlay", false).getOutput("spots");
+		final ResultsTable sized = (ResultsTable) run(Simulated.image(), "overlay", false, "diameter", 65.0).getOutput(
+			"spots");
+		for (int id = 0; id < plain.size(); id++) {
+			final double active = Math.sqrt(plain.getValue("ACTIVE_AREA", id) / Math.PI) * px;
+			assertEquals(active, plain.getValue("ACTIVE_RADIUS", id), 1e-12);
+			assertEquals(active, plain.getValue("RADIUS", id), 1e-12, "without a diameter: the active area's");
+			assertEquals(32.5 * px, sized.getValue("RADIUS", id), 1e-12, "half the diameter, calibrated");
+			assertEquals(active, sized.getValue("ACTIVE_RADIUS", id), 1e-12);
+			assertEquals(plain.getValue("POSITION_X", id), sized.getValue("POSITION_X", id), 0);
+		}
+		final Module bad = run(Simulated.image(), "diameter", -1.0);
+		assertTrue(((Cancelable) bad).getCancelReason().startsWith("diameter must be a number of pixels >= 0"));
+	}
+
+	@Test
+	void dialogValuesAreRememberedButRefusedOnesAreNot() throws Exception {
+		final CommandInfo info = context.service(CommandService.class).getCommand(ContactTrackerCommand.class);
+		final ModuleService modules = context.service(ModuleService.class);
+		// a run given r_out and min_area: the next run, not given them, starts from them (as Fiji's dialog does)
+		assertSucceeded(run(Simulated.image(), "min_area", 25, "overlay", false)); // from the defaults
+		final Module next = modules.run(info, true, "imp", Simulated.image(), "threshold", THRESHOLD, "overlay", false)
+			.get();
+		assertSucceeded(next);
+		assertEquals(R_OUT, (Double) next.getInput("r_out"), 0);
+		assertEquals(25, next.getInput("min_area"));
+		// a refused value is not remembered
+		assertTrue(((Cancelable) modules.run(info, true, "imp", Simulated.image(), "min_area", 0).get()).isCanceled());
+		final Module after = modules.run(info, true, "imp", Simulated.image(), "threshold", THRESHOLD, "overlay",
+			false).get();
+		assertEquals(25, after.getInput("min_area"));
+	}
+
+	@Test
+	void previewShowsTheCurrentFrameAndCancelPutsTheOverlayBack() throws Exception {
+		final ImagePlus imp = Simulated.image();
+		final Roi mine = new OvalRoi(1, 1, 5, 5);
+		imp.setOverlay(new Overlay(mine));
+		imp.setT(3);
+		final Module m = context.service(ModuleService.class).createModule(context.service(CommandService.class)
+			.getCommand(ContactTrackerCommand.class));
+		m.setInput("imp", imp);
+		m.setInput("threshold", THRESHOLD);
+		m.setInput("r_out", R_OUT);
+		m.preview();
+		final List<Roi> ours = new ArrayList<>();
+		for (final Roi roi : imp.getOverlay().toArray())
+			if (SpotOverlay.kind(roi) != null) ours.add(roi);
+		assertEquals(4 * 2, ours.size(), "the two spots of the current frame, with their discs");
+		for (final Roi roi : ours)
+			assertEquals(3, roi.getPosition(), "on the frame shown");
+		// what the core finds on that frame alone (methods that measure the profile measure it on this frame)
+		@SuppressWarnings({ "unchecked", "rawtypes" })
+		final List frames = ImagePlusFrames.of(imp, 0).frames().subList(2, 3);
+		final List<Localization> frame3 = ((List<FrameResult>) new StackTracker(params()).track(frames, false)).get(0)
+			.spots();
+		final Roi cross = ours.stream().filter(r -> SpotOverlay.kind(r) == SpotOverlay.Kind.FINAL).findFirst().get();
+		assertEquals(frame3.get(0).x() + 0.5, cross.getFloatPolygon().xpoints[0], 1e-4, "the run's centre");
+
+		// r_out edited: the discs follow; an invalid value keeps the last preview
+		m.setInput("r_out", R_OUT + 5);
+		m.preview();
+		final Roi disc = Arrays.stream(imp.getOverlay().toArray()).filter(r -> SpotOverlay.kind(r) == SpotOverlay.Kind.DISC)
+			.findFirst().get();
+		assertEquals(2 * (R_OUT + 5), disc.getFloatBounds().width, 1e-9);
+		m.setInput("r_out", -1.0);
+		m.preview();
+		assertEquals(1 + 8, imp.getOverlay().size());
+
+		m.cancel(); // the dialog's Cancel
+		assertEquals(1, imp.getOverlay().size());
+		assertTrue(imp.getOverlay().contains(mine));
+	}
+
+	@Test
+	void summaryGoesToTheLogWindow() throws Exception {
+		// headless, ImageJ's Log window is standard output
+		final java.io.PrintStream out = System.out;
+		final java.io.ByteArrayOutputStream printed = new java.io.ByteArrayOutputStream();
+		System.setOut(new java.io.PrintStream(printed, true, java.nio.charset.StandardCharsets.UTF_8));
+		try {
+			assertSucceeded(run(Simulated.image(), "overlay", false));
+		}
+		finally {
+			System.setOut(out);
+		}
+		assertTrue(printed.toString(java.nio.charset.StandardCharsets.UTF_8).contains(
+			"Contact Tracker: 10 spots in 5 frames of 'simulated pair', 0 flagged"), printed::toString);
 	}
 }

@@ -1,0 +1,234 @@
+package io.github.contacttracker.command;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.io.StringWriter;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Locale;
+
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+import org.scijava.Cancelable;
+import org.scijava.Context;
+import org.scijava.prefs.PrefService;
+
+import ij.IJ;
+import ij.ImagePlus;
+import ij.Macro;
+import ij.WindowManager;
+import ij.macro.Interpreter;
+import ij.measure.ResultsTable;
+import ij.process.ColorProcessor;
+import io.github.contacttracker.core.Connectivity;
+import io.github.contacttracker.core.Method;
+import io.github.contacttracker.core.StackTracker;
+import io.github.contacttracker.core.TrackerParameters;
+import io.github.contacttracker.io.ImageFiles;
+import io.github.contacttracker.io.ImagePlusFrames;
+import io.github.contacttracker.io.SpotCsvWriter;
+
+/**
+ * ImageJ macros calling Contact Tracker, run by ImageJ 1.x's own macro interpreter in this process, headless.
+ * {@code run("Contact Tracker", ...)} reaches the SciJava command through {@link FijiMacroBridge}, which does what
+ * Fiji's bridge does (another thread, inputs from the macro options, cancellation ignored); so these tests prove
+ * what the command does to the macro (ImageJ's Results table, aborting it), not Fiji's bridge itself.
+ */
+class MacroTest {
+
+	private static Context context;
+	private static final double T = Simulated.TYPE.threshold(), R = Simulated.TYPE.rOut();
+
+	@BeforeAll
+	static void start() throws Exception {
+		context = new Context();
+		FijiMacroBridge.install(context);
+	}
+
+	@AfterAll
+	static void stop() {
+		context.dispose();
+	}
+
+	@BeforeEach
+	void fresh() {
+		context.service(PrefService.class).clearAll();
+		ResultsTable.getResultsTable().reset();
+		IJ.redirectErrorMessages(false);
+	}
+
+	/**
+	 * Runs macro code in ImageJ 1.x's interpreter, on this thread.
+	 *
+	 * @return what the macro printed (headless, ImageJ's Log window is standard output)
+	 */
+	static String macro(final String code, final String argument) {
+		final PrintStream out = System.out;
+		final ByteArrayOutputStream printed = new ByteArrayOutputStream();
+		System.setOut(new PrintStream(printed, true, StandardCharsets.UTF_8));
+		try {
+			new Interpreter().run(code, argument);
+		}
+		catch (final RuntimeException e) {
+			if (!Macro.MACRO_CANCELED.equals(e.getMessage())) throw e; // how an aborted macro may end
+		}
+		finally {
+			System.setOut(out);
+		}
+		return printed.toString(StandardCharsets.UTF_8);
+	}
+
+	private static String macro(final String code) {
+		return macro(code, null);
+	}
+
+	private static String options(final String more) {
+		return String.format(Locale.ROOT, "threshold=%s r_out=%s %s", T, R, more);
+	}
+
+	/** @return the command line's CSV for the simulated movie with the default parameters */
+	@SuppressWarnings({ "unchecked", "rawtypes" })
+	private static String cliCsv(final ImagePlus imp) throws Exception {
+		final ImagePlusFrames frames = ImagePlusFrames.of(imp, 0);
+		final TrackerParameters params = new TrackerParameters(T, R, TrackerParameters.DEFAULT_MIN_AREA,
+			Connectivity.EIGHT, TrackerParameters.DEFAULT_MIN_SECOND_AREA, Method.DEFAULT);
+		final StringWriter csv = new StringWriter();
+		SpotCsvWriter.write(csv, StackTracker.spots(new StackTracker(params).track((List) frames.frames(), false)),
+			frames.calibration());
+		return csv.toString();
+	}
+
+	@Test
+	void theMacroReadsTheSpotsFromTheResultsTable(@TempDir final Path dir) throws Exception {
+		final Path movie = dir.resolve("movie.tif");
+		ImageFiles.saveTiff(Simulated.image(), movie);
+		final String printed = macro("setBatchMode(true);\n" + //
+			"open('" + movie + "');\n" + //
+			"run('Contact Tracker', '" + options("overlay=false") + "');\n" + //
+			"print('n=' + nResults);\n" + //
+			"for (i = 0; i < nResults; i++) print('row ' + i + ': ' + getResult('FRAME', i) + ' ' + " +
+			"d2s(getResult('POSITION_X', i), 9) + ' ' + d2s(getResult('SIGMA_Y', i), 9) + ' ' + " +
+			"getResult('FLAG_FELL_BACK', i));\n" + //
+			"close('*');\n" + //
+			"print('images=' + nImages);\n");
+		// the values of the CSV, in the same units
+		final List<String> csv = cliCsv(ImageFiles.open(movie)).lines().toList();
+		final List<String> header = List.of(csv.get(0).split(","));
+		assertTrue(printed.contains("n=" + (csv.size() - 1) + "\n"), printed);
+		for (int i = 1; i < csv.size(); i++) {
+			final String[] v = csv.get(i).split(",");
+			final String expected = String.format(Locale.ROOT, "row %d: %s %.9f %.9f %s", i - 1, v[header.indexOf("FRAME")],
+				Double.parseDouble(v[header.indexOf("POSITION_X")]), Double.parseDouble(v[header.indexOf("SIGMA_Y")]),
+				v[header.indexOf("FLAG_FELL_BACK")]);
+			assertTrue(printed.contains(expected + "\n"), () -> expected + " not in\n" + printed);
+		}
+		assertTrue(printed.contains("Contact Tracker: 10 spots in 5 frames of 'movie.tif', 0 flagged"), printed);
+		assertTrue(printed.contains("images=0"), printed);
+	}
+
+	@Test
+	void theMacroReadsThePairsWithResultsPairs() {
+		WindowManager.setTempCurrentImage(Simulated.image());
+		final double cutoff = 1.2 * Simulated.SEPARATION * Simulated.TYPE.diameterPx() * Simulated.TYPE
+			.pixelSizeMicrons();
+		final String printed = macro("run('Contact Tracker', '" + options("overlay=false results=pairs pair_cutoff=" +
+			cutoff) + "');\nprint('pairs=' + nResults + ' d=' + getResult('DISTANCE', 0) + ' a=' + getResult('SPOT_A', 1));");
+		final ResultsTable pairs = (ResultsTable) FijiMacroBridge.last().getOutput("pairs");
+		assertTrue(printed.contains("pairs=5 d=" + IJ.d2s(pairs.getValue("DISTANCE", 0), 4) + " a=" + (int) pairs.getValue(
+			"SPOT_A", 1)), printed);
+		WindowManager.setTempCurrentImage(null);
+	}
+
+	@ParameterizedTest
+	@CsvSource(delimiter = '|', value = { //
+		"simulated | threshold=abc r_out=20      | threshold must be a number, not 'abc'", // Fiji would pass 0
+		"simulated | threshold=60 r_out=-3       | r_out must be a positive number of pixels, not -3.0",
+		"simulated | threshold=60 method=best    | method must be one of first, paper, iterative, deblend, fit",
+		"simulated | threshold=6000 r_out=20     | threshold 6000 is outside the data range",
+		"rgb       | threshold=60 r_out=20       | 'rgb' is an RGB image" })
+	void invalidInputStopsTheMacroAndChangesNothing(final String image, final String options, final String reason) {
+		final ImagePlus imp = image.equals("rgb") ? new ImagePlus("rgb", new ColorProcessor(40, 30)) : Simulated.image();
+		ResultsTable.getResultsTable().incrementCounter();
+		ResultsTable.getResultsTable().addValue("Mine", 7);
+		WindowManager.setTempCurrentImage(imp);
+		final String printed = macro("print('before');\nrun('Contact Tracker', '" + options + "');\nprint('after');");
+		WindowManager.setTempCurrentImage(null);
+		assertTrue(printed.contains("before"), printed);
+		assertFalse(printed.contains("after"), "the macro must stop at the failing run:\n" + printed);
+		final Cancelable module = (Cancelable) FijiMacroBridge.last();
+		assertTrue(module.isCanceled());
+		assertTrue(module.getCancelReason().startsWith(reason), module.getCancelReason());
+		assertNull(imp.getOverlay(), "nothing drawn");
+		assertEquals(1, ResultsTable.getResultsTable().size(), "the Results table is untouched");
+		assertEquals(7, ResultsTable.getResultsTable().getValue("Mine", 0));
+	}
+
+	@Test
+	void aUsersBatchLoopWithRedirectedErrorsReportsTheFileAndGoesOn(@TempDir final Path dir) throws Exception {
+		final Path in = Files.createDirectories(dir.resolve("in"));
+		ImageFiles.saveTiff(Simulated.image(), in.resolve("a.tif"));
+		ImageFiles.saveTiff(new ImagePlus("colour", new ColorProcessor(40, 30)), in.resolve("b colour.tif"));
+		ImageFiles.saveTiff(Simulated.image(), in.resolve("c.tif"));
+		final String printed = macro("dir = getArgument();\n" + //
+			"setBatchMode(true);\n" + //
+			"list = getFileList(dir);\n" + //
+			"for (i = 0; i < list.length; i++) {\n" + //
+			"  open(dir + list[i]);\n" + //
+			"  IJ.redirectErrorMessages();\n" + //
+			"  run('Contact Tracker', '" + options("overlay=false") + "');\n" + //
+			"  print(list[i] + ': ' + nResults + ' spots');\n" + //
+			"  close();\n" + //
+			"}\n" + //
+			"print('open images: ' + nImages);", in + "/");
+		assertTrue(printed.contains("a.tif: 10 spots"), printed);
+		assertTrue(printed.contains("Contact Tracker ('b colour.tif'): 'b colour.tif' is an RGB image"), printed);
+		assertTrue(printed.contains("b colour.tif: 0 spots"), "not the previous file's spots:\n" + printed);
+		assertTrue(printed.contains("c.tif: 10 spots"), "the loop goes on:\n" + printed);
+		assertTrue(printed.contains("open images: 0"), printed);
+		assertFalse(IJ.redirectingErrorMessages(), "redirectErrorMessages() applies to one command");
+	}
+
+	@Test
+	void aMacroLeavingKeysOutGetsTheDefaultsNotTheDialogsLastValues() throws Exception {
+		// an interactive run remembers r_out = 30 and min_area = 25
+		final ImagePlus imp = Simulated.image();
+		Simulated.run(context, ContactTrackerCommand.class, "imp", imp, "threshold", T, "r_out", 30.0, "min_area", 25,
+			"overlay", false);
+		WindowManager.setTempCurrentImage(imp);
+		macro("run('Contact Tracker', 'threshold=" + T + " r_out=" + R + " overlay=false');");
+		WindowManager.setTempCurrentImage(null);
+		assertEquals(R, (Double) FijiMacroBridge.last().getInput("r_out"), 0, "the macro's value wins");
+		assertEquals(TrackerParameters.DEFAULT_MIN_AREA, FijiMacroBridge.last().getInput("min_area"),
+			"a key left out takes the documented default");
+	}
+
+	@Test
+	void shippedBatchMacroWritesEachCsvAndReportsFailures(@TempDir final Path dir) throws Exception {
+		final Path in = Files.createDirectories(dir.resolve("in")), out = Files.createDirectories(dir.resolve("out"));
+		ImageFiles.saveTiff(Simulated.image(), in.resolve("movie.tif"));
+		ImageFiles.saveTiff(new ImagePlus("colour", new ColorProcessor(40, 30)), in.resolve("colour.tif"));
+		final String code = Files.readString(Path.of(System.getProperty("basedir", ".")).resolve(
+			"scripts/contact-tracker-batch.ijm"));
+		final String printed = macro(code, String.format(Locale.ROOT,
+			"input=[%s] output=[%s] threshold=%s r_out=%s method=%s", in, out, T, R, Method.DEFAULT.key()));
+		assertTrue(printed.contains("movie.tif: 10 spots -> "), printed);
+		assertTrue(printed.contains("Contact Tracker ('colour.tif'): 'colour.tif' is an RGB image"), printed);
+		assertTrue(printed.contains("colour.tif: FAILED"), printed);
+		assertTrue(printed.contains("Contact Tracker batch: 1 image(s) done, 1 failed"), printed);
+		assertTrue(printed.contains("open images: 0"), printed);
+		assertEquals(cliCsv(ImageFiles.open(in.resolve("movie.tif"))), Files.readString(out.resolve("movie.csv")));
+		assertFalse(Files.exists(out.resolve("colour.csv")));
+	}
+}
