@@ -6,7 +6,8 @@ import java.util.Arrays;
 import java.util.concurrent.CancellationException;
 
 /**
- * The command line: {@code contact-tracker demo | track | simulate | bench | accuracy}. Bad input ends with a
+ * The command line: {@code contact-tracker demo | track | simulate | bench | accuracy | potential |
+ * demo-potential}. Bad input ends with a
  * one-line error on stderr and exit status 2; an unexpected failure with exit status 1.
  */
 public final class ContactTrackerCli {
@@ -30,6 +31,12 @@ public final class ContactTrackerCli {
 		"  accuracy [--reps N] [--particle 5.53,2.06] [--scenario pair,triple] [--methods M,...]", //
 		"      [--separations 2,1.5,1] [--csv OUT.csv]", //
 		"                             the paper's protocol for every method, against the Cramer-Rao bound", //
+		"  potential SPOTS.csv --bin W --r-max R [--csv OUT.csv] [--png OUT.png]", //
+		"      [--width W --height H] [--start-frame F] [--flagged drop|keep] [--zero FROM,TO]", //
+		"                             pair distribution g(r) and pair potential U(r)/kT from a spots table", //
+		"  demo-potential [--frames N] [--particle 2.06|5.53] [--out-dir DIR] [--threads N]", //
+		"                             a simulated fluid with a known U(r): U(r) by the default method and the", //
+		"                             first pass against the truth", //
 		"", //
 		"Bad input exits with status 2 and a one-line error; no partial output file is left behind.");
 
@@ -53,8 +60,10 @@ public final class ContactTrackerCli {
 				case "simulate": return new SimulateCommand(out).run(rest);
 				case "bench": return new BenchCommand(out).run(rest);
 				case "accuracy": return new AccuracyCommand(out).run(rest);
+				case "potential": return new PotentialCommand(out, err).run(rest);
+				case "demo-potential": return new DemoPotentialCommand(out).run(rest);
 				default:
-					err.println("contact-tracker: error: unknown command '" + args[0] + "' (demo, track, simulate, bench, accuracy)");
+					err.println("contact-tracker: error: unknown command '" + args[0] + "' (demo, track, simulate, bench, accuracy, potential, demo-potential)");
 					return EXIT_BAD_INPUT;
 			}
 		}

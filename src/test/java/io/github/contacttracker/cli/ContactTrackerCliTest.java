@@ -28,7 +28,7 @@ class ContactTrackerCliTest {
 	Path dir;
 
 	/** Runs the CLI; returns {exit status, stdout, stderr}. */
-	private static Object[] run(final String... args) {
+	static Object[] run(final String... args) {
 		final ByteArrayOutputStream out = new ByteArrayOutputStream(), err = new ByteArrayOutputStream();
 		final int status = ContactTrackerCli.run(args, new PrintStream(out, true, StandardCharsets.UTF_8),
 			new PrintStream(err, true, StandardCharsets.UTF_8));

@@ -1,0 +1,115 @@
+package io.github.contacttracker.cli;
+
+import java.awt.Color;
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Locale;
+import java.util.Set;
+
+import io.github.contacttracker.core.Localization;
+import io.github.contacttracker.core.Method;
+import io.github.contacttracker.eval.PotentialStudy;
+import io.github.contacttracker.io.Calibration;
+import io.github.contacttracker.io.PotentialPlots;
+import io.github.contacttracker.io.SpotCsvWriter;
+import io.github.contacttracker.potential.PairCorrelation;
+import io.github.contacttracker.sim.FluidMovie;
+import io.github.contacttracker.sim.ParticleType;
+
+/**
+ * {@code demo-potential}: a simulated 2D fluid with a known pair potential (hard core + short-range attraction),
+ * rendered as a movie, tracked with the default method and with the first pass, and U(r) measured from both
+ * against the truth; writes the comparison plot and the default method's spots (to rerun {@code potential} on).
+ */
+final class DemoPotentialCommand {
+
+	private static final Set<String> OPTIONS = Set.of("frames", "particle", "out-dir", "threads");
+
+	private final PrintStream out;
+
+	DemoPotentialCommand(final PrintStream out) {
+		this.out = out;
+	}
+
+	int run(final String[] args) throws IOException {
+		final Options o = new Options(args, OPTIONS);
+		if (!o.positional().isEmpty())
+			throw new IllegalArgumentException("demo-potential takes no positional argument: '" + o.positional().get(0) +
+				"'");
+		final int frames = o.integer("frames", 300);
+		if (frames < 10) throw new IllegalArgumentException("--frames must be at least 10");
+		final ParticleType type = SimulateCommand.particle(o.string("particle", "2.06"));
+		final Path dir = Path.of(o.string("out-dir", "demo-output"));
+		final int threads = o.integer("threads", 0);
+		Files.createDirectories(dir);
+		final long start = System.nanoTime();
+
+		final PotentialStudy study = PotentialStudy.demo(type, frames);
+		final double d = type.diameterPx(), um = type.pixelSizeMicrons();
+		out.printf(Locale.ROOT, "%s particles (D = %.1f px at %.1f nm/px), %d in a %d x %d px frame, %d frames, %d Monte " +
+			"Carlo sweeps apart%n  true potential: %s%n", type.name(), d, type.pixelSizeNm(), study.particles(), study
+				.size(), study.size(), frames, study.sweepsBetween(), study.interaction().describe());
+		final FluidMovie movie = study.simulate();
+		final List<Localization> fit = study.track(movie, Method.DEFAULT, threads);
+		final List<Localization> first = study.track(movie, Method.FIRST, threads);
+		final PairCorrelation.Result truth = study.measureTruth(movie), best = study.measure(fit), biased = study
+			.measure(first);
+
+		out.printf(Locale.ROOT, "  U(r)/kT set to 0 over [%.0f D, %.0f D]; bins of %.3f D; flagged spots left out, " +
+			"field of view inferred from the spots%n%n", study.zeroFrom(), study.rMax(), study.bin());
+		out.printf(Locale.ROOT, "  r/D    | true U | U from true centres | %-6s U +- err   (pairs) | first pass U +- " +
+			"err (pairs)%n", Method.DEFAULT.key());
+		for (int i = 0; i < best.bins().size(); i++) {
+			final double r = best.bins().get(i).r();
+			if (r < 0.9 || r > 1.6) continue;
+			out.printf(Locale.ROOT, "  %6.4f | %6s | %19s | %22s | %22s%n", r, u(study.trueU(r)), cell(truth, i, false),
+				cell(best, i, true), cell(biased, i, true));
+		}
+		final PotentialStudy.Comparison cTruth = study.compare(truth, 1, 2), cBest = study.compare(best, 1, 2), cFirst =
+			study.compare(biased, 1, 2);
+		out.printf(Locale.ROOT, "%nAgainst the true U(r), bins from contact to 2 D (chi2/bin ~ 1 means within the " +
+			"error bars):%n");
+		out.printf(Locale.ROOT, "  true centres:  chi2/bin %.2f, max |z| %.1f over %d bins, %d pairs inside the hard core%n",
+			cTruth.chi2PerBin(), cTruth.maxAbsZ(), cTruth.bins(), cTruth.pairsInsideCore());
+		out.printf(Locale.ROOT, "  %-13s chi2/bin %.2f, max |z| %.1f over %d bins, %d pairs inside the hard core%n",
+			Method.DEFAULT.key() + ":", cBest.chi2PerBin(), cBest.maxAbsZ(), cBest.bins(), cBest.pairsInsideCore());
+		out.printf(Locale.ROOT, "  first pass:    chi2/bin %.2f, max |z| %.1f over %d bins, %d pairs inside the hard core%n",
+			cFirst.chi2PerBin(), cFirst.maxAbsZ(), cFirst.bins(), cFirst.pairsInsideCore());
+
+		final Path png = dir.resolve("contact-tracker-potential.png");
+		PotentialPlots.writePng(PotentialPlots.comparison(List.of( //
+			new PotentialPlots.Series("from the true centres", truth, new Color(140, 140, 140), "x"), //
+			new PotentialPlots.Series("method " + Method.DEFAULT.key() + " (default)", best, new Color(0, 90, 200),
+				"circle"), //
+			new PotentialPlots.Series("first pass (method first)", biased, new Color(220, 60, 0), "triangle")), //
+			study::trueU, "true U(r)", "Pair potential of a simulated " + type.name() + " fluid, " + frames + " frames",
+			"diameters", 0.85, 2.0), png);
+		final Path spots = dir.resolve("potential-spots.csv");
+		SpotCsvWriter.write(spots, fit, Calibration.ofPixelSize(um, "micron"));
+		out.printf(Locale.ROOT, "%nPlot: %s%nSpots (method %s, micron): %s%n  analyse them with:%n  scripts/contact-tracker " +
+			"potential %s --bin %s --r-max %s --zero %s,%s --csv %s --png %s%n", png, Method.DEFAULT.key(), spots, spots,
+			num(study.bin() * d * um), num(study.rMax() * d * um), num(study.zeroFrom() * d * um), num(study.rMax() * d *
+				um), dir.resolve("potential.csv"), dir.resolve("potential.png"));
+		if (movie.clippedPixels() > 0) out.printf(Locale.ROOT, "  (%d pixels clipped to 0..255)%n", movie.clippedPixels());
+		out.printf(Locale.ROOT, "Demo took %.1f s.%n", (System.nanoTime() - start) * 1e-9);
+		return 0;
+	}
+
+	private static String cell(final PairCorrelation.Result r, final int i, final boolean withError) {
+		final PairCorrelation.Bin b = r.bins().get(i);
+		if (b.pairs() == 0) return "-    (0)";
+		return withError ? String.format(Locale.ROOT, "%+6.2f +- %4.2f (%4d)", r.u(i), b.uError(), b.pairs()) : String
+			.format(Locale.ROOT, "%+6.2f (%4d)", r.u(i), b.pairs());
+	}
+
+	private static String u(final double v) {
+		return Double.isInfinite(v) ? "inf" : String.format(Locale.ROOT, "%+6.2f", v);
+	}
+
+	private static String num(final double v) {
+		return String.format(Locale.ROOT, "%.4f", v);
+	}
+}

@@ -1,0 +1,120 @@
+package io.github.contacttracker.cli;
+
+import java.io.IOException;
+import java.io.OutputStreamWriter;
+import java.io.PrintStream;
+import java.io.Writer;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Locale;
+import java.util.Set;
+
+import io.github.contacttracker.io.PotentialCsv;
+import io.github.contacttracker.io.PotentialPlots;
+import io.github.contacttracker.io.SpotTableCsv;
+import io.github.contacttracker.potential.FieldOfView;
+import io.github.contacttracker.potential.PairCorrelation;
+import io.github.contacttracker.potential.PotentialReport;
+import io.github.contacttracker.potential.SpotSet;
+
+/**
+ * {@code potential SPOTS.csv --bin W --r-max R [--csv OUT.csv] [--png OUT.png]}: g(r) and U(r)/kT from a spots
+ * table (ours or TrackMate's export). CSV to stdout without {@code --csv}; the summary then goes to stderr.
+ */
+final class PotentialCommand {
+
+	private static final Set<String> OPTIONS = Set.of("bin", "r-max", "csv", "png", "width", "height", "start-frame",
+		"flagged", "zero");
+
+	private final PrintStream out;
+	private final PrintStream err;
+
+	PotentialCommand(final PrintStream out, final PrintStream err) {
+		this.out = out;
+		this.err = err;
+	}
+
+	int run(final String[] args) throws IOException {
+		final Options o = new Options(args, OPTIONS);
+		if (o.positional().size() != 1)
+			throw new IllegalArgumentException("potential needs exactly one spots CSV file, got " + o.positional().size());
+		final Path input = Path.of(o.positional().get(0));
+		final double bin = o.number("bin"), rMax = o.number("r-max");
+		final Path csv = o.outputPath("csv"), png = o.outputPath("png");
+		if (o.has("width") != o.has("height"))
+			throw new IllegalArgumentException("give both --width and --height of the field of view, or neither (then " +
+				"it is inferred from the spots)");
+		final SpotSet.Selection selection = new SpotSet.Selection(o.integer("start-frame", 0), dropFlagged(o.string(
+			"flagged", "drop")));
+		final double[] zero = o.has("zero") ? zeroRange(o.string("zero", "")) : null;
+
+		final SpotTableCsv.Table table = SpotTableCsv.read(input, SpotSet::reads);
+		final SpotSet spots;
+		try {
+			spots = SpotSet.fromColumns(table.columns(), selection);
+		}
+		catch (final IllegalArgumentException e) {
+			throw new IllegalArgumentException(input + ": " + e.getMessage());
+		}
+		if (spots.size() == 0)
+			throw new IllegalArgumentException(input + ": no spot left (" + spots.flaggedLeftOut() + " flagged, " + spots
+				.earlyLeftOut() + " before the start frame)");
+		final FieldOfView field = o.has("width") ? FieldOfView.of(o.number("width"), o.number("height")) : FieldOfView
+			.inferred(spots.allX(), spots.allY());
+		PairCorrelation.Result result = PairCorrelation.compute(spots, field, bin, rMax);
+		if (zero != null) result = result.withZero(zero[0], zero[1]);
+
+		final String unit = table.unit();
+		if (png != null) PotentialPlots.writePng(PotentialPlots.potential(result, "Pair potential: " + input
+			.getFileName(), table.unit().isEmpty() ? "spots' units" : table.unit()), png);
+		if (csv != null) {
+			try {
+				PotentialCsv.write(csv, result);
+			}
+			catch (final IOException e) {
+				if (png != null) Files.deleteIfExists(png); // both or neither
+				throw e;
+			}
+		}
+		else {
+			final Writer w = new OutputStreamWriter(out, StandardCharsets.UTF_8);
+			PotentialCsv.write(w, result);
+			w.flush();
+		}
+		final PrintStream report = csv != null ? out : err;
+		report.println(input + ":");
+		for (final String line : PotentialReport.lines(spots, result, unit))
+			report.println("  " + line);
+		final String warning = PotentialReport.fieldWarning(spots, field);
+		if (warning != null) err.println("contact-tracker: warning: " + warning);
+		if (field.inferred()) err.println("contact-tracker: note: field of view inferred from the spots (" + String
+			.format(Locale.ROOT, "%.6g x %.6g", field.width(), field.height()) + "); give --width and --height to set it");
+		else if (spots.flaggedLeftOut() > 0)
+			err.println("contact-tracker: note: " + spots.flaggedLeftOut() + " flagged spots left out; if they lie along " +
+				"the border (FLAG_AT_BORDER), the kept spots cover less than the field given: leave out --width/--height " +
+				"to infer it");
+		return 0;
+	}
+
+	private static boolean dropFlagged(final String text) {
+		switch (text.trim().toLowerCase(Locale.ROOT)) {
+			case "drop": return true;
+			case "keep": return false;
+			default: throw new IllegalArgumentException("--flagged must be drop or keep, not '" + text + "'");
+		}
+	}
+
+	/** @return {from, to} from "A,B" */
+	static double[] zeroRange(final String text) {
+		final String[] parts = text.split(",");
+		if (parts.length == 2) try {
+			final double a = Double.parseDouble(parts[0].trim()), b = Double.parseDouble(parts[1].trim());
+			if (Double.isFinite(a) && Double.isFinite(b) && a <= b) return new double[] { a, b };
+		}
+		catch (final NumberFormatException e) {
+			// reported below
+		}
+		throw new IllegalArgumentException("--zero must be a range FROM,TO of r (FROM <= TO), not '" + text + "'");
+	}
+}

@@ -1,0 +1,50 @@
+package io.github.contacttracker.io;
+
+import java.io.BufferedWriter;
+import java.io.IOException;
+import java.io.OutputStreamWriter;
+import java.io.Writer;
+import java.math.BigDecimal;
+import java.math.MathContext;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+
+import io.github.contacttracker.potential.PairCorrelation;
+
+/**
+ * Writes g(r) and U(r) as CSV, one row per bin: {@code R} (bin centre, the spots' units), {@code PAIRS},
+ * {@code G}, {@code U_KT} (U/kT, after the zero shift if one was set), {@code U_KT_ERR} (standard error from
+ * the pair count). An empty bin has empty {@code U_KT} and {@code U_KT_ERR} cells: U is unbounded there.
+ */
+public final class PotentialCsv {
+
+	/** The header row. */
+	public static final String HEADER = "R,PAIRS,G,U_KT,U_KT_ERR";
+
+	private PotentialCsv() {}
+
+	/** Writes the table to {@code file}, atomically. */
+	public static void write(final Path file, final PairCorrelation.Result result) throws IOException {
+		AtomicFile.write(file, out -> {
+			final Writer w = new BufferedWriter(new OutputStreamWriter(out, StandardCharsets.UTF_8));
+			write(w, result);
+			w.flush();
+		});
+	}
+
+	/** Writes the table to {@code out} (not closed). */
+	public static void write(final Writer out, final PairCorrelation.Result result) throws IOException {
+		out.write(HEADER + "\n");
+		for (int i = 0; i < result.bins().size(); i++) {
+			final PairCorrelation.Bin b = result.bins().get(i);
+			out.write(number(b.r()) + "," + b.pairs() + "," + number(b.g()) + "," + (b.pairs() > 0 ? number(result.u(i)) +
+				"," + number(b.uError()) : ",") + "\n");
+		}
+	}
+
+	/** @return {@code v} rounded to 12 significant digits (no binary noise such as 0.30000000000000004) */
+	static String number(final double v) {
+		if (v == 0) return "0";
+		return new BigDecimal(v).round(new MathContext(12)).stripTrailingZeros().toPlainString();
+	}
+}

@@ -1,0 +1,92 @@
+package io.github.contacttracker.potential;
+
+/**
+ * The rectangle the spots were found in, which sets the ideal-gas reference of g(r): for {@code N} particles
+ * placed independently and uniformly in a {@code width x height} rectangle, the distance of a pair has the
+ * probability density (the rectangle's set covariance integrated over directions)
+ *
+ * <pre>
+ * p(r) = r (2 pi A - 4 r (W + H) + 2 r^2) / A^2,   A = W H,   0 &lt;= r &lt;= min(W, H)
+ * </pre>
+ *
+ * whose integral is {@link #pairFractionWithin(double)}. This is the exact pair-geometry edge correction: the
+ * {@code 2 pi r} of an unbounded plane, reduced by the pairs a shell loses where it leaves the rectangle. Only
+ * the size matters, not the position of the rectangle. The formula holds up to {@code min(W, H)}; beyond it the
+ * shells would leave the field on two opposite sides, and g(r) that far out means little, so it is refused.
+ *
+ * @param width width, in the spots' units
+ * @param height height, in the spots' units
+ * @param inferred whether the size was inferred from the spots rather than given
+ */
+public record FieldOfView(double width, double height, boolean inferred) {
+
+	/** @throws IllegalArgumentException when a side is not a positive finite number */
+	public FieldOfView {
+		if (!(width > 0) || !(height > 0) || !Double.isFinite(width) || !Double.isFinite(height))
+			throw new IllegalArgumentException("the field of view must have a positive width and height, not " + width +
+				" x " + height);
+	}
+
+	/** @return a field of the given size (given by the user, not inferred) */
+	public static FieldOfView of(final double width, final double height) {
+		return new FieldOfView(width, height, false);
+	}
+
+	/**
+	 * The field inferred from the spots: the bounding box of all spots of all frames, widened on each side by
+	 * the expected gap between the last of {@code n} uniform points and the edge ({@code extent / (n - 1)}), so
+	 * that the estimate is unbiased for uniform spots. With thousands of spots the widening is negligible; with
+	 * few, give the field's size instead.
+	 *
+	 * @param xs x of every spot
+	 * @param ys y of every spot
+	 * @return the inferred field
+	 * @throws IllegalArgumentException when there are fewer than 2 spots or they all lie on one line
+	 */
+	public static FieldOfView inferred(final double[] xs, final double[] ys) {
+		if (xs.length != ys.length) throw new IllegalArgumentException(xs.length + " x values but " + ys.length + " y");
+		if (xs.length < 2)
+			throw new IllegalArgumentException("cannot infer the field of view from fewer than 2 spots: give its width " +
+				"and height");
+		double x0 = Double.POSITIVE_INFINITY, x1 = Double.NEGATIVE_INFINITY;
+		double y0 = Double.POSITIVE_INFINITY, y1 = Double.NEGATIVE_INFINITY;
+		for (int i = 0; i < xs.length; i++) {
+			x0 = Math.min(x0, xs[i]);
+			x1 = Math.max(x1, xs[i]);
+			y0 = Math.min(y0, ys[i]);
+			y1 = Math.max(y1, ys[i]);
+		}
+		final int n = xs.length;
+		final double w = (x1 - x0) * (n + 1) / (n - 1), h = (y1 - y0) * (n + 1) / (n - 1);
+		if (!(w > 0) || !(h > 0))
+			throw new IllegalArgumentException("cannot infer the field of view: all spots lie on one line; give its " +
+				"width and height");
+		return new FieldOfView(w, h, true);
+	}
+
+	/** @return the area */
+	public double area() {
+		return width * height;
+	}
+
+	/** @return the largest distance for which the edge correction is exact: {@code min(width, height)} */
+	public double maxDistance() {
+		return Math.min(width, height);
+	}
+
+	/**
+	 * The probability that two independent uniform points of the field lie closer than {@code r}:
+	 * {@code (pi A r^2 - 4/3 (W + H) r^3 + r^4 / 2) / A^2}.
+	 *
+	 * @param r a distance in {@code [0, maxDistance()]}
+	 * @return the fraction of pairs closer than {@code r}
+	 * @throws IllegalArgumentException outside that range
+	 */
+	public double pairFractionWithin(final double r) {
+		if (!(r >= 0) || r > maxDistance() * (1 + 1e-12))
+			throw new IllegalArgumentException("the edge correction holds for distances up to min(width, height) = " +
+				maxDistance() + ", not " + r);
+		final double a = area(), r2 = r * r;
+		return (Math.PI * a * r2 - 4.0 / 3.0 * (width + height) * r2 * r + 0.5 * r2 * r2) / (a * a);
+	}
+}

@@ -1,0 +1,58 @@
+package io.github.contacttracker.potential;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+
+/** The human-readable summary of a pair analysis, shared by the command line and Fiji. */
+public final class PotentialReport {
+
+	private PotentialReport() {}
+
+	/**
+	 * @param spots the spots used
+	 * @param r the result
+	 * @param unit the spots' unit ("" when unknown)
+	 * @return lines: spots used and left out, the field of view (given or inferred), pairs, the zero of U
+	 */
+	public static List<String> lines(final SpotSet spots, final PairCorrelation.Result r, final String unit) {
+		final List<String> out = new ArrayList<>();
+		out.add(String.format(Locale.ROOT, "%d spots in %d frames used (of %d rows; left out: %d flagged%s, %d " +
+			"before the start frame)", spots.size(), spots.frames().size(), spots.rows(), spots.flaggedLeftOut(), spots
+				.flagColumns().isEmpty() ? "" : " by " + String.join("/", spots.flagColumns()), spots.earlyLeftOut()));
+		final String u = unit.isEmpty() ? "" : " " + unit;
+		final FieldOfView f = r.field();
+		out.add(String.format(Locale.ROOT, "field of view %s x %s%s, %s", PairCorrelation.num(f.width()),
+			PairCorrelation.num(f.height()), u, f.inferred()
+				? "INFERRED from the spots (their bounding box): give the width and height if you know them"
+				: "as given"));
+		out.add(String.format(Locale.ROOT, "%d pairs closer than %s%s (%s pairs of the same frame in all)", r.pairs(),
+			PairCorrelation.num(r.bins().get(r.bins().size() - 1).rHigh()), u, PairCorrelation.num(r.framePairs())));
+		if (!Double.isNaN(r.zeroFrom()))
+			out.add(String.format(Locale.ROOT, "U = 0 on average over r in [%s, %s]%s (shifted by %+.4f kT)",
+				PairCorrelation.num(r.zeroFrom()), PairCorrelation.num(r.zeroTo()), u, -r.uZero()));
+		else out.add("U = -ln g (no zero range set)");
+		return out;
+	}
+
+	/**
+	 * @param spots the spots used
+	 * @param f the field of view
+	 * @return a warning when the spots spread beyond a given field, or null
+	 */
+	public static String fieldWarning(final SpotSet spots, final FieldOfView f) {
+		if (f.inferred() || spots.size() == 0) return null;
+		final double[] x = spots.allX(), y = spots.allY();
+		double x0 = Double.POSITIVE_INFINITY, x1 = Double.NEGATIVE_INFINITY, y0 = x0, y1 = x1;
+		for (int i = 0; i < x.length; i++) {
+			x0 = Math.min(x0, x[i]);
+			x1 = Math.max(x1, x[i]);
+			y0 = Math.min(y0, y[i]);
+			y1 = Math.max(y1, y[i]);
+		}
+		if (x1 - x0 <= f.width() && y1 - y0 <= f.height()) return null;
+		return String.format(Locale.ROOT, "the spots spread over %s x %s, more than the field of view given (%s x %s): " +
+			"check --width/--height (same units as the spots)", PairCorrelation.num(x1 - x0), PairCorrelation.num(y1 -
+				y0), PairCorrelation.num(f.width()), PairCorrelation.num(f.height()));
+	}
+}

@@ -1,0 +1,237 @@
+package io.github.contacttracker.potential;
+
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.TreeMap;
+
+import io.github.contacttracker.core.Flag;
+import io.github.contacttracker.core.Localization;
+
+/**
+ * The spots that enter a pair analysis, grouped by frame, and how many were left out and why. Built from a
+ * spots table's columns (TrackMate's keys {@code POSITION_X}, {@code POSITION_Y}, {@code FRAME}, and our
+ * {@code FLAG_...} columns when present), or directly from positions.
+ */
+public final class SpotSet {
+
+	/** Column keys read from a spots table. */
+	public static final String X = "POSITION_X", Y = "POSITION_Y", FRAME = "FRAME", FLAG_PREFIX = "FLAG_";
+
+	/** @return whether {@link #fromColumns} reads the column {@code key} (positions, frame, flags) */
+	public static boolean reads(final String key) {
+		return key.equals(X) || key.equals(Y) || key.equals(FRAME) || key.startsWith(FLAG_PREFIX);
+	}
+
+	/**
+	 * Which spots to use.
+	 *
+	 * @param startFrame spots of earlier frames are left out (e.g. while the sample settles)
+	 * @param dropFlagged leave out spots with a warning flag (every {@code FLAG_} column but
+	 *          {@code FLAG_SECOND_PASS}, which marks the normal case): their centres are unreliable (fallback to
+	 *          the biased first pass, merged particles, cut by the border, ...)
+	 */
+	public record Selection(int startFrame, boolean dropFlagged) {
+
+		/** All frames, flagged spots left out. */
+		public static final Selection DEFAULT = new Selection(0, true);
+
+		/** @throws IllegalArgumentException for a negative start frame */
+		public Selection {
+			if (startFrame < 0) throw new IllegalArgumentException("the start frame must be 0 or more, not " + startFrame);
+		}
+	}
+
+	private final List<Integer> frameNumbers;
+	private final List<double[][]> frames;
+	private final int rows, flaggedLeftOut, earlyLeftOut;
+	private final List<String> flagColumns;
+
+	private SpotSet(final TreeMap<Integer, List<double[]>> byFrame, final int rows, final int flaggedLeftOut,
+		final int earlyLeftOut, final List<String> flagColumns)
+	{
+		this.frameNumbers = List.copyOf(byFrame.keySet());
+		final List<double[][]> f = new ArrayList<>();
+		for (final List<double[]> spots : byFrame.values()) {
+			final double[][] xy = new double[2][spots.size()];
+			for (int i = 0; i < spots.size(); i++) {
+				xy[0][i] = spots.get(i)[0];
+				xy[1][i] = spots.get(i)[1];
+			}
+			f.add(xy);
+		}
+		this.frames = Collections.unmodifiableList(f);
+		this.rows = rows;
+		this.flaggedLeftOut = flaggedLeftOut;
+		this.earlyLeftOut = earlyLeftOut;
+		this.flagColumns = List.copyOf(flagColumns);
+	}
+
+	/**
+	 * @param positions per frame (frame numbers 0, 1, ...), the spots' {@code {x, y}}
+	 * @param scale the positions are multiplied by it
+	 * @return every spot, none left out
+	 */
+	public static SpotSet ofPositions(final List<List<double[]>> positions, final double scale) {
+		final TreeMap<Integer, List<double[]>> byFrame = new TreeMap<>();
+		int n = 0;
+		for (int f = 0; f < positions.size(); f++) {
+			final List<double[]> scaled = new ArrayList<>();
+			for (final double[] p : positions.get(f))
+				scaled.add(new double[] { p[0] * scale, p[1] * scale });
+			byFrame.put(f, scaled);
+			n += positions.get(f).size();
+		}
+		return new SpotSet(byFrame, n, 0, 0, List.of());
+	}
+
+	/**
+	 * @param spots tracked spots of any frames, in pixels
+	 * @param selection which spots to use (a spot is flagged when it has a warning flag, {@link Flag#isWarning()})
+	 * @param firstPass use the first-pass centres instead of the final ones (to show the first pass's bias)
+	 * @param scale the positions are multiplied by it (e.g. {@code 1 / diameter} for distances in diameters)
+	 * @return the spots
+	 */
+	public static SpotSet ofLocalizations(final List<Localization> spots, final Selection selection,
+		final boolean firstPass, final double scale)
+	{
+		final TreeMap<Integer, List<double[]>> byFrame = new TreeMap<>();
+		int flagged = 0, early = 0;
+		for (final Localization s : spots) {
+			if (s.frame() < selection.startFrame()) {
+				early++;
+				continue;
+			}
+			if (selection.dropFlagged() && s.isFlagged()) {
+				flagged++;
+				continue;
+			}
+			byFrame.computeIfAbsent(s.frame(), k -> new ArrayList<>()).add(firstPass ? new double[] { s.firstX() *
+				scale, s.firstY() * scale } : new double[] { s.x() * scale, s.y() * scale });
+		}
+		final List<String> flagColumns = new ArrayList<>();
+		if (selection.dropFlagged()) for (final Flag f : Flag.values())
+			if (f.isWarning()) flagColumns.add(FLAG_PREFIX + f.name());
+		return new SpotSet(byFrame, spots.size(), flagged, early, flagColumns);
+	}
+
+	/**
+	 * @param columns a spots table, by column key (all arrays of one length; NaN for an empty cell)
+	 * @param selection which spots to use
+	 * @return the spots
+	 * @throws IllegalArgumentException naming the column (and row, 1-based) of a missing column or bad value
+	 */
+	public static SpotSet fromColumns(final Map<String, double[]> columns, final Selection selection) {
+		final double[] x = column(columns, X), y = column(columns, Y), frame = column(columns, FRAME);
+		final int rows = x.length;
+		final List<String> flagKeys = new ArrayList<>();
+		for (final String key : columns.keySet())
+			if (key.startsWith(FLAG_PREFIX) && isWarning(key.substring(FLAG_PREFIX.length()))) flagKeys.add(key);
+		Collections.sort(flagKeys);
+		final TreeMap<Integer, List<double[]>> byFrame = new TreeMap<>();
+		int flagged = 0, early = 0;
+		for (int i = 0; i < rows; i++) {
+			final double f = frame[i];
+			if (!(f >= 0) || f != Math.rint(f) || f > Integer.MAX_VALUE)
+				throw new IllegalArgumentException(String.format(Locale.ROOT,
+					"row %d: %s must be a whole number 0 or more, not %s", i + 1, FRAME, text(f)));
+			if (!Double.isFinite(x[i]) || !Double.isFinite(y[i]))
+				throw new IllegalArgumentException(String.format(Locale.ROOT, "row %d: %s and %s must be numbers, not %s " +
+					"and %s", i + 1, X, Y, text(x[i]), text(y[i])));
+			if (f < selection.startFrame()) {
+				early++;
+				continue;
+			}
+			if (selection.dropFlagged() && isFlagged(columns, flagKeys, i)) {
+				flagged++;
+				continue;
+			}
+			byFrame.computeIfAbsent((int) f, k -> new ArrayList<>()).add(new double[] { x[i], y[i] });
+		}
+		return new SpotSet(byFrame, rows, flagged, early, selection.dropFlagged() ? flagKeys : List.of());
+	}
+
+	private static double[] column(final Map<String, double[]> columns, final String key) {
+		final double[] c = columns.get(key);
+		if (c == null) throw new IllegalArgumentException("missing column " + key);
+		return c;
+	}
+
+	/** A flag column counts as a warning unless it is one of our flags that is not a warning. */
+	private static boolean isWarning(final String flagName) {
+		for (final Flag f : Flag.values())
+			if (f.name().equals(flagName)) return f.isWarning();
+		return true; // an unknown flag: safer to treat as a warning
+	}
+
+	private static boolean isFlagged(final Map<String, double[]> columns, final List<String> flagKeys, final int row) {
+		for (final String key : flagKeys) {
+			final double v = columns.get(key)[row];
+			if (Double.isFinite(v) && v != 0) return true;
+		}
+		return false;
+	}
+
+	private static String text(final double v) {
+		return Double.isNaN(v) ? "empty" : Double.toString(v);
+	}
+
+	/** @return the frame numbers that have at least one spot, ascending */
+	public List<Integer> frameNumbers() {
+		return frameNumbers;
+	}
+
+	/** @return per frame (in {@link #frameNumbers()} order) the arrays {@code {x[], y[]}} of its spots */
+	public List<double[][]> frames() {
+		return frames;
+	}
+
+	/** @return the number of spots used */
+	public int size() {
+		int n = 0;
+		for (final double[][] f : frames)
+			n += f[0].length;
+		return n;
+	}
+
+	/** @return the number of rows the table had */
+	public int rows() {
+		return rows;
+	}
+
+	/** @return spots left out for a warning flag */
+	public int flaggedLeftOut() {
+		return flaggedLeftOut;
+	}
+
+	/** @return spots left out for being before the start frame */
+	public int earlyLeftOut() {
+		return earlyLeftOut;
+	}
+
+	/** @return the flag columns that counted as warnings (empty when flagged spots were kept) */
+	public List<String> flagColumns() {
+		return flagColumns;
+	}
+
+	/** @return x of every spot used, frame after frame */
+	public double[] allX() {
+		return all(0);
+	}
+
+	/** @return y of every spot used, frame after frame */
+	public double[] allY() {
+		return all(1);
+	}
+
+	private double[] all(final int axis) {
+		final double[] out = new double[size()];
+		int k = 0;
+		for (final double[][] f : frames)
+			for (final double v : f[axis])
+				out[k++] = v;
+		return out;
+	}
+}

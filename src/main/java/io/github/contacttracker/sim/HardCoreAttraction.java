@@ -1,0 +1,43 @@
+package io.github.contacttracker.sim;
+
+import java.util.Locale;
+
+/**
+ * Hard spheres with a short-range attraction, the kind of potential depletion or van der Waals forces give:
+ * {@code U = +inf} for {@code r < contact}, {@code U/kT = -depth exp(-(r - contact) / decay)} beyond, cut to 0 at
+ * {@code contact + CUTOFF_DECAYS * decay} (where it is below {@code 3e-4 depth}; the cut potential is the truth).
+ *
+ * @param contact centre distance at contact (px), the particle diameter
+ * @param depthKt well depth at contact, in kT (0 for plain hard spheres)
+ * @param decay decay length of the attraction (px)
+ */
+public record HardCoreAttraction(double contact, double depthKt, double decay) implements PairInteraction {
+
+	/** Decay lengths after which the attraction is cut. */
+	public static final double CUTOFF_DECAYS = 8;
+
+	/** @throws IllegalArgumentException for a non-positive contact or decay, or a negative depth */
+	public HardCoreAttraction {
+		if (!(contact > 0) || !(decay > 0) || !(depthKt >= 0) || !Double.isFinite(contact + decay + depthKt))
+			throw new IllegalArgumentException("hard core + attraction needs contact > 0, decay > 0 and depth >= 0, not " +
+				contact + ", " + decay + ", " + depthKt);
+	}
+
+	@Override
+	public double energyKt(final double r) {
+		if (r < contact) return Double.POSITIVE_INFINITY;
+		if (r >= range()) return 0;
+		return -depthKt * Math.exp(-(r - contact) / decay);
+	}
+
+	@Override
+	public double range() {
+		return contact + CUTOFF_DECAYS * decay;
+	}
+
+	@Override
+	public String describe() {
+		return String.format(Locale.ROOT, "hard core at %.2f px + attraction %.2f kT exp(-(r - %.2f px) / %.2f px)",
+			contact, depthKt, contact, decay);
+	}
+}

@@ -1,0 +1,55 @@
+package io.github.contacttracker.eval;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+
+import org.junit.jupiter.api.Test;
+
+import io.github.contacttracker.core.Localization;
+import io.github.contacttracker.core.Method;
+import io.github.contacttracker.potential.PairCorrelation;
+import io.github.contacttracker.sim.FluidMovie;
+import io.github.contacttracker.sim.PaperParticles;
+
+/**
+ * U(r) end to end, images to U(r), on small simulated movies of a fluid with a known potential (hard core + 2 kT
+ * attraction): the default method finds no pair inside the hard core and U within its error bars of the truth;
+ * the first pass of the long-range 2.06 um-like particles puts touching pairs inside the hard core (the spurious
+ * attraction at contact).
+ */
+class PotentialStudyTest {
+
+	@Test
+	void defaultMethodRecoversThePotentialFromImages() {
+		// the demo's fluid in a smaller frame (384 x 384 px, 6 particles, 30 frames), bins of 0.05 D, to stay fast
+		final PotentialStudy demo = PotentialStudy.demo(PaperParticles.silica553(), 30);
+		final PotentialStudy study = new PotentialStudy(demo.type(), demo.interaction(), 6, 384, 30, demo
+			.sweepsBetween(), demo.seed(), 0.05, 2.5, 2);
+		final FluidMovie movie = study.simulate();
+		assertEquals(0, movie.clippedPixels());
+		final List<Localization> spots = study.track(movie, Method.DEFAULT, 0);
+		final PairCorrelation.Result fit = study.measure(spots), truth = study.measureTruth(movie);
+		final PotentialStudy.Comparison c = study.compare(fit, 1, 2);
+		assertEquals(0, c.pairsInsideCore());
+		assertEquals(20, c.bins());
+		assertTrue(c.chi2PerBin() < 2 && c.maxAbsZ() < 4, c.toString());
+		// the same configurations: the tracked U follows the one from the true centres far within the error bars
+		for (int i = 0; i < fit.bins().size(); i++) {
+			final PairCorrelation.Bin b = fit.bins().get(i);
+			if (b.rLow() < 1 || b.r() > 2 || b.pairs() < 10) continue;
+			assertEquals(truth.u(i), fit.u(i), 0.5 * b.uError(), "r/D = " + b.r());
+		}
+	}
+
+	@Test
+	void firstPassPutsTouchingPairsInsideTheHardCore() {
+		final PotentialStudy study = PotentialStudy.demo(PaperParticles.silica206(), 30);
+		final FluidMovie movie = study.simulate();
+		final PotentialStudy.Comparison truth = study.compare(study.measureTruth(movie), 1, 2);
+		final PotentialStudy.Comparison first = study.compare(study.measure(study.track(movie, Method.FIRST, 0)), 1, 2);
+		assertEquals(0, truth.pairsInsideCore());
+		assertTrue(first.pairsInsideCore() >= 10, first.toString());
+	}
+}

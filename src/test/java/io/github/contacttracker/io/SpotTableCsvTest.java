@@ -1,0 +1,56 @@
+package io.github.contacttracker.io;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+
+import java.util.List;
+
+import org.junit.jupiter.api.Test;
+
+import io.github.contacttracker.potential.SpotSet;
+
+class SpotTableCsvTest {
+
+	@Test
+	void readsOurOneHeaderTable() {
+		final SpotTableCsv.Table t = SpotTableCsv.parse(List.of("ID,FRAME,POSITION_X,POSITION_Y,FLAG_MERGED",
+			"0,0,1.5,2.5,0", "1,0,3.5,4.5,1", ""), SpotSet::reads, "s.csv");
+		assertEquals(2, t.rows());
+		assertEquals(1, t.headerRows());
+		assertEquals("", t.unit());
+		assertEquals(List.of("FRAME", "POSITION_X", "POSITION_Y", "FLAG_MERGED"), List.copyOf(t.columns().keySet()));
+		assertArrayEquals(new double[] { 1.5, 3.5 }, t.columns().get("POSITION_X"));
+		assertArrayEquals(new double[] { 0, 1 }, t.columns().get("FLAG_MERGED"));
+	}
+
+	@Test
+	void readsTrackMatesExportWithFourHeaderRowsQuotesAndUnits() {
+		final SpotTableCsv.Table t = SpotTableCsv.parse(List.of( //
+			"LABEL,ID,TRACK_ID,QUALITY,POSITION_X,POSITION_Y,POSITION_Z,POSITION_T,FRAME", //
+			"Label,Spot ID,Track ID,Quality,X,Y,Z,T,Frame", //
+			"Label,Spot ID,Track ID,Quality,X,Y,Z,T,Frame", //
+			",,,(quality),(micron),(micron),(micron),(sec),", //
+			"\"ID0, first\",0,0,12.0,1.25,2.5,0,0,0", //
+			"ID1,1,0,11.0,3.75,4.5,0,0,0"), SpotSet::reads, "export.csv");
+		assertEquals(4, t.headerRows());
+		assertEquals("micron", t.unit());
+		assertEquals(2, t.rows());
+		assertArrayEquals(new double[] { 1.25, 3.75 }, t.columns().get("POSITION_X"));
+		assertArrayEquals(new double[] { 0, 0 }, t.columns().get("FRAME"));
+	}
+
+	@Test
+	void badInputNamesFileLineAndColumn() {
+		assertEquals("e.csv is empty", assertThrows(IllegalArgumentException.class, () -> SpotTableCsv.parse(List
+			.of("", " "), SpotSet::reads, "e.csv")).getMessage());
+		assertEquals("h.csv has a header but no data row", assertThrows(IllegalArgumentException.class,
+			() -> SpotTableCsv.parse(List.of("FRAME,POSITION_X,POSITION_Y"), SpotSet::reads, "h.csv")).getMessage());
+		assertEquals("b.csv line 3: POSITION_Y is not a number: 'abc'", assertThrows(IllegalArgumentException.class,
+			() -> SpotTableCsv.parse(List.of("FRAME,POSITION_X,POSITION_Y", "0,1,2", "0,1,abc"), SpotSet::reads, "b.csv"))
+				.getMessage());
+		assertEquals("s.csv line 2: 2 cells, but column POSITION_Y is number 3", assertThrows(
+			IllegalArgumentException.class, () -> SpotTableCsv.parse(List.of("FRAME,POSITION_X,POSITION_Y", "0,1"),
+				SpotSet::reads, "s.csv")).getMessage());
+	}
+}

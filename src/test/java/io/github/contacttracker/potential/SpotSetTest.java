@@ -1,0 +1,60 @@
+package io.github.contacttracker.potential;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+
+import org.junit.jupiter.api.Test;
+
+class SpotSetTest {
+
+	private static Map<String, double[]> table() {
+		final Map<String, double[]> c = new LinkedHashMap<>();
+		c.put("FRAME", new double[] { 0, 0, 1, 1, 2 });
+		c.put("POSITION_X", new double[] { 1, 2, 3, 4, 5 });
+		c.put("POSITION_Y", new double[] { 1, 1, 1, 1, 1 });
+		c.put("FLAG_SECOND_PASS", new double[] { 1, 1, 1, 0, 0 }); // the normal case, not a warning
+		c.put("FLAG_AT_BORDER", new double[] { 0, 1, 0, 0, 0 });
+		c.put("FLAG_FELL_BACK", new double[] { 0, 0, 0, 0, 1 });
+		return c;
+	}
+
+	@Test
+	void warningFlagsLeaveSpotsOutButSecondPassDoesNot() {
+		final SpotSet s = SpotSet.fromColumns(table(), SpotSet.Selection.DEFAULT);
+		assertEquals(3, s.size());
+		assertEquals(2, s.flaggedLeftOut());
+		assertEquals(List.of(0, 1), s.frameNumbers());
+		assertEquals(List.of("FLAG_AT_BORDER", "FLAG_FELL_BACK"), s.flagColumns());
+		final SpotSet kept = SpotSet.fromColumns(table(), new SpotSet.Selection(0, false));
+		assertEquals(5, kept.size());
+		assertEquals(0, kept.flaggedLeftOut());
+	}
+
+	@Test
+	void startFrameLeavesEarlierFramesOut() {
+		final SpotSet s = SpotSet.fromColumns(table(), new SpotSet.Selection(1, false));
+		assertEquals(3, s.size());
+		assertEquals(2, s.earlyLeftOut());
+		assertEquals(List.of(1, 2), s.frameNumbers());
+	}
+
+	@Test
+	void missingColumnsAndBadValuesAreNamed() {
+		final Map<String, double[]> noY = table();
+		noY.remove("POSITION_Y");
+		assertEquals("missing column POSITION_Y", assertThrows(IllegalArgumentException.class, () -> SpotSet
+			.fromColumns(noY, SpotSet.Selection.DEFAULT)).getMessage());
+		final Map<String, double[]> badFrame = table();
+		badFrame.get("FRAME")[2] = 1.5;
+		assertEquals("row 3: FRAME must be a whole number 0 or more, not 1.5", assertThrows(
+			IllegalArgumentException.class, () -> SpotSet.fromColumns(badFrame, SpotSet.Selection.DEFAULT)).getMessage());
+		final Map<String, double[]> emptyX = table();
+		emptyX.get("POSITION_X")[4] = Double.NaN;
+		assertEquals("row 5: POSITION_X and POSITION_Y must be numbers, not empty and 1.0", assertThrows(
+			IllegalArgumentException.class, () -> SpotSet.fromColumns(emptyX, SpotSet.Selection.DEFAULT)).getMessage());
+	}
+}
