@@ -57,8 +57,10 @@ public record PotentialStudy(ParticleType type, PairInteraction interaction, int
 	/** @return the spots of every frame, tracked with {@code method} and the type's threshold and r_out */
 	@SuppressWarnings({ "unchecked", "rawtypes" })
 	public List<Localization> track(final FluidMovie movie, final Method method, final int threads) {
-		final List<FrameResult> r = new StackTracker(TrackerParameters.of(type.threshold(), type.rOut()).withMethod(
-			method), threads).track((List) movie.frames(), false);
+		final StackTracker tracker = new StackTracker(TrackerParameters.of(type.threshold(), type.rOut()).withMethod(
+			method));
+		final List<FrameResult> r = StackTracker.withThreads(threads, () -> tracker.track((List) movie.frames(),
+			false));
 		return StackTracker.spots(r);
 	}
 
