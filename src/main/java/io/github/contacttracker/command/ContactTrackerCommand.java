@@ -1,5 +1,7 @@
 package io.github.contacttracker.command;
 
+import io.github.contacttracker.settings.TrackMateSettings;
+import io.github.contacttracker.settings.TrackingSettings;
 import java.awt.GraphicsEnvironment;
 import java.io.File;
 import java.io.IOException;
@@ -38,7 +40,6 @@ import io.github.contacttracker.io.ImagePlusFrames;
 import io.github.contacttracker.io.ImageSource;
 import io.github.contacttracker.io.SpotCsvWriter;
 import io.github.contacttracker.io.TrackMateXmlWriter;
-import io.github.contacttracker.trackmate.DetectorSettings;
 import net.imglib2.RandomAccessibleInterval;
 
 /**
@@ -80,11 +81,11 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 	@Parameter(label = "Threshold (grey level)",
 		description = "Pixels at or above it form the active areas, one per particle; above the brightest point " +
 			"between two particles at contact (see Contact Tracker Profile)")
-	private double threshold = DetectorSettings.DEFAULT_THRESHOLD;
+	private double threshold = TrackingSettings.THRESHOLD.defaultValue();
 
 	@Parameter(label = "r_out (px)", min = "0", stepSize = "0.5",
 		description = "Radius of a particle's effective disc: where its image has returned to background, plus 2 px")
-	private double r_out = DetectorSettings.DEFAULT_R_OUT;
+	private double r_out = TrackingSettings.R_OUT.defaultValue();
 
 	@Parameter(label = "Min area (px)", min = "1",
 		description = "Smaller active areas are noise and dropped")

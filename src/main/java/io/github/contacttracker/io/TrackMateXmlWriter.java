@@ -1,5 +1,6 @@
 package io.github.contacttracker.io;
 
+import io.github.contacttracker.settings.TrackMateSettings;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -13,7 +14,6 @@ import org.jdom2.output.XMLOutputter;
 
 import io.github.contacttracker.core.Localization;
 import io.github.contacttracker.core.TrackerParameters;
-import io.github.contacttracker.trackmate.DetectorSettings;
 
 /**
  * Writes spots as a TrackMate session file that TrackMate 8 opens with <i>File &gt; Load a TrackMate file</i>
@@ -66,7 +66,7 @@ public final class TrackMateXmlWriter {
 	public static void write(final Path out, final List<Localization> spots, final Calibration cal,
 		final ImageSource src, final TrackerParameters params) throws IOException
 	{
-		write(out, spots, cal, src, params, DetectorSettings.DEFAULT_TARGET_CHANNEL);
+		write(out, spots, cal, src, params, TrackMateSettings.DEFAULT_TARGET_CHANNEL);
 	}
 
 	/**
@@ -183,8 +183,8 @@ public final class TrackMateXmlWriter {
 			.setAttribute("timeinterval", Double.toString(cal.frameInterval())));
 
 		final Element detector = new Element("DetectorSettings")
-			.setAttribute(DetectorSettings.XML_ATTRIBUTE_DETECTOR_NAME, DetectorSettings.DETECTOR_KEY);
-		for (final Map.Entry<String, Object> e : DetectorSettings.toMap(params, targetChannel).entrySet())
+			.setAttribute(TrackMateSettings.XML_ATTRIBUTE_DETECTOR_NAME, TrackMateSettings.DETECTOR_KEY);
+		for (final Map.Entry<String, Object> e : TrackMateSettings.toMap(params, targetChannel).entrySet())
 			detector.setAttribute(e.getKey(), e.getValue().toString());
 		settings.addContent(detector);
 
@@ -212,7 +212,7 @@ public final class TrackMateXmlWriter {
 			n + " spots in " + src.nframes() + " frames of " + (src.filename().isEmpty() ? "an unsaved image"
 				: src.filename()) + ", pixel size " + cal.pixelWidth() + " x " + cal.pixelHeight() + " " + cal.unit() +
 			", frame interval " + cal.frameInterval() + " " + cal.timeUnit() + ".\nDetector settings: " +
-			DetectorSettings.echo(DetectorSettings.toMap(params, targetChannel)) + ".\n" +
+			TrackMateSettings.echo(TrackMateSettings.toMap(params, targetChannel)) + ".\n" +
 			"No tracks: link the spots with a tracker in TrackMate.";
 	}
 }

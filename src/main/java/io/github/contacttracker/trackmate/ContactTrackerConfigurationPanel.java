@@ -1,5 +1,6 @@
 package io.github.contacttracker.trackmate;
 
+import io.github.contacttracker.settings.TrackMateSettings;
 import java.awt.BasicStroke;
 import java.awt.Color;
 import java.awt.Dimension;
@@ -87,9 +88,9 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 		final String unit = hasImage && settings.imp.getCalibration().scaled() ? settings.imp.getCalibration()
 			.getUnit() : "pixel";
 
-		final Map<String, Object> d = DetectorSettings.defaults();
+		final Map<String, Object> d = TrackMateSettings.defaults();
 		channel = new JSpinner(new SpinnerNumberModel(1, 1, nChannels, 1));
-		threshold = doubleSpinner((Double) d.get(DetectorSettings.KEY_THRESHOLD), -1e15, 1e15, 1, "0.###");
+		threshold = doubleSpinner((Double) d.get(TrackMateSettings.KEY_THRESHOLD), -1e15, 1e15, 1, "0.###");
 		rOut = doubleSpinner(1, 0.5 * pixelWidth, 1e6 * pixelWidth, pixelWidth, "0.####");
 		rOutPixels = new JLabel();
 		minArea = new JSpinner(new SpinnerNumberModel(1, 1, Integer.MAX_VALUE, 1));
@@ -168,22 +169,22 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 
 	@Override
 	public void setSettings(final Map<String, Object> settings) {
-		final Map<String, Object> d = DetectorSettings.defaults();
-		final int c = value(settings, d, DetectorSettings.KEY_TARGET_CHANNEL, Integer.class);
+		final Map<String, Object> d = TrackMateSettings.defaults();
+		final int c = value(settings, d, TrackMateSettings.KEY_TARGET_CHANNEL, Integer.class);
 		final SpinnerNumberModel cm = (SpinnerNumberModel) channel.getModel();
 		if (c > (Integer) cm.getMaximum()) cm.setMaximum(c);
 		channel.setValue(Math.max(1, c));
-		threshold.setValue(value(settings, d, DetectorSettings.KEY_THRESHOLD, Double.class));
-		rOut.setValue(Math.max(0.5, value(settings, d, DetectorSettings.KEY_R_OUT, Double.class)) * pixelWidth);
-		minArea.setValue(Math.max(1, value(settings, d, DetectorSettings.KEY_MIN_AREA, Integer.class)));
-		minSecondArea.setValue(Math.max(3, value(settings, d, DetectorSettings.KEY_MIN_SECOND_AREA, Integer.class)));
-		connectivity.setSelectedItem(value(settings, d, DetectorSettings.KEY_CONNECTIVITY, Integer.class) == 4 ? 4 : 8);
-		String m = value(settings, d, DetectorSettings.KEY_METHOD, String.class);
+		threshold.setValue(value(settings, d, TrackMateSettings.KEY_THRESHOLD, Double.class));
+		rOut.setValue(Math.max(0.5, value(settings, d, TrackMateSettings.KEY_R_OUT, Double.class)) * pixelWidth);
+		minArea.setValue(Math.max(1, value(settings, d, TrackMateSettings.KEY_MIN_AREA, Integer.class)));
+		minSecondArea.setValue(Math.max(3, value(settings, d, TrackMateSettings.KEY_MIN_SECOND_AREA, Integer.class)));
+		connectivity.setSelectedItem(value(settings, d, TrackMateSettings.KEY_CONNECTIVITY, Integer.class) == 4 ? 4 : 8);
+		String m = value(settings, d, TrackMateSettings.KEY_METHOD, String.class);
 		try {
 			m = Method.parse(m).key();
 		}
 		catch (final IllegalArgumentException e) {
-			m = (String) d.get(DetectorSettings.KEY_METHOD);
+			m = (String) d.get(TrackMateSettings.KEY_METHOD);
 		}
 		method.setSelectedItem(m);
 		updateRoutPixels();
@@ -191,14 +192,14 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 
 	@Override
 	public Map<String, Object> getSettings() {
-		final Map<String, Object> map = DetectorSettings.defaults();
-		map.put(DetectorSettings.KEY_TARGET_CHANNEL, ((Number) channel.getValue()).intValue());
-		map.put(DetectorSettings.KEY_THRESHOLD, ((Number) threshold.getValue()).doubleValue());
-		map.put(DetectorSettings.KEY_R_OUT, rOutInPixels());
-		map.put(DetectorSettings.KEY_MIN_AREA, ((Number) minArea.getValue()).intValue());
-		map.put(DetectorSettings.KEY_MIN_SECOND_AREA, ((Number) minSecondArea.getValue()).intValue());
-		map.put(DetectorSettings.KEY_CONNECTIVITY, (Integer) connectivity.getSelectedItem());
-		map.put(DetectorSettings.KEY_METHOD, (String) method.getSelectedItem());
+		final Map<String, Object> map = TrackMateSettings.defaults();
+		map.put(TrackMateSettings.KEY_TARGET_CHANNEL, ((Number) channel.getValue()).intValue());
+		map.put(TrackMateSettings.KEY_THRESHOLD, ((Number) threshold.getValue()).doubleValue());
+		map.put(TrackMateSettings.KEY_R_OUT, rOutInPixels());
+		map.put(TrackMateSettings.KEY_MIN_AREA, ((Number) minArea.getValue()).intValue());
+		map.put(TrackMateSettings.KEY_MIN_SECOND_AREA, ((Number) minSecondArea.getValue()).intValue());
+		map.put(TrackMateSettings.KEY_CONNECTIVITY, (Integer) connectivity.getSelectedItem());
+		map.put(TrackMateSettings.KEY_METHOD, (String) method.getSelectedItem());
 		return map;
 	}
 

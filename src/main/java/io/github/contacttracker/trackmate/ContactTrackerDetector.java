@@ -1,5 +1,6 @@
 package io.github.contacttracker.trackmate;
 
+import io.github.contacttracker.settings.TrackMateSettings;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
@@ -68,15 +69,15 @@ public final class ContactTrackerDetector<T extends RealType<T> & NativeType<T>>
 	 * @param img the whole image, as TrackMate gives it (X, Y and optionally channel, Z of size 1 and time axes)
 	 * @param interval the region to analyse as TrackMate gives it (the image's axes without channel, time
 	 *        included), or one with every axis of the image; {@code null} for the whole movie
-	 * @param settings a Contact Tracker settings map ({@link DetectorSettings}); invalid settings make
+	 * @param settings a Contact Tracker settings map ({@link TrackMateSettings}); invalid settings make
 	 *        {@link #checkInput()} fail with their message
 	 */
 	public ContactTrackerDetector(final ImgPlus<T> img, final Interval interval, final Map<String, Object> settings) {
 		this.img = img;
 		this.interval = interval;
-		this.settingsError = DetectorSettings.check(settings);
-		this.params = settingsError == null ? DetectorSettings.parameters(settings) : null;
-		this.targetChannel = settingsError == null ? DetectorSettings.targetChannel(settings) : 0;
+		this.settingsError = TrackMateSettings.check(settings);
+		this.params = settingsError == null ? TrackMateSettings.parameters(settings) : null;
+		this.targetChannel = settingsError == null ? TrackMateSettings.targetChannel(settings) : 0;
 	}
 
 	@Override

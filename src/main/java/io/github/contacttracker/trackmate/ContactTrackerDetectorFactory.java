@@ -1,5 +1,6 @@
 package io.github.contacttracker.trackmate;
 
+import io.github.contacttracker.settings.TrackMateSettings;
 import java.util.Map;
 
 import javax.swing.ImageIcon;
@@ -29,14 +30,14 @@ import net.imglib2.type.numeric.RealType;
  * TrackMate instantiates it through the public no-argument constructor; it keeps no state. Every method of
  * TrackMate's module and factory interfaces is implemented here (except {@code copy()}), so the class links
  * against TrackMate whether a given 8.x release declares a method abstract or default. Settings: see
- * {@link DetectorSettings}.
+ * {@link TrackMateSettings}.
  */
 // Registered under the type TrackMate's DetectorProvider asks SciJava for, so it is found by exact type.
 @Plugin(type = SpotDetectorFactoryBase.class)
 public class ContactTrackerDetectorFactory<T extends RealType<T> & NativeType<T>> implements SpotGlobalDetectorFactory<T> {
 
 	/** The key of this detector in TrackMate (settings maps, XML files, scripts). */
-	public static final String DETECTOR_KEY = DetectorSettings.DETECTOR_KEY;
+	public static final String DETECTOR_KEY = TrackMateSettings.DETECTOR_KEY;
 
 	public static final String NAME = "Contact Tracker (particles near contact)";
 
@@ -46,13 +47,13 @@ public class ContactTrackerDetectorFactory<T extends RealType<T> & NativeType<T>
 	/** The detector's icon (two touching particles), shown in TrackMate's detector list and panel. */
 	static final ImageIcon ICON = ContactTrackerConfigurationPanel.icon();
 
-	public static final String KEY_TARGET_CHANNEL = DetectorSettings.KEY_TARGET_CHANNEL;
-	public static final String KEY_THRESHOLD = DetectorSettings.KEY_THRESHOLD;
-	public static final String KEY_R_OUT = DetectorSettings.KEY_R_OUT;
-	public static final String KEY_MIN_AREA = DetectorSettings.KEY_MIN_AREA;
-	public static final String KEY_MIN_SECOND_AREA = DetectorSettings.KEY_MIN_SECOND_AREA;
-	public static final String KEY_CONNECTIVITY = DetectorSettings.KEY_CONNECTIVITY;
-	public static final String KEY_METHOD = DetectorSettings.KEY_METHOD;
+	public static final String KEY_TARGET_CHANNEL = TrackMateSettings.KEY_TARGET_CHANNEL;
+	public static final String KEY_THRESHOLD = TrackMateSettings.KEY_THRESHOLD;
+	public static final String KEY_R_OUT = TrackMateSettings.KEY_R_OUT;
+	public static final String KEY_MIN_AREA = TrackMateSettings.KEY_MIN_AREA;
+	public static final String KEY_MIN_SECOND_AREA = TrackMateSettings.KEY_MIN_SECOND_AREA;
+	public static final String KEY_CONNECTIVITY = TrackMateSettings.KEY_CONNECTIVITY;
+	public static final String KEY_METHOD = TrackMateSettings.KEY_METHOD;
 
 	/** The paper the method comes from (its DOI page). */
 	public static final String URL = "https://doi.org/10.1088/1361-648X/aa908e";
@@ -72,7 +73,7 @@ public class ContactTrackerDetectorFactory<T extends RealType<T> & NativeType<T>
 
 	/**
 	 * @param img the whole image (every channel and frame)
-	 * @param settings the detector settings ({@link DetectorSettings})
+	 * @param settings the detector settings ({@link TrackMateSettings})
 	 * @param interval what to analyse: X, Y, Z and time, no channel axis (TrackMate's
 	 *        {@code TMUtils.getIntervalWithTime}); {@code null} for the whole movie
 	 */
@@ -90,24 +91,24 @@ public class ContactTrackerDetectorFactory<T extends RealType<T> & NativeType<T>
 
 	@Override
 	public Map<String, Object> getDefaultSettings() {
-		return DetectorSettings.defaults();
+		return TrackMateSettings.defaults();
 	}
 
 	@Override
 	public String checkSettings(final Map<String, Object> settings) {
-		return DetectorSettings.check(settings);
+		return TrackMateSettings.check(settings);
 	}
 
 	/**
 	 * Writes the settings as attributes of {@code element}: {@code DETECTOR_NAME} and one attribute per key, in
-	 * {@link DetectorSettings#keys()} order, with {@code toString()} of the value.
+	 * {@link TrackMateSettings#keys()} order, with {@code toString()} of the value.
 	 */
 	@Override
 	public String marshal(final Map<String, Object> settings, final Element element) {
 		final String error = checkSettings(settings);
 		if (error != null) return error;
-		element.setAttribute(DetectorSettings.XML_ATTRIBUTE_DETECTOR_NAME, DETECTOR_KEY);
-		for (final String key : DetectorSettings.keys())
+		element.setAttribute(TrackMateSettings.XML_ATTRIBUTE_DETECTOR_NAME, DETECTOR_KEY);
+		for (final String key : TrackMateSettings.keys())
 			element.setAttribute(key, settings.get(key).toString());
 		return null;
 	}
@@ -123,11 +124,11 @@ public class ContactTrackerDetectorFactory<T extends RealType<T> & NativeType<T>
 		settings.putAll(getDefaultSettings());
 		for (final Attribute att : element.getAttributes()) {
 			final String key = att.getName();
-			if (DetectorSettings.XML_ATTRIBUTE_DETECTOR_NAME.equals(key) || "TRACKER_NAME".equals(key)) continue;
-			if (!DetectorSettings.keys().contains(key))
+			if (TrackMateSettings.XML_ATTRIBUTE_DETECTOR_NAME.equals(key) || "TRACKER_NAME".equals(key)) continue;
+			if (!TrackMateSettings.keys().contains(key))
 				return "When unmarshalling " + NAME + " settings: unknown parameter " + key + ".";
 			try {
-				settings.put(key, DetectorSettings.parse(key, att.getValue()));
+				settings.put(key, TrackMateSettings.parse(key, att.getValue()));
 			}
 			catch (final IllegalArgumentException e) {
 				return "When unmarshalling " + NAME + " settings: " + e.getMessage() + ".";
@@ -139,7 +140,7 @@ public class ContactTrackerDetectorFactory<T extends RealType<T> & NativeType<T>
 	@Override
 	public String toString(final Map<String, Object> settings) {
 		final String error = checkSettings(settings);
-		return error != null ? error : DetectorSettings.echo(settings);
+		return error != null ? error : TrackMateSettings.echo(settings);
 	}
 
 	@Override

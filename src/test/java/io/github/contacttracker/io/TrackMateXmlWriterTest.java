@@ -1,5 +1,6 @@
 package io.github.contacttracker.io;
 
+import io.github.contacttracker.settings.TrackMateSettings;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
@@ -31,7 +32,6 @@ import io.github.contacttracker.core.Flag;
 import io.github.contacttracker.core.Localization;
 import io.github.contacttracker.core.Method;
 import io.github.contacttracker.core.TrackerParameters;
-import io.github.contacttracker.trackmate.DetectorSettings;
 
 /**
  * The TrackMate XML must hold every element and attribute TrackMate 8's reader needs (TmXmlReader), with
@@ -200,12 +200,12 @@ class TrackMateXmlWriterTest {
 		child(analyzers, "TrackAnalyzers");
 
 		final Element detector = child(settings, "DetectorSettings");
-		assertEquals(DetectorSettings.DETECTOR_KEY, attr(detector, "DETECTOR_NAME"));
+		assertEquals(TrackMateSettings.DETECTOR_KEY, attr(detector, "DETECTOR_NAME"));
 		final Map<String, Object> parsed = new HashMap<>();
 		for (final Attribute a : detector.getAttributes())
-			if (!a.getName().equals("DETECTOR_NAME")) parsed.put(a.getName(), DetectorSettings.parse(a.getName(), a.getValue()));
-		assertEquals(DetectorSettings.toMap(PARAMS, 2), parsed);
-		assertNull(DetectorSettings.check(parsed));
+			if (!a.getName().equals("DETECTOR_NAME")) parsed.put(a.getName(), TrackMateSettings.parse(a.getName(), a.getValue()));
+		assertEquals(TrackMateSettings.toMap(PARAMS, 2), parsed);
+		assertNull(TrackMateSettings.check(parsed));
 
 		assertEquals("ConfigureViews", attr(child(root, "GUIState"), "state"));
 		assertTrue(child(root, "DisplaySettings").getText().isEmpty(), "empty: TrackMate uses the user's defaults");

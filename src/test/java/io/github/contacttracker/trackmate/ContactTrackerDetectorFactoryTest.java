@@ -1,5 +1,6 @@
 package io.github.contacttracker.trackmate;
 
+import io.github.contacttracker.settings.TrackMateSettings;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
@@ -87,7 +88,7 @@ class ContactTrackerDetectorFactoryTest {
 	void settingsSurviveMarshalAndUnmarshal() {
 		assertEquals(factory.getDefaultSettings(), roundTrip(factory.getDefaultSettings()));
 		for (final Method m : Method.values()) {
-			final Map<String, Object> s = DetectorSettings.toMap(new TrackerParameters(0.1 + 1e-13, 12.345678901234, 7,
+			final Map<String, Object> s = TrackMateSettings.toMap(new TrackerParameters(0.1 + 1e-13, 12.345678901234, 7,
 				Connectivity.FOUR, 31, m), 2);
 			final Map<String, Object> back = roundTrip(s);
 			assertEquals(s, back);
@@ -129,8 +130,8 @@ class ContactTrackerDetectorFactoryTest {
 		assertEquals(factory.getKey(), detector.getAttributeValue("DETECTOR_NAME"));
 		final Map<String, Object> map = new HashMap<>();
 		assertNull(factory.unmarshal(detector, map));
-		assertEquals(DetectorSettings.toMap(p, 2), map);
-		assertEquals(p, DetectorSettings.parameters(map));
+		assertEquals(TrackMateSettings.toMap(p, 2), map);
+		assertEquals(p, TrackMateSettings.parameters(map));
 	}
 
 	@Test
@@ -192,7 +193,7 @@ class ContactTrackerDetectorFactoryTest {
 		assertNull(factory.checkSettings(panel.getSettings()), "the panel's own defaults must be valid");
 		assertEquals(factory.getDefaultSettings(), panel.getSettings());
 
-		final Map<String, Object> s = DetectorSettings.toMap(new TrackerParameters(123.456789, 7.75, 12,
+		final Map<String, Object> s = TrackMateSettings.toMap(new TrackerParameters(123.456789, 7.75, 12,
 			Connectivity.FOUR, 33, Method.values()[0]), 1);
 		panel.setSettings(s);
 		assertEquals(s, panel.getSettings());

@@ -1,5 +1,6 @@
 package io.github.contacttracker.trackmate;
 
+import io.github.contacttracker.settings.TrackMateSettings;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
@@ -222,7 +223,7 @@ class ContactTrackerDetectorTest {
 	void invalidSettingsFailCheckInputNamingTheSetting() {
 		final ImgPlus<FloatType> img = imgPlus(TestImages.image(TestImages.WIDTH, TestImages.HEIGHT), Axes.X, Axes.Y);
 		final Map<String, Object> settings = TestImages.settings(1);
-		settings.put(DetectorSettings.KEY_THRESHOLD, 80); // an Integer, not a Double
+		settings.put(TrackMateSettings.KEY_THRESHOLD, 80); // an Integer, not a Double
 		final SpotGlobalDetector<FloatType> detector = factory.getDetector(img, settings, null);
 		assertFalse(detector.checkInput());
 		assertTrue(detector.getErrorMessage().contains("THRESHOLD"), detector.getErrorMessage());

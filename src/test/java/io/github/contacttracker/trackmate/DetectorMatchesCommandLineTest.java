@@ -1,5 +1,6 @@
 package io.github.contacttracker.trackmate;
 
+import io.github.contacttracker.settings.TrackMateSettings;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -86,7 +87,7 @@ class DetectorMatchesCommandLineTest {
 		assertEquals(3 * FRAMES, rows.size(), "three particles in every frame");
 
 		final SpotGlobalDetector<UnsignedByteType> detector = new ContactTrackerDetectorFactory<UnsignedByteType>()
-			.getDetector(img, DetectorSettings.toMap(params, 1), ContactTrackerDetectorTest.trackMateInterval(img, 0,
+			.getDetector(img, TrackMateSettings.toMap(params, 1), ContactTrackerDetectorTest.trackMateInterval(img, 0,
 				FRAMES - 1));
 		assertTrue(detector.checkInput() && detector.process(), () -> detector.getErrorMessage());
 		final SpotCollection spots = detector.getResult();

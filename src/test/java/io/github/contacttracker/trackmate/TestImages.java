@@ -1,5 +1,6 @@
 package io.github.contacttracker.trackmate;
 
+import io.github.contacttracker.settings.TrackMateSettings;
 import java.util.HashMap;
 import java.util.Map;
 
@@ -29,7 +30,7 @@ final class TestImages {
 	}
 
 	static Map<String, Object> settings(final int channel) {
-		return new HashMap<>(DetectorSettings.toMap(params(), channel));
+		return new HashMap<>(TrackMateSettings.toMap(params(), channel));
 	}
 
 	private TestImages() {}

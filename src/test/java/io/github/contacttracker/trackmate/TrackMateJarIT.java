@@ -1,5 +1,6 @@
 package io.github.contacttracker.trackmate;
 
+import io.github.contacttracker.settings.TrackMateSettings;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
@@ -88,7 +89,7 @@ class TrackMateJarIT {
 				}
 			for (final String c : List.of(FACTORY, "io.github.contacttracker.trackmate.ContactTrackerDetector",
 				"io.github.contacttracker.trackmate.ContactTrackerConfigurationPanel",
-				"io.github.contacttracker.trackmate.DetectorSettings"))
+				"io.github.contacttracker.settings.TrackMateSettings"))
 				assertNotNull(zip.getEntry(c.replace('.', '/') + ".class"), c + " missing from " + jar);
 		}
 		assertTrue(ours > 10, "too few classes in " + jar);
@@ -137,8 +138,8 @@ class TrackMateJarIT {
 		final Document doc = TrackMateXmlWriter.document(
 			List.of(new Localization(0, 3, 4, 3, 4, 30, 30, 100, 3.1, 0, 1, 0.01, 0.01)), Calibration.PIXELS,
 			new ImageSource("a.tif", "", 16, 16, 1, 1), TrackerParameters.of(50, 8), 1);
-		assertEquals(DetectorSettings.DETECTOR_KEY, doc.getRootElement().getChild("Settings").getChild("DetectorSettings")
+		assertEquals(TrackMateSettings.DETECTOR_KEY, doc.getRootElement().getChild("Settings").getChild("DetectorSettings")
 			.getAttributeValue("DETECTOR_NAME"));
-		assertFalse(DetectorSettings.defaults().isEmpty());
+		assertFalse(TrackMateSettings.defaults().isEmpty());
 	}
 }

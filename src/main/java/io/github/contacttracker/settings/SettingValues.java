@@ -1,0 +1,107 @@
+package io.github.contacttracker.settings;
+
+import java.util.Collections;
+import java.util.LinkedHashMap;
+import java.util.Map;
+
+import io.github.contacttracker.core.Connectivity;
+import io.github.contacttracker.core.Method;
+import io.github.contacttracker.core.TrackerParameters;
+
+/**
+ * A complete, checked set of values of {@link TrackingSettings#ALL}: immutable; every value of its setting's type
+ * and allowed.
+ */
+public final class SettingValues {
+
+	private final Map<Setting<?>, Object> values;
+
+	private SettingValues(final Map<Setting<?>, Object> values) {
+		this.values = Collections.unmodifiableMap(values);
+	}
+
+	/** @return every setting at its default */
+	public static SettingValues defaults() {
+		final Map<Setting<?>, Object> m = new LinkedHashMap<>();
+		for (final Setting<?> s : TrackingSettings.ALL)
+			m.put(s, s.defaultValue());
+		return new SettingValues(m);
+	}
+
+	/**
+	 * @return the values of {@code params} with the given channel and diameter (0: not given)
+	 * @throws io.github.contacttracker.core.InvalidInputException if the channel or diameter is not allowed
+	 */
+	public static SettingValues of(final TrackerParameters params, final int channel, final double diameter) {
+		return defaults().with(TrackingSettings.THRESHOLD, params.threshold()).with(TrackingSettings.R_OUT, params.rOut())
+			.with(TrackingSettings.MIN_AREA, params.minArea()).with(TrackingSettings.MIN_SECOND_AREA, params
+				.minSecondArea()).with(TrackingSettings.CONNECTIVITY, params.connectivity().neighbours()).with(
+					TrackingSettings.METHOD, params.method().key()).with(TrackingSettings.CHANNEL, channel).with(
+						TrackingSettings.DIAMETER, diameter);
+	}
+
+	/**
+	 * @return a copy with {@code setting} set to {@code value}
+	 * @throws io.github.contacttracker.core.InvalidInputException if the value is not allowed
+	 */
+	public <V> SettingValues with(final Setting<V> setting, final V value) {
+		final Map<Setting<?>, Object> m = new LinkedHashMap<>(values);
+		m.put(setting, setting.check(value));
+		return new SettingValues(m);
+	}
+
+	/**
+	 * @return a copy with {@code setting} read from {@code text}
+	 * @throws io.github.contacttracker.core.InvalidInputException naming the setting and the text
+	 */
+	public SettingValues withText(final Setting<?> setting, final String text) {
+		final Map<Setting<?>, Object> m = new LinkedHashMap<>(values);
+		m.put(setting, setting.parse(text));
+		return new SettingValues(m);
+	}
+
+	/** @return the value of {@code setting} */
+	public <V> V get(final Setting<V> setting) {
+		return setting.type().cast(values.get(setting));
+	}
+
+	/** @return the parameters of the core */
+	public TrackerParameters parameters() {
+		return new TrackerParameters(get(TrackingSettings.THRESHOLD), get(TrackingSettings.R_OUT), get(
+			TrackingSettings.MIN_AREA), Connectivity.parse(String.valueOf(get(TrackingSettings.CONNECTIVITY))), get(
+				TrackingSettings.MIN_SECOND_AREA), Method.parse(get(TrackingSettings.METHOD)));
+	}
+
+	/** @return the 1-based channel */
+	public int channel() {
+		return get(TrackingSettings.CHANNEL);
+	}
+
+	/** @return the particle diameter in pixels, 0 when not given */
+	public double diameter() {
+		return get(TrackingSettings.DIAMETER);
+	}
+
+	/** @return "threshold = 100.0, r_out = 20.0, ...", every setting in order */
+	public String echo() {
+		final StringBuilder sb = new StringBuilder();
+		for (final Setting<?> s : TrackingSettings.ALL)
+			sb.append(sb.length() == 0 ? "" : ", ").append(s.name()).append(" = ").append(values.get(s));
+		return sb.toString();
+	}
+
+	@Override
+	public boolean equals(final Object o) {
+		return o instanceof SettingValues && ((SettingValues) o).values.equals(values);
+	}
+
+	@Override
+	public int hashCode() {
+		return values.hashCode();
+	}
+
+	@Override
+	public String toString() {
+		return echo();
+	}
+}

@@ -1,0 +1,183 @@
+package io.github.contacttracker.settings;
+
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+
+import io.github.contacttracker.core.InvalidInputException;
+import io.github.contacttracker.core.TrackerParameters;
+
+/**
+ * The TrackMate form of the tracking settings: a map from {@link Setting#trackMateKey()} ({@code THRESHOLD},
+ * {@code R_OUT}, ..., TrackMate's own {@code TARGET_CHANNEL}) to values of the setting's Java type, derived from
+ * {@link TrackingSettings#ALL}. TrackMate marshals the values with {@code toString()} and its default unmarshalling
+ * goes by the type of the default value, so the types are part of the contract.
+ * <p>
+ * Uses no TrackMate type: the TrackMate XML writer (package {@code io}) and the TrackMate adapter (package
+ * {@code trackmate}) both use it.
+ */
+public final class TrackMateSettings {
+
+	/** The key of the Contact Tracker detector in TrackMate (settings maps, XML files, scripts). */
+	public static final String DETECTOR_KEY = "CONTACT_TRACKER_DETECTOR";
+
+	/** TrackMate's attribute naming the detector in {@code <DetectorSettings>} ({@code DetectorKeys}). */
+	public static final String XML_ATTRIBUTE_DETECTOR_NAME = "DETECTOR_NAME";
+
+	public static final String KEY_TARGET_CHANNEL = TrackingSettings.CHANNEL.trackMateKey();
+	public static final String KEY_THRESHOLD = TrackingSettings.THRESHOLD.trackMateKey();
+	public static final String KEY_R_OUT = TrackingSettings.R_OUT.trackMateKey();
+	public static final String KEY_MIN_AREA = TrackingSettings.MIN_AREA.trackMateKey();
+	public static final String KEY_MIN_SECOND_AREA = TrackingSettings.MIN_SECOND_AREA.trackMateKey();
+	public static final String KEY_CONNECTIVITY = TrackingSettings.CONNECTIVITY.trackMateKey();
+	public static final String KEY_METHOD = TrackingSettings.METHOD.trackMateKey();
+	public static final String KEY_DIAMETER = TrackingSettings.DIAMETER.trackMateKey();
+
+	public static final int DEFAULT_TARGET_CHANNEL = TrackingSettings.CHANNEL.defaultValue();
+
+	private static final List<String> KEYS = TrackingSettings.ALL.stream().map(Setting::trackMateKey).toList();
+
+	private TrackMateSettings() {}
+
+	/** @return every key, in {@link TrackingSettings#ALL} order (the order they are written to XML) */
+	public static List<String> keys() {
+		return KEYS;
+	}
+
+	/** @return the setting of a TrackMate key, or {@code null} */
+	public static Setting<?> setting(final String key) {
+		for (final Setting<?> s : TrackingSettings.ALL)
+			if (s.trackMateKey().equals(key)) return s;
+		return null;
+	}
+
+	/**
+	 * @return the Java type of the value of {@code key}
+	 * @throws InvalidInputException for an unknown key
+	 */
+	public static Class<?> type(final String key) {
+		final Setting<?> s = setting(key);
+		if (s == null) throw new InvalidInputException("unknown Contact Tracker setting " + key);
+		return s.type();
+	}
+
+	/** @return a new, modifiable map of the default settings */
+	public static Map<String, Object> defaults() {
+		return toMap(SettingValues.defaults());
+	}
+
+	/** @return a new, modifiable settings map of {@code values}, in {@link #keys()} order */
+	public static Map<String, Object> toMap(final SettingValues values) {
+		final Map<String, Object> map = new LinkedHashMap<>();
+		for (final Setting<?> s : TrackingSettings.ALL)
+			map.put(s.trackMateKey(), values.get(s));
+		return map;
+	}
+
+	/**
+	 * @param params the localizer parameters
+	 * @param targetChannel the 1-based channel
+	 * @return a new, modifiable settings map, in {@link #keys()} order, without a particle diameter
+	 */
+	public static Map<String, Object> toMap(final TrackerParameters params, final int targetChannel) {
+		return toMap(SettingValues.of(params, targetChannel, 0));
+	}
+
+	/**
+	 * Checks a settings map: every key present, no unknown key, every value non-null, of the right type and
+	 * allowed.
+	 *
+	 * @return {@code null} when the map is fine, else a message naming each problem (one per line)
+	 */
+	public static String check(final Map<String, Object> settings) {
+		if (settings == null) return "Contact Tracker: no settings map given.";
+		final StringBuilder errors = new StringBuilder();
+		for (final Setting<?> s : TrackingSettings.ALL) {
+			final String key = s.trackMateKey();
+			final Object value = settings.get(key);
+			if (value == null) line(errors, (settings.containsKey(key) ? "The value of " + key + " is null" :
+				"Missing setting " + key) + ": expected " + describe(s.type()) + ".");
+			else if (!s.type().isInstance(value)) line(errors, "Setting " + key + " must be " + describe(s.type()) +
+				", not the " + value.getClass().getSimpleName() + " '" + value + "'.");
+			else try {
+				check(s, value);
+			}
+			catch (final InvalidInputException e) {
+				line(errors, "Invalid setting " + key + ": " + e.getMessage() + ".");
+			}
+		}
+		for (final String key : settings.keySet())
+			if (!KEYS.contains(key)) line(errors, "Unknown setting " + key + " (expected " + String.join(", ", KEYS) + ").");
+		return errors.length() > 0 ? errors.toString() : null;
+	}
+
+	@SuppressWarnings("unchecked")
+	private static <V> void check(final Setting<V> s, final Object value) {
+		s.check((V) value);
+	}
+
+	/**
+	 * @return the checked values of a settings map
+	 * @throws InvalidInputException with every problem when the map is incomplete, mistyped or invalid
+	 */
+	@SuppressWarnings({ "unchecked", "rawtypes" })
+	public static SettingValues values(final Map<String, Object> settings) {
+		final String error = check(settings);
+		if (error != null) throw new InvalidInputException(error.replace('\n', ' '));
+		SettingValues v = SettingValues.defaults();
+		for (final Setting s : TrackingSettings.ALL)
+			v = v.with(s, settings.get(s.trackMateKey()));
+		return v;
+	}
+
+	/**
+	 * @return the localizer parameters of a settings map
+	 * @throws InvalidInputException when the map is incomplete, mistyped or invalid
+	 */
+	public static TrackerParameters parameters(final Map<String, Object> settings) {
+		return values(settings).parameters();
+	}
+
+	/**
+	 * @return the 1-based target channel of a settings map
+	 * @throws InvalidInputException when the map is incomplete, mistyped or invalid
+	 */
+	public static int targetChannel(final Map<String, Object> settings) {
+		return values(settings).channel();
+	}
+
+	/**
+	 * Parses the text form of one setting (as TrackMate writes it into XML attributes).
+	 *
+	 * @throws InvalidInputException naming the key and the text when it does not parse or is not allowed
+	 */
+	public static Object parse(final String key, final String text) {
+		final Setting<?> s = setting(key);
+		if (s == null) throw new InvalidInputException("unknown Contact Tracker setting " + key);
+		try {
+			return s.parse(text);
+		}
+		catch (final InvalidInputException e) {
+			throw new InvalidInputException("cannot read " + key + " = '" + text + "': " + e.getMessage(), e);
+		}
+	}
+
+	/** @return a one-line human-readable form of a settings map, keys in {@link #keys()} order */
+	public static String echo(final Map<String, Object> settings) {
+		final StringBuilder sb = new StringBuilder();
+		for (final String key : KEYS)
+			sb.append(sb.length() == 0 ? "" : ", ").append(key).append(" = ").append(settings.get(key));
+		return sb.toString();
+	}
+
+	private static String describe(final Class<?> type) {
+		if (type == Integer.class) return "an Integer";
+		if (type == Double.class) return "a Double";
+		return "a String";
+	}
+
+	private static void line(final StringBuilder sb, final String message) {
+		if (sb.length() > 0) sb.append('\n');
+		sb.append(message);
+	}
+}

@@ -1,0 +1,74 @@
+package io.github.contacttracker.settings;
+
+import java.util.Arrays;
+import java.util.List;
+
+import io.github.contacttracker.core.Method;
+import io.github.contacttracker.core.TrackerParameters;
+import io.github.contacttracker.settings.Setting.Unit;
+
+/**
+ * The settings of a tracking run, each described once ({@link Setting}); every front end derives its own form
+ * from this list: the command line's options and help, the Fiji command's dialog, the TrackMate settings map, its
+ * XML and its panel. {@link SettingValues} holds a set of values.
+ */
+public final class TrackingSettings {
+
+	private TrackingSettings() {}
+
+	/** Pixels at or above it form the active areas. */
+	public static final Setting<Double> THRESHOLD = Setting.decimal("threshold", "Threshold",
+		"Grey level: pixels at or above it form the active areas, one per particle. It must be above the brightest " +
+			"point between two touching particles (the profile helper suggests it).", 100, Double.NEGATIVE_INFINITY,
+		true, "a finite grey level", Unit.GREY_LEVEL);
+
+	/** How far a particle's image reaches. */
+	public static final Setting<Double> R_OUT = Setting.decimal("r_out", "r_out",
+		"How far a particle's image reaches: where its profile has returned to background, plus 2 pixels.", 20, 0,
+		false, "a positive number of pixels", Unit.PIXELS);
+
+	/** Smaller active areas are noise. */
+	public static final Setting<Integer> MIN_AREA = Setting.integer("min_area", "Min area",
+		"Active areas smaller than this are noise and dropped.", TrackerParameters.DEFAULT_MIN_AREA, 1,
+		"at least 1 pixel", Unit.PIXEL_COUNT, null);
+
+	/** Below it the paper's second pass falls back to the first-pass centre. */
+	public static final Setting<Integer> MIN_SECOND_AREA = Setting.integer("min_second_area", "Min second area",
+		"paper and iterative: below this many pixels left outside the neighbours' discs, a spot keeps its " +
+			"first-pass centre and is flagged FELL_BACK.", TrackerParameters.DEFAULT_MIN_SECOND_AREA, 3,
+		"at least 3 pixels", Unit.PIXEL_COUNT, null);
+
+	/** Pixel neighbourhood of the labelling. */
+	public static final Setting<Integer> CONNECTIVITY = Setting.choice("connectivity", "Connectivity",
+		"Pixel neighbourhood of the active areas: 8 (default) or 4.", Integer.class, 8, List.of(8, 4));
+
+	/** How centres are computed. */
+	public static final Setting<String> METHOD = Setting.choice("method", "Method",
+		"How centres are computed: fit (default: joint fit with the measured profile, unbiased at contact), " +
+			"deblend, iterative, paper (the paper's two passes), first (one pass, biased near contact).", String.class,
+		Method.DEFAULT.key(), Arrays.stream(Method.values()).map(Method::key).toList());
+
+	/** The particles' diameter, for RADIUS. */
+	public static final Setting<Double> DIAMETER = Setting.decimal("diameter", "Particle diameter",
+		"The particles' diameter in pixels (the profile helper measures it): RADIUS is half of it. 0 = not given: " +
+			"RADIUS is then the active area's equivalent radius (ACTIVE_RADIUS), smaller than the particle.", 0, 0, true,
+		"a number of pixels >= 0 (0 = not given)", Unit.PIXELS);
+
+	/** The channel tracked. */
+	public static final Setting<Integer> CHANNEL = Setting.integer("channel", "Channel",
+		"The channel to track, 1-based; single-channel images have only channel 1.", 1, 1, "at least 1 (1-based)",
+		Unit.NONE, "TARGET_CHANNEL");
+
+	/** Every setting, in the order front ends list them. */
+	public static final List<Setting<?>> ALL = List.of(THRESHOLD, R_OUT, MIN_AREA, MIN_SECOND_AREA, CONNECTIVITY,
+		METHOD, DIAMETER, CHANNEL);
+
+	/**
+	 * @return the setting named {@code name} ({@code r_out}), or {@code null}
+	 */
+	public static Setting<?> named(final String name) {
+		for (final Setting<?> s : ALL)
+			if (s.name().equals(name)) return s;
+		return null;
+	}
+}

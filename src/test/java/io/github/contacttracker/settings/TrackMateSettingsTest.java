@@ -1,0 +1,89 @@
+package io.github.contacttracker.settings;
+
+import io.github.contacttracker.settings.TrackMateSettings;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.HashMap;
+import java.util.Map;
+
+import org.junit.jupiter.api.Test;
+
+import io.github.contacttracker.core.Connectivity;
+import io.github.contacttracker.core.Method;
+import io.github.contacttracker.core.TrackerParameters;
+
+class TrackMateSettingsTest {
+
+	@Test
+	void defaultsAreCompleteValidAndOfTheDeclaredTypes() {
+		final Map<String, Object> d = TrackMateSettings.defaults();
+		assertEquals(TrackMateSettings.keys(), java.util.List.copyOf(d.keySet()));
+		for (final String key : TrackMateSettings.keys())
+			assertEquals(TrackMateSettings.type(key), d.get(key).getClass(), key);
+		assertNull(TrackMateSettings.check(d));
+		assertEquals(1, d.get(TrackMateSettings.KEY_TARGET_CHANNEL));
+	}
+
+	@Test
+	void mapAndParametersRoundTripForEveryMethodAndConnectivity() {
+		for (final Method m : Method.values())
+			for (final Connectivity c : Connectivity.values()) {
+				final TrackerParameters p = new TrackerParameters(123.456789, 7.25, 13, c, 42, m);
+				final Map<String, Object> map = TrackMateSettings.toMap(p, 3);
+				assertNull(TrackMateSettings.check(map));
+				assertEquals(p, TrackMateSettings.parameters(map));
+				assertEquals(3, TrackMateSettings.targetChannel(map));
+				assertEquals(m.key(), map.get(TrackMateSettings.KEY_METHOD));
+			}
+	}
+
+	@Test
+	void checkNamesMissingNullWronglyTypedAndUnknownSettings() {
+		final Map<String, Object> map = new HashMap<>(TrackMateSettings.defaults());
+		map.remove(TrackMateSettings.KEY_R_OUT);
+		map.put(TrackMateSettings.KEY_MIN_AREA, null);
+		map.put(TrackMateSettings.KEY_THRESHOLD, 100); // Integer, not Double
+		map.put(TrackMateSettings.KEY_METHOD, Method.PAPER); // enum, not String
+		map.put("RADIUS", 2.5);
+		final String error = TrackMateSettings.check(map);
+		assertNotNull(error);
+		assertTrue(error.contains("Missing setting R_OUT"), error);
+		assertTrue(error.contains("MIN_AREA is null"), error);
+		assertTrue(error.contains("THRESHOLD must be a Double, not the Integer '100'"), error);
+		assertTrue(error.contains("METHOD must be a String"), error);
+		assertTrue(error.contains("Unknown setting RADIUS"), error);
+		assertEquals(5, error.split("\n").length, error);
+	}
+
+	@Test
+	void checkNamesInvalidValues() {
+		final Map<String, Object> map = new HashMap<>(TrackMateSettings.defaults());
+		map.put(TrackMateSettings.KEY_R_OUT, -3.0);
+		assertTrue(TrackMateSettings.check(map).contains("r_out"), TrackMateSettings.check(map));
+		map.put(TrackMateSettings.KEY_R_OUT, 5.0);
+		map.put(TrackMateSettings.KEY_METHOD, "bogus");
+		assertTrue(TrackMateSettings.check(map).contains("bogus"), TrackMateSettings.check(map));
+		map.put(TrackMateSettings.KEY_METHOD, "first");
+		map.put(TrackMateSettings.KEY_CONNECTIVITY, 6);
+		assertTrue(TrackMateSettings.check(map).contains("connectivity"), TrackMateSettings.check(map));
+		map.put(TrackMateSettings.KEY_CONNECTIVITY, 4);
+		map.put(TrackMateSettings.KEY_TARGET_CHANNEL, 0);
+		assertTrue(TrackMateSettings.check(map).contains("TARGET_CHANNEL"), TrackMateSettings.check(map));
+		assertNotNull(TrackMateSettings.check(null));
+	}
+
+	@Test
+	void parseReadsTheTextFormAndNamesBadText() {
+		assertEquals(12.5, TrackMateSettings.parse(TrackMateSettings.KEY_THRESHOLD, "12.5"));
+		assertEquals(8, TrackMateSettings.parse(TrackMateSettings.KEY_CONNECTIVITY, " 8 "));
+		assertEquals("paper", TrackMateSettings.parse(TrackMateSettings.KEY_METHOD, "paper"));
+		final IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+			() -> TrackMateSettings.parse(TrackMateSettings.KEY_MIN_AREA, "12.5"));
+		assertTrue(e.getMessage().contains("MIN_AREA") && e.getMessage().contains("12.5"), e.getMessage());
+		assertThrows(IllegalArgumentException.class, () -> TrackMateSettings.type("NOPE"));
+	}
+}
