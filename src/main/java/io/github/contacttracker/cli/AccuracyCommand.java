@@ -1,5 +1,6 @@
 package io.github.contacttracker.cli;
 
+import io.github.contacttracker.core.InvalidInputException;
 import java.io.IOException;
 import java.io.OutputStreamWriter;
 import java.io.PrintStream;
@@ -40,7 +41,7 @@ final class AccuracyCommand {
 	int run(final String[] args) throws IOException {
 		final Options o = new Options(args, OPTIONS);
 		final int reps = o.integer("reps", 200);
-		if (reps < 2) throw new IllegalArgumentException("--reps must be at least 2");
+		if (reps < 2) throw new InvalidInputException("--reps must be at least 2");
 		final int threads = o.integer("threads", 0);
 		final Path csv = o.outputPath("csv");
 		final List<ParticleType> types = new ArrayList<>();
@@ -108,10 +109,10 @@ final class AccuracyCommand {
 				v[i] = Double.parseDouble(parts[i].trim());
 			}
 			catch (final NumberFormatException e) {
-				throw new IllegalArgumentException("--separations must be numbers separated by commas, not '" + text +
+				throw new InvalidInputException("--separations must be numbers separated by commas, not '" + text +
 					"'");
 			}
-			if (!(v[i] > 0)) throw new IllegalArgumentException("--separations must be positive (1 = contact)");
+			if (!(v[i] > 0)) throw new InvalidInputException("--separations must be positive (1 = contact)");
 		}
 		return v;
 	}

@@ -1,5 +1,6 @@
 package io.github.contacttracker.cli;
 
+import io.github.contacttracker.core.InvalidInputException;
 import java.io.PrintStream;
 import java.util.List;
 import java.util.Locale;
@@ -34,7 +35,7 @@ final class BenchCommand {
 		final int frames = o.integer("frames", 400), rounds = o.integer("rounds", 5);
 		final int profileFrames = Math.min(frames, o.integer("profile-frames", 64));
 		if (frames < 1 || rounds < 1 || profileFrames < 1)
-			throw new IllegalArgumentException("--frames, --rounds and --profile-frames must be at least 1");
+			throw new InvalidInputException("--frames, --rounds and --profile-frames must be at least 1");
 		final ParticleType type = PaperParticles.silica553();
 		final SimulatedStack<UnsignedByteType> stack = SimulatedStack.benchmarkStack(type, frames, 7);
 		final List<ArrayImg<UnsignedByteType, ?>> imgs = stack.frames();

@@ -1,5 +1,8 @@
 package io.github.contacttracker.cli;
 
+import java.io.UncheckedIOException;
+
+import io.github.contacttracker.core.InvalidInputException;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.util.Arrays;
@@ -21,10 +24,7 @@ public final class ContactTrackerCli {
 		"  demo                       simulate pairs and triples of 5.53 um particles from apart to contact,", //
 		"                             track them, print the distance errors, write an overlay PNG", //
 		"      [--reps N] [--out-dir DIR] [--threads N]", //
-		"  track INPUT.tif --threshold T --r-out R", //
-		"      [--min-area N] [--min-second-area N] [--connectivity 4|8] [--method M] [--channel C]", //
-		"      [--threads N] [--csv OUT.csv] [--trackmate-xml OUT.xml]", //
-		"                             localize the particles of every frame; CSV to stdout without --csv", //
+		TrackCommand.usage(), //
 		"  simulate --scenario pair|triple --separation R_OVER_D --out stack.tif --truth truth.csv", //
 		"      [--frames N] [--seed S] [--particle 5.53|2.06] [--bit-depth 8|16]", //
 		"  bench [--frames N]          speed on a 512x512 8-bit stack with 12 particles", //
@@ -67,7 +67,7 @@ public final class ContactTrackerCli {
 					return EXIT_BAD_INPUT;
 			}
 		}
-		catch (final IllegalArgumentException | IOException e) {
+		catch (final InvalidInputException | IOException | UncheckedIOException e) {
 			err.println("contact-tracker: error: " + oneLine(e.getMessage()));
 			return EXIT_BAD_INPUT;
 		}
@@ -75,8 +75,15 @@ public final class ContactTrackerCli {
 			err.println("contact-tracker: cancelled");
 			return 130;
 		}
-		catch (final RuntimeException | OutOfMemoryError e) {
-			err.println("contact-tracker: failed: " + e);
+		catch (final OutOfMemoryError e) {
+			err.println("contact-tracker: error: out of memory (" + oneLine(e.getMessage()) + "): give Java more with " +
+				"CONTACT_TRACKER_JAVA_OPTS=-Xmx8g, or use fewer --threads");
+			return 1;
+		}
+		catch (final RuntimeException | Error e) {
+			// not the user's input: a bug. Say so, with everything a bug report needs.
+			err.println("contact-tracker: internal error (please report it with the trace below): " + e);
+			e.printStackTrace(err);
 			return 1;
 		}
 	}

@@ -1,5 +1,6 @@
 package io.github.contacttracker.cli;
 
+import io.github.contacttracker.core.InvalidInputException;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.file.Files;
@@ -38,7 +39,7 @@ final class DemoCommand {
 	int run(final String[] args) throws IOException {
 		final Options o = new Options(args, OPTIONS);
 		final int reps = o.integer("reps", 50);
-		if (reps < 2) throw new IllegalArgumentException("--reps must be at least 2");
+		if (reps < 2) throw new InvalidInputException("--reps must be at least 2");
 		final Path dir = Path.of(o.string("out-dir", "demo-output"));
 		final int threads = o.integer("threads", 0);
 		Files.createDirectories(dir);

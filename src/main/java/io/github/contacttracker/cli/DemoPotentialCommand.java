@@ -1,5 +1,6 @@
 package io.github.contacttracker.cli;
 
+import io.github.contacttracker.core.InvalidInputException;
 import java.awt.Color;
 import java.io.IOException;
 import java.io.PrintStream;
@@ -37,10 +38,10 @@ final class DemoPotentialCommand {
 	int run(final String[] args) throws IOException {
 		final Options o = new Options(args, OPTIONS);
 		if (!o.positional().isEmpty())
-			throw new IllegalArgumentException("demo-potential takes no positional argument: '" + o.positional().get(0) +
+			throw new InvalidInputException("demo-potential takes no positional argument: '" + o.positional().get(0) +
 				"'");
 		final int frames = o.integer("frames", 300);
-		if (frames < 10) throw new IllegalArgumentException("--frames must be at least 10");
+		if (frames < 10) throw new InvalidInputException("--frames must be at least 10");
 		final ParticleType type = SimulateCommand.particle(o.string("particle", "2.06"));
 		final Path dir = Path.of(o.string("out-dir", "demo-output"));
 		final int threads = o.integer("threads", 0);

@@ -1,5 +1,7 @@
 package io.github.contacttracker.cli;
 
+import io.github.contacttracker.io.AtomicFile;
+import io.github.contacttracker.core.InvalidInputException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -31,14 +33,14 @@ final class Options {
 					name = name.substring(0, eq);
 				}
 				else {
-					if (i + 1 >= args.length) throw new IllegalArgumentException("option --" + name + " needs a value");
+					if (i + 1 >= args.length) throw new InvalidInputException("option --" + name + " needs a value");
 					value = args[++i];
 				}
 				if (!known.contains(name))
-					throw new IllegalArgumentException("unknown option --" + name + " (valid: --" + String.join(", --",
+					throw new InvalidInputException("unknown option --" + name + " (valid: --" + String.join(", --",
 						known) + ")");
 				if (values.put(name, value) != null)
-					throw new IllegalArgumentException("option --" + name + " given twice");
+					throw new InvalidInputException("option --" + name + " given twice");
 			}
 			else positional.add(a);
 		}
@@ -58,7 +60,7 @@ final class Options {
 
 	String required(final String name) {
 		final String v = values.get(name);
-		if (v == null) throw new IllegalArgumentException("option --" + name + " is required");
+		if (v == null) throw new InvalidInputException("option --" + name + " is required");
 		return v;
 	}
 
@@ -76,7 +78,7 @@ final class Options {
 			return Integer.parseInt(values.get(name).trim());
 		}
 		catch (final NumberFormatException e) {
-			throw new IllegalArgumentException("option --" + name + " must be a whole number, not '" + values.get(name) +
+			throw new InvalidInputException("option --" + name + " must be a whole number, not '" + values.get(name) +
 				"'");
 		}
 	}
@@ -87,7 +89,7 @@ final class Options {
 			return Long.parseLong(values.get(name).trim());
 		}
 		catch (final NumberFormatException e) {
-			throw new IllegalArgumentException("option --" + name + " must be a whole number, not '" + values.get(name) +
+			throw new InvalidInputException("option --" + name + " must be a whole number, not '" + values.get(name) +
 				"'");
 		}
 	}
@@ -103,10 +105,7 @@ final class Options {
 	 */
 	Path outputPath(final String name) {
 		final Path file = path(name);
-		if (file == null) return null;
-		final Path dir = file.toAbsolutePath().getParent();
-		if (dir == null || !java.nio.file.Files.isDirectory(dir))
-			throw new IllegalArgumentException("cannot write " + file + ": folder " + dir + " does not exist");
+		if (file != null) AtomicFile.checkFolder("--" + name, file);
 		return file;
 	}
 
@@ -117,7 +116,7 @@ final class Options {
 			return v;
 		}
 		catch (final NumberFormatException e) {
-			throw new IllegalArgumentException("option --" + name + " must be a number, not '" + text + "'");
+			throw new InvalidInputException("option --" + name + " must be a number, not '" + text + "'");
 		}
 	}
 }

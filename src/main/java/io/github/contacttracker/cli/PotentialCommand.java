@@ -1,5 +1,6 @@
 package io.github.contacttracker.cli;
 
+import io.github.contacttracker.core.InvalidInputException;
 import java.io.IOException;
 import java.io.OutputStreamWriter;
 import java.io.PrintStream;
@@ -38,12 +39,12 @@ final class PotentialCommand {
 	int run(final String[] args) throws IOException {
 		final Options o = new Options(args, OPTIONS);
 		if (o.positional().size() != 1)
-			throw new IllegalArgumentException("potential needs exactly one spots CSV file, got " + o.positional().size());
+			throw new InvalidInputException("potential needs exactly one spots CSV file, got " + o.positional().size());
 		final Path input = Path.of(o.positional().get(0));
 		final double bin = o.number("bin"), rMax = o.number("r-max");
 		final Path csv = o.outputPath("csv"), png = o.outputPath("png");
 		if (o.has("width") != o.has("height"))
-			throw new IllegalArgumentException("give both --width and --height of the field of view, or neither (then " +
+			throw new InvalidInputException("give both --width and --height of the field of view, or neither (then " +
 				"it is inferred from the spots)");
 		final SpotSet.Selection selection = new SpotSet.Selection(o.integer("start-frame", 0), dropFlagged(o.string(
 			"flagged", "drop")));
@@ -55,10 +56,10 @@ final class PotentialCommand {
 			spots = SpotSet.fromColumns(table.columns(), selection);
 		}
 		catch (final IllegalArgumentException e) {
-			throw new IllegalArgumentException(input + ": " + e.getMessage());
+			throw new InvalidInputException(input + ": " + e.getMessage());
 		}
 		if (spots.size() == 0)
-			throw new IllegalArgumentException(input + ": no spot left (" + spots.flaggedLeftOut() + " flagged, " + spots
+			throw new InvalidInputException(input + ": no spot left (" + spots.flaggedLeftOut() + " flagged, " + spots
 				.earlyLeftOut() + " before the start frame)");
 		final FieldOfView field = o.has("width") ? FieldOfView.of(o.number("width"), o.number("height")) : FieldOfView
 			.inferred(spots.allX(), spots.allY());
@@ -101,7 +102,7 @@ final class PotentialCommand {
 		switch (text.trim().toLowerCase(Locale.ROOT)) {
 			case "drop": return true;
 			case "keep": return false;
-			default: throw new IllegalArgumentException("--flagged must be drop or keep, not '" + text + "'");
+			default: throw new InvalidInputException("--flagged must be drop or keep, not '" + text + "'");
 		}
 	}
 
@@ -115,6 +116,6 @@ final class PotentialCommand {
 		catch (final NumberFormatException e) {
 			// reported below
 		}
-		throw new IllegalArgumentException("--zero must be a range FROM,TO of r (FROM <= TO), not '" + text + "'");
+		throw new InvalidInputException("--zero must be a range FROM,TO of r (FROM <= TO), not '" + text + "'");
 	}
 }

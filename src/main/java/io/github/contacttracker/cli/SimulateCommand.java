@@ -1,5 +1,6 @@
 package io.github.contacttracker.cli;
 
+import io.github.contacttracker.core.InvalidInputException;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.file.Files;
@@ -29,14 +30,14 @@ final class SimulateCommand {
 	int run(final String[] args) throws IOException {
 		final Options o = new Options(args, OPTIONS);
 		if (!o.positional().isEmpty())
-			throw new IllegalArgumentException("simulate takes no positional argument: '" + o.positional().get(0) + "'");
+			throw new InvalidInputException("simulate takes no positional argument: '" + o.positional().get(0) + "'");
 		final Scenario scenario = scenario(o.required("scenario"));
 		final double separation = o.number("separation");
-		if (!(separation > 0)) throw new IllegalArgumentException("--separation must be positive (1 = contact)");
+		if (!(separation > 0)) throw new InvalidInputException("--separation must be positive (1 = contact)");
 		final int frames = o.integer("frames", 100);
-		if (frames < 1) throw new IllegalArgumentException("--frames must be at least 1");
+		if (frames < 1) throw new InvalidInputException("--frames must be at least 1");
 		final int bits = o.integer("bit-depth", 8);
-		if (bits != 8 && bits != 16) throw new IllegalArgumentException("--bit-depth must be 8 or 16");
+		if (bits != 8 && bits != 16) throw new InvalidInputException("--bit-depth must be 8 or 16");
 		final ParticleType type = particle(o.string("particle", "5.53"));
 		o.required("out");
 		o.required("truth");
@@ -62,14 +63,14 @@ final class SimulateCommand {
 	static Scenario scenario(final String text) {
 		for (final Scenario s : Scenario.values())
 			if (s.name().equalsIgnoreCase(text.trim())) return s;
-		throw new IllegalArgumentException("--scenario must be pair or triple, not '" + text + "'");
+		throw new InvalidInputException("--scenario must be pair or triple, not '" + text + "'");
 	}
 
 	static ParticleType particle(final String text) {
 		switch (text.trim()) {
 			case "5.53": return PaperParticles.silica553();
 			case "2.06": return PaperParticles.silica206();
-			default: throw new IllegalArgumentException("--particle must be 5.53 or 2.06 (um), not '" + text + "'");
+			default: throw new InvalidInputException("--particle must be 5.53 or 2.06 (um), not '" + text + "'");
 		}
 	}
 

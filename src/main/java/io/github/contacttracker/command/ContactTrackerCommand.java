@@ -1,5 +1,11 @@
 package io.github.contacttracker.command;
 
+import io.github.contacttracker.settings.SettingValues;
+import io.github.contacttracker.pipeline.TrackingResult;
+import io.github.contacttracker.pipeline.TrackingPipeline;
+import io.github.contacttracker.pipeline.Outputs;
+import io.github.contacttracker.pipeline.FrameSource;
+import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.settings.TrackMateSettings;
 import io.github.contacttracker.settings.TrackingSettings;
 import java.awt.GraphicsEnvironment;
@@ -172,73 +178,64 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 		}
 	}
 
+	/** @return the tracking settings of this run, each checked by its descriptor ({@link TrackingSettings}) */
+	private SettingValues settings() {
+		return SettingValues.defaults().with(TrackingSettings.THRESHOLD, threshold).with(TrackingSettings.R_OUT, r_out)
+			.with(TrackingSettings.MIN_AREA, min_area).with(TrackingSettings.MIN_SECOND_AREA, min_second_area).withText(
+				TrackingSettings.CONNECTIVITY, connectivity).withText(TrackingSettings.METHOD, method).with(
+					TrackingSettings.DIAMETER, diameter).with(TrackingSettings.CHANNEL, channel);
+	}
+
 	/** @return the parameters as the core takes them, validated */
 	private TrackerParameters parameters() {
-		return new TrackerParameters(threshold, r_out, min_area, Connectivity.parse(connectivity), min_second_area,
-			Method.parse(method));
+		return settings().parameters();
 	}
 
 	/** Checks every input that does not depend on the image (before SciJava remembers the values). */
 	@Override
 	public void checkInputs() {
-		parameters();
+		settings();
 		checkOwnInputs();
 	}
 
 	/** Checks what the core does not: the command's own inputs. */
 	private void checkOwnInputs() {
 		if (pair_cutoff < 0 || !Double.isFinite(pair_cutoff))
-			throw new IllegalArgumentException("pair_cutoff must be a distance >= 0 (0 = no pair table), not " +
+			throw new InvalidInputException("pair_cutoff must be a distance >= 0 (0 = no pair table), not " +
 				pair_cutoff);
-		if (threads < 0) throw new IllegalArgumentException("threads must be >= 0 (0 = ImageJ's setting), not " +
+		if (threads < 0) throw new InvalidInputException("threads must be >= 0 (0 = ImageJ's setting), not " +
 			threads);
-		if (diameter < 0 || !Double.isFinite(diameter))
-			throw new IllegalArgumentException("diameter must be a number of pixels >= 0 (0 = not given), not " +
-				diameter);
 		final String r = results == null ? "" : results.trim();
 		if (!r.equals(RESULTS_SPOTS) && !r.equals(RESULTS_PAIRS) && !r.equals(RESULTS_NONE))
-			throw new IllegalArgumentException("results must be one of " + RESULTS_SPOTS + ", " + RESULTS_PAIRS + ", " +
+			throw new InvalidInputException("results must be one of " + RESULTS_SPOTS + ", " + RESULTS_PAIRS + ", " +
 				RESULTS_NONE + ", not '" + results + "'");
 		if (r.equals(RESULTS_PAIRS) && pair_cutoff == 0)
-			throw new IllegalArgumentException("results=pairs needs pair_cutoff > 0 (the distance up to which pairs are " +
+			throw new InvalidInputException("results=pairs needs pair_cutoff > 0 (the distance up to which pairs are " +
 				"listed)");
 	}
 
-	/** @return the image's frames, checked against the parameters */
-	private ImagePlusFrames frames(final TrackerParameters params) {
-		final ImagePlusFrames frames = ImagePlusFrames.of(imp, channel);
-		final double[] range = frames.dataRange();
-		if (params.threshold() < range[0] || params.threshold() > range[1])
-			throw new IllegalArgumentException(String.format(Locale.ROOT,
-				"threshold %s is outside the data range [%s, %s] of '%s'", fmt(params.threshold()), fmt(range[0]), fmt(
-					range[1]), imp.getTitle()));
-		return frames;
-	}
-
 	private void analyse() throws IOException {
-		final TrackerParameters params = parameters();
+		final SettingValues settings = settings();
+		final TrackerParameters params = settings.parameters();
 		checkOwnInputs();
+		final ImagePlusFrames frames = ImagePlusFrames.of(imp, channel);
 		final File csvFile = given(csv), xmlFile = given(trackmate_xml);
-		checkFolder("csv", csvFile);
-		checkFolder("trackmate_xml", xmlFile);
-		final ImagePlusFrames frames = frames(params);
+		final Outputs outputs = new Outputs(csvFile == null ? null : csvFile.toPath(), xmlFile == null ? null : xmlFile
+			.toPath(), xmlFile == null ? null : source(imp, frames));
 
 		final int count = frames.frameCount();
 		final Thread caller = Thread.currentThread();
 		final BooleanSupplier cancelled = () -> isCanceled() || caller.isInterrupted() || IJ.escapePressed();
-		final StackTracker tracker = new StackTracker(params);
 		progress(0, count);
-		final List<FrameResult> found = track(tracker, frames.frames(), overlay, cancelled);
-		final List<Localization> all = withDiameter(StackTracker.spots(found));
-
-		// everything is computed before anything is written or shown: a failure leaves no half-done output
+		// checks, tracking and both files, all or nothing; nothing is shown before everything is computed
+		final TrackingResult result = new TrackingPipeline(settings).run(FrameSource.of(frames, imp.getTitle()),
+			outputs, threads > 0 ? threads : Prefs.getThreads(), overlay, this::progress, cancelled);
+		final List<FrameResult> found = result.frames();
+		final List<Localization> all = result.spots();
 		final TitledResultsTable spotTable = SpotTables.spots(all, frames.calibration());
 		final List<PairDistances.Pair> pairList = pair_cutoff > 0 ? PairDistances.within(all, frames.calibration(),
 			pair_cutoff) : null;
 		final TitledResultsTable pairTable = pairList == null ? null : SpotTables.pairs(pairList);
-		if (csvFile != null) SpotCsvWriter.write(csvFile.toPath(), all, frames.calibration());
-		if (xmlFile != null) TrackMateXmlWriter.write(xmlFile.toPath(), all, frames.calibration(), source(
-			imp, frames), params, frames.channel());
 		if (overlay) SpotOverlay.show(imp, SpotOverlay.rois(found, params.rOut(), SpotOverlay.placer(imp)));
 
 		// We show the tables ourselves (or not); ShownOutputs keeps SciJava from displaying them again.
@@ -255,11 +252,7 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 			// refresh an open Results window; none is opened, the named tables show the same
 			if (system != null && WindowManager.getWindow("Results") != null) system.show("Results");
 		}
-		int flagged = 0;
-		for (final Localization s : all)
-			if (s.isFlagged()) flagged++;
-		final String summary = String.format(Locale.ROOT, "%s: %d spots in %d frame%s of '%s', %d flagged", TITLE,
-			all.size(), count, count == 1 ? "" : "s", imp.getTitle(), flagged);
+		final String summary = TITLE + ": " + result.summary(imp.getTitle());
 		log.info(summary);
 		// the Log window (standard output headless): where ImageJ users and batch macros see results
 		IJ.log(summary);
@@ -270,15 +263,6 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 		MacroFailure.succeeded();
 	}
 
-	/** @return the spots, their radius set to half the particle diameter when one was given */
-	private List<Localization> withDiameter(final List<Localization> spots) {
-		if (diameter <= 0) return spots;
-		final List<Localization> out = new ArrayList<>(spots.size());
-		for (final Localization s : spots)
-			out.add(s.withRadius(diameter / 2));
-		return out;
-	}
-
 	/**
 	 * Shows the spots and {@code r_out} discs of the current frame as the dialog's values change (called by
 	 * Fiji's dialog). Invalid values show nothing new; {@link #cancel()} puts the overlay back as it was.
@@ -287,11 +271,13 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 	public void preview() {
 		if (imp == null) return;
 		try {
-			final TrackerParameters params = parameters();
-			final ImagePlusFrames frames = frames(params);
+			final SettingValues settings = settings();
+			final ImagePlusFrames frames = ImagePlusFrames.of(imp, channel);
 			final int t = currentFrame(frames.frameCount());
-			final FrameResult r = track(new StackTracker(params), frames.frames().subList(t, t + 1), true, () -> false)
-				.get(0);
+			// the shown frame alone, through the same pipeline as a run (no file, no data-range pass over the stack)
+			final FrameResult r = new TrackingPipeline(settings).run(FrameSource.of(frames, imp.getTitle()).only(t), true)
+				.frames().get(0);
+			final TrackerParameters params = settings.parameters();
 			if (!previewShown) {
 				beforePreview = imp.getOverlay() == null ? null : imp.getOverlay().duplicate();
 				previewShown = true;
@@ -328,15 +314,6 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 		return Math.max(0, Math.min(count - 1, t));
 	}
 
-	@SuppressWarnings({ "unchecked", "rawtypes" })
-	private List<FrameResult> track(final StackTracker tracker, final List<? extends RandomAccessibleInterval<?>> frames,
-		final boolean keepRegions, final BooleanSupplier cancelled)
-	{
-		final List<RandomAccessibleInterval> list = (List) frames;
-		return StackTracker.withThreads(threads > 0 ? threads : Prefs.getThreads(), () -> tracker.track(list
-			.size(), t -> list.get(t), keepRegions, this::progress, cancelled));
-	}
-
 	private void progress(final int done, final int count) {
 		// methods that measure the profile pass over the stack several times: count is all passes' frames
 		if (status != null) status.showStatus(done, count, "Contact Tracker: " + (100 * done / Math.max(1, count)) +
@@ -365,14 +342,6 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 	/** @return the file, or null when none was given (an empty file field gives an empty path) */
 	private static File given(final File file) {
 		return file == null || file.getPath().isBlank() ? null : file;
-	}
-
-	private static void checkFolder(final String name, final File file) {
-		if (file == null) return;
-		final Path dir = file.toPath().toAbsolutePath().getParent();
-		if (dir == null || !Files.isDirectory(dir))
-			throw new IllegalArgumentException("cannot write " + name + " " + file + ": folder " + dir +
-				" does not exist");
 	}
 
 	/** The image as TrackMate's XML names it: its file when it was opened from one. */

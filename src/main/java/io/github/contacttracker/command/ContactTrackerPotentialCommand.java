@@ -1,5 +1,6 @@
 package io.github.contacttracker.command;
 
+import io.github.contacttracker.core.InvalidInputException;
 import java.awt.GraphicsEnvironment;
 import java.io.File;
 import java.io.IOException;
@@ -107,9 +108,9 @@ public class ContactTrackerPotentialCommand extends ContextCommand {
 	}
 
 	private void analyse() throws IOException {
-		if (!(bin > 0)) throw new IllegalArgumentException("bin must be a positive width");
+		if (!(bin > 0)) throw new InvalidInputException("bin must be a positive width");
 		if ((width > 0) != (height > 0))
-			throw new IllegalArgumentException("give both the field's width and height, or neither (0: inferred)");
+			throw new InvalidInputException("give both the field's width and height, or neither (0: inferred)");
 		String unit = "";
 		final Map<String, double[]> columns;
 		final String source;
@@ -126,7 +127,7 @@ public class ContactTrackerPotentialCommand extends ContextCommand {
 		else {
 			final String title = table == null || table.isBlank() ? SpotTables.SPOTS_TITLE : table;
 			final ResultsTable rt = ResultsTable.getResultsTable(title);
-			if (rt == null) throw new IllegalArgumentException("no open table titled '" + title + "': track first, open " +
+			if (rt == null) throw new InvalidInputException("no open table titled '" + title + "': track first, open " +
 				"a spots CSV, or give the csv file");
 			columns = columns(rt);
 			source = title;
@@ -136,9 +137,9 @@ public class ContactTrackerPotentialCommand extends ContextCommand {
 			set = SpotSet.fromColumns(columns, new SpotSet.Selection(start_frame, skip_flagged));
 		}
 		catch (final IllegalArgumentException e) {
-			throw new IllegalArgumentException(source + ": " + e.getMessage());
+			throw new InvalidInputException(source + ": " + e.getMessage());
 		}
-		if (set.size() == 0) throw new IllegalArgumentException(source + ": no spot left");
+		if (set.size() == 0) throw new InvalidInputException(source + ": no spot left");
 		final FieldOfView field = width > 0 ? FieldOfView.of(width, height) : FieldOfView.inferred(set.allX(), set
 			.allY());
 		PairCorrelation.Result r = PairCorrelation.compute(set, field, bin, r_max);

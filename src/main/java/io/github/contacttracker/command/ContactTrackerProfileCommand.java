@@ -1,5 +1,6 @@
 package io.github.contacttracker.command;
 
+import io.github.contacttracker.core.InvalidInputException;
 import java.awt.Color;
 import java.awt.GraphicsEnvironment;
 import java.awt.Point;
@@ -93,7 +94,7 @@ public class ContactTrackerProfileCommand extends ContextCommand {
 	}
 
 	private void analyse() {
-		if (imp == null) throw new IllegalArgumentException("no image");
+		if (imp == null) throw new InvalidInputException("no image");
 		final double[] point = point(imp.getRoi());
 		final int[] position = imp.convertIndexToPosition(imp.getCurrentSlice());
 		final int frame = (imp.getNFrames() > 1 ? position[2] : position[1]) - 1;
@@ -121,15 +122,15 @@ public class ContactTrackerProfileCommand extends ContextCommand {
 	/** @return the marked point in pixel units, TrackMate's convention (pixel (0,0)'s centre at 0,0) */
 	static double[] point(final Roi roi) {
 		if (roi == null)
-			throw new IllegalArgumentException("no point on the image: click on an isolated particle with the point " +
+			throw new InvalidInputException("no point on the image: click on an isolated particle with the point " +
 				"tool first (in a macro: makePoint(x, y))");
 		if (roi instanceof PointRoi) {
 			final Point[] p = roi.getContainedPoints();
-			if (p.length == 0) throw new IllegalArgumentException("the point selection is empty");
+			if (p.length == 0) throw new InvalidInputException("the point selection is empty");
 			return new double[] { p[0].x, p[0].y };
 		}
 		if (!roi.isArea())
-			throw new IllegalArgumentException("the selection is a line: click on an isolated particle with the " +
+			throw new InvalidInputException("the selection is a line: click on an isolated particle with the " +
 				"point tool");
 		final double[] c = roi.getContourCentroid();
 		return new double[] { c[0] - 0.5, c[1] - 0.5 };

@@ -1,5 +1,6 @@
 package io.github.contacttracker.command;
 
+import io.github.contacttracker.core.InvalidInputException;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Comparator;
@@ -37,7 +38,7 @@ public final class PairDistances {
 	 */
 	public static List<Pair> within(final List<Localization> spots, final Calibration cal, final double cutoff) {
 		if (!(cutoff > 0) || !Double.isFinite(cutoff))
-			throw new IllegalArgumentException("pair_cutoff must be a positive distance, not " + cutoff);
+			throw new InvalidInputException("pair_cutoff must be a positive distance, not " + cutoff);
 		final double pw = cal.pixelWidth(), ph = cal.pixelHeight();
 		// sweep along x: spots of one frame sorted by calibrated x, compare only while dx < cutoff
 		final Integer[] order = new Integer[spots.size()];

@@ -17,7 +17,7 @@ public enum Connectivity {
 		switch (t) {
 			case "4": case "four": return FOUR;
 			case "8": case "eight": return EIGHT;
-			default: throw new IllegalArgumentException("connectivity must be 4 or 8, not '" + text + "'");
+			default: throw new InvalidInputException("connectivity must be 4 or 8, not '" + text + "'");
 		}
 	}
 

@@ -63,6 +63,6 @@ public enum Method {
 		final StringBuilder valid = new StringBuilder();
 		for (final Method m : values())
 			valid.append(valid.length() == 0 ? "" : ", ").append(m.key());
-		throw new IllegalArgumentException("method must be one of " + valid + ", not '" + text + "'");
+		throw new InvalidInputException("method must be one of " + valid + ", not '" + text + "'");
 	}
 }

@@ -87,7 +87,7 @@ public abstract class Plane {
 	}
 
 	IllegalArgumentException nonFinite(final int x, final int y, final double v) {
-		return new IllegalArgumentException("pixel (" + (x + minX) + ", " + (y + minY) + ") is " + v +
+		return new InvalidInputException("pixel (" + (x + minX) + ", " + (y + minY) + ") is " + v +
 			": images with NaN or infinite pixels cannot be tracked");
 	}
 
@@ -148,9 +148,9 @@ public abstract class Plane {
 
 	private static void checkShape(final RandomAccessibleInterval<?> frame) {
 		if (frame.numDimensions() != 2)
-			throw new IllegalArgumentException("a frame must be 2D, not " + frame.numDimensions() + "D");
+			throw new InvalidInputException("a frame must be 2D, not " + frame.numDimensions() + "D");
 		if (frame.dimension(0) * frame.dimension(1) > Integer.MAX_VALUE - 8)
-			throw new IllegalArgumentException("frame of " + frame.dimension(0) + " x " + frame.dimension(1) +
+			throw new InvalidInputException("frame of " + frame.dimension(0) + " x " + frame.dimension(1) +
 				" pixels is too large");
 	}
 

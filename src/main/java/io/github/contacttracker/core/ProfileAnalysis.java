@@ -90,15 +90,15 @@ public final class ProfileAnalysis {
 		final double py, final double diameter, final double maxRadius)
 	{
 		if (!(diameter > 0) || !Double.isFinite(diameter))
-			throw new IllegalArgumentException("diameter must be the particle diameter in pixels (> 0), not " + fmt(
+			throw new InvalidInputException("diameter must be the particle diameter in pixels (> 0), not " + fmt(
 				diameter));
 		if (!(maxRadius >= 0) || !Double.isFinite(maxRadius))
-			throw new IllegalArgumentException("max_radius must be >= 0 pixels (0 = automatic), not " + fmt(maxRadius));
+			throw new InvalidInputException("max_radius must be >= 0 pixels (0 = automatic), not " + fmt(maxRadius));
 		final Plane plane = Plane.of(frame);
 		final double lx = px - plane.minX(), ly = py - plane.minY();
 		final int w = plane.width(), h = plane.height();
 		if (!(lx >= -0.5 && lx < w - 0.5 && ly >= -0.5 && ly < h - 0.5))
-			throw new IllegalArgumentException("point (" + fmt(px) + ", " + fmt(py) + ") is outside the image");
+			throw new InvalidInputException("point (" + fmt(px) + ", " + fmt(py) + ") is outside the image");
 
 		final double wanted = maxRadius > 0 ? maxRadius : AUTO_RADIUS_DIAMETERS * diameter;
 		final double radiusCap = Math.min(wanted, farthestCorner(lx, ly, w, h));
@@ -108,7 +108,7 @@ public final class ProfileAnalysis {
 		final double background0 = background(plane, lx, ly, radiusCap);
 		final double peak = peak(plane, lx, ly, Math.max(2, diameter / 4));
 		if (!(peak - background0 > THRESHOLD_MARGIN_SIGMAS * noise))
-			throw new IllegalArgumentException(String.format(Locale.ROOT, "no bright particle at (%s, %s): the " +
+			throw new InvalidInputException(String.format(Locale.ROOT, "no bright particle at (%s, %s): the " +
 				"brightest pixel within %s px is %s, within %s noise sigmas (%s) of the background %s", fmt(px), fmt(py),
 				fmt(Math.max(2, diameter / 4)), fmt(peak), fmt(THRESHOLD_MARGIN_SIGMAS), fmt(noise), fmt(background0)));
 
@@ -253,7 +253,7 @@ public final class ProfileAnalysis {
 				values[n++] = plane.get(x, y);
 			}
 		if (n < MIN_BACKGROUND_PIXELS)
-			throw new IllegalArgumentException(String.format(Locale.ROOT, "only %d pixels lie between %s and %s px " +
+			throw new InvalidInputException(String.format(Locale.ROOT, "only %d pixels lie between %s and %s px " +
 				"from the particle inside the image: too few to measure the background; use a larger image or " +
 				"max_radius", n, fmt(inner), fmt(radiusCap)));
 		Arrays.sort(values, 0, n);

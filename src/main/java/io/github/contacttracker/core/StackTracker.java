@@ -219,8 +219,8 @@ public final class StackTracker {
 		try {
 			return tracker.analyse(Plane.of(frame.apply(t)), t, keepRegions, profile);
 		}
-		catch (final IllegalArgumentException e) {
-			throw new IllegalArgumentException("frame " + (t + 1) + ": " + e.getMessage(), e);
+		catch (final InvalidInputException e) {
+			throw new InvalidInputException("frame " + (t + 1) + ": " + e.getMessage(), e);
 		}
 	}
 

@@ -22,15 +22,15 @@ public record TrackerParameters(double threshold, double rOut, int minArea, Conn
 	/** @throws IllegalArgumentException with a one-line message naming the bad parameter */
 	public TrackerParameters {
 		if (!Double.isFinite(threshold))
-			throw new IllegalArgumentException("threshold must be a finite grey level, not " + threshold);
+			throw new InvalidInputException("threshold must be a finite grey level, not " + threshold);
 		if (!(rOut > 0) || !Double.isFinite(rOut))
-			throw new IllegalArgumentException("r_out must be a positive number of pixels, not " + rOut);
+			throw new InvalidInputException("r_out must be a positive number of pixels, not " + rOut);
 		if (minArea < 1)
-			throw new IllegalArgumentException("min_area must be at least 1 pixel, not " + minArea);
+			throw new InvalidInputException("min_area must be at least 1 pixel, not " + minArea);
 		if (minSecondArea < 3)
-			throw new IllegalArgumentException("min_second_area must be at least 3 pixels, not " + minSecondArea);
-		if (connectivity == null) throw new IllegalArgumentException("connectivity must be given (4 or 8)");
-		if (method == null) throw new IllegalArgumentException("method must be given");
+			throw new InvalidInputException("min_second_area must be at least 3 pixels, not " + minSecondArea);
+		if (connectivity == null) throw new InvalidInputException("connectivity must be given (4 or 8)");
+		if (method == null) throw new InvalidInputException("method must be given");
 	}
 
 	/** @return parameters with the given threshold and r_out and defaults for the rest */

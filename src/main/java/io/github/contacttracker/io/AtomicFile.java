@@ -5,6 +5,10 @@ import java.io.OutputStream;
 import java.nio.file.AtomicMoveNotSupportedException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+
+import io.github.contacttracker.core.InvalidInputException;
 import java.nio.file.StandardCopyOption;
 
 /**
@@ -22,11 +26,51 @@ public final class AtomicFile {
 	private AtomicFile() {}
 
 	/**
-	 * @param target the file to create or replace
-	 * @param body writes the content
-	 * @throws IOException with the target named, when the folder is missing or writing fails
+	 * Checks that a file can be created where asked: its folder exists. Done before a long run, so that a typo in
+	 * an output path costs nothing.
+	 *
+	 * @param what what the file is, for the message ("csv")
+	 * @throws InvalidInputException naming the file and the missing folder
 	 */
-	public static void write(final Path target, final Body body) throws IOException {
+	public static void checkFolder(final String what, final Path target) {
+		final Path dir = target.toAbsolutePath().getParent();
+		if (dir == null || !Files.isDirectory(dir))
+			throw new InvalidInputException("cannot write " + what + " " + target + ": folder " + dir + " does not exist");
+	}
+
+	/**
+	 * Writes several files so that either all appear or none: each is written to a temporary file beside its
+	 * target, and only when every one succeeded are they moved into place. If a move fails, the targets already
+	 * moved are deleted again.
+	 *
+	 * @param targets the files to create or replace
+	 * @param bodies their contents, same order
+	 * @throws IOException naming the file that failed; no target is left behind
+	 */
+	public static void writeAll(final List<Path> targets, final List<Body> bodies) throws IOException {
+		final List<Path> temps = new ArrayList<>();
+		final List<Path> moved = new ArrayList<>();
+		boolean done = false;
+		try {
+			for (int i = 0; i < targets.size(); i++)
+				temps.add(temporary(targets.get(i), bodies.get(i)));
+			for (int i = 0; i < targets.size(); i++) {
+				move(temps.get(i), targets.get(i).toAbsolutePath());
+				moved.add(targets.get(i).toAbsolutePath());
+			}
+			done = true;
+		}
+		finally {
+			if (!done) {
+				for (final Path t : temps)
+					Files.deleteIfExists(t);
+				for (final Path m : moved)
+					Files.deleteIfExists(m);
+			}
+		}
+	}
+
+	private static Path temporary(final Path target, final Body body) throws IOException {
 		final Path abs = target.toAbsolutePath();
 		final Path dir = abs.getParent();
 		if (dir == null || !Files.isDirectory(dir))
@@ -37,16 +81,30 @@ public final class AtomicFile {
 			try (OutputStream out = Files.newOutputStream(tmp)) {
 				body.writeTo(out);
 			}
-			try {
-				Files.move(tmp, abs, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
-			}
-			catch (final AtomicMoveNotSupportedException e) {
-				Files.move(tmp, abs, StandardCopyOption.REPLACE_EXISTING);
-			}
 			done = true;
+			return tmp;
 		}
 		finally {
 			if (!done) Files.deleteIfExists(tmp);
 		}
 	}
+
+	private static void move(final Path tmp, final Path abs) throws IOException {
+		try {
+			Files.move(tmp, abs, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+		}
+		catch (final AtomicMoveNotSupportedException e) {
+			Files.move(tmp, abs, StandardCopyOption.REPLACE_EXISTING);
+		}
+	}
+
+	/**
+	 * @param target the file to create or replace
+	 * @param body writes the content
+	 * @throws IOException with the target named, when the folder is missing or writing fails
+	 */
+	public static void write(final Path target, final Body body) throws IOException {
+		writeAll(List.of(target), List.of(body));
+	}
+
 }

@@ -1,5 +1,7 @@
 package io.github.contacttracker.io;
 
+import io.github.contacttracker.core.InvalidInputException;
+
 /**
  * Physical scale of an image: positions are {@code index * pixelWidth} (TrackMate's convention, no origin
  * offset), times are {@code frame * frameInterval}.
@@ -18,9 +20,9 @@ public record Calibration(double pixelWidth, double pixelHeight, String unit, do
 	/** @throws IllegalArgumentException when a size is not a positive finite number */
 	public Calibration {
 		if (!(pixelWidth > 0) || !Double.isFinite(pixelWidth) || !(pixelHeight > 0) || !Double.isFinite(pixelHeight))
-			throw new IllegalArgumentException("pixel size must be positive, not " + pixelWidth + " x " + pixelHeight);
+			throw new InvalidInputException("pixel size must be positive, not " + pixelWidth + " x " + pixelHeight);
 		if (!(frameInterval > 0) || !Double.isFinite(frameInterval))
-			throw new IllegalArgumentException("frame interval must be positive, not " + frameInterval);
+			throw new InvalidInputException("frame interval must be positive, not " + frameInterval);
 		if (unit == null || unit.isBlank()) unit = "pixel";
 		if (timeUnit == null || timeUnit.isBlank()) timeUnit = "frame";
 	}

@@ -1,5 +1,6 @@
 package io.github.contacttracker.io;
 
+import io.github.contacttracker.core.InvalidInputException;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -68,7 +69,7 @@ public final class ImageFiles {
 	public static ImagePlus timeSeries(final String title, final List<? extends ArrayImg<?, ?>> frames,
 		final Calibration cal)
 	{
-		if (frames.isEmpty()) throw new IllegalArgumentException("no frames");
+		if (frames.isEmpty()) throw new InvalidInputException("no frames");
 		final int w = (int) frames.get(0).dimension(0), h = (int) frames.get(0).dimension(1);
 		final ImageStack stack = new ImageStack(w, h);
 		for (final ArrayImg<?, ?> f : frames) {
@@ -76,7 +77,7 @@ public final class ImageFiles {
 			if (access instanceof ByteArray) stack.addSlice(null, ((ByteArray) access).getCurrentStorageArray());
 			else if (access instanceof ShortArray) stack.addSlice(null, ((ShortArray) access).getCurrentStorageArray());
 			else if (access instanceof FloatArray) stack.addSlice(null, ((FloatArray) access).getCurrentStorageArray());
-			else throw new IllegalArgumentException("unsupported pixel storage " + access.getClass().getSimpleName());
+			else throw new InvalidInputException("unsupported pixel storage " + access.getClass().getSimpleName());
 		}
 		final ImagePlus imp = new ImagePlus(title, stack);
 		imp.setDimensions(1, 1, frames.size());

@@ -1,5 +1,6 @@
 package io.github.contacttracker.io;
 
+import io.github.contacttracker.core.InvalidInputException;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
@@ -38,23 +39,23 @@ public record ImagePlusFrames(List<RandomAccessibleInterval<? extends RealType<?
 	 * @throws IllegalArgumentException with a one-line message when the image cannot be tracked
 	 */
 	public static ImagePlusFrames of(final ImagePlus imp, final int channel) {
-		if (imp == null) throw new IllegalArgumentException("no image");
+		if (imp == null) throw new InvalidInputException("no image");
 		final String name = "'" + imp.getTitle() + "'";
 		final int bits = imp.getBitDepth();
 		if (bits == 24)
-			throw new IllegalArgumentException(name + " is an RGB image: convert it to 8-bit, 16-bit or 32-bit grey " +
+			throw new InvalidInputException(name + " is an RGB image: convert it to 8-bit, 16-bit or 32-bit grey " +
 				"(Image > Type) or split the channels first");
 		if (bits != 8 && bits != 16 && bits != 32)
-			throw new IllegalArgumentException(name + " has an unsupported bit depth: " + bits);
+			throw new InvalidInputException(name + " has an unsupported bit depth: " + bits);
 		final int nc = imp.getNChannels(), nz = imp.getNSlices(), nt = imp.getNFrames();
 		if (nz > 1 && nt > 1)
-			throw new IllegalArgumentException(name + " has " + nz + " Z slices and " + nt +
+			throw new InvalidInputException(name + " has " + nz + " Z slices and " + nt +
 				" time frames: the method is 2D; make a projection or pick one slice first");
 		if (channel < 0 || channel > nc)
-			throw new IllegalArgumentException("channel " + channel + " does not exist: " + name + " has " + nc +
+			throw new InvalidInputException("channel " + channel + " does not exist: " + name + " has " + nc +
 				" channel" + (nc == 1 ? "" : "s"));
 		if (channel == 0 && nc > 1)
-			throw new IllegalArgumentException(name + " has " + nc + " channels: choose one to track (channel = 1.." +
+			throw new InvalidInputException(name + " has " + nc + " channels: choose one to track (channel = 1.." +
 				nc + ")");
 		final int c = Math.max(channel, 1);
 		final int count = Math.max(nz, nt); // Z slices of a plain stack are frames
@@ -81,7 +82,7 @@ public record ImagePlusFrames(List<RandomAccessibleInterval<? extends RealType<?
 		if (pixels instanceof byte[]) return ArrayImgs.unsignedBytes((byte[]) pixels, w, h);
 		if (pixels instanceof short[]) return ArrayImgs.unsignedShorts((short[]) pixels, w, h);
 		if (pixels instanceof float[]) return ArrayImgs.floats((float[]) pixels, w, h);
-		throw new IllegalArgumentException("unsupported pixel type " + pixels.getClass().getSimpleName());
+		throw new InvalidInputException("unsupported pixel type " + pixels.getClass().getSimpleName());
 	}
 
 	/** @return the number of frames */
@@ -102,7 +103,7 @@ public record ImagePlusFrames(List<RandomAccessibleInterval<? extends RealType<?
 			while (cursor.hasNext()) {
 				final double v = cursor.next().getRealDouble();
 				if (!Double.isFinite(v))
-					throw new IllegalArgumentException("frame " + (t + 1) + ", pixel (" + cursor.getLongPosition(0) +
+					throw new InvalidInputException("frame " + (t + 1) + ", pixel (" + cursor.getLongPosition(0) +
 						", " + cursor.getLongPosition(1) + ") is " + v + ": images with NaN or infinite pixels cannot be " +
 						"tracked");
 				if (v < min) min = v;

@@ -1,5 +1,6 @@
 package io.github.contacttracker.io;
 
+import io.github.contacttracker.core.InvalidInputException;
 import java.nio.file.Path;
 
 /**
@@ -22,7 +23,7 @@ public record ImageSource(String filename, String folder, int width, int height,
 		if (filename == null) filename = "";
 		if (folder == null) folder = "";
 		if (width < 1 || height < 1 || nslices < 1 || nframes < 1)
-			throw new IllegalArgumentException("image size must be at least 1 in every dimension, not " + width + " x " +
+			throw new InvalidInputException("image size must be at least 1 in every dimension, not " + width + " x " +
 				height + " x " + nslices + " slices x " + nframes + " frames");
 	}
 

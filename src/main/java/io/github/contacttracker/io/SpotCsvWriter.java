@@ -23,11 +23,16 @@ public final class SpotCsvWriter {
 	public static void write(final Path file, final List<Localization> spots, final Calibration cal)
 		throws IOException
 	{
-		AtomicFile.write(file, out -> {
+		AtomicFile.write(file, body(spots, cal));
+	}
+
+	/** @return the table as the body of an {@link AtomicFile} write (UTF-8) */
+	public static AtomicFile.Body body(final List<Localization> spots, final Calibration cal) {
+		return out -> {
 			final Writer w = new BufferedWriter(new OutputStreamWriter(out, StandardCharsets.UTF_8));
 			write(w, spots, cal);
 			w.flush();
-		});
+		};
 	}
 
 	/** Writes the table to {@code out} (not closed). */

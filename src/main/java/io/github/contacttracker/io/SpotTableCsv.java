@@ -1,5 +1,6 @@
 package io.github.contacttracker.io;
 
+import io.github.contacttracker.core.InvalidInputException;
 import java.io.BufferedReader;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
@@ -54,10 +55,10 @@ public final class SpotTableCsv {
 			lines = r.lines().toList();
 		}
 		catch (final NoSuchFileException e) {
-			throw new IllegalArgumentException(file + ": no such file");
+			throw new InvalidInputException(file + ": no such file");
 		}
 		catch (final java.io.UncheckedIOException e) {
-			throw new IllegalArgumentException(file + ": not a text file (" + e.getCause().getMessage() + ")");
+			throw new InvalidInputException(file + ": not a text file (" + e.getCause().getMessage() + ")");
 		}
 		return parse(lines, wanted, file.toString());
 	}
@@ -74,7 +75,7 @@ public final class SpotTableCsv {
 		int first = 0;
 		while (first < lines.size() && lines.get(first).isBlank())
 			first++;
-		if (first == lines.size()) throw new IllegalArgumentException(name + " is empty");
+		if (first == lines.size()) throw new InvalidInputException(name + " is empty");
 		final List<String> keys = split(stripBom(lines.get(first)));
 		final int probe = keys.indexOf(PROBE);
 		final List<Integer> indices = new ArrayList<>();
@@ -106,19 +107,19 @@ public final class SpotTableCsv {
 			if (lines.get(line).isBlank()) continue;
 			final List<String> cells = split(lines.get(line));
 			if (cells.size() < width)
-				throw new IllegalArgumentException(String.format(Locale.ROOT, "%s line %d: %d cells, but column %s is " +
+				throw new InvalidInputException(String.format(Locale.ROOT, "%s line %d: %d cells, but column %s is " +
 					"number %d", name, line + 1, cells.size(), keys.get(width - 1), width));
 			final double[] row = new double[indices.size()];
 			for (int k = 0; k < row.length; k++) {
 				final String cell = cells.get(indices.get(k)).trim();
 				if (cell.isEmpty()) row[k] = Double.NaN;
 				else if (isNumber(cell)) row[k] = Double.parseDouble(cell);
-				else throw new IllegalArgumentException(String.format(Locale.ROOT, "%s line %d: %s is not a number: '%s'",
+				else throw new InvalidInputException(String.format(Locale.ROOT, "%s line %d: %s is not a number: '%s'",
 					name, line + 1, names.get(k), cell));
 			}
 			rows.add(row);
 		}
-		if (rows.isEmpty()) throw new IllegalArgumentException(name + " has a header but no data row");
+		if (rows.isEmpty()) throw new InvalidInputException(name + " has a header but no data row");
 		final Map<String, double[]> columns = new LinkedHashMap<>();
 		for (int k = 0; k < names.size(); k++) {
 			final double[] c = new double[rows.size()];

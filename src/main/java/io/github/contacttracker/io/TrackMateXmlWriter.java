@@ -1,5 +1,6 @@
 package io.github.contacttracker.io;
 
+import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.settings.TrackMateSettings;
 import java.io.IOException;
 import java.nio.file.Path;
@@ -76,9 +77,19 @@ public final class TrackMateXmlWriter {
 	public static void write(final Path out, final List<Localization> spots, final Calibration cal,
 		final ImageSource src, final TrackerParameters params, final int targetChannel) throws IOException
 	{
+		AtomicFile.write(out, body(spots, cal, src, params, targetChannel));
+	}
+
+	/**
+	 * @return the file as the body of an {@link AtomicFile} write; the document is built at once, so a spot that
+	 *         cannot be written fails here, before any file is opened
+	 */
+	public static AtomicFile.Body body(final List<Localization> spots, final Calibration cal, final ImageSource src,
+		final TrackerParameters params, final int targetChannel)
+	{
 		final Document doc = document(spots, cal, src, params, targetChannel);
 		final XMLOutputter outputter = new XMLOutputter(Format.getPrettyFormat().setEncoding("UTF-8"));
-		AtomicFile.write(out, stream -> outputter.output(doc, stream));
+		return stream -> outputter.output(doc, stream);
 	}
 
 	/**
@@ -121,7 +132,7 @@ public final class TrackMateXmlWriter {
 		for (int i = 0; i < spots.size(); i++) {
 			final int f = spots.get(i).frame();
 			if (f < 0 || f >= src.nframes())
-				throw new IllegalArgumentException("spot " + i + " is in frame " + f + " but the image has " +
+				throw new InvalidInputException("spot " + i + " is in frame " + f + " but the image has " +
 					src.nframes() + " frames");
 			byFrame.get(f).add(i);
 		}
@@ -158,7 +169,7 @@ public final class TrackMateXmlWriter {
 			if (c == SpotColumn.ID) continue;
 			final double v = c.value(loc, id, cal);
 			if (!Double.isFinite(v) && c.isTrackMateKey())
-				throw new IllegalArgumentException("spot " + id + " has " + c.key() + " = " + v + ", not a finite number");
+				throw new InvalidInputException("spot " + id + " has " + c.key() + " = " + v + ", not a finite number");
 			// an undefined extra value is written as NaN (TrackMate reads it with Double.valueOf), never left out:
 			// third-party readers (pytrackmate) refuse a spot that lacks a declared feature
 			e.setAttribute(c.key(), c.format(loc, id, cal));

@@ -1,5 +1,7 @@
 package io.github.contacttracker.potential;
 
+import io.github.contacttracker.core.InvalidInputException;
+
 /**
  * The rectangle the spots were found in, which sets the ideal-gas reference of g(r): for {@code N} particles
  * placed independently and uniformly in a {@code width x height} rectangle, the distance of a pair has the
@@ -23,7 +25,7 @@ public record FieldOfView(double width, double height, boolean inferred) {
 	/** @throws IllegalArgumentException when a side is not a positive finite number */
 	public FieldOfView {
 		if (!(width > 0) || !(height > 0) || !Double.isFinite(width) || !Double.isFinite(height))
-			throw new IllegalArgumentException("the field of view must have a positive width and height, not " + width +
+			throw new InvalidInputException("the field of view must have a positive width and height, not " + width +
 				" x " + height);
 	}
 
@@ -44,9 +46,9 @@ public record FieldOfView(double width, double height, boolean inferred) {
 	 * @throws IllegalArgumentException when there are fewer than 2 spots or they all lie on one line
 	 */
 	public static FieldOfView inferred(final double[] xs, final double[] ys) {
-		if (xs.length != ys.length) throw new IllegalArgumentException(xs.length + " x values but " + ys.length + " y");
+		if (xs.length != ys.length) throw new InvalidInputException(xs.length + " x values but " + ys.length + " y");
 		if (xs.length < 2)
-			throw new IllegalArgumentException("cannot infer the field of view from fewer than 2 spots: give its width " +
+			throw new InvalidInputException("cannot infer the field of view from fewer than 2 spots: give its width " +
 				"and height");
 		double x0 = Double.POSITIVE_INFINITY, x1 = Double.NEGATIVE_INFINITY;
 		double y0 = Double.POSITIVE_INFINITY, y1 = Double.NEGATIVE_INFINITY;
@@ -59,7 +61,7 @@ public record FieldOfView(double width, double height, boolean inferred) {
 		final int n = xs.length;
 		final double w = (x1 - x0) * (n + 1) / (n - 1), h = (y1 - y0) * (n + 1) / (n - 1);
 		if (!(w > 0) || !(h > 0))
-			throw new IllegalArgumentException("cannot infer the field of view: all spots lie on one line; give its " +
+			throw new InvalidInputException("cannot infer the field of view: all spots lie on one line; give its " +
 				"width and height");
 		return new FieldOfView(w, h, true);
 	}
@@ -84,7 +86,7 @@ public record FieldOfView(double width, double height, boolean inferred) {
 	 */
 	public double pairFractionWithin(final double r) {
 		if (!(r >= 0) || r > maxDistance() * (1 + 1e-12))
-			throw new IllegalArgumentException("the edge correction holds for distances up to min(width, height) = " +
+			throw new InvalidInputException("the edge correction holds for distances up to min(width, height) = " +
 				maxDistance() + ", not " + r);
 		final double a = area(), r2 = r * r;
 		return (Math.PI * a * r2 - 4.0 / 3.0 * (width + height) * r2 * r + 0.5 * r2 * r2) / (a * a);

@@ -1,5 +1,6 @@
 package io.github.contacttracker.potential;
 
+import io.github.contacttracker.core.InvalidInputException;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Comparator;
@@ -108,7 +109,7 @@ public final class PairCorrelation {
 		 * @throws IllegalArgumentException when no bin centre lies in the range, or its bins hold no pair
 		 */
 		public Result withZero(final double from, final double to) {
-			if (!(from <= to)) throw new IllegalArgumentException("the zero range must run from low to high, not " +
+			if (!(from <= to)) throw new InvalidInputException("the zero range must run from low to high, not " +
 				from + " to " + to);
 			long pairs = 0;
 			double expected = 0;
@@ -120,11 +121,11 @@ public final class PairCorrelation {
 					inRange++;
 				}
 			if (inRange == 0)
-				throw new IllegalArgumentException(String.format(Locale.ROOT,
+				throw new InvalidInputException(String.format(Locale.ROOT,
 					"the zero range %s to %s holds no bin centre (bins end at %s)", num(from), num(to), num(bins.get(bins
 						.size() - 1).rHigh())));
 			if (pairs == 0)
-				throw new IllegalArgumentException(String.format(Locale.ROOT,
+				throw new InvalidInputException(String.format(Locale.ROOT,
 					"no pair in the zero range %s to %s: U cannot be set to 0 there", num(from), num(to)));
 			return new Result(bins, field, frames, spots, framePairs, -Math.log(pairs / expected), from, to);
 		}
@@ -145,15 +146,15 @@ public final class PairCorrelation {
 		final double rMax)
 	{
 		if (!(binWidth > 0) || !Double.isFinite(binWidth))
-			throw new IllegalArgumentException("the bin width must be a positive number, not " + binWidth);
+			throw new InvalidInputException("the bin width must be a positive number, not " + binWidth);
 		if (!(rMax >= binWidth) || !Double.isFinite(rMax))
-			throw new IllegalArgumentException("r_max must be at least one bin width (" + num(binWidth) + "), not " +
+			throw new InvalidInputException("r_max must be at least one bin width (" + num(binWidth) + "), not " +
 				num(rMax));
 		final int count = (int) Math.floor(rMax / binWidth + 1e-9);
-		if (count > 1_000_000) throw new IllegalArgumentException("more than a million bins: use a wider bin");
+		if (count > 1_000_000) throw new InvalidInputException("more than a million bins: use a wider bin");
 		final double top = count * binWidth;
 		if (top > field.maxDistance() * (1 + 1e-12))
-			throw new IllegalArgumentException(String.format(Locale.ROOT, "r_max %s exceeds the smaller side of the " +
+			throw new InvalidInputException(String.format(Locale.ROOT, "r_max %s exceeds the smaller side of the " +
 				"field of view (%s x %s%s): the edge correction holds only up to %s", num(top), num(field.width()), num(
 					field.height()), field.inferred() ? ", inferred from the spots" : "", num(field.maxDistance())));
 		final long[] pairs = new long[count];
@@ -184,7 +185,7 @@ public final class PairCorrelation {
 				}
 		}
 		if (framePairs == 0)
-			throw new IllegalArgumentException("no frame has two spots: there is no pair to count");
+			throw new InvalidInputException("no frame has two spots: there is no pair to count");
 		final List<Bin> bins = new ArrayList<>(count);
 		double below = 0;
 		for (int k = 0; k < count; k++) {

@@ -1,5 +1,6 @@
 package io.github.contacttracker.potential;
 
+import io.github.contacttracker.core.InvalidInputException;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
@@ -40,7 +41,7 @@ public final class SpotSet {
 
 		/** @throws IllegalArgumentException for a negative start frame */
 		public Selection {
-			if (startFrame < 0) throw new IllegalArgumentException("the start frame must be 0 or more, not " + startFrame);
+			if (startFrame < 0) throw new InvalidInputException("the start frame must be 0 or more, not " + startFrame);
 		}
 	}
 
@@ -135,10 +136,10 @@ public final class SpotSet {
 		for (int i = 0; i < rows; i++) {
 			final double f = frame[i];
 			if (!(f >= 0) || f != Math.rint(f) || f > Integer.MAX_VALUE)
-				throw new IllegalArgumentException(String.format(Locale.ROOT,
+				throw new InvalidInputException(String.format(Locale.ROOT,
 					"row %d: %s must be a whole number 0 or more, not %s", i + 1, FRAME, text(f)));
 			if (!Double.isFinite(x[i]) || !Double.isFinite(y[i]))
-				throw new IllegalArgumentException(String.format(Locale.ROOT, "row %d: %s and %s must be numbers, not %s " +
+				throw new InvalidInputException(String.format(Locale.ROOT, "row %d: %s and %s must be numbers, not %s " +
 					"and %s", i + 1, X, Y, text(x[i]), text(y[i])));
 			if (f < selection.startFrame()) {
 				early++;
@@ -155,7 +156,7 @@ public final class SpotSet {
 
 	private static double[] column(final Map<String, double[]> columns, final String key) {
 		final double[] c = columns.get(key);
-		if (c == null) throw new IllegalArgumentException("missing column " + key);
+		if (c == null) throw new InvalidInputException("missing column " + key);
 		return c;
 	}
 

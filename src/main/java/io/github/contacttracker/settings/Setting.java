@@ -50,6 +50,7 @@ public final class Setting<V> {
 	private final Number min;
 	private final Unit unit;
 	private final String trackMateKey;
+	private boolean imageSpecific;
 
 	private Setting(final String name, final String label, final String help, final Class<V> type,
 		final V defaultValue, final List<V> choices, final Predicate<V> allowed, final String allowedText,
@@ -100,6 +101,20 @@ public final class Setting<V> {
 
 	private static String upper(final String name) {
 		return name.toUpperCase(Locale.ROOT);
+	}
+
+	/** Marks a setting whose default fits no real image, so the command line requires it. */
+	Setting<V> imageSpecific() {
+		imageSpecific = true;
+		return this;
+	}
+
+	/**
+	 * @return whether the value depends on the images so much that the command line insists on it (the
+	 *         interactive front ends start from the default and preview)
+	 */
+	public boolean isImageSpecific() {
+		return imageSpecific;
 	}
 
 	/** @return the name: the key in macros ({@code r_out=20}) and settings maps */

@@ -20,12 +20,12 @@ public final class TrackingSettings {
 	public static final Setting<Double> THRESHOLD = Setting.decimal("threshold", "Threshold",
 		"Grey level: pixels at or above it form the active areas, one per particle. It must be above the brightest " +
 			"point between two touching particles (the profile helper suggests it).", 100, Double.NEGATIVE_INFINITY,
-		true, "a finite grey level", Unit.GREY_LEVEL);
+		true, "a finite grey level", Unit.GREY_LEVEL).imageSpecific();
 
 	/** How far a particle's image reaches. */
 	public static final Setting<Double> R_OUT = Setting.decimal("r_out", "r_out",
 		"How far a particle's image reaches: where its profile has returned to background, plus 2 pixels.", 20, 0,
-		false, "a positive number of pixels", Unit.PIXELS);
+		false, "a positive number of pixels", Unit.PIXELS).imageSpecific();
 
 	/** Smaller active areas are noise. */
 	public static final Setting<Integer> MIN_AREA = Setting.integer("min_area", "Min area",
@@ -40,11 +40,11 @@ public final class TrackingSettings {
 
 	/** Pixel neighbourhood of the labelling. */
 	public static final Setting<Integer> CONNECTIVITY = Setting.choice("connectivity", "Connectivity",
-		"Pixel neighbourhood of the active areas: 8 (default) or 4.", Integer.class, 8, List.of(8, 4));
+		"Pixel neighbourhood of the active areas: 8 or 4.", Integer.class, 8, List.of(8, 4));
 
 	/** How centres are computed. */
 	public static final Setting<String> METHOD = Setting.choice("method", "Method",
-		"How centres are computed: fit (default: joint fit with the measured profile, unbiased at contact), " +
+		"How centres are computed: fit (joint fit with the measured profile, unbiased at contact), " +
 			"deblend, iterative, paper (the paper's two passes), first (one pass, biased near contact).", String.class,
 		Method.DEFAULT.key(), Arrays.stream(Method.values()).map(Method::key).toList());
 

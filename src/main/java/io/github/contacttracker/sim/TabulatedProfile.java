@@ -1,5 +1,6 @@
 package io.github.contacttracker.sim;
 
+import io.github.contacttracker.core.InvalidInputException;
 import java.io.BufferedReader;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
@@ -27,18 +28,18 @@ public final class TabulatedProfile implements RadialProfile {
 	 */
 	public TabulatedProfile(final double[] radii, final double[] values) {
 		if (radii.length != values.length)
-			throw new IllegalArgumentException("profile table has " + radii.length + " radii but " + values.length
+			throw new InvalidInputException("profile table has " + radii.length + " radii but " + values.length
 				+ " values");
 		if (radii.length < 2)
-			throw new IllegalArgumentException("profile table needs at least two points, not " + radii.length);
+			throw new InvalidInputException("profile table needs at least two points, not " + radii.length);
 		if (radii[0] != 0)
-			throw new IllegalArgumentException("profile table must start at r = 0, not " + radii[0]);
+			throw new InvalidInputException("profile table must start at r = 0, not " + radii[0]);
 		for (int i = 0; i < radii.length; i++) {
 			if (!Double.isFinite(radii[i]) || !Double.isFinite(values[i]))
-				throw new IllegalArgumentException("profile table point " + i + " is not finite: r = " + radii[i]
+				throw new InvalidInputException("profile table point " + i + " is not finite: r = " + radii[i]
 					+ ", value = " + values[i]);
 			if (i > 0 && !(radii[i] > radii[i - 1]))
-				throw new IllegalArgumentException("profile table radii must increase strictly, but r[" + i + "] = "
+				throw new InvalidInputException("profile table radii must increase strictly, but r[" + i + "] = "
 					+ radii[i] + " follows " + radii[i - 1]);
 		}
 		this.radii = radii.clone();
@@ -56,7 +57,7 @@ public final class TabulatedProfile implements RadialProfile {
 	 */
 	public static TabulatedProfile sample(final RadialProfile profile, final double step, final double maxRadius) {
 		if (!(step > 0) || !(maxRadius > 0) || !Double.isFinite(maxRadius))
-			throw new IllegalArgumentException("tabulation needs step > 0 and a finite maxRadius > 0, not " + step
+			throw new InvalidInputException("tabulation needs step > 0 and a finite maxRadius > 0, not " + step
 				+ ", " + maxRadius);
 		final int n = Math.max(2, (int) Math.ceil(maxRadius / step) + 1);
 		final double[] r = new double[n];
@@ -94,7 +95,7 @@ public final class TabulatedProfile implements RadialProfile {
 				seenContent = true;
 				if (firstContent && fields.length > 0 && !isNumber(fields[0].strip())) continue; // the header
 				if (fields.length != 2)
-					throw new IllegalArgumentException(file + " line " + lineNumber + ": expected 2 fields r_px,value, found "
+					throw new InvalidInputException(file + " line " + lineNumber + ": expected 2 fields r_px,value, found "
 						+ fields.length + ": '" + trimmed + "'");
 				final double radius;
 				final double value;
@@ -103,13 +104,13 @@ public final class TabulatedProfile implements RadialProfile {
 					value = Double.parseDouble(fields[1].strip());
 				}
 				catch (final NumberFormatException e) {
-					throw new IllegalArgumentException(file + " line " + lineNumber + ": not a number pair: '" + trimmed
+					throw new InvalidInputException(file + " line " + lineNumber + ": not a number pair: '" + trimmed
 						+ "'", e);
 				}
 				if (!Double.isFinite(radius) || !Double.isFinite(value))
-					throw new IllegalArgumentException(file + " line " + lineNumber + ": not finite: '" + trimmed + "'");
+					throw new InvalidInputException(file + " line " + lineNumber + ": not finite: '" + trimmed + "'");
 				if (n > 0 && !(radius > r[n - 1]))
-					throw new IllegalArgumentException(file + " line " + lineNumber + ": radius " + radius
+					throw new InvalidInputException(file + " line " + lineNumber + ": radius " + radius
 						+ " does not increase (previous " + r[n - 1] + ")");
 				if (n == r.length) {
 					r = Arrays.copyOf(r, 2 * n);
@@ -124,7 +125,7 @@ public final class TabulatedProfile implements RadialProfile {
 			return new TabulatedProfile(Arrays.copyOf(r, n), Arrays.copyOf(v, n));
 		}
 		catch (final IllegalArgumentException e) {
-			throw new IllegalArgumentException(file + ": " + e.getMessage(), e);
+			throw new InvalidInputException(file + ": " + e.getMessage(), e);
 		}
 	}
 
@@ -148,7 +149,7 @@ public final class TabulatedProfile implements RadialProfile {
 	@Override
 	public double reach(final double level) {
 		if (!(level > 0) || !Double.isFinite(level))
-			throw new IllegalArgumentException("reach level must be a positive grey level, not " + level);
+			throw new InvalidInputException("reach level must be a positive grey level, not " + level);
 		final int last = radii.length - 1;
 		if (Math.abs(values[last]) >= level) return radii[last];
 		for (int j = last - 1; j >= 0; j--) {

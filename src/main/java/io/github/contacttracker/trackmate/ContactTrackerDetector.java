@@ -1,6 +1,14 @@
 package io.github.contacttracker.trackmate;
 
+import io.github.contacttracker.settings.TrackingSettings;
+import io.github.contacttracker.settings.SettingValues;
+import io.github.contacttracker.pipeline.TrackingResult;
+import io.github.contacttracker.pipeline.TrackingPipeline;
+import io.github.contacttracker.pipeline.Outputs;
+import io.github.contacttracker.pipeline.FrameSource;
+import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.settings.TrackMateSettings;
+import java.io.IOException;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
@@ -12,10 +20,7 @@ import fiji.plugin.trackmate.Logger;
 import fiji.plugin.trackmate.Spot;
 import fiji.plugin.trackmate.SpotCollection;
 import fiji.plugin.trackmate.detection.SpotGlobalDetector;
-import io.github.contacttracker.core.FrameResult;
 import io.github.contacttracker.core.Localization;
-import io.github.contacttracker.core.StackTracker;
-import io.github.contacttracker.core.TrackerParameters;
 import io.github.contacttracker.io.Calibration;
 import io.github.contacttracker.io.SpotColumn;
 import net.imagej.ImgPlus;
@@ -34,7 +39,7 @@ import net.imglib2.view.Views;
  * <p>
  * Whole-movie detection is what makes TrackMate's spots equal to the command line's: the {@code deblend} and
  * {@code fit} methods measure the particles' profile over frames spread through the movie, exactly as
- * {@link StackTracker} does for every other front end. (A per-frame detector would measure it on each frame
+ * {@link TrackingPipeline} does for every other front end. (A per-frame detector would measure it on each frame
  * alone and give other numbers.)
  * <p>
  * TrackMate hands over the WHOLE image (all channels and frames) and the interval to analyse: X, Y, Z (if the
@@ -50,7 +55,7 @@ public final class ContactTrackerDetector<T extends RealType<T> & NativeType<T>>
 {
 	private final ImgPlus<T> img;
 	private final Interval interval;
-	private final TrackerParameters params;
+	private final SettingValues settings;
 	private final int targetChannel;
 	private final String settingsError;
 
@@ -76,8 +81,8 @@ public final class ContactTrackerDetector<T extends RealType<T> & NativeType<T>>
 		this.img = img;
 		this.interval = interval;
 		this.settingsError = TrackMateSettings.check(settings);
-		this.params = settingsError == null ? TrackMateSettings.parameters(settings) : null;
-		this.targetChannel = settingsError == null ? TrackMateSettings.targetChannel(settings) : 0;
+		this.settings = settingsError == null ? TrackMateSettings.values(settings) : null;
+		this.targetChannel = settingsError == null ? this.settings.channel() : 0;
 	}
 
 	@Override
@@ -159,30 +164,37 @@ public final class ContactTrackerDetector<T extends RealType<T> & NativeType<T>>
 		final long start = System.currentTimeMillis();
 		if (frames.isEmpty() && !checkInput()) return false;
 		final int count = frames.size();
-		final List<FrameResult> results;
+		final TrackingResult found;
 		try {
-			status("Contact Tracker: " + params.method().key() + " on " + count + (count == 1 ? " frame" : " frames"));
-			results = StackTracker.withThreads(numThreads, () -> new StackTracker(params).track(count,
-				frames::get, false, (done, total) -> progress((double) done / total), this::isCanceled));
+			status("Contact Tracker: " + settings.get(TrackingSettings.METHOD) + " on " + count + (count == 1 ? " frame" :
+				" frames"));
+			found = new TrackingPipeline(settings).run(source(), Outputs.NONE, numThreads, false, (done,
+				total) -> progress((double) done / total), this::isCanceled);
 		}
 		catch (final CancellationException e) {
 			return fail("Contact Tracker: detection cancelled" + (cancelReason == null ? "." : ": " + cancelReason));
 		}
-		catch (final IllegalArgumentException e) {
+		catch (final InvalidInputException e) {
 			// the core counts frames from 1 within what it was given; say where that starts in the movie
 			return fail("Contact Tracker failed: " + e.getMessage() + (firstFrame == 0 ? "" : " (frames counted from " +
 				"frame " + (firstFrame + 1) + " of the movie, the first one analysed)"));
 		}
+		catch (final IOException e) {
+			throw new AssertionError("no file is written", e);
+		}
 		finally {
 			status("");
 		}
+		if (logger != null) logger.log("Contact Tracker: " + found.summary(img.getName()) + "\n");
+		// the pipeline's spots (RADIUS from the diameter where given), by frame of the analysed range
+		final List<List<Spot>> byFrame = new ArrayList<>(count);
+		for (int i = 0; i < count; i++)
+			byFrame.add(new ArrayList<>());
+		for (final Localization loc : found.spots())
+			byFrame.get(loc.frame()).add(toSpot(loc.withFrame(firstFrame + loc.frame()), dx, dy));
 		final SpotCollection spots = new SpotCollection();
-		for (int i = 0; i < count; i++) {
-			final List<Spot> inFrame = new ArrayList<>();
-			for (final Localization loc : results.get(i).spots())
-				inFrame.add(toSpot(loc.withFrame(firstFrame + i), dx, dy));
-			spots.put(firstFrame + i, inFrame);
-		}
+		for (int i = 0; i < count; i++)
+			spots.put(firstFrame + i, byFrame.get(i));
 		result = spots;
 		processingTime = System.currentTimeMillis() - start;
 		return true;
@@ -237,6 +249,32 @@ public final class ContactTrackerDetector<T extends RealType<T> & NativeType<T>>
 	@Override
 	public String getCancelReason() {
 		return cancelReason;
+	}
+
+	/** The frames to analyse as the pipeline reads them: views of the image, in pixel units. */
+	private FrameSource source() {
+		return new FrameSource() {
+
+			@Override
+			public int frameCount() {
+				return frames.size();
+			}
+
+			@Override
+			public RandomAccessibleInterval<? extends RealType<?>> frame(final int t) {
+				return frames.get(t);
+			}
+
+			@Override
+			public Calibration calibration() {
+				return Calibration.PIXELS;
+			}
+
+			@Override
+			public String name() {
+				return img.getName();
+			}
+		};
 	}
 
 	/**

@@ -49,7 +49,7 @@ class ContactTrackerCliTest {
 		final Path csv = dir.resolve("spots.csv");
 		final Object[] r = run("track", tif.toString(), "--threshold", "85", "--r-out", "61", "--csv", csv.toString());
 		assertEquals(0, r[0], (String) r[2]);
-		assertTrue(((String) r[1]).contains("4 frames, 8 spots, 0 flagged"), (String) r[1]);
+		assertTrue(((String) r[1]).contains("8 spots in 4 frames of 'pair.tif', 0 flagged"), (String) r[1]);
 		final List<String> lines = Files.readAllLines(csv);
 		assertEquals(9, lines.size());
 		assertTrue(lines.get(0).startsWith("ID,FRAME,POSITION_X,POSITION_Y,POSITION_Z,POSITION_T,RADIUS,QUALITY," +

@@ -323,7 +323,7 @@ class ContactTrackerCommandTest {
 			Arguments.of(Simulated.image(), new Object[] { "r_out", "-3" }, "r_out must be a positive number of pixels, not -3.0"),
 			Arguments.of(Simulated.image(), new Object[] { "method", "best" }, "method must be one of " + methodKeys() +
 				", not 'best'"),
-			Arguments.of(Simulated.image(), new Object[] { "connectivity", "6" }, "connectivity must be 4 or 8, not '6'"),
+			Arguments.of(Simulated.image(), new Object[] { "connectivity", "6" }, "connectivity must be one of 8, 4, not 6"),
 			Arguments.of(Simulated.image(), new Object[] { "channel", 2 },
 				"channel 2 does not exist: 'simulated pair' has 1 channel"),
 			Arguments.of(Simulated.image(), new Object[] { "threshold", 1000.0 }, "threshold 1000 is outside the data range"),

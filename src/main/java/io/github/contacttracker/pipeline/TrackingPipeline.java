@@ -1,0 +1,119 @@
+package io.github.contacttracker.pipeline;
+
+import java.io.IOException;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.function.BooleanSupplier;
+import java.util.function.IntFunction;
+
+import io.github.contacttracker.core.FrameResult;
+import io.github.contacttracker.core.InvalidInputException;
+import io.github.contacttracker.core.Localization;
+import io.github.contacttracker.core.StackTracker;
+import io.github.contacttracker.core.TrackerParameters;
+import io.github.contacttracker.settings.SettingValues;
+import net.imglib2.RandomAccessibleInterval;
+
+/**
+ * "Track a movie and write the outputs", the one way every front end runs Contact Tracker (command line, Fiji
+ * command, batch scripts, TrackMate detector):
+ * <ol>
+ * <li>the output folders are checked, then the threshold against the data range (when the source gives it),
+ * before any work;</li>
+ * <li>the frames are tracked on the caller's number of threads, with progress and cancellation;</li>
+ * <li>{@code RADIUS} is set from the particle diameter where one was given;</li>
+ * <li>the files are written all or none.</li>
+ * </ol>
+ * Bad input is an {@link InvalidInputException} with a one-line message; a cancelled run a
+ * {@link java.util.concurrent.CancellationException}; nothing is written by a run that fails.
+ */
+public final class TrackingPipeline {
+
+	private final SettingValues settings;
+	private final TrackerParameters params;
+
+	/** @param settings the checked settings of the run */
+	public TrackingPipeline(final SettingValues settings) {
+		this.settings = settings;
+		this.params = settings.parameters();
+	}
+
+	/** @return the settings */
+	public SettingValues settings() {
+		return settings;
+	}
+
+	/**
+	 * Runs without files, one thread per processor, no progress: what previews, scripts and tests need.
+	 *
+	 * @param keepRegions whether to keep each spot's active areas (for overlays)
+	 * @see #run(FrameSource, Outputs, int, boolean, StackTracker.ProgressListener, BooleanSupplier)
+	 */
+	public TrackingResult run(final FrameSource source, final boolean keepRegions) {
+		try {
+			return run(source, Outputs.NONE, 0, keepRegions, null, () -> false);
+		}
+		catch (final IOException e) {
+			throw new AssertionError("no file is written", e);
+		}
+	}
+
+	/**
+	 * @param source the movie
+	 * @param outputs the files to write ({@link Outputs#NONE} for none)
+	 * @param threads worker threads (below 1: all processors)
+	 * @param keepRegions whether to keep each spot's active areas (for overlays)
+	 * @param progress progress, or {@code null}
+	 * @param cancelled polled before each frame
+	 * @return what was found
+	 * @throws InvalidInputException for bad input (a missing output folder, a threshold outside the data, a
+	 *         frame with NaN pixels), before anything is written
+	 * @throws IOException when writing a file fails (none is left behind)
+	 */
+	@SuppressWarnings({ "rawtypes", "unchecked" })
+	public TrackingResult run(final FrameSource source, final Outputs outputs, final int threads,
+		final boolean keepRegions, final StackTracker.ProgressListener progress, final BooleanSupplier cancelled)
+		throws IOException
+	{
+		final long start = System.nanoTime();
+		outputs.check();
+		checkThreshold(source);
+		final StackTracker tracker = new StackTracker(params);
+		final IntFunction<RandomAccessibleInterval> frame = source::frame; // raw: the pixel type varies by source
+		@SuppressWarnings("unchecked")
+		final List<FrameResult> frames = StackTracker.withThreads(threads, () -> tracker.track(source.frameCount(),
+			(IntFunction) frame, keepRegions, progress, cancelled));
+		final List<Localization> spots = withDiameter(StackTracker.spots(frames));
+		outputs.write(spots, source.calibration(), params, settings.channel());
+		int flagged = 0, discarded = 0;
+		for (final Localization s : spots)
+			if (s.isFlagged()) flagged++;
+		for (final FrameResult r : frames)
+			discarded += r.discarded();
+		return new TrackingResult(frames, spots, flagged, discarded, (System.nanoTime() - start) * 1e-9);
+	}
+
+	private void checkThreshold(final FrameSource source) {
+		final double[] range = source.dataRange();
+		if (range == null) return;
+		final double t = params.threshold();
+		if (t < range[0] || t > range[1]) throw new InvalidInputException(String.format(Locale.ROOT,
+			"threshold %s is outside the data range [%s, %s] of '%s'", fmt(t), fmt(range[0]), fmt(range[1]), source
+				.name()));
+	}
+
+	/** @return the spots, their radius set to half the particle diameter when one was given */
+	private List<Localization> withDiameter(final List<Localization> spots) {
+		final double diameter = settings.diameter();
+		if (diameter <= 0) return spots;
+		final List<Localization> out = new ArrayList<>(spots.size());
+		for (final Localization s : spots)
+			out.add(s.withRadius(diameter / 2));
+		return out;
+	}
+
+	static String fmt(final double v) {
+		return v == Math.rint(v) && Math.abs(v) < 1e15 ? Long.toString((long) v) : Double.toString(v);
+	}
+}
