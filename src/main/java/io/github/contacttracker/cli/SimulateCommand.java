@@ -1,5 +1,9 @@
 package io.github.contacttracker.cli;
 
+import io.github.contacttracker.io.AtomicFile;
+import java.nio.charset.StandardCharsets;
+import java.io.OutputStreamWriter;
+import java.io.BufferedWriter;
 import io.github.contacttracker.core.InvalidInputException;
 import java.io.IOException;
 import java.io.PrintStream;
@@ -47,7 +51,8 @@ final class SimulateCommand {
 		final Calibration cal = Calibration.ofPixelSize(type.pixelSizeMicrons(), "micron");
 		ImageFiles.saveTiff(ImageFiles.timeSeries(stackFile.getFileName().toString(), stack.frames(), cal), stackFile);
 		try {
-			stack.writeTruthCsv(truthFile);
+			AtomicFile.write(truthFile, stream -> stack.writeTruthCsv(new BufferedWriter(new OutputStreamWriter(stream,
+				StandardCharsets.UTF_8))));
 		}
 		catch (final IOException e) {
 			Files.deleteIfExists(stackFile); // both or neither

@@ -84,43 +84,34 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 	@Parameter(label = "Image", persist = false)
 	private ImagePlus imp;
 
-	@Parameter(label = "Threshold (grey level)",
-		description = "Pixels at or above it form the active areas, one per particle; above the brightest point " +
-			"between two particles at contact (see Contact Tracker Profile)")
+	// The tracking settings: names, help and defaults from the settings descriptor (TrackingSettings); a test pins
+	// every one of these inputs to it.
+	@Parameter(label = "Threshold (grey level)", description = TrackingSettings.HELP_THRESHOLD)
 	private double threshold = TrackingSettings.THRESHOLD.defaultValue();
 
-	@Parameter(label = "r_out (px)", min = "0", stepSize = "0.5",
-		description = "Radius of a particle's effective disc: where its image has returned to background, plus 2 px")
+	@Parameter(label = "r_out (px)", min = "0", stepSize = "0.5", description = TrackingSettings.HELP_R_OUT)
 	private double r_out = TrackingSettings.R_OUT.defaultValue();
 
-	@Parameter(label = "Min area (px)", min = "1",
-		description = "Smaller active areas are noise and dropped")
-	private int min_area = TrackerParameters.DEFAULT_MIN_AREA;
+	@Parameter(label = "Min area (px)", min = "1", description = TrackingSettings.HELP_MIN_AREA)
+	private int min_area = TrackingSettings.MIN_AREA.defaultValue();
 
-	@Parameter(label = "Min second area (px)", min = "3",
-		description = "Below this many pixels outside the neighbours' discs a spot keeps its first-pass centre " +
-			"(flagged)")
-	private int min_second_area = TrackerParameters.DEFAULT_MIN_SECOND_AREA;
+	@Parameter(label = "Min second area (px)", min = "3", description = TrackingSettings.HELP_MIN_SECOND_AREA)
+	private int min_second_area = TrackingSettings.MIN_SECOND_AREA.defaultValue();
 
-	@Parameter(label = "Connectivity", choices = { "8", "4" },
-		description = "Pixel neighbourhood of the active areas")
-	private String connectivity = "8";
+	@Parameter(label = "Connectivity", choices = { "8", "4" }, description = TrackingSettings.HELP_CONNECTIVITY)
+	private String connectivity = String.valueOf(TrackingSettings.CONNECTIVITY.defaultValue());
 
-	// the keys of Method, in its order (checked by a test); a macro may still pass any text, which is refused
-	// with the valid ones when unknown
+	// a macro may still pass any text, which is refused with the valid ones when unknown
 	@Parameter(label = "Method", choices = { "first", "paper", "iterative", "deblend", "fit" },
-		description = "How centres are computed: first (one pass, biased near contact), paper (the paper's two " +
-			"passes), iterative, deblend, fit (the README compares them)")
-	private String method = Method.DEFAULT.key();
+		description = TrackingSettings.HELP_METHOD)
+	private String method = TrackingSettings.METHOD.defaultValue();
 
 	@Parameter(label = "Particle diameter (px, 0 = not given)", min = "0", stepSize = "0.5",
-		description = "The particles' diameter (the Profile helper measures it): RADIUS is half of it. Without it, " +
-			"RADIUS is the active area's equivalent radius (ACTIVE_RADIUS), smaller than the particle")
-	private double diameter = 0;
+		description = TrackingSettings.HELP_DIAMETER)
+	private double diameter = TrackingSettings.DIAMETER.defaultValue();
 
-	@Parameter(label = "Channel", min = "1",
-		description = "The channel to track (1-based); single-channel images have only channel 1")
-	private int channel = 1;
+	@Parameter(label = "Channel", min = "1", description = TrackingSettings.HELP_CHANNEL)
+	private int channel = TrackingSettings.CHANNEL.defaultValue();
 
 	@Parameter(label = "Pair cutoff (calibrated units, 0 = none)", min = "0",
 		description = "List the distances of spot pairs of the same frame closer than this in a second table")

@@ -117,7 +117,8 @@ public final class ContactTracker {
 				second.add(SecondPass.secondRegion(p.region, k, outcome.discs(), params.rOut()).translate(dx, dy));
 			}
 		}
-		return new FrameResult(spots, active, second, noise, discarded);
+		return new FrameResult(spots, active, second, noise, discarded, profile == null && params.method()
+			.needsProfile());
 	}
 
 	/** Upper bound on the passes of the iterative method. */

@@ -11,9 +11,12 @@ import java.util.List;
  * @param noiseSigma the frame's estimated pixel-noise standard deviation (grey levels)
  * @param discarded components above threshold that gave no spot: smaller than {@code min_area}, or without
  *        any non-zero gradient (a flat plateau, or an area lying wholly within 2 px of the border)
+ * @param ownProfile whether a profile method ({@code deblend}, {@code fit}) measured the particles' profile on
+ *        this frame alone: on a single frame, or when no profile could be measured over the stack (a fallback the
+ *        front ends report)
  */
 public record FrameResult(List<Localization> spots, List<Region> activeAreas, List<Region> secondAreas,
-	double noiseSigma, int discarded)
+	double noiseSigma, int discarded, boolean ownProfile)
 {
 	public FrameResult {
 		spots = List.copyOf(spots);

@@ -166,8 +166,10 @@ public final class ProfileEstimator {
 					if (ci[p] >= 0 && ci[q] >= 0) a[ci[p]][ci[q]] += lambda * cw[p] * cw[q];
 		}
 		final double[] x = SymmetricSolver.solve(a, atb);
-		if (x == null || samples < 4 * m)
-			throw new IllegalStateException("too few pixels (" + samples + ") to estimate the particles' profile");
+		// pixels of the background alone determine no profile: the smoothness penalty would make one up
+		if (x == null || samples < 4 * m || profileSamples < 4 * count)
+			throw new IllegalStateException("too few pixels (" + samples + ", " + profileSamples + " within reach of a " +
+				"usable particle) to estimate the particles' profile");
 		final double[] coefficients = new double[count];
 		System.arraycopy(x, 0, coefficients, 0, count);
 		return new EmpiricalProfile(SPACING, coefficients, x[count], samples);

@@ -1,5 +1,8 @@
 package io.github.contacttracker.pipeline;
 
+import java.util.function.IntFunction;
+import java.util.function.Supplier;
+
 import io.github.contacttracker.io.Calibration;
 import io.github.contacttracker.io.ImagePlusFrames;
 import net.imglib2.RandomAccessibleInterval;
@@ -33,48 +36,40 @@ public interface FrameSource {
 
 	/** @return frame {@code t} of this source alone (a preview's), its data range not checked */
 	default FrameSource only(final int t) {
-		final FrameSource all = this;
-		return new FrameSource() {
-
-			@Override
-			public int frameCount() {
-				return 1;
-			}
-
-			@Override
-			public RandomAccessibleInterval<? extends RealType<?>> frame(final int i) {
-				return all.frame(t);
-			}
-
-			@Override
-			public Calibration calibration() {
-				return all.calibration();
-			}
-
-			@Override
-			public String name() {
-				return all.name();
-			}
-		};
+		return of(1, i -> frame(t), calibration(), name(), null);
 	}
 
 	/** @return an ImageJ image's frames as a source, the data range checked */
 	static FrameSource of(final ImagePlusFrames frames, final String name) {
+		return of(frames.frameCount(), frames.frames()::get, frames.calibration(), name, frames::dataRange);
+	}
+
+	/**
+	 * @param count the number of frames
+	 * @param frames frame {@code t} (thread-safe)
+	 * @param calibration pixel size, units and frame interval
+	 * @param name the movie's name, for messages
+	 * @param dataRange computes the data range to check the threshold against, or {@code null} for no check
+	 * @return a source of those frames
+	 */
+	static FrameSource of(final int count, final IntFunction<? extends RandomAccessibleInterval<? extends RealType<?>>> frames,
+		final Calibration calibration, final String name, final Supplier<double[]> dataRange)
+	{
 		return new FrameSource() {
 
 			@Override
 			public int frameCount() {
-				return frames.frameCount();
+				return count;
 			}
 
 			@Override
 			public RandomAccessibleInterval<? extends RealType<?>> frame(final int t) {
-				return frames.frames().get(t);
+				return frames.apply(t);
 			}
 
 			@Override
 			public Calibration calibration() {
-				return frames.calibration();
+				return calibration;
 			}
 
 			@Override
@@ -84,7 +79,7 @@ public interface FrameSource {
 
 			@Override
 			public double[] dataRange() {
-				return frames.dataRange();
+				return dataRange == null ? null : dataRange.get();
 			}
 		};
 	}

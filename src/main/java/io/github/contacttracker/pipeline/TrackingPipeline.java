@@ -86,12 +86,19 @@ public final class TrackingPipeline {
 			(IntFunction) frame, keepRegions, progress, cancelled));
 		final List<Localization> spots = withDiameter(StackTracker.spots(frames));
 		outputs.write(spots, source.calibration(), params, settings.channel());
-		int flagged = 0, discarded = 0;
+		int flagged = 0, discarded = 0, ownProfile = 0;
 		for (final Localization s : spots)
 			if (s.isFlagged()) flagged++;
-		for (final FrameResult r : frames)
+		for (final FrameResult r : frames) {
 			discarded += r.discarded();
-		return new TrackingResult(frames, spots, flagged, discarded, (System.nanoTime() - start) * 1e-9);
+			if (r.ownProfile()) ownProfile++;
+		}
+		final List<String> warnings = new ArrayList<>();
+		if (ownProfile > 0 && frames.size() > 1) warnings.add("the particles' profile could not be measured over the " +
+			"movie (too few isolated, unflagged particles); " + ownProfile + " frames measured their own, which is " +
+			"less precise");
+		return new TrackingResult(frames, spots, flagged, discarded, (System.nanoTime() - start) * 1e-9, List.copyOf(
+			warnings));
 	}
 
 	private void checkThreshold(final FrameSource source) {

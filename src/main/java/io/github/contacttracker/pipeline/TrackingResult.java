@@ -14,15 +14,22 @@ import io.github.contacttracker.core.Localization;
  * @param flagged spots with a warning flag
  * @param discarded components dropped (below {@code min_area}, or without any gradient)
  * @param seconds the run's wall-clock time
+ * @param warnings what the user must know about how the result was obtained (a fallback), one line each
  */
 public record TrackingResult(List<FrameResult> frames, List<Localization> spots, int flagged, int discarded,
-	double seconds)
+	double seconds, List<String> warnings)
 {
-	/** @return "12 spots in 4 frames of 'movie.tif', 0 flagged, 0 components discarded, 0.31 s (12.9 frames/s)" */
+	/**
+	 * @return "12 spots in 4 frames of 'movie.tif', 0 flagged, 0 components discarded, 0.31 s (12.9 frames/s)",
+	 *         then "; warning: ..." for each warning
+	 */
 	public String summary(final String name) {
 		final int n = frames.size();
-		return String.format(Locale.ROOT, "%d spots in %d frame%s of '%s', %d flagged, %d components discarded, %.2f s " +
-			"(%.1f frames/s)", spots.size(), n, n == 1 ? "" : "s", name, flagged, discarded, seconds, n / Math.max(seconds,
-				1e-9));
+		final StringBuilder sb = new StringBuilder(String.format(Locale.ROOT, "%d spots in %d frame%s of '%s', %d " +
+			"flagged, %d components discarded, %.2f s (%.1f frames/s)", spots.size(), n, n == 1 ? "" : "s", name,
+			flagged, discarded, seconds, n / Math.max(seconds, 1e-9)));
+		for (final String w : warnings)
+			sb.append("; warning: ").append(w);
+		return sb.toString();
 	}
 }

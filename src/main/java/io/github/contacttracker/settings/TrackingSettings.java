@@ -16,47 +16,76 @@ public final class TrackingSettings {
 
 	private TrackingSettings() {}
 
+	/** Help text of {@link #THRESHOLD}, a constant so that annotations (SciJava's {@code @Parameter}) can use it. */
+	public static final String HELP_THRESHOLD = "Grey level: pixels at or above it form the active areas, one " +
+		"per particle. It must be above the brightest point between two touching particles (the profile helper " +
+		"suggests it).";
+
+	/** Help text of {@link #R_OUT}, a constant so that annotations (SciJava's {@code @Parameter}) can use it. */
+	public static final String HELP_R_OUT = "How far a particle's image reaches: where its profile has returned " +
+		"to background, plus 2 pixels.";
+
+	/** Help text of {@link #MIN_AREA}, a constant so that annotations (SciJava's {@code @Parameter}) can use it. */
+	public static final String HELP_MIN_AREA = "Active areas smaller than this are noise and dropped.";
+
+	/** Help text of {@link #MIN_SECOND_AREA}, a constant so that annotations (SciJava's {@code @Parameter}) can use it. */
+	public static final String HELP_MIN_SECOND_AREA = "paper and iterative: below this many pixels left outside " +
+		"the neighbours' discs, a spot keeps its first-pass centre and is flagged FELL_BACK.";
+
+	/** Help text of {@link #CONNECTIVITY}, a constant so that annotations (SciJava's {@code @Parameter}) can use it. */
+	public static final String HELP_CONNECTIVITY = "Pixel neighbourhood of the active areas: 8 or 4.";
+
+	/** Help text of {@link #METHOD}, a constant so that annotations (SciJava's {@code @Parameter}) can use it. */
+	public static final String HELP_METHOD = "How centres are computed: fit (joint fit with the measured " +
+		"profile, unbiased at contact), deblend, iterative, paper (the paper's two passes), first (one pass, biased " +
+		"near contact).";
+
+	/** Help text of {@link #DIAMETER}, a constant so that annotations (SciJava's {@code @Parameter}) can use it. */
+	public static final String HELP_DIAMETER = "The particles' diameter in pixels (the profile helper measures " +
+		"it): RADIUS is half of it. 0 = not given: RADIUS is then the active area's equivalent radius " +
+		"(ACTIVE_RADIUS), smaller than the particle.";
+
+	/** Help text of {@link #CHANNEL}, a constant so that annotations (SciJava's {@code @Parameter}) can use it. */
+	public static final String HELP_CHANNEL = "The channel to track, 1-based; single-channel images have only " +
+		"channel 1.";
+
 	/** Pixels at or above it form the active areas. */
 	public static final Setting<Double> THRESHOLD = Setting.decimal("threshold", "Threshold",
-		"Grey level: pixels at or above it form the active areas, one per particle. It must be above the brightest " +
-			"point between two touching particles (the profile helper suggests it).", 100, Double.NEGATIVE_INFINITY,
+		HELP_THRESHOLD, 100, Double.NEGATIVE_INFINITY,
 		true, "a finite grey level", Unit.GREY_LEVEL).imageSpecific();
 
 	/** How far a particle's image reaches. */
 	public static final Setting<Double> R_OUT = Setting.decimal("r_out", "r_out",
-		"How far a particle's image reaches: where its profile has returned to background, plus 2 pixels.", 20, 0,
+		HELP_R_OUT, 20, 0,
 		false, "a positive number of pixels", Unit.PIXELS).imageSpecific();
 
 	/** Smaller active areas are noise. */
 	public static final Setting<Integer> MIN_AREA = Setting.integer("min_area", "Min area",
-		"Active areas smaller than this are noise and dropped.", TrackerParameters.DEFAULT_MIN_AREA, 1,
+		HELP_MIN_AREA, TrackerParameters.DEFAULT_MIN_AREA, 1,
 		"at least 1 pixel", Unit.PIXEL_COUNT, null);
 
 	/** Below it the paper's second pass falls back to the first-pass centre. */
 	public static final Setting<Integer> MIN_SECOND_AREA = Setting.integer("min_second_area", "Min second area",
-		"paper and iterative: below this many pixels left outside the neighbours' discs, a spot keeps its " +
-			"first-pass centre and is flagged FELL_BACK.", TrackerParameters.DEFAULT_MIN_SECOND_AREA, 3,
+		HELP_MIN_SECOND_AREA, TrackerParameters.DEFAULT_MIN_SECOND_AREA, 3,
 		"at least 3 pixels", Unit.PIXEL_COUNT, null);
 
 	/** Pixel neighbourhood of the labelling. */
 	public static final Setting<Integer> CONNECTIVITY = Setting.choice("connectivity", "Connectivity",
-		"Pixel neighbourhood of the active areas: 8 or 4.", Integer.class, 8, List.of(8, 4));
+		HELP_CONNECTIVITY, Integer.class, 8, List.of(8, 4));
 
 	/** How centres are computed. */
 	public static final Setting<String> METHOD = Setting.choice("method", "Method",
-		"How centres are computed: fit (joint fit with the measured profile, unbiased at contact), " +
-			"deblend, iterative, paper (the paper's two passes), first (one pass, biased near contact).", String.class,
+		HELP_METHOD, String.class,
 		Method.DEFAULT.key(), Arrays.stream(Method.values()).map(Method::key).toList());
 
 	/** The particles' diameter, for RADIUS. */
 	public static final Setting<Double> DIAMETER = Setting.decimal("diameter", "Particle diameter",
-		"The particles' diameter in pixels (the profile helper measures it): RADIUS is half of it. 0 = not given: " +
-			"RADIUS is then the active area's equivalent radius (ACTIVE_RADIUS), smaller than the particle.", 0, 0, true,
+		HELP_DIAMETER, 0, 0, true,
 		"a number of pixels >= 0 (0 = not given)", Unit.PIXELS);
 
 	/** The channel tracked. */
 	public static final Setting<Integer> CHANNEL = Setting.integer("channel", "Channel",
-		"The channel to track, 1-based; single-channel images have only channel 1.", 1, 1, "at least 1 (1-based)",
+		HELP_CHANNEL, 1, 1, "at least 1 (1-based)",
 		Unit.NONE, "TARGET_CHANNEL");
 
 	/** Every setting, in the order front ends list them. */

@@ -1,12 +1,8 @@
 package io.github.contacttracker.sim;
 
-import java.io.BufferedWriter;
 import java.io.IOException;
-import java.io.OutputStreamWriter;
 import java.io.Writer;
 import java.math.BigDecimal;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Objects;
@@ -14,7 +10,6 @@ import java.util.Optional;
 import java.util.SplittableRandom;
 import java.util.random.RandomGenerator;
 
-import io.github.contacttracker.io.AtomicFile;
 import net.imglib2.img.array.ArrayImg;
 import net.imglib2.type.NativeType;
 import net.imglib2.type.numeric.RealType;
@@ -174,17 +169,6 @@ public record SimulatedStack<T extends RealType<T> & NativeType<T>>(List<ArrayIm
 			}
 		}
 		out.flush();
-	}
-
-	/**
-	 * Writes the truth CSV ({@link #writeTruthCsv(Writer)}) atomically, UTF-8.
-	 *
-	 * @param file the file to create or replace
-	 * @throws IOException when writing fails; the file is then left as it was
-	 */
-	public void writeTruthCsv(final Path file) throws IOException {
-		AtomicFile.write(file, stream -> writeTruthCsv(new BufferedWriter(new OutputStreamWriter(stream,
-			StandardCharsets.UTF_8))));
 	}
 
 	/** @return the number of frames */

@@ -1,6 +1,8 @@
 package io.github.contacttracker.trackmate;
 
+import io.github.contacttracker.settings.Setting;
 import io.github.contacttracker.settings.TrackMateSettings;
+import io.github.contacttracker.settings.TrackingSettings;
 import java.awt.BasicStroke;
 import java.awt.Color;
 import java.awt.Dimension;
@@ -14,6 +16,7 @@ import java.awt.image.BufferedImage;
 import java.text.DecimalFormat;
 import java.text.DecimalFormatSymbols;
 import java.util.Locale;
+import java.util.LinkedHashMap;
 import java.util.Map;
 
 import javax.swing.BorderFactory;
@@ -33,7 +36,6 @@ import fiji.plugin.trackmate.Settings;
 import fiji.plugin.trackmate.detection.SpotDetectorFactoryBase;
 import fiji.plugin.trackmate.gui.components.ConfigurationPanel;
 import fiji.plugin.trackmate.util.DetectionPreview;
-import io.github.contacttracker.core.Method;
 
 /**
  * TrackMate's configuration panel for {@link ContactTrackerDetectorFactory}, laid out like TrackMate's own
@@ -64,15 +66,61 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 		+ "<a href='" + ContactTrackerDetectorFactory.URL + "'>doi:10.1088/1361-648X/aa908e</a>. "
 		+ "2D images and time-lapses only.</body></html>";
 
-	private final JSpinner channel;
-	private final JSpinner threshold;
-	private final JSpinner rOut;
-	private final JLabel rOutPixels;
-	private final JSpinner minArea;
-	private final JSpinner minSecondArea;
-	private final JComboBox<Integer> connectivity;
-	private final JComboBox<String> method;
+	/** One field per setting of {@link TrackingSettings#ALL}, in that order. */
+	private final Map<Setting<?>, Field> fields = new LinkedHashMap<>();
 	private final double pixelWidth;
+	private final String unit;
+
+	/**
+	 * One setting's control. Lengths in pixels ({@link Setting.Unit#PIXELS}) are shown in the image's physical
+	 * units, their value in pixels beside them; the setting itself stays in pixels, as on the command line.
+	 */
+	private final class Field {
+		final Setting<?> setting;
+		final JComponent control;
+		final JLabel unitLabel = new JLabel();
+
+		Field(final Setting<?> setting, final int nChannels) {
+			this.setting = setting;
+			if (!setting.choices().isEmpty()) control = new JComboBox<>(setting.choices().toArray());
+			else if (setting == TrackingSettings.CHANNEL) control = new JSpinner(new SpinnerNumberModel(1, 1, Math.max(1,
+				nChannels), 1));
+			else if (setting.type() == Integer.class) control = new JSpinner(new SpinnerNumberModel(setting.min()
+				.intValue(), setting.min().intValue(), Integer.MAX_VALUE, 1));
+			else if (setting.unit() == Setting.Unit.PIXELS) {
+				final double min = setting.min() == null ? 0 : setting.min().doubleValue();
+				control = doubleSpinner(min * pixelWidth, min * pixelWidth, 1e6 * pixelWidth, pixelWidth, "0.####");
+				((JSpinner) control).addChangeListener(e -> showPixels());
+			}
+			else control = doubleSpinner(0, -1e15, 1e15, 1, "0.###");
+			unitLabel.setFont(FONT);
+		}
+
+		/** Shows a value of the setting's type. */
+		void show(final Object value) {
+			if (control instanceof JComboBox) ((JComboBox<?>) control).setSelectedItem(value);
+			else if (setting.unit() == Setting.Unit.PIXELS) ((JSpinner) control).setValue(((Number) value).doubleValue() *
+				pixelWidth);
+			else ((JSpinner) control).setValue(value);
+			showPixels();
+		}
+
+		/** @return the value shown, of the setting's type, in the setting's unit */
+		Object value() {
+			if (control instanceof JComboBox) return ((JComboBox<?>) control).getSelectedItem();
+			final Number n = (Number) ((JSpinner) control).getValue();
+			if (setting.type() == Integer.class) return n.intValue();
+			// in pixels, rounded to 1e-6 px so that a value typed in pixels survives the round trip through units
+			if (setting.unit() == Setting.Unit.PIXELS) return Math.round(n.doubleValue() / pixelWidth * 1e6) / 1e6;
+			return n.doubleValue();
+		}
+
+		private void showPixels() {
+			if (setting.unit() != Setting.Unit.PIXELS) return;
+			final String px = new DecimalFormat("0.##", DecimalFormatSymbols.getInstance(Locale.ROOT)).format(value());
+			unitLabel.setText("pixel".equals(unit) ? "px" : unit + " (" + px + " px)");
+		}
+	}
 
 	/**
 	 * @param settings TrackMate's settings (for the image: channels, pixel size, Preview); may be {@code null}
@@ -85,23 +133,7 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 		final boolean hasImage = settings != null && settings.imp != null;
 		final int nChannels = hasImage ? Math.max(1, settings.imp.getNChannels()) : 1;
 		pixelWidth = hasImage && settings.dx > 0 && Double.isFinite(settings.dx) ? settings.dx : 1;
-		final String unit = hasImage && settings.imp.getCalibration().scaled() ? settings.imp.getCalibration()
-			.getUnit() : "pixel";
-
-		final Map<String, Object> d = TrackMateSettings.defaults();
-		channel = new JSpinner(new SpinnerNumberModel(1, 1, nChannels, 1));
-		threshold = doubleSpinner((Double) d.get(TrackMateSettings.KEY_THRESHOLD), -1e15, 1e15, 1, "0.###");
-		rOut = doubleSpinner(1, 0.5 * pixelWidth, 1e6 * pixelWidth, pixelWidth, "0.####");
-		rOutPixels = new JLabel();
-		minArea = new JSpinner(new SpinnerNumberModel(1, 1, Integer.MAX_VALUE, 1));
-		minSecondArea = new JSpinner(new SpinnerNumberModel(3, 3, Integer.MAX_VALUE, 1));
-		connectivity = new JComboBox<>(new Integer[] { 8, 4 });
-		final Method[] methods = Method.values();
-		final String[] keys = new String[methods.length];
-		for (int i = 0; i < methods.length; i++)
-			keys[i] = methods[i].key();
-		method = new JComboBox<>(keys);
-		rOut.addChangeListener(e -> updateRoutPixels());
+		unit = hasImage && settings.imp.getCalibration().scaled() ? settings.imp.getCalibration().getUnit() : "pixel";
 
 		setLayout(new GridBagLayout());
 		setBorder(BorderFactory.createEmptyBorder(5, 5, 5, 5));
@@ -116,24 +148,14 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 		add(title, tc);
 		add(infoPane(), at(0, row++, 3));
 
-		if (nChannels > 1) row = addRow(row, "Target channel", channel, null,
-			"Channel analysed (1-based).");
-		row = addRow(row, "Threshold", threshold, "grey level",
-			"Pixels at or above this grey level form the active areas, one per particle. It must be above the "
-				+ "brightest point between two touching particles (the Contact Tracker Profile command suggests it).");
-		row = addRow(row, "r_out", rOut, unit,
-			"How far a particle's image reaches: where its profile has returned to background, plus 2 pixels.");
-		final GridBagConstraints pc = at(1, row++, 2);
-		rOutPixels.setFont(FONT);
-		add(rOutPixels, pc);
-		row = addRow(row, "Min area", minArea, "pixels", "Active areas smaller than this are noise and dropped.");
-		row = addRow(row, "Min second area", minSecondArea, "pixels",
-			"paper/iterative: below this many pixels left outside the neighbours' discs, a spot keeps its "
-				+ "first-pass centre and is flagged FELL_BACK.");
-		row = addRow(row, "Connectivity", connectivity, null, "Pixel neighbourhood of the labelling.");
-		row = addRow(row, "Method", method, null, "<html>fit (default): joint fit with the measured profile, "
-			+ "unbiased at contact<br>deblend: subtracts the neighbours' modelled light<br>iterative / paper: the "
-			+ "paper's second pass (repeated / once)<br>first: one pass, biased near contact</html>");
+		for (final Setting<?> s : TrackingSettings.ALL) {
+			final Field f = new Field(s, nChannels);
+			fields.put(s, f);
+			// the channel is asked only where there is a choice, as in TrackMate's own panels
+			if (s == TrackingSettings.CHANNEL && nChannels < 2) continue;
+			if (s.unit() != Setting.Unit.PIXELS) f.unitLabel.setText(s.unit().symbol());
+			row = addRow(row, s.label(), f.control, f.unitLabel, s.help());
+		}
 
 		final GridBagConstraints fc = at(0, row++, 3);
 		fc.weighty = 1;
@@ -146,7 +168,7 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 			add(preview.getPanel(), fc);
 		}
 		else add(new JLabel(), fc);
-		setSettings(d);
+		setSettings(TrackMateSettings.defaults());
 	}
 
 	private static JComponent infoPane() {
@@ -167,39 +189,42 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 		return scroll;
 	}
 
+	/**
+	 * Shows a settings map; a missing, mistyped or invalid value shows the default instead (TrackMate checks the
+	 * map itself with the factory's {@code checkSettings}). A channel beyond the image's is kept, not changed.
+	 */
 	@Override
 	public void setSettings(final Map<String, Object> settings) {
 		final Map<String, Object> d = TrackMateSettings.defaults();
-		final int c = value(settings, d, TrackMateSettings.KEY_TARGET_CHANNEL, Integer.class);
-		final SpinnerNumberModel cm = (SpinnerNumberModel) channel.getModel();
-		if (c > (Integer) cm.getMaximum()) cm.setMaximum(c);
-		channel.setValue(Math.max(1, c));
-		threshold.setValue(value(settings, d, TrackMateSettings.KEY_THRESHOLD, Double.class));
-		rOut.setValue(Math.max(0.5, value(settings, d, TrackMateSettings.KEY_R_OUT, Double.class)) * pixelWidth);
-		minArea.setValue(Math.max(1, value(settings, d, TrackMateSettings.KEY_MIN_AREA, Integer.class)));
-		minSecondArea.setValue(Math.max(3, value(settings, d, TrackMateSettings.KEY_MIN_SECOND_AREA, Integer.class)));
-		connectivity.setSelectedItem(value(settings, d, TrackMateSettings.KEY_CONNECTIVITY, Integer.class) == 4 ? 4 : 8);
-		String m = value(settings, d, TrackMateSettings.KEY_METHOD, String.class);
-		try {
-			m = Method.parse(m).key();
+		for (final Field f : fields.values()) {
+			final String key = f.setting.trackMateKey();
+			Object v = settings == null ? null : settings.get(key);
+			if (!f.setting.type().isInstance(v) || !allowed(f.setting, v)) v = d.get(key);
+			if (f.setting == TrackingSettings.CHANNEL) {
+				final SpinnerNumberModel cm = (SpinnerNumberModel) ((JSpinner) f.control).getModel();
+				if ((Integer) v > (Integer) cm.getMaximum()) cm.setMaximum((Integer) v);
+			}
+			f.show(v);
 		}
-		catch (final IllegalArgumentException e) {
-			m = (String) d.get(TrackMateSettings.KEY_METHOD);
-		}
-		method.setSelectedItem(m);
-		updateRoutPixels();
 	}
 
+	@SuppressWarnings("unchecked")
+	private static <V> boolean allowed(final Setting<V> s, final Object v) {
+		try {
+			s.check((V) v);
+			return true;
+		}
+		catch (final IllegalArgumentException e) {
+			return false;
+		}
+	}
+
+	/** @return a complete map of correctly typed values, in {@link TrackMateSettings#keys()} order */
 	@Override
 	public Map<String, Object> getSettings() {
-		final Map<String, Object> map = TrackMateSettings.defaults();
-		map.put(TrackMateSettings.KEY_TARGET_CHANNEL, ((Number) channel.getValue()).intValue());
-		map.put(TrackMateSettings.KEY_THRESHOLD, ((Number) threshold.getValue()).doubleValue());
-		map.put(TrackMateSettings.KEY_R_OUT, rOutInPixels());
-		map.put(TrackMateSettings.KEY_MIN_AREA, ((Number) minArea.getValue()).intValue());
-		map.put(TrackMateSettings.KEY_MIN_SECOND_AREA, ((Number) minSecondArea.getValue()).intValue());
-		map.put(TrackMateSettings.KEY_CONNECTIVITY, (Integer) connectivity.getSelectedItem());
-		map.put(TrackMateSettings.KEY_METHOD, (String) method.getSelectedItem());
+		final Map<String, Object> map = new LinkedHashMap<>();
+		for (final Field f : fields.values())
+			map.put(f.setting.trackMateKey(), f.value());
 		return map;
 	}
 
@@ -208,17 +233,7 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 		// Preview's spots belong to TrackMate's model, which TrackMate itself clears on the next step
 	}
 
-	/** r_out in pixels, rounded to 1e-6 px so a value typed in pixels survives the round trip through units. */
-	private double rOutInPixels() {
-		return Math.round(((Number) rOut.getValue()).doubleValue() / pixelWidth * 1e6) / 1e6;
-	}
-
-	private void updateRoutPixels() {
-		rOutPixels.setText("= " + new DecimalFormat("0.##", DecimalFormatSymbols.getInstance(Locale.ROOT)).format(
-			rOutInPixels()) + " pixels");
-	}
-
-	private int addRow(final int row, final String label, final JComponent field, final String unit,
+	private int addRow(final int row, final String label, final JComponent field, final JLabel unitLabel,
 		final String tip)
 	{
 		final JLabel l = new JLabel(label);
@@ -230,15 +245,11 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 		final GridBagConstraints lc = at(0, row, 1);
 		lc.anchor = GridBagConstraints.EAST;
 		add(l, lc);
-		final GridBagConstraints c = at(1, row, unit == null ? 2 : 1);
+		final GridBagConstraints c = at(1, row, 1);
 		c.fill = GridBagConstraints.HORIZONTAL;
 		c.weightx = 1;
 		add(field, c);
-		if (unit != null) {
-			final JLabel u = new JLabel(unit);
-			u.setFont(FONT);
-			add(u, at(2, row, 1));
-		}
+		add(unitLabel, at(2, row, 1));
 		return row + 1;
 	}
 
@@ -260,13 +271,6 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 		s.setEditor(new JSpinner.NumberEditor(s, format));
 		((JSpinner.DefaultEditor) s.getEditor()).getTextField().setColumns(6);
 		return s;
-	}
-
-	private static <V> V value(final Map<String, Object> settings, final Map<String, Object> defaults, final String key,
-		final Class<V> type)
-	{
-		final Object v = settings == null ? null : settings.get(key);
-		return type.isInstance(v) ? type.cast(v) : type.cast(defaults.get(key));
 	}
 
 	/** A 32 x 32 icon: two touching particles, each with its centre marked. */

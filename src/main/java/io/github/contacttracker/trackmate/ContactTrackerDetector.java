@@ -253,28 +253,7 @@ public final class ContactTrackerDetector<T extends RealType<T> & NativeType<T>>
 
 	/** The frames to analyse as the pipeline reads them: views of the image, in pixel units. */
 	private FrameSource source() {
-		return new FrameSource() {
-
-			@Override
-			public int frameCount() {
-				return frames.size();
-			}
-
-			@Override
-			public RandomAccessibleInterval<? extends RealType<?>> frame(final int t) {
-				return frames.get(t);
-			}
-
-			@Override
-			public Calibration calibration() {
-				return Calibration.PIXELS;
-			}
-
-			@Override
-			public String name() {
-				return img.getName();
-			}
-		};
+		return FrameSource.of(frames.size(), frames::get, Calibration.PIXELS, img.getName(), null);
 	}
 
 	/**

@@ -479,7 +479,7 @@ class ContactTrackerCommandTest {
 		final Localization flagged = new Localization(0, 30, 10, 30.5, 10, 50, 10, 1, 4,
 			io.github.contacttracker.core.Flag.FELL_BACK.bit(), 1, 0.01, 0.01);
 		final List<Roi> rois = SpotOverlay.rois(List.of(new FrameResult(List.of(ok, flagged), List.of(), List.of(), 1,
-			0)), 8, (roi, frame) -> {});
+			0, false)), 8, (roi, frame) -> {});
 		assertEquals(6, rois.size(), "no outline without regions");
 		final Roi okDisc = rois.get(0), badDisc = rois.get(3);
 		assertEquals(SpotOverlay.Kind.DISC, SpotOverlay.kind(badDisc));

@@ -107,10 +107,6 @@ class SimulatedStackTest {
 		assertEquals(truth[1], Double.parseDouble(row[3]), 0);
 		assertEquals(truth[0] * 0.0847, Double.parseDouble(row[4]), 1e-12);
 		assertEquals(truth[1] * 0.0847, Double.parseDouble(row[5]), 1e-12);
-
-		final Path file = dir.resolve("truth.csv");
-		s.writeTruthCsv(file);
-		assertEquals(out.toString(), Files.readString(file));
 	}
 
 	@Test

@@ -227,11 +227,32 @@ class ContactTrackerDetectorFactoryTest {
 		panel.setSettings(s);
 		assertEquals(61.0, panel.getSettings().get("R_OUT"));
 		final List<Component> all = allComponents(panel);
-		assertTrue(all.stream().anyMatch(c -> c instanceof JLabel && "micron".equals(((JLabel) c).getText())),
-			"r_out's unit must be shown");
+		assertTrue(all.stream().anyMatch(c -> c instanceof JLabel && "micron (61 px)".equals(((JLabel) c).getText())),
+			"r_out's unit and its value in pixels must be shown");
 		assertTrue(all.stream().anyMatch(c -> c instanceof JSpinner && Math.abs(((Number) ((JSpinner) c).getValue())
 			.doubleValue() - 61 * 0.0847) < 1e-9), "r_out must be shown in microns");
-		assertTrue(all.stream().anyMatch(c -> c instanceof JLabel && "= 61 pixels".equals(((JLabel) c).getText())));
+		// the particle diameter, a length too, likewise
+		s.put("DIAMETER", 65.3);
+		panel.setSettings(s);
+		assertEquals(65.3, panel.getSettings().get("DIAMETER"));
+		assertTrue(allComponents(panel).stream().anyMatch(c -> c instanceof JLabel && "micron (65.3 px)".equals(((JLabel) c)
+			.getText())));
+	}
+
+	/** The panel's fields are the settings descriptor's: one per setting, with its label, help and every choice. */
+	@Test
+	void panelHasOneFieldPerSettingOfTheDescriptor() {
+		final ImagePlus imp = IJ.createImage("two channels", "8-bit black", 64, 48, 2);
+		imp.setDimensions(2, 1, 1);
+		final ConfigurationPanel panel = factory.getDetectorConfigurationPanel(new Settings(imp), new Model());
+		final List<Component> all = allComponents(panel);
+		for (final io.github.contacttracker.settings.Setting<?> setting : io.github.contacttracker.settings.TrackingSettings.ALL) {
+			final JLabel label = all.stream().filter(c -> c instanceof JLabel && setting.label().equals(((JLabel) c)
+				.getText())).map(c -> (JLabel) c).findFirst().orElse(null);
+			assertNotNull(label, "no field for " + setting.name());
+			assertEquals(setting.help(), label.getToolTipText());
+		}
+		assertEquals(TrackMateSettings.keys(), List.copyOf(panel.getSettings().keySet()));
 	}
 
 	/**
