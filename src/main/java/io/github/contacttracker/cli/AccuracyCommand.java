@@ -17,7 +17,6 @@ import io.github.contacttracker.eval.CramerRao;
 import io.github.contacttracker.eval.DistanceError;
 import io.github.contacttracker.eval.DistanceStudy;
 import io.github.contacttracker.io.AtomicFile;
-import io.github.contacttracker.sim.PaperParticles;
 import io.github.contacttracker.sim.ParticleType;
 import io.github.contacttracker.sim.Scenario;
 import io.github.contacttracker.sim.SimulatedStack;

@@ -6,16 +6,12 @@ import io.github.contacttracker.pipeline.TrackingPipeline;
 import io.github.contacttracker.pipeline.Outputs;
 import io.github.contacttracker.pipeline.FrameSource;
 import io.github.contacttracker.core.InvalidInputException;
-import io.github.contacttracker.settings.TrackMateSettings;
 import io.github.contacttracker.settings.TrackingSettings;
 import java.awt.GraphicsEnvironment;
 import java.io.File;
 import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
-import java.util.Locale;
 import java.util.concurrent.CancellationException;
 import java.util.function.BooleanSupplier;
 
@@ -40,13 +36,9 @@ import io.github.contacttracker.core.Connectivity;
 import io.github.contacttracker.core.FrameResult;
 import io.github.contacttracker.core.Localization;
 import io.github.contacttracker.core.Method;
-import io.github.contacttracker.core.StackTracker;
 import io.github.contacttracker.core.TrackerParameters;
 import io.github.contacttracker.io.ImagePlusFrames;
 import io.github.contacttracker.io.ImageSource;
-import io.github.contacttracker.io.SpotCsvWriter;
-import io.github.contacttracker.io.TrackMateXmlWriter;
-import net.imglib2.RandomAccessibleInterval;
 
 /**
  * <i>Plugins &gt; Tracking &gt; Contact Tracker</i>: localizes the particles of every frame of the image with the
@@ -342,9 +334,5 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 			.isEmpty()) return ImageSource.of(Path.of(fi.directory, fi.fileName), frames.width(), frames.height(), frames
 				.frameCount());
 		return new ImageSource("", "", frames.width(), frames.height(), 1, frames.frameCount());
-	}
-
-	private static String fmt(final double v) {
-		return v == Math.rint(v) && Math.abs(v) < 1e15 ? Long.toString((long) v) : Double.toString(v);
 	}
 }
