@@ -25,6 +25,9 @@ public final class ContactTrackerCli {
 		"                             track them, print the distance errors, write an overlay PNG", //
 		"      [--reps N] [--out-dir DIR] [--threads N]", //
 		TrackCommand.usage(), //
+		"  profile MOVIE [--at X,Y] [--frame N] [--diameter D] [--png OUT.png] [--csv OUT.csv]", //
+		"                             radial profile of isolated particles; prints --threshold, --r-out and", //
+		"                             --diameter to copy (profile --help for more)", //
 		"  simulate --scenario pair|triple --separation R_OVER_D --out stack.tif --truth truth.csv", //
 		"      [--frames N] [--seed S] [--particle 5.53|2.06] [--bit-depth 8|16]", //
 		"  bench [--frames N]          speed on a 512x512 8-bit stack with 12 particles", //
@@ -62,6 +65,7 @@ public final class ContactTrackerCli {
 				case "accuracy": return new AccuracyCommand(out).run(rest);
 				case "potential": return new PotentialCommand(out, err).run(rest);
 				case "demo-potential": return new DemoPotentialCommand(out).run(rest);
+				case "profile": return ProfileCommand.run(rest, out, err);
 				default:
 					err.println("contact-tracker: error: unknown command '" + args[0] + "' (demo, track, simulate, bench, accuracy, potential, demo-potential)");
 					return EXIT_BAD_INPUT;

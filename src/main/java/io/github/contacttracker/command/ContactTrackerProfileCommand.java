@@ -1,7 +1,6 @@
 package io.github.contacttracker.command;
 
 import io.github.contacttracker.core.InvalidInputException;
-import java.awt.Color;
 import java.awt.GraphicsEnvironment;
 import java.awt.Point;
 import java.util.Locale;
@@ -20,6 +19,7 @@ import ij.gui.PointRoi;
 import ij.gui.Roi;
 import io.github.contacttracker.core.ProfileAnalysis;
 import io.github.contacttracker.io.ImagePlusFrames;
+import io.github.contacttracker.io.ProfilePlots;
 
 /**
  * <i>Plugins &gt; Tracking &gt; Contact Tracker Profile</i>: the parameter helper. The user marks an isolated
@@ -40,8 +40,6 @@ public class ContactTrackerProfileCommand extends ContextCommand {
 	public static final String PLOT_TITLE = "Contact Tracker Profile";
 	/** Longest line written to the Log window: it does not wrap, and a default Log window is about this wide. */
 	static final int LOG_WIDTH = 90;
-	/** Colour of the noise band's lines: readable on the white plot and in its legend. */
-	static final Color NOISE_BAND = new Color(90, 90, 90);
 
 	@Parameter
 	private LogService log;
@@ -49,8 +47,9 @@ public class ContactTrackerProfileCommand extends ContextCommand {
 	@Parameter(label = "Image", persist = false)
 	private ImagePlus imp;
 
-	@Parameter(label = "Particle diameter (px)", min = "0",
-		description = "The centre distance of two particles at contact, in pixels")
+	@Parameter(label = "Particle diameter (px, 0 = estimate)", min = "0",
+		description = "The centre distance of two particles at contact, in pixels; 0 estimates it from the " +
+			"particles' nearest-neighbour distances")
 	private double diameter = 0;
 
 	@Parameter(label = "Max radius (px, 0 = 2.5 diameters)", min = "0",
@@ -102,14 +101,14 @@ public class ContactTrackerProfileCommand extends ContextCommand {
 		final ProfileAnalysis.Result r = analyse(frames, frame, point);
 
 		final boolean integerData = imp.getBitDepth() != 32;
-		suggested_threshold = integerData ? Math.ceil(r.threshold() - 1e-9) : r.threshold();
-		suggested_r_out = Math.ceil(r.rOut() - 1e-9);
+		suggested_threshold = r.suggestedThreshold(integerData);
+		suggested_r_out = r.suggestedROut();
 		background = r.background();
 		noise = r.noise();
 		centre_x = r.x();
 		centre_y = r.y();
-		profile = plot(r, imp.getTitle(), suggested_threshold, suggested_r_out);
-		report(r, point, frame, frames.frameCount());
+		profile = ProfilePlots.plot(r, PLOT_TITLE + ": " + imp.getTitle(), suggested_threshold, suggested_r_out);
+		report(r, point, frame, frames.frameCount(), integerData);
 		if (plot && !GraphicsEnvironment.isHeadless()) profile.show();
 	}
 
@@ -136,67 +135,19 @@ public class ContactTrackerProfileCommand extends ContextCommand {
 		return new double[] { c[0] - 0.5, c[1] - 0.5 };
 	}
 
-	private Plot plot(final ProfileAnalysis.Result r, final String title, final double threshold,
-		final double rOut)
+	private void report(final ProfileAnalysis.Result r, final double[] point, final int frame, final int frames,
+		final boolean integerData)
 	{
-		double lo = r.background() - r.noise(), hi = Math.max(threshold, r.background() + r.noise());
-		for (final double m : r.mean())
-			if (Double.isFinite(m)) {
-				lo = Math.min(lo, m);
-				hi = Math.max(hi, m);
-			}
-		final double pad = 0.05 * (hi - lo);
-		lo -= pad;
-		hi += pad;
-		final double right = r.maxRadius();
-		final Plot p = new Plot(PLOT_TITLE + ": " + title, "distance from centre (px)", "grey level");
-		p.setLimits(0, right, lo, hi);
-		p.setLineWidth(2);
-		p.setColor(Color.BLACK);
-		p.add("line", r.radius(), r.mean());
-		p.setLineWidth(1);
-		p.setColor(Color.BLACK);
-		p.add("line", new double[] { 0, right }, new double[] { r.background(), r.background() });
-		// dark enough to read in the legend on a white plot (light grey was barely visible)
-		p.setColor(NOISE_BAND);
-		p.setLineWidth(2);
-		p.add("line", new double[] { 0, right }, new double[] { r.background() + r.noise(), r.background() + r
-			.noise() });
-		p.add("line", new double[] { 0, right }, new double[] { r.background() - r.noise(), r.background() - r
-			.noise() });
-		p.setLineWidth(1);
-		p.setColor(Color.RED);
-		p.add("line", new double[] { 0, right }, new double[] { threshold, threshold });
-		p.setColor(Color.BLUE);
-		p.add("line", new double[] { rOut, rOut }, new double[] { lo, hi });
-		p.setColor(new Color(0, 150, 0));
-		p.add("line", new double[] { r.diameter() / 2, r.diameter() / 2 }, new double[] { lo, hi });
-		p.setColor(Color.BLACK);
-		p.addLegend("radial profile\tbackground\tnoise band (+1 sigma)\tnoise band (-1 sigma)\tsuggested " +
-			"threshold\tsuggested r_out\tD/2", "top-right");
-		return p;
-	}
-
-	private void report(final ProfileAnalysis.Result r, final double[] point, final int frame, final int frames) {
 		final StringBuilder b = new StringBuilder();
 		b.append(String.format(Locale.ROOT, "%s: '%s'%s, particle at (%.2f, %.2f) px%s%n", PLOT_TITLE, imp.getTitle(),
 			frames > 1 ? ", frame " + (frame + 1) : "", r.x(), r.y(), r.refined() ? String.format(Locale.ROOT,
 				" (point given: %.0f, %.0f)", point[0], point[1]) : " (not refined)"));
-		b.append(String.format(Locale.ROOT, "  background %.2f, noise sigma %.2f, peak %.2f (grey levels)%n", r
-			.background(), r.noise(), r.peak()));
-		b.append(String.format(Locale.ROOT,
-			"  profile within the noise of the background beyond %.2f px; + %.0f px = %.2f -> r_out = %.0f px%n", r
-				.reach(), ProfileAnalysis.R_OUT_MARGIN_PX, r.rOut(), suggested_r_out));
-		b.append(String.format(Locale.ROOT,
-			"  brightest point between two particles at contact (D = %.2f px): %.2f; + %.0f sigma = %.2f -> " +
-				"threshold = %s%n", r.diameter(), r.bridge(), ProfileAnalysis.THRESHOLD_MARGIN_SIGMAS, r.threshold(),
-			fmt(suggested_threshold)));
-		b.append(String.format(Locale.ROOT, "  active area radius at this threshold: %.2f px (D/2 = %.2f px)%n", r
-			.activeRadius(), r.diameter() / 2));
+		for (final String line : r.report(integerData))
+			b.append(wrap(line, LOG_WIDTH, "    ")).append('\n');
 		for (final String w : r.warnings())
 			b.append(wrap("  warning: " + w, LOG_WIDTH, "    ")).append('\n');
 		b.append(String.format(Locale.ROOT, "  macro: run(\"Contact Tracker\", \"threshold=%s r_out=%.0f diameter=%s\");",
-			fmt(suggested_threshold), suggested_r_out, fmt(r.diameter())));
+			fmt(suggested_threshold), suggested_r_out, fmt(Math.round(r.diameter() * 100) / 100.0)));
 		IJ.log(b.toString());
 	}
 

@@ -1,7 +1,6 @@
 package io.github.contacttracker.core;
 
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.List;
 
 import net.imglib2.RandomAccessibleInterval;
@@ -21,10 +20,6 @@ import net.imglib2.type.numeric.RealType;
  */
 public final class ContactTracker {
 
-	/** Above this elongation of its active area a component is flagged as a suspected merge. */
-	public static final double MERGE_ELONGATION = 1.5;
-	/** Above this multiple of the frame's median active area a component is flagged as a suspected merge. */
-	public static final double MERGE_AREA_RATIO = 1.8;
 
 	private final TrackerParameters params;
 
@@ -79,6 +74,17 @@ public final class ContactTracker {
 		return analyse(plane, frameIndex, keepRegions, null);
 	}
 
+	/** The first pass with shape flags: the particles every refinement starts from (package-private for tests). */
+	static Particle[] particles(final Plane plane, final TrackerParameters params) {
+		final List<Particle> found = new ArrayList<>();
+		for (final Region r : ComponentLabeling.label(plane, params.threshold(), params.connectivity())) {
+			// A component without any gradient line (a flat plateau) holds nothing to localize.
+			final Particle p = r.area() >= params.minArea() ? Particle.firstPass(plane, r, params.threshold()) : null;
+			if (p != null) found.add(p);
+		}
+		return withShapeFlags(found, NoiseEstimate.sigma(plane));
+	}
+
 	FrameResult analyse(final Plane plane, final int frameIndex, final boolean keepRegions,
 		final EmpiricalProfile profile)
 	{
@@ -91,10 +97,10 @@ public final class ContactTracker {
 			if (p != null) found.add(p);
 			else discarded++;
 		}
-		final Particle[] ps = withShapeFlags(found);
+		final double noise = NoiseEstimate.sigma(plane);
+		final Particle[] ps = withShapeFlags(found, noise);
 		final Refinement.Outcome outcome = params.method().refinement().refine(plane, ps, params, profile);
 		final Estimate[] est = outcome.estimates();
-		final double noise = NoiseEstimate.sigma(plane);
 		final List<Localization> spots = new ArrayList<>(ps.length);
 		final List<Region> active = new ArrayList<>(), second = new ArrayList<>();
 		final int dx = (int) plane.minX(), dy = (int) plane.minY();
@@ -126,24 +132,17 @@ public final class ContactTracker {
 	/** The iterative method stops when no centre moves more than this between passes (px). */
 	public static final double TOLERANCE = SecondPass.TOLERANCE;
 
-	/** Flags particles at the border and components that look like several particles merged. */
-	private static Particle[] withShapeFlags(final List<Particle> particles) {
-		final int n = particles.size();
-		double medianArea = Double.NaN;
-		if (n >= 3) {
-			final int[] areas = new int[n];
-			for (int k = 0; k < n; k++)
-				areas[k] = particles.get(k).region.area();
-			Arrays.sort(areas);
-			medianArea = n % 2 == 1 ? areas[n / 2] : 0.5 * (areas[n / 2 - 1] + areas[n / 2]);
-		}
-		final Particle[] ps = new Particle[n];
-		for (int k = 0; k < n; k++) {
+	/**
+	 * Flags particles at the border and components whose shape is that of several particles merged
+	 * ({@link ComponentShape}: elongated, or with a bay as deep as a waist between two lobes). Size plays no part:
+	 * particles in and out of focus differ in size, not in shape.
+	 */
+	private static Particle[] withShapeFlags(final List<Particle> particles, final double noise) {
+		final Particle[] ps = new Particle[particles.size()];
+		for (int k = 0; k < ps.length; k++) {
 			final Particle p = particles.get(k);
-			final boolean elongated = !p.atBorder && p.elongation > MERGE_ELONGATION;
-			final boolean large = p.region.area() > MERGE_AREA_RATIO * medianArea;
-			ps[k] = p.withShapeFlags((p.atBorder ? Flag.AT_BORDER.bit() : 0) | (elongated || large ? Flag.MERGED.bit()
-				: 0));
+			ps[k] = p.withShapeFlags((p.atBorder ? Flag.AT_BORDER.bit() : 0) | (p.shape.merged(p.atBorder, noise) ? Flag.MERGED
+				.bit() : 0));
 		}
 		return ps;
 	}

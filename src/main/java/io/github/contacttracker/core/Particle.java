@@ -13,13 +13,13 @@ final class Particle {
 	/** Intensity-above-threshold weighted centroid: the fallback of a degenerate first pass. */
 	final double centroidX, centroidY;
 	final boolean atBorder;
-	/** sqrt of the ratio of the principal second moments of the active area (1 for a disc). */
-	final double elongation;
+	/** The active area's shape: one disc, or several merged ({@link ComponentShape}). */
+	final ComponentShape shape;
 	/** The first pass on the whole active area (its flags include the shape flags once {@link #withShapeFlags}). */
 	final Estimate first;
 
 	private Particle(final Region region, final GradientField field, final double quality, final double centroidX,
-		final double centroidY, final boolean atBorder, final double elongation, final Estimate first)
+		final double centroidY, final boolean atBorder, final ComponentShape shape, final Estimate first)
 	{
 		this.region = region;
 		this.field = field;
@@ -27,7 +27,7 @@ final class Particle {
 		this.centroidX = centroidX;
 		this.centroidY = centroidY;
 		this.atBorder = atBorder;
-		this.elongation = elongation;
+		this.shape = shape;
 		this.first = first;
 	}
 
@@ -40,7 +40,7 @@ final class Particle {
 	static Particle firstPass(final Plane plane, final Region region, final double threshold) {
 		final GradientField field = GradientField.compute(plane, region);
 		double q = 0, qx = 0, qy = 0;
-		double sx = 0, sy = 0, sxx = 0, syy = 0, sxy = 0;
+		double sx = 0, sy = 0;
 		for (int r = 0; r < region.runCount(); r++) {
 			final int yy = region.runY(r);
 			for (int xx = region.runStart(r); xx <= region.runEnd(r); xx++) {
@@ -50,21 +50,12 @@ final class Particle {
 				qy += v * yy;
 				sx += xx;
 				sy += yy;
-				sxx += (double) xx * xx;
-				syy += (double) yy * yy;
-				sxy += (double) xx * yy;
 			}
 		}
 		final int n = region.area();
 		// Every pixel is >= threshold, so q > 0 unless all sit exactly on it: then the plain centroid.
 		final double centroidX = q > 0 ? qx / q : sx / n;
 		final double centroidY = q > 0 ? qy / q : sy / n;
-		final double cxx = sxx / n - (sx / n) * (sx / n), cyy = syy / n - (sy / n) * (sy / n);
-		final double cxy = sxy / n - (sx / n) * (sy / n);
-		final double tr = cxx + cyy, det = cxx * cyy - cxy * cxy;
-		final double disc = Math.sqrt(Math.max(0, tr * tr / 4 - det));
-		final double l1 = tr / 2 + disc, l2 = tr / 2 - disc;
-		final double elongation = l2 > 0 ? Math.sqrt(l1 / l2) : Double.POSITIVE_INFINITY;
 		final boolean atBorder = field.withoutGradient > 0 || region.minX() == 0 || region.minY() == 0 ||
 			region.maxX() == plane.width() - 1 || region.maxY() == plane.height() - 1;
 
@@ -72,12 +63,14 @@ final class Particle {
 		if (solve.solution().lines() == 0) return null;
 		final Estimate first = solve.solution().ok() ? Estimate.first(solve.solution().x(), solve.solution().y(), 0, n,
 			solve) : Estimate.first(centroidX, centroidY, Flag.DEGENERATE.bit(), n, null);
-		return new Particle(region, field, q, centroidX, centroidY, atBorder, elongation, first);
+		final ComponentShape shape = solve.solution().ok() ? ComponentShape.of(region, field, solve.solution().x(), solve
+			.solution().y()) : ComponentShape.of(region);
+		return new Particle(region, field, q, centroidX, centroidY, atBorder, shape, first);
 	}
 
 	/** @return this particle with {@code flags} (border, merge) added to its first-pass estimate */
 	Particle withShapeFlags(final int flags) {
-		return new Particle(region, field, quality, centroidX, centroidY, atBorder, elongation, first.withFlags(
+		return new Particle(region, field, quality, centroidX, centroidY, atBorder, shape, first.withFlags(
 			first.flags() | flags));
 	}
 

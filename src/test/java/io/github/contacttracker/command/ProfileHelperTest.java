@@ -114,7 +114,7 @@ class ProfileHelperTest {
 			"threshold within the noise margin");
 		// the measured profile is the true one
 		for (int k = 1; k < r.radius().length; k += 7)
-			assertEquals(type.background() + type.profile().value(r.radius()[k]), r.mean()[k], 1.5, "ring " + k);
+			assertEquals(type.background() + type.profile().value(r.radius()[k]), r.level()[k], 1.5, "ring " + k);
 	}
 
 	@Test
@@ -131,8 +131,11 @@ class ProfileHelperTest {
 	@Test
 	void badInputsAreRefused() {
 		final Scene s = scene(SHORT, 5L);
-		assertEquals("diameter must be the particle diameter in pixels (> 0), not 0", assertThrows(
-			IllegalArgumentException.class, () -> ProfileAnalysis.analyse(rai(s), s.cx(), s.cy(), 0, 0)).getMessage());
+		assertEquals("diameter must be the particle diameter in pixels (> 0; 0 = estimate it), not -1", assertThrows(
+			IllegalArgumentException.class, () -> ProfileAnalysis.analyse(rai(s), s.cx(), s.cy(), -1, 0)).getMessage());
+		// 0 estimates the diameter from the spots' distances: one particle is not enough
+		assertTrue(assertThrows(IllegalArgumentException.class, () -> ProfileAnalysis.analyse(rai(s), s.cx(), s.cy(), 0,
+			0)).getMessage().startsWith("too few particles (1) to estimate the diameter"));
 		assertTrue(assertThrows(IllegalArgumentException.class, () -> ProfileAnalysis.analyse(rai(s), -5, 3, 65, 0))
 			.getMessage().contains("is outside the image"));
 		// a point on the background

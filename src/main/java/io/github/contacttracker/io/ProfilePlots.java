@@ -1,0 +1,88 @@
+package io.github.contacttracker.io;
+
+import java.awt.Color;
+import java.io.IOException;
+import java.io.OutputStreamWriter;
+import java.io.Writer;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.util.Locale;
+
+import ij.gui.Plot;
+import io.github.contacttracker.core.ProfileAnalysis;
+
+/**
+ * The radial profile of {@link ProfileAnalysis} as a plot (the paper's Fig. 2: the profile, the background, the
+ * noise band, {@code D/2} and the suggested threshold and {@code r_out}) and as a CSV table; shared by the Fiji
+ * helper and the command line's {@code profile}.
+ */
+public final class ProfilePlots {
+
+	/** Colour of the noise band's lines: readable on the white plot and in its legend. */
+	public static final Color NOISE_BAND = new Color(90, 90, 90);
+
+	private ProfilePlots() {}
+
+	/**
+	 * @param r the analysis
+	 * @param title the plot's title
+	 * @param threshold the threshold to mark (rounded as suggested)
+	 * @param rOut the {@code r_out} to mark (rounded as suggested)
+	 * @return the plot (renders headless)
+	 */
+	public static Plot plot(final ProfileAnalysis.Result r, final String title, final double threshold,
+		final double rOut)
+	{
+		double lo = r.background() - r.noise(), hi = Math.max(threshold, r.background() + r.noise());
+		for (final double m : r.level())
+			if (Double.isFinite(m)) {
+				lo = Math.min(lo, m);
+				hi = Math.max(hi, m);
+			}
+		final double pad = 0.05 * (hi - lo);
+		lo -= pad;
+		hi += pad;
+		final double right = r.maxRadius();
+		final Plot p = new Plot(title, "distance from centre (px)", "grey level");
+		p.setLimits(0, right, lo, hi);
+		p.setLineWidth(2);
+		p.setColor(Color.BLACK);
+		p.add("line", r.radius(), r.level());
+		p.setLineWidth(1);
+		p.add("line", new double[] { 0, right }, new double[] { r.background(), r.background() });
+		p.setColor(NOISE_BAND);
+		p.setLineWidth(2);
+		p.add("line", new double[] { 0, right }, new double[] { r.background() + r.noise(), r.background() + r
+			.noise() });
+		p.add("line", new double[] { 0, right }, new double[] { r.background() - r.noise(), r.background() - r
+			.noise() });
+		p.setLineWidth(1);
+		p.setColor(Color.RED);
+		p.add("line", new double[] { 0, right }, new double[] { threshold, threshold });
+		p.setColor(Color.BLUE);
+		p.add("line", new double[] { rOut, rOut }, new double[] { lo, hi });
+		p.setColor(new Color(0, 150, 0));
+		p.add("line", new double[] { r.diameter() / 2, r.diameter() / 2 }, new double[] { lo, hi });
+		p.setColor(Color.BLACK);
+		p.addLegend("radial profile\tbackground\tnoise band (+1 sigma)\tnoise band (-1 sigma)\t" +
+			"suggested threshold\tsuggested r_out\tD/2", "top-right");
+		return p;
+	}
+
+	/** Writes the plot as a PNG, atomically. */
+	public static void writePng(final Plot plot, final Path file) throws IOException {
+		PotentialPlots.writePng(plot, file);
+	}
+
+	/** Writes the profile as CSV ({@code r_px,level,above_background,pixels}), atomically. */
+	public static void writeCsv(final ProfileAnalysis.Result r, final Path file) throws IOException {
+		AtomicFile.write(file, out -> {
+			final Writer w = new OutputStreamWriter(out, StandardCharsets.UTF_8);
+			w.write("r_px,level,above_background,pixels\n");
+			for (int k = 0; k < r.radius().length; k++)
+				if (r.count()[k] > 0) w.write(String.format(Locale.ROOT, "%.4f,%.4f,%.4f,%d%n", r.radius()[k], r.level()[k],
+					r.level()[k] - r.background(), r.count()[k]));
+			w.flush();
+		});
+	}
+}

@@ -1,0 +1,87 @@
+package io.github.contacttracker.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.SplittableRandom;
+
+import javax.imageio.ImageIO;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+import io.github.contacttracker.io.Calibration;
+import io.github.contacttracker.io.ImageFiles;
+import io.github.contacttracker.sim.PaperParticles;
+import io.github.contacttracker.sim.ParticleType;
+import io.github.contacttracker.sim.SimulatedStack;
+
+/** {@code contact-tracker profile}: the table, the PNG, the CSV and the line to copy; help and bad options. */
+class ProfileCliTest {
+
+	record Run(int status, String out, String err) {}
+
+	static Run run(final String... args) {
+		final ByteArrayOutputStream out = new ByteArrayOutputStream(), err = new ByteArrayOutputStream();
+		final int status = ContactTrackerCli.run(args, new PrintStream(out, true, StandardCharsets.UTF_8),
+			new PrintStream(err, true, StandardCharsets.UTF_8));
+		return new Run(status, out.toString(StandardCharsets.UTF_8), err.toString(StandardCharsets.UTF_8));
+	}
+
+	@Test
+	void profileOfAMovieSuggestsTheSettings(@TempDir final Path dir) throws Exception {
+		final ParticleType type = PaperParticles.silica553();
+		final double d = type.diameterPx();
+		final List<double[]> centres = new ArrayList<>();
+		for (final double[] c : new double[][] { { 2.5, 2.5 }, { 7.5, 2.5 }, { 2.5, 7.5 }, { 7, 7 }, { 8, 7 } })
+			centres.add(new double[] { c[0] * d + 0.3, c[1] * d - 0.2 });
+		final int size = (int) Math.ceil(10 * d);
+		final var frame = SimulatedStack.renderFrame(type, centres, size, size, type.noise(), new SplittableRandom(1), 8)
+			.image();
+		final Path tif = dir.resolve("movie.tif");
+		ImageFiles.saveTiff(ImageFiles.timeSeries("movie", List.of(frame), Calibration.PIXELS), tif);
+		final Path png = dir.resolve("profile.png"), csv = dir.resolve("profile.csv");
+		final Run r = run("profile", tif.toString(), "--png", png.toString(), "--csv", csv.toString());
+		assertEquals(0, r.status(), r.err());
+		assertTrue(r.out().contains("   r_px    level  above_bg  pixels"), r.out());
+		final String last = r.out().strip().lines().reduce((a, b) -> b).orElseThrow();
+		assertTrue(last.matches("suggested: --threshold \\d+ --r-out \\d+ --diameter [0-9.]+"), last);
+		final double diameter = Double.parseDouble(last.replaceAll(".*--diameter ", ""));
+		assertEquals(d, diameter, 0.02 * d, "diameter from the pair at contact");
+		assertTrue(ImageIO.read(png.toFile()).getWidth() > 100, "a PNG plot");
+		final List<String> rows = Files.readAllLines(csv);
+		assertEquals("r_px,level,above_background,pixels", rows.get(0));
+		assertTrue(rows.size() > 100);
+
+		// at a point, given the diameter
+		final Run at = run("profile", tif.toString(), "--at", Math.round(centres.get(0)[0]) + "," + Math.round(centres
+			.get(0)[1]), "--diameter", "65.3");
+		assertEquals(0, at.status(), at.err());
+		assertTrue(at.out().contains("profile of 1 particle around"), at.out());
+		assertTrue(at.out().strip().endsWith("--diameter 65.3"), at.out());
+	}
+
+	@Test
+	void helpAndBadOptions(@TempDir final Path dir) {
+		final Run help = run("profile", "--help");
+		assertEquals(0, help.status());
+		assertTrue(help.out().contains("--at=X,Y"), help.out());
+		final Run bad = run("profile", "movie.tif", "--frame", "two");
+		assertEquals(ContactTrackerCli.EXIT_BAD_INPUT, bad.status());
+		assertTrue(bad.err().startsWith("contact-tracker: error: profile: Invalid value for option '--frame'"), bad.err());
+		assertEquals(1, bad.err().strip().lines().count(), "one line");
+		final Run missing = run("profile", dir.resolve("none.tif").toString());
+		assertEquals(ContactTrackerCli.EXIT_BAD_INPUT, missing.status());
+		assertTrue(missing.err().contains("file not found"), missing.err());
+		assertFalse(ContactTrackerCli.USAGE.isEmpty());
+		assertTrue(ContactTrackerCli.USAGE.contains("profile MOVIE"));
+	}
+}
