@@ -8,6 +8,8 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
 import java.util.concurrent.CancellationException;
 import java.util.concurrent.atomic.AtomicInteger;
 
@@ -36,14 +38,26 @@ class StackTrackerTest {
 		final List<FrameResult> serial = new StackTracker(p).track(frames, false);
 		final AtomicInteger calls = new AtomicInteger();
 		final Set<String> workers = ConcurrentHashMap.newKeySet();
+		// the first two frames wait for each other: they meet only if two threads really run at once
+		final CountDownLatch both = new CountDownLatch(2);
 		final List<FrameResult> parallel = StackTracker.withThreads(3, () -> new StackTracker(p).track(frames
 			.size(), t -> {
 				workers.add(Thread.currentThread().getName());
+				if (t < 2) {
+					both.countDown();
+					try {
+						both.await(10, TimeUnit.SECONDS);
+					}
+					catch (final InterruptedException e) {
+						Thread.currentThread().interrupt();
+					}
+				}
 				return frames.get(t);
 			}, false, (done, total) -> {
 				calls.incrementAndGet();
 				assertEquals(9, total);
 			}, () -> false));
+		assertEquals(0, both.getCount(), "frames 1 and 2 must run at the same time on the caller's threads");
 		assertTrue(workers.size() > 1, "the caller's three threads must share the frames: " + workers);
 		assertEquals(9, calls.get());
 		final List<Localization> a = StackTracker.spots(serial), b = StackTracker.spots(parallel);
