@@ -8,6 +8,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.function.IntFunction;
 
 import ij.ImagePlus;
 import ij.ImageStack;
@@ -80,12 +81,23 @@ public final class TestMovies {
 	public static void writeTiff(final Path file, final boolean big, final int bits, final int format,
 		final List<float[]> frames, final String description, final long dataAt) throws IOException
 	{
-		final int bytes = bits / 8, planeBytes = W * H * bytes;
+		writeTiff(file, big, bits, format, frames.size(), W, H, frames::get, description, dataAt);
+	}
+
+	/**
+	 * As {@link #writeTiff(Path, boolean, int, int, List, String, long)}, frames of any size made one at a time
+	 * (a movie larger than the heap).
+	 */
+	public static void writeTiff(final Path file, final boolean big, final int bits, final int format,
+		final int count, final int w, final int h, final IntFunction<float[]> frame, final String description,
+		final long dataAt) throws IOException
+	{
+		final int bytes = bits / 8, planeBytes = w * h * bytes;
 		final byte[] desc = description == null ? null : (description + "\0").getBytes(StandardCharsets.UTF_8);
 		final int entries = desc == null ? 9 : 10;
 		final int entrySize = big ? 20 : 12, header = big ? 16 : 8;
 		final int ifdSize = (big ? 8 : 2) + entries * entrySize + (big ? 8 : 4);
-		final long descAt = header + (long) frames.size() * ifdSize;
+		final long descAt = header + (long) count * ifdSize;
 		final long data = Math.max(dataAt, descAt + (desc == null ? 0 : desc.length));
 		try (RandomAccessFile raf = new RandomAccessFile(file.toFile(), "rw")) {
 			raf.setLength(0);
@@ -93,12 +105,12 @@ public final class TestMovies {
 			b.put((byte) 'I').put((byte) 'I');
 			if (big) b.putShort((short) 43).putShort((short) 8).putShort((short) 0).putLong(header);
 			else b.putShort((short) 42).putInt(header);
-			for (int p = 0; p < frames.size(); p++) {
-				final long next = p + 1 < frames.size() ? header + (long) (p + 1) * ifdSize : 0;
+			for (int p = 0; p < count; p++) {
+				final long next = p + 1 < count ? header + (long) (p + 1) * ifdSize : 0;
 				if (big) b.putLong(entries);
 				else b.putShort((short) entries);
-				entry(b, big, 256, W);
-				entry(b, big, 257, H);
+				entry(b, big, 256, w);
+				entry(b, big, 257, h);
 				entry(b, big, 258, bits);
 				entry(b, big, 259, 1);
 				entry(b, big, 262, 1);
@@ -117,7 +129,8 @@ public final class TestMovies {
 			raf.write(b.array());
 			if (desc != null) raf.write(desc);
 			raf.seek(data);
-			for (final float[] f : frames) {
+			for (int p = 0; p < count; p++) {
+				final float[] f = frame.apply(p);
 				final ByteBuffer px = ByteBuffer.allocate(planeBytes).order(ByteOrder.LITTLE_ENDIAN);
 				for (final float v : f) {
 					if (bits == 8) px.put((byte) v);
