@@ -10,7 +10,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
-import java.util.Set;
+import java.util.concurrent.Callable;
 
 import io.github.contacttracker.core.Method;
 import io.github.contacttracker.eval.CramerRao;
@@ -20,16 +20,44 @@ import io.github.contacttracker.io.AtomicFile;
 import io.github.contacttracker.sim.ParticleType;
 import io.github.contacttracker.sim.Scenario;
 import io.github.contacttracker.sim.SimulatedStack;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Option;
 
 /**
  * {@code accuracy}: the paper's protocol for every method: two and three particles of the 5.53 um-like and
  * 2.06 um-like profiles, from 2 D down to contact, many noisy images per separation; prints per separation
  * and method the bias and spread of the measured distance against the Cramer-Rao bound.
  */
-final class AccuracyCommand {
+@Command(name = "accuracy", description = { "The paper's protocol for every method, against the Cramer-Rao " +
+	"bound." })
+final class AccuracyCommand implements Callable<Integer> {
 
-	private static final Set<String> OPTIONS = Set.of("reps", "threads", "csv", "particle", "scenario", "methods",
-		"separations");
+	@Option(names = "--reps", paramLabel = "N", defaultValue = "200", description = "Noisy images per separation " +
+		"(at least 2). Default: ${DEFAULT-VALUE}.")
+	int reps;
+
+	@Mixin
+	ContactTrackerCli.Threads threadsOption;
+
+	@Option(names = "--csv", paramLabel = "OUT.csv", description = "Also write the table as CSV.")
+	Path csvOption;
+
+	@Option(names = "--particle", paramLabel = "5.53,2.06", defaultValue = "5.53,2.06", description = "Particle " +
+		"types (um). Default: ${DEFAULT-VALUE}.")
+	String particles;
+
+	@Option(names = "--scenario", paramLabel = "pair,triple", defaultValue = "pair,triple", description = "Scenarios. " +
+		"Default: ${DEFAULT-VALUE}.")
+	String scenarioList;
+
+	@Option(names = "--methods", paramLabel = "M,...", defaultValue = "first,paper,iterative,deblend,fit",
+		description = "Methods. Default: ${DEFAULT-VALUE}.")
+	String methodList;
+
+	@Option(names = "--separations", paramLabel = "R,...", description = "Separations over the diameter (1 = " +
+		"contact). Default: 2 down to 1.")
+	String separationList;
 
 	private final PrintStream out;
 
@@ -37,22 +65,20 @@ final class AccuracyCommand {
 		this.out = out;
 	}
 
-	int run(final String[] args) throws IOException {
-		final Options o = new Options(args, OPTIONS);
-		final int reps = o.integer("reps", 200);
+	@Override
+	public Integer call() throws IOException {
 		if (reps < 2) throw new InvalidInputException("--reps must be at least 2");
-		final int threads = o.integer("threads", 0);
-		final Path csv = o.outputPath("csv");
+		final Path csv = ContactTrackerCli.output("--csv", csvOption);
 		final List<ParticleType> types = new ArrayList<>();
-		for (final String p : o.string("particle", "5.53,2.06").split(","))
+		for (final String p : ContactTrackerCli.list(particles))
 			types.add(SimulateCommand.particle(p));
 		final List<Scenario> scenarios = new ArrayList<>();
-		for (final String s : o.string("scenario", "pair,triple").split(","))
+		for (final String s : ContactTrackerCli.list(scenarioList))
 			scenarios.add(SimulateCommand.scenario(s));
 		final List<Method> methods = new ArrayList<>();
-		for (final String m : o.string("methods", "first,paper,iterative,deblend,fit").split(","))
+		for (final String m : ContactTrackerCli.list(methodList))
 			methods.add(Method.parse(m));
-		final double[] separations = parseList(o.string("separations", null));
+		final double[] separations = parseList(separationList);
 
 		final StringBuilder table = new StringBuilder(
 			"particle,scenario,separation_over_d,method,images,measured,failures,fallbacks,mean_error_nm,std_nm," +
@@ -60,7 +86,7 @@ final class AccuracyCommand {
 		final long start = System.nanoTime();
 		for (final ParticleType type : types)
 			for (final Scenario scenario : scenarios) {
-				final DistanceStudy study = new DistanceStudy(type, scenario, threads);
+				final DistanceStudy study = new DistanceStudy(type, scenario, threadsOption.threads);
 				out.printf(Locale.ROOT, "%n%s, %s (D = %.1f px at %.1f nm/px), threshold %.0f, r_out %.0f px, %d " +
 					"images per separation, %s%n", type.name(), scenario == Scenario.PAIR ? "two particles" :
 						"three particles", type.diameterPx(), type.pixelSizeNm(), type.threshold(), type.rOut(), reps, type

@@ -4,7 +4,7 @@ import io.github.contacttracker.core.InvalidInputException;
 import java.io.PrintStream;
 import java.util.List;
 import java.util.Locale;
-import java.util.Set;
+import java.util.concurrent.Callable;
 
 import io.github.contacttracker.core.Method;
 import io.github.contacttracker.core.StackTracker;
@@ -15,14 +15,28 @@ import io.github.contacttracker.sim.SimulatedStack;
 import net.imglib2.img.array.ArrayImg;
 import net.imglib2.img.basictypeaccess.array.ByteArray;
 import net.imglib2.type.numeric.integer.UnsignedByteType;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
 
 /**
  * {@code bench}: speed of each method on a simulated 512x512 8-bit stack with 12 particles (4 touching pairs),
  * on one thread and on all, against the time of one plain read pass over the same frames (the memory limit).
  */
-final class BenchCommand {
+@Command(name = "bench", description = { "Speed of each method on a simulated 512x512 8-bit stack with 12 " +
+	"particles, on one thread and on all." })
+final class BenchCommand implements Callable<Integer> {
 
-	private static final Set<String> OPTIONS = Set.of("frames", "rounds", "profile-frames");
+	@Option(names = "--frames", paramLabel = "N", defaultValue = "400", description = "Frames. Default: " +
+		"${DEFAULT-VALUE}.")
+	int frames;
+
+	@Option(names = "--rounds", paramLabel = "N", defaultValue = "5", description = "Timed rounds (the best " +
+		"counts). Default: ${DEFAULT-VALUE}.")
+	int rounds;
+
+	@Option(names = "--profile-frames", paramLabel = "N", defaultValue = "64", description = "Frames for the " +
+		"slower profile methods (deblend, fit). Default: ${DEFAULT-VALUE}.")
+	int profileFramesOption;
 
 	private final PrintStream out;
 
@@ -30,10 +44,9 @@ final class BenchCommand {
 		this.out = out;
 	}
 
-	int run(final String[] args) {
-		final Options o = new Options(args, OPTIONS);
-		final int frames = o.integer("frames", 400), rounds = o.integer("rounds", 5);
-		final int profileFrames = Math.min(frames, o.integer("profile-frames", 64));
+	@Override
+	public Integer call() {
+		final int profileFrames = Math.min(frames, profileFramesOption);
 		if (frames < 1 || rounds < 1 || profileFrames < 1)
 			throw new InvalidInputException("--frames, --rounds and --profile-frames must be at least 1");
 		final ParticleType type = PaperParticles.silica553();

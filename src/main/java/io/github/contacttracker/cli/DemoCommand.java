@@ -8,7 +8,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
-import java.util.Set;
+import java.util.concurrent.Callable;
 
 import io.github.contacttracker.core.ContactTracker;
 import io.github.contacttracker.core.FrameResult;
@@ -20,15 +20,29 @@ import io.github.contacttracker.sim.PaperParticles;
 import io.github.contacttracker.sim.ParticleType;
 import io.github.contacttracker.sim.Scenario;
 import io.github.contacttracker.sim.SimulatedStack;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Option;
 
 /**
  * {@code demo}: the paper's two scenarios for 5.53 um particles, from well apart to contact, tracked with the
  * first pass, the paper's method and the default method; prints the distance errors and writes an overlay PNG
  * at contact.
  */
-final class DemoCommand {
+@Command(name = "demo", description = { "Simulate pairs and triples of 5.53 um particles from apart to contact, " +
+	"track them, print the distance errors, write an overlay PNG." })
+final class DemoCommand implements Callable<Integer> {
 
-	private static final Set<String> OPTIONS = Set.of("reps", "out-dir", "threads");
+	@Option(names = "--reps", paramLabel = "N", defaultValue = "50", description = "Noisy images per separation " +
+		"(at least 2). Default: ${DEFAULT-VALUE}.")
+	int reps;
+
+	@Option(names = "--out-dir", paramLabel = "DIR", defaultValue = "demo-output", description = "Where the " +
+		"overlay PNG goes. Default: ${DEFAULT-VALUE}.")
+	Path dir;
+
+	@Mixin
+	ContactTrackerCli.Threads threadsOption;
 
 	private final PrintStream out;
 
@@ -36,18 +50,15 @@ final class DemoCommand {
 		this.out = out;
 	}
 
-	int run(final String[] args) throws IOException {
-		final Options o = new Options(args, OPTIONS);
-		final int reps = o.integer("reps", 50);
+	@Override
+	public Integer call() throws IOException {
 		if (reps < 2) throw new InvalidInputException("--reps must be at least 2");
-		final Path dir = Path.of(o.string("out-dir", "demo-output"));
-		final int threads = o.integer("threads", 0);
 		Files.createDirectories(dir);
 		final ParticleType type = PaperParticles.silica553();
 		final List<OverlayPng.Panel> panels = new ArrayList<>();
 		final long start = System.nanoTime();
 		for (final Scenario scenario : Scenario.values()) {
-			final DistanceStudy study = new DistanceStudy(type, scenario, threads);
+			final DistanceStudy study = new DistanceStudy(type, scenario, threadsOption.threads);
 			out.printf(Locale.ROOT, "%n%s of %s particles (%.1f nm/px, D = %.1f px): threshold %.0f, r_out %.0f px, " +
 				"%d images per separation, noise %s%n", scenario == Scenario.PAIR ? "Two" : "Three", type.name(), type
 					.pixelSizeNm(), type.diameterPx(), type.threshold(), type.rOut(), reps, type.noise());

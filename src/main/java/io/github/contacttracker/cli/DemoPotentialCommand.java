@@ -8,7 +8,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
-import java.util.Set;
+import java.util.concurrent.Callable;
 
 import io.github.contacttracker.core.Localization;
 import io.github.contacttracker.core.Method;
@@ -19,15 +19,33 @@ import io.github.contacttracker.io.SpotCsvWriter;
 import io.github.contacttracker.potential.PairCorrelation;
 import io.github.contacttracker.sim.FluidMovie;
 import io.github.contacttracker.sim.ParticleType;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Option;
 
 /**
  * {@code demo-potential}: a simulated 2D fluid with a known pair potential (hard core + short-range attraction),
  * rendered as a movie, tracked with the default method and with the first pass, and U(r) measured from both
  * against the truth; writes the comparison plot and the default method's spots (to rerun {@code potential} on).
  */
-final class DemoPotentialCommand {
+@Command(name = "demo-potential", description = { "A simulated fluid with a known U(r): U(r) by the default " +
+	"method and the first pass against the truth." })
+final class DemoPotentialCommand implements Callable<Integer> {
 
-	private static final Set<String> OPTIONS = Set.of("frames", "particle", "out-dir", "threads");
+	@Option(names = "--frames", paramLabel = "N", defaultValue = "300", description = "Frames to simulate (at " +
+		"least 10). Default: ${DEFAULT-VALUE}.")
+	int frames;
+
+	@Option(names = "--particle", paramLabel = "2.06|5.53", defaultValue = "2.06", description = "Particle type " +
+		"(um). Default: ${DEFAULT-VALUE}.")
+	String particle;
+
+	@Option(names = "--out-dir", paramLabel = "DIR", defaultValue = "demo-output", description = "Where the plot " +
+		"and spots go. Default: ${DEFAULT-VALUE}.")
+	Path dir;
+
+	@Mixin
+	ContactTrackerCli.Threads threadsOption;
 
 	private final PrintStream out;
 
@@ -35,16 +53,10 @@ final class DemoPotentialCommand {
 		this.out = out;
 	}
 
-	int run(final String[] args) throws IOException {
-		final Options o = new Options(args, OPTIONS);
-		if (!o.positional().isEmpty())
-			throw new InvalidInputException("demo-potential takes no positional argument: '" + o.positional().get(0) +
-				"'");
-		final int frames = o.integer("frames", 300);
+	@Override
+	public Integer call() throws IOException {
 		if (frames < 10) throw new InvalidInputException("--frames must be at least 10");
-		final ParticleType type = SimulateCommand.particle(o.string("particle", "2.06"));
-		final Path dir = Path.of(o.string("out-dir", "demo-output"));
-		final int threads = o.integer("threads", 0);
+		final ParticleType type = SimulateCommand.particle(particle);
 		Files.createDirectories(dir);
 		final long start = System.nanoTime();
 
@@ -54,8 +66,8 @@ final class DemoPotentialCommand {
 			"Carlo sweeps apart%n  true potential: %s%n", type.name(), d, type.pixelSizeNm(), study.particles(), study
 				.size(), study.size(), frames, study.sweepsBetween(), study.interaction().describe());
 		final FluidMovie movie = study.simulate();
-		final List<Localization> fit = study.track(movie, Method.DEFAULT, threads);
-		final List<Localization> first = study.track(movie, Method.FIRST, threads);
+		final List<Localization> fit = study.track(movie, Method.DEFAULT, threadsOption.threads);
+		final List<Localization> first = study.track(movie, Method.FIRST, threadsOption.threads);
 		final PairCorrelation.Result truth = study.measureTruth(movie), best = study.measure(fit), biased = study
 			.measure(first);
 

@@ -9,7 +9,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Locale;
-import java.util.Set;
+import java.util.concurrent.Callable;
 
 import io.github.contacttracker.io.PotentialCsv;
 import io.github.contacttracker.io.PotentialPlots;
@@ -18,15 +18,50 @@ import io.github.contacttracker.potential.FieldOfView;
 import io.github.contacttracker.potential.PairCorrelation;
 import io.github.contacttracker.potential.PotentialReport;
 import io.github.contacttracker.potential.SpotSet;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
 
 /**
  * {@code potential SPOTS.csv --bin W --r-max R [--csv OUT.csv] [--png OUT.png]}: g(r) and U(r)/kT from a spots
  * table (ours or TrackMate's export). CSV to stdout without {@code --csv}; the summary then goes to stderr.
  */
-final class PotentialCommand {
+@Command(name = "potential", description = { "Pair distribution g(r) and pair potential U(r)/kT from a spots " +
+	"table (ours or TrackMate's export); CSV to stdout without --csv." })
+final class PotentialCommand implements Callable<Integer> {
 
-	private static final Set<String> OPTIONS = Set.of("bin", "r-max", "csv", "png", "width", "height", "start-frame",
-		"flagged", "zero");
+	@Parameters(paramLabel = "SPOTS.csv", description = "The spots table.")
+	Path input;
+
+	@Option(names = "--bin", required = true, paramLabel = "W", description = "Bin width of r, in the spots' units.")
+	double bin;
+
+	@Option(names = "--r-max", required = true, paramLabel = "R", description = "Largest r, in the spots' units.")
+	double rMax;
+
+	@Option(names = "--csv", paramLabel = "OUT.csv", description = "Write the table here (else to stdout).")
+	Path csvOption;
+
+	@Option(names = "--png", paramLabel = "OUT.png", description = "Also plot U(r).")
+	Path pngOption;
+
+	@Option(names = "--width", paramLabel = "W", description = "Field of view width (with --height); else " +
+		"inferred from the spots.")
+	Double width;
+
+	@Option(names = "--height", paramLabel = "H", description = "Field of view height (with --width).")
+	Double height;
+
+	@Option(names = "--start-frame", paramLabel = "F", defaultValue = "0", description = "Leave out earlier " +
+		"frames. Default: ${DEFAULT-VALUE}.")
+	int startFrame;
+
+	@Option(names = "--flagged", paramLabel = "drop|keep", defaultValue = "drop", description = "Flagged spots: " +
+		"left out or kept. Default: ${DEFAULT-VALUE}.")
+	String flagged;
+
+	@Option(names = "--zero", paramLabel = "FROM,TO", description = "Set U(r) to 0 on average over this range of r.")
+	String zeroOption;
 
 	private final PrintStream out;
 	private final PrintStream err;
@@ -36,19 +71,17 @@ final class PotentialCommand {
 		this.err = err;
 	}
 
-	int run(final String[] args) throws IOException {
-		final Options o = new Options(args, OPTIONS);
-		if (o.positional().size() != 1)
-			throw new InvalidInputException("potential needs exactly one spots CSV file, got " + o.positional().size());
-		final Path input = Path.of(o.positional().get(0));
-		final double bin = o.number("bin"), rMax = o.number("r-max");
-		final Path csv = o.outputPath("csv"), png = o.outputPath("png");
-		if (o.has("width") != o.has("height"))
+	@Override
+	public Integer call() throws IOException {
+		if (!Double.isFinite(bin) || !Double.isFinite(rMax))
+			throw new InvalidInputException("--bin and --r-max must be finite numbers");
+		final Path csv = ContactTrackerCli.output("--csv", csvOption), png = ContactTrackerCli.output("--png",
+			pngOption);
+		if ((width == null) != (height == null))
 			throw new InvalidInputException("give both --width and --height of the field of view, or neither (then " +
 				"it is inferred from the spots)");
-		final SpotSet.Selection selection = new SpotSet.Selection(o.integer("start-frame", 0), dropFlagged(o.string(
-			"flagged", "drop")));
-		final double[] zero = o.has("zero") ? zeroRange(o.string("zero", "")) : null;
+		final SpotSet.Selection selection = new SpotSet.Selection(startFrame, dropFlagged(flagged));
+		final double[] zero = zeroOption != null ? zeroRange(zeroOption) : null;
 
 		final SpotTableCsv.Table table = SpotTableCsv.read(input, SpotSet::reads);
 		final SpotSet spots;
@@ -61,8 +94,8 @@ final class PotentialCommand {
 		if (spots.size() == 0)
 			throw new InvalidInputException(input + ": no spot left (" + spots.flaggedLeftOut() + " flagged, " + spots
 				.earlyLeftOut() + " before the start frame)");
-		final FieldOfView field = o.has("width") ? FieldOfView.of(o.number("width"), o.number("height")) : FieldOfView
-			.inferred(spots.allX(), spots.allY());
+		final FieldOfView field = width != null ? FieldOfView.of(width, height) : FieldOfView.inferred(spots.allX(),
+			spots.allY());
 		PairCorrelation.Result result = PairCorrelation.compute(spots, field, bin, rMax);
 		if (zero != null) result = result.withZero(zero[0], zero[1]);
 

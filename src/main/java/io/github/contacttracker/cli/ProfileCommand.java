@@ -72,27 +72,6 @@ public final class ProfileCommand implements Callable<Integer> {
 		this.out = out;
 	}
 
-	/**
-	 * Parses and runs; bad input is thrown as {@link InvalidInputException} (the caller prints it, exit 2).
-	 *
-	 * @return the exit status
-	 */
-	static int run(final String[] args, final PrintStream out, final PrintStream err) throws IOException {
-		final ProfileCommand command = new ProfileCommand(out);
-		final CommandLine cl = new CommandLine(command);
-		cl.setOut(new PrintWriter(out, true));
-		cl.setErr(new PrintWriter(err, true));
-		final CommandLine.ParseResult parsed;
-		try {
-			parsed = cl.parseArgs(args);
-		}
-		catch (final CommandLine.ParameterException e) {
-			throw new InvalidInputException("profile: " + e.getMessage() + " (contact-tracker profile --help)");
-		}
-		if (CommandLine.printHelpIfRequested(parsed)) return 0;
-		return command.call();
-	}
-
 	@Override
 	public Integer call() throws IOException {
 		if (at != null && at.length != 2) throw new InvalidInputException("--at needs X,Y, not " + at.length +

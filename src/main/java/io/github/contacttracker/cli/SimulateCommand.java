@@ -10,7 +10,7 @@ import java.io.PrintStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Locale;
-import java.util.Set;
+import java.util.concurrent.Callable;
 
 import io.github.contacttracker.io.Calibration;
 import io.github.contacttracker.io.ImageFiles;
@@ -18,12 +18,43 @@ import io.github.contacttracker.sim.PaperParticles;
 import io.github.contacttracker.sim.ParticleType;
 import io.github.contacttracker.sim.Scenario;
 import io.github.contacttracker.sim.SimulatedStack;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
 
 /** {@code simulate --scenario pair|triple --separation R --out stack.tif --truth truth.csv}. */
-final class SimulateCommand {
+@Command(name = "simulate", description = { "Write a simulated TIFF time series of a pair or triple and its " +
+	"truth CSV; print the suggested --threshold and --r-out." })
+final class SimulateCommand implements Callable<Integer> {
 
-	private static final Set<String> OPTIONS = Set.of("scenario", "separation", "frames", "seed", "out", "truth",
-		"particle", "bit-depth");
+	@Option(names = "--scenario", required = true, paramLabel = "pair|triple", description = "Two particles, or " +
+		"three starting as a touching triangle.")
+	String scenarioName;
+
+	@Option(names = "--separation", required = true, paramLabel = "R_OVER_D", description = "Centre distance over " +
+		"the diameter (1 = contact).")
+	double separation;
+
+	@Option(names = "--frames", paramLabel = "N", defaultValue = "100", description = "Frames. Default: " +
+		"${DEFAULT-VALUE}.")
+	int frames;
+
+	@Option(names = "--seed", paramLabel = "S", defaultValue = "1", description = "Random seed. Default: " +
+		"${DEFAULT-VALUE}.")
+	long seed;
+
+	@Option(names = "--out", required = true, paramLabel = "stack.tif", description = "The TIFF to write.")
+	Path outFile;
+
+	@Option(names = "--truth", required = true, paramLabel = "truth.csv", description = "The true centres (CSV).")
+	Path truthOption;
+
+	@Option(names = "--particle", paramLabel = "5.53|2.06", defaultValue = "5.53", description = "Particle type " +
+		"(um). Default: ${DEFAULT-VALUE}.")
+	String particleName;
+
+	@Option(names = "--bit-depth", paramLabel = "8|16", defaultValue = "8", description = "Bits per pixel. " +
+		"Default: ${DEFAULT-VALUE}.")
+	int bits;
 
 	private final PrintStream out;
 
@@ -31,23 +62,17 @@ final class SimulateCommand {
 		this.out = out;
 	}
 
-	int run(final String[] args) throws IOException {
-		final Options o = new Options(args, OPTIONS);
-		if (!o.positional().isEmpty())
-			throw new InvalidInputException("simulate takes no positional argument: '" + o.positional().get(0) + "'");
-		final Scenario scenario = scenario(o.required("scenario"));
-		final double separation = o.number("separation");
-		if (!(separation > 0)) throw new InvalidInputException("--separation must be positive (1 = contact)");
-		final int frames = o.integer("frames", 100);
+	@Override
+	public Integer call() throws IOException {
+		final Scenario scenario = scenario(scenarioName);
+		if (!(separation > 0) || Double.isInfinite(separation))
+			throw new InvalidInputException("--separation must be positive (1 = contact)");
 		if (frames < 1) throw new InvalidInputException("--frames must be at least 1");
-		final int bits = o.integer("bit-depth", 8);
 		if (bits != 8 && bits != 16) throw new InvalidInputException("--bit-depth must be 8 or 16");
-		final ParticleType type = particle(o.string("particle", "5.53"));
-		o.required("out");
-		o.required("truth");
-		final Path stackFile = o.outputPath("out"), truthFile = o.outputPath("truth");
-		final SimulatedStack<?> stack = SimulatedStack.simulate(type, scenario, separation, frames, o.longInteger(
-			"seed", 1), bits);
+		final ParticleType type = particle(particleName);
+		final Path stackFile = ContactTrackerCli.output("--out", outFile), truthFile = ContactTrackerCli.output(
+			"--truth", truthOption);
+		final SimulatedStack<?> stack = SimulatedStack.simulate(type, scenario, separation, frames, seed, bits);
 		final Calibration cal = Calibration.ofPixelSize(type.pixelSizeMicrons(), "micron");
 		ImageFiles.saveTiff(ImageFiles.timeSeries(stackFile.getFileName().toString(), stack.frames(), cal), stackFile);
 		try {

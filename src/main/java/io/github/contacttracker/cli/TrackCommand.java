@@ -6,9 +6,7 @@ import java.io.PrintStream;
 import java.io.Writer;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
-import java.util.LinkedHashSet;
-import java.util.Locale;
-import java.util.Set;
+import java.util.concurrent.Callable;
 
 import ij.ImagePlus;
 import io.github.contacttracker.core.InvalidInputException;
@@ -23,68 +21,59 @@ import io.github.contacttracker.pipeline.TrackingResult;
 import io.github.contacttracker.settings.Setting;
 import io.github.contacttracker.settings.SettingValues;
 import io.github.contacttracker.settings.TrackingSettings;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Model.OptionSpec;
+import picocli.CommandLine.Model.PositionalParamSpec;
 
 /**
- * {@code contact-tracker track INPUT.tif --threshold T --r-out R [options]}: localizes every frame with
- * {@link TrackingPipeline} and writes the spots as CSV (stdout without {@code --csv}) and optionally as a TrackMate
- * file. The tracking options are {@link TrackingSettings#ALL}, each as {@link Setting#cliOption()}.
+ * {@code contact-tracker track MOVIE --threshold T --r-out R [options]}: localizes every frame with
+ * {@link TrackingPipeline}, frames read from disk as the threads need them, and writes the spots as CSV (stdout
+ * without {@code --csv}) and optionally as a TrackMate file. The tracking options and their help are
+ * {@link TrackingSettings#ALL}, each as {@link Setting#cliOption()}, built with picocli's programmatic API so they
+ * cannot drift from the descriptor; their values are read by the settings themselves (the same checks and
+ * messages as in Fiji and TrackMate).
  */
-final class TrackCommand {
+final class TrackCommand implements Callable<Integer> {
 
-	/** Options of the run itself, beside the tracking settings. */
-	private static final String THREADS = "threads", CSV = "csv", XML = "trackmate-xml";
+	/** The system property the launcher sets to {@code true} when standard error is a terminal. */
+	static final String STDERR_TTY = "contact.tracker.stderr.tty";
 
 	private final PrintStream out;
 	private final PrintStream err;
+	private CommandSpec spec;
 
-	TrackCommand(final PrintStream out, final PrintStream err) {
+	private TrackCommand(final PrintStream out, final PrintStream err) {
 		this.out = out;
 		this.err = err;
 	}
 
-	/** @return every option name (without "--") */
-	static Set<String> options() {
-		final Set<String> names = new LinkedHashSet<>();
+	/** @return the {@code track} command: its options generated from the settings descriptor */
+	static CommandSpec spec(final PrintStream out, final PrintStream err) {
+		final TrackCommand command = new TrackCommand(out, err);
+		final CommandSpec spec = CommandSpec.wrapWithoutInspection(command);
+		command.spec = spec;
+		spec.name("track");
+		spec.usageMessage().description("Localize the particles of every frame of a movie; the spots go to stdout as " +
+			"CSV without --csv.", "MOVIE: a TIFF (multi-page, BigTIFF, OME-TIFF, 8/16/32-bit integer or 32/64-bit " +
+				"float), an AVI (uncompressed, MJPEG, PNG), a folder of TIFF/PNG/JPEG frames, or another image ImageJ " +
+				"opens.");
+		spec.addPositional(PositionalParamSpec.builder().paramLabel("MOVIE").type(Path.class).description(
+			"The movie, image or folder of frames.").build());
 		for (final Setting<?> s : TrackingSettings.ALL)
-			names.add(s.cliOption().substring(2));
-		names.add(THREADS);
-		names.add(CSV);
-		names.add(XML);
-		return names;
-	}
-
-	/** @return the usage text of {@code track}, generated from the settings so it cannot drift from them */
-	static String usage() {
-		final StringBuilder sb = new StringBuilder("  track INPUT.tif");
-		for (final Setting<?> s : TrackingSettings.ALL)
-			if (s.isImageSpecific()) sb.append(' ').append(s.cliOption()).append(' ').append(metavar(s));
-		sb.append(" [options]\n");
-		sb.append("                             localize the particles of every frame; CSV to stdout without --csv\n");
-		for (final Setting<?> s : TrackingSettings.ALL)
-			option(sb, s.cliOption() + " " + metavar(s), s.help() + (s.isImageSpecific() ? " Required." : " Default " +
-				s.defaultValue() + "."));
-		option(sb, "--threads N", "Worker threads. Default: all processors.");
-		option(sb, "--csv OUT.csv", "Write the spots here.");
-		option(sb, "--trackmate-xml OUT.xml", "Also write a TrackMate file (with --csv: both or neither).");
-		return sb.toString().stripTrailing();
-	}
-
-	/** One option of the usage: its name, then its help wrapped to 100 columns under the help column. */
-	private static void option(final StringBuilder sb, final String name, final String help) {
-		final String indent = " ".repeat(33);
-		String line = String.format(Locale.ROOT, "      %-26s ", name);
-		if (line.length() > indent.length()) {
-			sb.append(line.stripTrailing()).append('\n');
-			line = indent;
-		}
-		for (final String word : help.split(" ")) {
-			if (line.length() + word.length() > 100 && !line.isBlank()) {
-				sb.append(line.stripTrailing()).append('\n');
-				line = indent;
-			}
-			line += word + " ";
-		}
-		sb.append(line.stripTrailing()).append('\n');
+			spec.addOption(OptionSpec.builder(s.cliOption()).type(String.class).paramLabel(metavar(s)).required(s
+				.isImageSpecific()).description(s.help() + (s.isImageSpecific() ? "" : " Default: " + s.defaultValue() +
+					".")).build());
+		spec.addOption(OptionSpec.builder("--threads").type(int.class).paramLabel("N").defaultValue("0").description(
+			"Worker threads (0: all processors).").build());
+		spec.addOption(OptionSpec.builder("--csv").type(Path.class).paramLabel("OUT.csv").description(
+			"Write the spots here.").build());
+		spec.addOption(OptionSpec.builder("--trackmate-xml").type(Path.class).paramLabel("OUT.xml").description(
+			"Also write a TrackMate file (with --csv: both or neither).").build());
+		spec.addOption(OptionSpec.builder("--progress").type(boolean.class).negatable(true).description(
+			"Show progress (frames/s, time left) on stderr; by default only when stderr is a terminal.").build());
+		spec.addOption(OptionSpec.builder("-h", "--help").usageHelp(true).description("Show this help and exit.")
+			.build());
+		return spec;
 	}
 
 	private static String metavar(final Setting<?> s) {
@@ -93,24 +82,39 @@ final class TrackCommand {
 			"X";
 	}
 
-	int run(final String[] args) throws IOException {
-		final Options o = new Options(args, options());
-		if (o.positional().size() != 1)
-			throw new InvalidInputException("track needs exactly one input file, got " + o.positional().size());
-		final Path input = Path.of(o.positional().get(0));
-		final SettingValues settings = settings(o);
-		final Outputs outputs = new Outputs(o.path(CSV), o.path(XML), null);
+	private <V> V option(final String name) {
+		return spec.findOption(name).getValue();
+	}
+
+	private boolean given(final Setting<?> s) {
+		return spec.commandLine().getParseResult().hasMatchedOption(s.cliOption());
+	}
+
+	@Override
+	public Integer call() throws IOException {
+		final Path input = spec.positionalParameters().get(0).getValue();
+		final SettingValues settings = settings();
+		final Outputs outputs = new Outputs(option("--csv"), option("--trackmate-xml"), null);
 		outputs.check();
-		final int threads = o.integer(THREADS, 0);
+		final int threads = option("--threads");
+		final Boolean progressOption = spec.commandLine().getParseResult().hasMatchedOption("--progress") ? option(
+			"--progress") : null;
+		final boolean showProgress = progressOption != null ? progressOption : Boolean.getBoolean(STDERR_TTY);
 
 		final ImagePlus imp = ImageFiles.open(input);
 		// without --channel, a multi-channel image is refused rather than silently reduced to its first channel
-		final ImagePlusFrames frames = ImagePlusFrames.of(imp, o.has(option(TrackingSettings.CHANNEL)) ? settings
-			.channel() : 0);
+		final ImagePlusFrames frames = ImagePlusFrames.of(imp, given(TrackingSettings.CHANNEL) ? settings.channel() : 0);
 		final Outputs files = new Outputs(outputs.csv(), outputs.trackMateXml(), outputs.trackMateXml() == null ? null
 			: ImageSource.of(input, frames.width(), frames.height(), frames.frameCount()));
-		final TrackingResult result = new TrackingPipeline(settings).run(FrameSource.of(frames, input.toString()),
-			files, threads, false, null, () -> false);
+		final ProgressLine progress = showProgress ? new ProgressLine(err) : null;
+		final TrackingResult result;
+		try {
+			result = new TrackingPipeline(settings).run(FrameSource.of(frames, input.toString()), files, threads, false,
+				progress == null ? null : progress::progress, () -> false);
+		}
+		finally {
+			if (progress != null) progress.end();
+		}
 		if (files.csv() == null) {
 			final Writer w = new OutputStreamWriter(out, StandardCharsets.UTF_8);
 			SpotCsvWriter.write(w, result.spots(), frames.calibration());
@@ -120,25 +124,17 @@ final class TrackCommand {
 		return 0;
 	}
 
-	private static String option(final Setting<?> s) {
-		return s.cliOption().substring(2);
-	}
-
 	/** @return the tracking settings given on the command line, the others at their defaults */
-	static SettingValues settings(final Options o) {
+	private SettingValues settings() {
 		SettingValues v = SettingValues.defaults();
 		for (final Setting<?> s : TrackingSettings.ALL) {
-			final String name = option(s);
-			if (o.has(name)) {
-				try {
-					v = v.withText(s, o.string(name, null));
-				}
-				catch (final InvalidInputException e) {
-					throw new InvalidInputException("option " + s.cliOption() + ": " + e.getMessage(), e);
-				}
+			if (!given(s)) continue;
+			try {
+				v = v.withText(s, option(s.cliOption()));
 			}
-			else if (s.isImageSpecific()) throw new InvalidInputException("missing option " + s.cliOption() + " (" + s
-				.help() + ")");
+			catch (final InvalidInputException e) {
+				throw new InvalidInputException("option " + s.cliOption() + ": " + e.getMessage(), e);
+			}
 		}
 		return v;
 	}

@@ -2,6 +2,9 @@ package io.github.contacttracker.io;
 
 import io.github.contacttracker.core.InvalidInputException;
 import java.io.IOException;
+import java.io.InputStream;
+import java.io.UncheckedIOException;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
@@ -11,7 +14,9 @@ import java.util.List;
 import ij.ImagePlus;
 import ij.ImageStack;
 import ij.io.FileSaver;
+import ij.process.ImageProcessor;
 import ij.io.Opener;
+import ij.plugin.AVI_Reader;
 import net.imglib2.img.array.ArrayImg;
 import net.imglib2.img.basictypeaccess.array.ByteArray;
 import net.imglib2.img.basictypeaccess.array.FloatArray;
@@ -23,21 +28,65 @@ public final class ImageFiles {
 	private ImageFiles() {}
 
 	/**
-	 * @throws IOException with a one-line message when the file is missing, unreadable or not an image
+	 * Opens a movie or an image for tracking, frames read from disk as they are needed wherever the format allows
+	 * (a virtual stack), so that a movie of any size fits a fixed heap:
+	 * <ul>
+	 * <li>TIFF, multi-page TIFF, ImageJ hyperstacks, BigTIFF, OME-TIFF, 64-bit float TIFF ({@link TiffMovie});</li>
+	 * <li>AVI: uncompressed, MJPEG or PNG-coded, what ImageJ 1's {@code AVI_Reader} reads; colour frames (MJPEG
+	 * codes even grey movies in colour) are converted to grey, the mean of R, G and B;</li>
+	 * <li>a folder of TIFF, PNG or JPEG frames, one image per file, in natural order ({@link FolderMovie});</li>
+	 * <li>any other single image ImageJ 1 opens (PNG, JPEG, GIF, BMP, ...), read whole.</li>
+	 * </ul>
+	 *
+	 * @throws IOException with a one-line message naming the file and the reason when it cannot be read
 	 */
 	public static ImagePlus open(final Path file) throws IOException {
 		if (!Files.exists(file)) throw new IOException("file not found: " + file);
-		if (Files.isDirectory(file)) throw new IOException(file + " is a folder, not an image file");
 		if (!Files.isReadable(file)) throw new IOException("cannot read " + file + ": permission denied");
-		final ImagePlus imp;
 		try {
-			imp = new Opener().openImage(file.toAbsolutePath().toString());
+			if (Files.isDirectory(file)) return FolderMovie.open(file);
+			final byte[] head = head(file);
+			if (TiffMovie.isTiff(head)) return TiffMovie.open(file, head);
+			if (isAvi(head)) return avi(file);
+			final ImagePlus imp = new Opener().openImage(file.toAbsolutePath().toString());
+			if (imp == null) throw new IOException("cannot read " + file + " as an image: not a format ImageJ reads (" +
+				"TIFF, AVI, PNG, JPEG, a folder of frames, ...)");
+			return imp;
+		}
+		catch (final UncheckedIOException e) {
+			throw e.getCause();
 		}
 		catch (final RuntimeException e) {
-			throw new IOException("cannot read " + file + " as an image: " + e.getMessage(), e);
+			throw new IOException("cannot read " + file + " as an image: " + e, e);
 		}
-		if (imp == null) throw new IOException("cannot read " + file + " as an image (TIFF expected)");
-		return imp;
+	}
+
+	private static byte[] head(final Path file) throws IOException {
+		try (InputStream in = Files.newInputStream(file)) {
+			return in.readNBytes(16);
+		}
+	}
+
+	private static boolean isAvi(final byte[] head) {
+		return head.length >= 12 && new String(head, 0, 4, StandardCharsets.ISO_8859_1).equals("RIFF") && new String(
+			head, 8, 4, StandardCharsets.ISO_8859_1).equals("AVI ");
+	}
+
+	private static ImagePlus avi(final Path file) throws IOException {
+		final AVI_Reader reader = new AVI_Reader();
+		// virtual, colour converted to grey, not flipped
+		final ImageStack avi = reader.makeStack(file.toAbsolutePath().toString(), 1, 0, true, true, false);
+		if (avi == null || avi.size() == 0 || reader.getErrorText() != null) throw new IOException("cannot read " +
+			file + " as an AVI movie: " + (reader.getErrorText() != null ? reader.getErrorText() : "no frames"));
+		final FileStack stack = new FileStack(file, avi.size(), avi.getWidth(), avi.getHeight(), t -> {
+			// AVI_Reader reports a bad frame as null (and a message box): name the file and frame instead
+			final ImageProcessor ip = avi.getProcessor(t + 1);
+			if (ip == null) throw new IOException("cannot read frame " + (t + 1) + " of " + file + " (damaged AVI?)");
+			return ip;
+		});
+		final ImageProcessor first = stack.getProcessor(1);
+		stack.setBitDepth(first.getBitDepth());
+		return new ImagePlus(file.getFileName().toString(), stack);
 	}
 
 	/** Saves {@code imp} as a TIFF (stack), atomically: nothing appears at {@code file} if saving fails. */

@@ -1,42 +1,77 @@
 package io.github.contacttracker.io;
 
-import io.github.contacttracker.core.InvalidInputException;
-import java.util.ArrayList;
-import java.util.Collections;
+import java.io.UncheckedIOException;
+import java.util.AbstractList;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 
 import ij.ImagePlus;
 import ij.ImageStack;
 import ij.process.ImageProcessor;
+import io.github.contacttracker.core.InvalidInputException;
 import net.imglib2.RandomAccessibleInterval;
 import net.imglib2.img.array.ArrayImgs;
 import net.imglib2.type.numeric.RealType;
 
 /**
- * The frames of an ImageJ image as ImgLib2 planes, wrapped without copying (so the core takes its
- * primitive-array fast path).
+ * The frames of an ImageJ image as ImgLib2 planes, read when asked for: a frame of an image in memory is wrapped
+ * without copying (so the core takes its primitive-array fast path); a frame of a virtual stack (a movie on disk,
+ * Fiji's virtual stacks) is read from its file when a thread needs it, so a movie of any length is tracked in a
+ * fixed heap.
  * <p>
  * Every time point is a frame. A plain stack of 2D planes (one channel, slices only) is a time series. In a
- * multi-channel image one channel is tracked. An image with both Z and T above 1 is refused: the method is
- * 2D.
- *
- * @param frames one 2D plane per frame
- * @param calibration pixel size, units and frame interval
- * @param width image width (px)
- * @param height image height (px)
- * @param channel the 1-based channel taken
+ * multi-channel image one channel is tracked. An image with both Z and T above 1 is refused: the method is 2D.
+ * <p>
+ * <b>Values.</b> Frames hold the image's own values: for 8- and 16-bit images with a calibration function (ImageJ
+ * stores signed 16-bit data with an offset of 32768 and such a function), each frame is converted to those values,
+ * so that a threshold means what the user sees.
+ * <p>
+ * <b>Threads.</b> {@link #frame(int)} may be called from several threads. Reads from a virtual stack are serialised
+ * (ImageJ's virtual stacks are not all thread-safe; the AVI reader shares one file handle) and the last few frames
+ * read are kept, so that a frame asked for twice in a row (the profile methods' passes) is read once; no more than
+ * {@link #CACHED_FRAMES} frames are held.
  */
-public record ImagePlusFrames(List<RandomAccessibleInterval<? extends RealType<?>>> frames, Calibration calibration,
-	int width, int height, int channel)
-{
-	public ImagePlusFrames {
-		frames = Collections.unmodifiableList(new ArrayList<>(frames));
+public final class ImagePlusFrames {
+
+	/** At most this many frames of a virtual stack are kept after reading. */
+	public static final int CACHED_FRAMES = 4;
+
+	private final ImageStack stack;
+	private final int[] stackIndex;
+	private final float[] cTable;
+	private final Calibration calibration;
+	private final int width, height, channel;
+	private final boolean virtual;
+	private final Map<Integer, RandomAccessibleInterval<? extends RealType<?>>> cache;
+	private int reads;
+
+	private ImagePlusFrames(final ImageStack stack, final int[] stackIndex, final float[] cTable,
+		final Calibration calibration, final int width, final int height, final int channel)
+	{
+		this.stack = stack;
+		this.stackIndex = stackIndex;
+		this.cTable = cTable;
+		this.calibration = calibration;
+		this.width = width;
+		this.height = height;
+		this.channel = channel;
+		this.virtual = stack.isVirtual();
+		this.cache = new LinkedHashMap<>(8, 0.75f, true) {
+
+			private static final long serialVersionUID = 1L;
+
+			@Override
+			protected boolean removeEldestEntry(final Map.Entry<Integer, RandomAccessibleInterval<? extends RealType<?>>> e) {
+				return size() > CACHED_FRAMES;
+			}
+		};
 	}
 
 	/**
 	 * @param imp the image
 	 * @param channel the 1-based channel to track; 0 accepts only single-channel images
-	 * @throws IllegalArgumentException with a one-line message when the image cannot be tracked
+	 * @throws InvalidInputException with a one-line message when the image cannot be tracked
 	 */
 	public static ImagePlusFrames of(final ImagePlus imp, final int channel) {
 		if (imp == null) throw new InvalidInputException("no image");
@@ -59,56 +94,146 @@ public record ImagePlusFrames(List<RandomAccessibleInterval<? extends RealType<?
 				nc + ")");
 		final int c = Math.max(channel, 1);
 		final int count = Math.max(nz, nt); // Z slices of a plain stack are frames
-		final ImageStack stack = imp.getStack();
-		final int w = imp.getWidth(), h = imp.getHeight();
-		final List<RandomAccessibleInterval<? extends RealType<?>>> frames = new ArrayList<>(count);
-		for (int t = 1; t <= count; t++) {
-			final int index = nt > 1 ? imp.getStackIndex(c, 1, t) : imp.getStackIndex(c, t, 1);
-			frames.add(wrap(stack.getProcessor(index), w, h));
-		}
+		final int[] index = new int[count];
+		for (int t = 1; t <= count; t++)
+			index[t - 1] = nt > 1 ? imp.getStackIndex(c, 1, t) : imp.getStackIndex(c, t, 1);
 		final ij.measure.Calibration cal = imp.getCalibration();
+		// a calibration function (signed 16-bit data, or one the user set) maps stored to real values
+		final float[] cTable = bits != 32 && cal.calibrated() ? cal.getCTable() : null;
 		final double pw = cal.pixelWidth > 0 ? cal.pixelWidth : 1, ph = cal.pixelHeight > 0 ? cal.pixelHeight : 1;
 		final double dt = cal.frameInterval > 0 ? cal.frameInterval : 1;
 		final String unit = cal.scaled() ? cal.getXUnit() : "pixel";
 		final String timeUnit = cal.frameInterval > 0 ? cal.getTimeUnit() : "frame";
-		return new ImagePlusFrames(frames, new Calibration(cal.scaled() ? pw : 1, cal.scaled() ? ph : 1, unit, dt,
-			timeUnit), w, h, c);
+		return new ImagePlusFrames(imp.getStack(), index, cTable, new Calibration(cal.scaled() ? pw : 1, cal.scaled()
+			? ph : 1, unit, dt, timeUnit), imp.getWidth(), imp.getHeight(), c);
 	}
 
-	private static RandomAccessibleInterval<? extends RealType<?>> wrap(final ImageProcessor ip, final int w,
-		final int h)
-	{
+	/**
+	 * @param t the 0-based frame index
+	 * @return frame {@code t}, 2D, in the image's own values
+	 * @throws InvalidInputException when the frame cannot be read from its file (naming it and the reason)
+	 */
+	public RandomAccessibleInterval<? extends RealType<?>> frame(final int t) {
+		if (t < 0 || t >= stackIndex.length) throw new IndexOutOfBoundsException("frame " + t + " of " +
+			stackIndex.length);
+		if (!virtual) return wrap(stack.getProcessor(stackIndex[t]));
+		synchronized (cache) {
+			final RandomAccessibleInterval<? extends RealType<?>> cached = cache.get(t);
+			if (cached != null) return cached;
+			final ImageProcessor ip;
+			try {
+				ip = stack.getProcessor(stackIndex[t]);
+			}
+			catch (final UncheckedIOException e) {
+				throw new InvalidInputException(e.getCause().getMessage(), e);
+			}
+			if (ip == null) throw new InvalidInputException("cannot read frame " + (t + 1) + " of the virtual stack");
+			reads++;
+			final RandomAccessibleInterval<? extends RealType<?>> frame = wrap(ip);
+			cache.put(t, frame);
+			return frame;
+		}
+	}
+
+	/** @return how many frames were read from a virtual stack so far (for tests of the cache) */
+	public int reads() {
+		synchronized (cache) {
+			return reads;
+		}
+	}
+
+	private RandomAccessibleInterval<? extends RealType<?>> wrap(final ImageProcessor ip) {
+		if (ip.getWidth() != width || ip.getHeight() != height)
+			throw new InvalidInputException("a frame is " + ip.getWidth() + " x " + ip.getHeight() + " pixels, not " +
+				width + " x " + height + " like the first");
 		final Object pixels = ip.getPixels();
-		if (pixels instanceof byte[]) return ArrayImgs.unsignedBytes((byte[]) pixels, w, h);
-		if (pixels instanceof short[]) return ArrayImgs.unsignedShorts((short[]) pixels, w, h);
-		if (pixels instanceof float[]) return ArrayImgs.floats((float[]) pixels, w, h);
+		if (cTable != null) {
+			final float[] real = new float[width * height];
+			if (pixels instanceof byte[]) {
+				final byte[] p = (byte[]) pixels;
+				for (int i = 0; i < real.length; i++)
+					real[i] = cTable[p[i] & 0xff];
+			}
+			else if (pixels instanceof short[]) {
+				final short[] p = (short[]) pixels;
+				for (int i = 0; i < real.length; i++)
+					real[i] = cTable[p[i] & 0xffff];
+			}
+			else throw new InvalidInputException("unsupported pixel type " + pixels.getClass().getSimpleName());
+			return ArrayImgs.floats(real, width, height);
+		}
+		if (pixels instanceof byte[]) return ArrayImgs.unsignedBytes((byte[]) pixels, width, height);
+		if (pixels instanceof short[]) return ArrayImgs.unsignedShorts((short[]) pixels, width, height);
+		if (pixels instanceof float[]) return ArrayImgs.floats((float[]) pixels, width, height);
 		throw new InvalidInputException("unsupported pixel type " + pixels.getClass().getSimpleName());
+	}
+
+	/** @return the frames as a list; {@code get(t)} is {@link #frame(int)} (nothing is read before) */
+	public List<RandomAccessibleInterval<? extends RealType<?>>> frames() {
+		return new AbstractList<>() {
+
+			@Override
+			public RandomAccessibleInterval<? extends RealType<?>> get(final int t) {
+				return frame(t);
+			}
+
+			@Override
+			public int size() {
+				return stackIndex.length;
+			}
+		};
 	}
 
 	/** @return the number of frames */
 	public int frameCount() {
-		return frames.size();
+		return stackIndex.length;
+	}
+
+	/** @return pixel size, units and frame interval */
+	public Calibration calibration() {
+		return calibration;
+	}
+
+	/** @return image width (px) */
+	public int width() {
+		return width;
+	}
+
+	/** @return image height (px) */
+	public int height() {
+		return height;
+	}
+
+	/** @return the 1-based channel taken */
+	public int channel() {
+		return channel;
 	}
 
 	/**
-	 * The smallest and largest pixel value over all frames.
+	 * The smallest and largest pixel value of one frame.
 	 *
+	 * @param t the 0-based frame index
 	 * @return {min, max}
-	 * @throws IllegalArgumentException naming the first NaN or infinite pixel
+	 * @throws InvalidInputException naming the first NaN or infinite pixel
 	 */
-	public double[] dataRange() {
+	public double[] frameRange(final int t) {
+		return range(frame(t), t);
+	}
+
+	/**
+	 * @return {min, max} of {@code frame}
+	 * @throws InvalidInputException naming the first NaN or infinite pixel of frame {@code t} (0-based)
+	 */
+	public static double[] range(final RandomAccessibleInterval<? extends RealType<?>> frame, final int t) {
 		double min = Double.POSITIVE_INFINITY, max = Double.NEGATIVE_INFINITY;
-		for (int t = 0; t < frames.size(); t++) {
-			final var cursor = frames.get(t).localizingCursor();
-			while (cursor.hasNext()) {
-				final double v = cursor.next().getRealDouble();
-				if (!Double.isFinite(v))
-					throw new InvalidInputException("frame " + (t + 1) + ", pixel (" + cursor.getLongPosition(0) +
-						", " + cursor.getLongPosition(1) + ") is " + v + ": images with NaN or infinite pixels cannot be " +
-						"tracked");
-				if (v < min) min = v;
-				if (v > max) max = v;
-			}
+		final var cursor = frame.localizingCursor();
+		while (cursor.hasNext()) {
+			final double v = cursor.next().getRealDouble();
+			if (!Double.isFinite(v))
+				throw new InvalidInputException("frame " + (t + 1) + ", pixel (" + cursor.getLongPosition(0) + ", " + cursor
+					.getLongPosition(1) + ") is " + v + ": images with NaN or infinite pixels cannot be tracked");
+			if (v < min) min = v;
+			if (v > max) max = v;
 		}
 		return new double[] { min, max };
 	}

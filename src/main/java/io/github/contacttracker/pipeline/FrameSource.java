@@ -1,14 +1,17 @@
 package io.github.contacttracker.pipeline;
 
 import java.util.function.IntFunction;
-import java.util.function.Supplier;
 
 import io.github.contacttracker.io.Calibration;
 import io.github.contacttracker.io.ImagePlusFrames;
 import net.imglib2.RandomAccessibleInterval;
 import net.imglib2.type.numeric.RealType;
 
-/** A movie to track: its frames by index, its calibration, and a name for messages. */
+/**
+ * A movie to track: its frames by index, its calibration, and a name for messages. Frames are asked for one at a
+ * time, as the worker threads need them, so a source backed by a file (a virtual stack) lets a movie of any
+ * length be tracked in a fixed heap.
+ */
 public interface FrameSource {
 
 	/** @return the number of frames */
@@ -26,12 +29,19 @@ public interface FrameSource {
 	/** @return the movie's name, for messages ({@code triple.tif}) */
 	String name();
 
+	/** @return whether the threshold is to be checked against the data ({@link #frameRange(int)}) */
+	default boolean checksDataRange() {
+		return false;
+	}
+
 	/**
-	 * @return the smallest and largest pixel value over all frames, to check the threshold against; {@code null}
-	 *         when the front end does not check it
+	 * @param t the 0-based frame index
+	 * @return the smallest and largest pixel value of frame {@code t}, for the threshold check; read frame by frame
+	 *         so that the check never needs the whole movie in memory
+	 * @throws io.github.contacttracker.core.InvalidInputException naming a NaN or infinite pixel
 	 */
-	default double[] dataRange() {
-		return null;
+	default double[] frameRange(final int t) {
+		return ImagePlusFrames.range(frame(t), t);
 	}
 
 	/** @return frame {@code t} of this source alone (a preview's), its data range not checked */
@@ -39,9 +49,9 @@ public interface FrameSource {
 		return of(1, i -> frame(t), calibration(), name(), null);
 	}
 
-	/** @return an ImageJ image's frames as a source, the data range checked */
+	/** @return an ImageJ image's frames as a source, read when needed, the data range checked */
 	static FrameSource of(final ImagePlusFrames frames, final String name) {
-		return of(frames.frameCount(), frames.frames()::get, frames.calibration(), name, frames::dataRange);
+		return of(frames.frameCount(), frames::frame, frames.calibration(), name, frames::frameRange);
 	}
 
 	/**
@@ -49,11 +59,11 @@ public interface FrameSource {
 	 * @param frames frame {@code t} (thread-safe)
 	 * @param calibration pixel size, units and frame interval
 	 * @param name the movie's name, for messages
-	 * @param dataRange computes the data range to check the threshold against, or {@code null} for no check
+	 * @param frameRange {min, max} of frame {@code t}, to check the threshold against, or {@code null} for no check
 	 * @return a source of those frames
 	 */
 	static FrameSource of(final int count, final IntFunction<? extends RandomAccessibleInterval<? extends RealType<?>>> frames,
-		final Calibration calibration, final String name, final Supplier<double[]> dataRange)
+		final Calibration calibration, final String name, final IntFunction<double[]> frameRange)
 	{
 		return new FrameSource() {
 
@@ -78,8 +88,13 @@ public interface FrameSource {
 			}
 
 			@Override
-			public double[] dataRange() {
-				return dataRange == null ? null : dataRange.get();
+			public boolean checksDataRange() {
+				return frameRange != null;
+			}
+
+			@Override
+			public double[] frameRange(final int t) {
+				return frameRange == null ? FrameSource.super.frameRange(t) : frameRange.apply(t);
 			}
 		};
 	}

@@ -19,8 +19,8 @@ import net.imglib2.RandomAccessibleInterval;
  * "Track a movie and write the outputs", the one way every front end runs Contact Tracker (command line, Fiji
  * command, batch scripts, TrackMate detector):
  * <ol>
- * <li>the output folders are checked, then the threshold against the data range (when the source gives it),
- * before any work;</li>
+ * <li>the output folders are checked, then the threshold against the data range (when the source asks for it),
+ * frame by frame, before any tracking;</li>
  * <li>the frames are tracked on the caller's number of threads, with progress and cancellation;</li>
  * <li>{@code RADIUS} is set from the particle diameter where one was given;</li>
  * <li>the files are written all or none.</li>
@@ -101,13 +101,25 @@ public final class TrackingPipeline {
 			warnings));
 	}
 
+	/**
+	 * Refuses a threshold outside the data before any tracking, without holding the movie: frames are scanned one
+	 * at a time until one has been seen whose values reach across the threshold from both sides (usually the
+	 * first frame), so a valid threshold costs one frame's read, and a threshold outside the data is refused after
+	 * one read-only pass, before anything is tracked or written. A NaN or infinite pixel in the frames scanned is
+	 * refused here; one in a later frame by the tracker, naming its frame.
+	 */
 	private void checkThreshold(final FrameSource source) {
-		final double[] range = source.dataRange();
-		if (range == null) return;
+		if (!source.checksDataRange()) return;
 		final double t = params.threshold();
-		if (t < range[0] || t > range[1]) throw new InvalidInputException(String.format(Locale.ROOT,
-			"threshold %s is outside the data range [%s, %s] of '%s'", fmt(t), fmt(range[0]), fmt(range[1]), source
-				.name()));
+		double min = Double.POSITIVE_INFINITY, max = Double.NEGATIVE_INFINITY;
+		for (int i = 0; i < source.frameCount(); i++) {
+			final double[] range = source.frameRange(i);
+			min = Math.min(min, range[0]);
+			max = Math.max(max, range[1]);
+			if (t >= min && t <= max) return;
+		}
+		throw new InvalidInputException(String.format(Locale.ROOT, "threshold %s is outside the data range [%s, %s] " +
+			"of '%s'", fmt(t), fmt(min), fmt(max), source.name()));
 	}
 
 	/** @return the spots, their radius set to half the particle diameter when one was given */

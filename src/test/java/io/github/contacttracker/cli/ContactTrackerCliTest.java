@@ -114,7 +114,11 @@ class ContactTrackerCliTest {
 		Files.writeString(notImage, "not an image");
 		assertBadInput("as an image", csv, "track", notImage.toString(), "--threshold", "1", "--r-out", "5", "--csv",
 			csv.toString());
-		assertBadInput("unknown option --bogus", null, "track", tif.toString(), "--bogus", "1");
+		assertBadInput("Unknown options: '--bogus'", null, "track", tif.toString(), "--threshold",
+			"85", "--r-out", "61", "--bogus", "1");
+		assertBadInput("Missing required options: '--threshold=T', '--r-out=R'", null, "track", tif.toString());
+		assertBadInput("Invalid value for option '--threads': 'two' is not an int", csv, "track", tif.toString(),
+			"--threshold", "85", "--r-out", "61", "--threads", "two", "--csv", csv.toString());
 		assertBadInput("unknown command", null, "frobnicate");
 		try (var files = Files.list(dir)) {
 			assertTrue(files.noneMatch(p -> p.getFileName().toString().endsWith(".part")), "no temporary files left");

@@ -123,6 +123,27 @@ class ContactTrackerCommandTest {
 				assertEquals(expected.getValue(h, row), actual.getValue(h, row), 0, h + " row " + row);
 	}
 
+	/**
+	 * A virtual stack as Fiji opens it (File > Import > TIFF Virtual Stack) is tracked frame by frame, with the
+	 * same spots as the stack in memory.
+	 */
+	@Test
+	void aVirtualStackGivesTheSameSpotsAsTheStackInMemory(@TempDir final Path dir) throws Exception {
+		final ImagePlus inMemory = Simulated.image();
+		final Path tif = dir.resolve("movie.tif");
+		io.github.contacttracker.io.ImageFiles.saveTiff(inMemory, tif);
+		final ImagePlus virtual = ij.plugin.FileInfoVirtualStack.openVirtual(tif.toString());
+		assertTrue(virtual.getStack().isVirtual());
+		// TIFF stores the pixel size as a fraction: compare the pixels' path, not that rounding
+		virtual.setCalibration(inMemory.getCalibration());
+		final ResultsTable expected = (ResultsTable) run(inMemory, "overlay", false).getOutput("spots");
+		final Module m = run(virtual, "overlay", false);
+		assertSucceeded(m);
+		assertSameTable(expected, (ResultsTable) m.getOutput("spots"));
+		final ImagePlusFrames frames = ImagePlusFrames.of(virtual, 0);
+		assertEquals(0, frames.reads(), "no frame is read before it is needed");
+	}
+
 	@Test
 	void tableRowsAreTheCoreSpotsInCalibratedUnits(@TempDir final Path dir) throws Exception {
 		final ImagePlus imp = Simulated.image();

@@ -55,7 +55,7 @@ class TrackingPipelineTest {
 		return FrameSource.of(stack.frameCount(), t -> {
 			reads.incrementAndGet();
 			return stack.frames().get(t);
-		}, CAL, "pair", range == null ? null : () -> range);
+		}, CAL, "pair", range == null ? null : t -> range);
 	}
 
 	private static SettingValues settings() {

@@ -1,0 +1,75 @@
+package io.github.contacttracker.io;
+
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.file.Path;
+
+import ij.VirtualStack;
+import ij.process.ImageProcessor;
+
+/**
+ * A virtual stack whose planes are read from a file (or folder) when asked for. A plane that cannot be read is an
+ * {@link UncheckedIOException} naming the file and the reason: ImageJ's own virtual stacks log the error and
+ * return a blank plane (or {@code null}), which would be tracked as data.
+ */
+final class FileStack extends VirtualStack {
+
+	/** Reads one plane, 0-based. */
+	@FunctionalInterface
+	interface PlaneReader {
+		/** @throws IOException naming the file and the reason */
+		ImageProcessor read(int t) throws IOException;
+	}
+
+	private final int size;
+	private final PlaneReader reader;
+	private final String path;
+
+	/**
+	 * @param file the file or folder the planes come from, for messages
+	 * @param size the number of planes
+	 * @param reader reads plane {@code t} (0-based); may be called from several threads unless the caller
+	 *        serialises
+	 */
+	FileStack(final Path file, final int size, final int width, final int height, final PlaneReader reader) {
+		super(width, height, null, file.toAbsolutePath().getParent() == null ? "/" : file.toAbsolutePath().getParent()
+			.toString());
+		this.size = size;
+		this.reader = reader;
+		this.path = file.toString();
+	}
+
+	@Override
+	public ImageProcessor getProcessor(final int n) {
+		if (n < 1 || n > size) throw new IllegalArgumentException("plane " + n + " of " + size);
+		try {
+			return reader.read(n - 1);
+		}
+		catch (final IOException e) {
+			throw new UncheckedIOException(e);
+		}
+		catch (final RuntimeException e) {
+			throw new UncheckedIOException(new IOException("cannot read plane " + n + " of " + path + ": " + e, e));
+		}
+	}
+
+	@Override
+	public int getSize() {
+		return size;
+	}
+
+	@Override
+	public int size() {
+		return size;
+	}
+
+	@Override
+	public String getSliceLabel(final int n) {
+		return null;
+	}
+
+	@Override
+	public String getFileName(final int n) {
+		return path;
+	}
+}

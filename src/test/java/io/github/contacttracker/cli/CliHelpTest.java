@@ -1,0 +1,107 @@
+package io.github.contacttracker.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.concurrent.atomic.AtomicLong;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+import io.github.contacttracker.settings.Setting;
+import io.github.contacttracker.settings.TrackingSettings;
+
+/** Every subcommand's help, typed options with one-line errors, and the progress line. */
+class CliHelpTest {
+
+	@TempDir
+	Path dir;
+
+	private static final List<String> COMMANDS = List.of("demo", "track", "simulate", "bench", "accuracy",
+		"potential", "demo-potential");
+
+	@Test
+	void everySubcommandHasHelpOnStdoutAndExitsZero() {
+		for (final String command : COMMANDS)
+			for (final String flag : new String[] { "--help", "-h" }) {
+				final Object[] r = ContactTrackerCliTest.run(command, flag);
+				assertEquals(0, r[0], command + " " + flag + ": " + r[2]);
+				final String help = (String) r[1];
+				assertTrue(help.startsWith("Usage: contact-tracker " + command), help);
+				assertTrue(help.contains("-h, --help"), help);
+				assertEquals("", r[2]);
+			}
+		final Object[] top = ContactTrackerCliTest.run("--help");
+		assertEquals(0, top[0]);
+		for (final String command : COMMANDS)
+			assertTrue(((String) top[1]).contains("  " + command + " "), (String) top[1]);
+	}
+
+	@Test
+	void trackHelpIsGeneratedFromTheSettingsDescriptor() {
+		final String help = (String) ContactTrackerCliTest.run("track", "--help")[1];
+		for (final Setting<?> s : TrackingSettings.ALL) {
+			assertTrue(help.contains(s.cliOption() + "="), s.cliOption() + " in\n" + help);
+			// the help text's first words (picocli wraps the rest)
+			final String start = String.join(" ", List.of(s.help().split(" ")).subList(0, 3));
+			assertTrue(help.contains(start), start + " in\n" + help);
+		}
+		assertTrue(help.contains("--[no-]progress"), help);
+	}
+
+	@Test
+	void mistypedOptionsAreOneLineErrorsNamingTheOption() {
+		final String[][] cases = { { "demo", "--reps", "many" }, { "bench", "--frames", "1.5" }, { "simulate",
+			"--scenario", "pair", "--separation", "x", "--out", "a.tif", "--truth", "t.csv" }, { "accuracy",
+				"--threads", "" }, { "potential", "s.csv", "--bin", "wide", "--r-max", "3" }, { "demo-potential",
+					"--frames" }, { "demo", "extra" } };
+		for (final String[] c : cases) {
+			final Object[] r = ContactTrackerCliTest.run(c);
+			final String err = ((String) r[2]).strip();
+			assertEquals(ContactTrackerCli.EXIT_BAD_INPUT, r[0], String.join(" ", c) + ": " + err);
+			assertEquals(1, err.lines().count(), err);
+			assertTrue(err.startsWith("contact-tracker: error: ") && err.endsWith("(see contact-tracker " + c[0] +
+				" --help)"), err);
+			assertEquals("", r[1]);
+		}
+	}
+
+	@Test
+	void progressGoesToStderrOnlyWhenAskedAndTheCsvStaysClean() {
+		final Path tif = dir.resolve("pair.tif");
+		assertEquals(0, ContactTrackerCliTest.run("simulate", "--scenario", "pair", "--separation", "1.2", "--frames",
+			"3", "--out", tif.toString(), "--truth", dir.resolve("t.csv").toString())[0]);
+		final Object[] quiet = ContactTrackerCliTest.run("track", tif.toString(), "--threshold", "85", "--r-out", "61",
+			"--method", "paper");
+		final Object[] shown = ContactTrackerCliTest.run("track", tif.toString(), "--threshold", "85", "--r-out", "61",
+			"--method", "paper", "--progress");
+		assertEquals(0, shown[0], (String) shown[2]);
+		assertEquals(quiet[1], shown[1], "the CSV on stdout is the same");
+		assertTrue(((String) shown[2]).contains("3/3 frames, "), (String) shown[2]);
+		assertTrue(!((String) quiet[2]).contains("frames/s, "), (String) quiet[2]);
+	}
+
+	@Test
+	void theProgressLineSaysRateAndTimeLeftAtMostTwiceASecond() {
+		final ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+		final AtomicLong now = new AtomicLong();
+		final ProgressLine line = new ProgressLine(new PrintStream(bytes, true, StandardCharsets.UTF_8), now::get);
+		now.set(1_000_000_000L); // 1 s: 10 of 100 frames
+		line.progress(10, 100);
+		now.set(1_100_000_000L); // too soon: not drawn
+		line.progress(11, 100);
+		now.set(2_000_000_000L);
+		line.progress(20, 100);
+		line.end();
+		assertEquals("\r10/100 frames, 10.0 frames/s, 9 s left\r20/100 frames, 10.0 frames/s, 8 s left\n", bytes
+			.toString(StandardCharsets.UTF_8));
+		assertEquals("3 min 05 s", ProgressLine.duration(185));
+		assertEquals("2 h 07 min", ProgressLine.duration(2 * 3600 + 7 * 60 + 20));
+	}
+}

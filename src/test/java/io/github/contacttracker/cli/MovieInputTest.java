@@ -1,0 +1,186 @@
+package io.github.contacttracker.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+import ij.IJ;
+import ij.ImagePlus;
+import ij.io.FileSaver;
+import ij.plugin.filter.AVI_Writer;
+import ij.process.ImageProcessor;
+import io.github.contacttracker.io.TestMovies;
+
+/**
+ * Real movies in, through the command line: every format the issue lists is written by ImageJ's own writers (or,
+ * where ImageJ has none, by our test writer), tracked, and the spots compared with the particle's true track.
+ */
+class MovieInputTest {
+
+	@TempDir
+	Path dir;
+
+	private static final int FRAMES = 4;
+
+	/** Tracks {@code input}; returns the spots' (frame, x, y) from the CSV on stdout, after checking the run. */
+	private static List<double[]> track(final Path input, final String threshold) {
+		final Object[] r = ContactTrackerCliTest.run("track", input.toString(), "--threshold", threshold, "--r-out",
+			"14", "--method", "paper");
+		assertEquals(0, r[0], (String) r[2]);
+		final List<double[]> spots = new ArrayList<>();
+		final List<String> lines = ((String) r[1]).lines().toList();
+		for (final String line : lines.subList(1, lines.size())) {
+			final String[] c = line.split(",");
+			spots.add(new double[] { Double.parseDouble(c[1]), Double.parseDouble(c[2]), Double.parseDouble(c[3]) });
+		}
+		return spots;
+	}
+
+	/** One spot per frame, in frame order, within {@code tolerance} px of the truth. */
+	private static void assertTrack(final List<double[]> spots, final int frames, final double tolerance) {
+		assertEquals(frames, spots.size(), "one spot per frame");
+		for (int t = 0; t < frames; t++) {
+			final double[] s = spots.get(t);
+			assertEquals(t, (int) s[0]);
+			assertEquals(TestMovies.x(t), s[1], tolerance, "x in frame " + t);
+			assertEquals(TestMovies.y(), s[2], tolerance, "y in frame " + t);
+		}
+	}
+
+	private static ImagePlus movie8() {
+		return TestMovies.bytes(TestMovies.frames(FRAMES, 20, 220));
+	}
+
+	@Test
+	void aviUncompressedJpegAndPng() throws IOException {
+		for (final int compression : new int[] { AVI_Writer.NO_COMPRESSION, AVI_Writer.PNG_COMPRESSION,
+			AVI_Writer.JPEG_COMPRESSION })
+		{
+			final Path avi = dir.resolve("movie" + compression + ".avi");
+			new AVI_Writer().writeImage(movie8(), avi.toString(), compression, 95);
+			// JPEG loses a little; the others are exact
+			assertTrack(track(avi, "120"), FRAMES, compression == AVI_Writer.JPEG_COMPRESSION ? 0.1 : 0.02);
+		}
+	}
+
+	@Test
+	void aFolderOfFramesInNaturalOrder() throws IOException {
+		final int n = 12; // frame2 must come before frame10
+		final ImagePlus movie = TestMovies.bytes(TestMovies.frames(n, 20, 220));
+		final Path folder = Files.createDirectories(dir.resolve("frames"));
+		for (int t = 0; t < n; t++) {
+			final ImagePlus one = new ImagePlus("f", movie.getStack().getProcessor(t + 1));
+			final String name = "frame" + (t + 1);
+			// a mix of formats, as exports are: PNG, TIFF and JPEG frames in one folder
+			if (t % 3 == 0) new FileSaver(one).saveAsPng(folder.resolve(name + ".png").toString());
+			else if (t % 3 == 1) new FileSaver(one).saveAsTiff(folder.resolve(name + ".tif").toString());
+			else new FileSaver(one).saveAsJpeg(folder.resolve(name + ".jpg").toString());
+		}
+		Files.writeString(folder.resolve("notes.txt"), "not a frame");
+		assertTrack(track(folder, "120"), n, 0.1);
+	}
+
+	@Test
+	void multiPageTiffsOfEveryIntegerAndFloatType() throws IOException {
+		final List<float[]> frames = TestMovies.frames(FRAMES, 20, 220);
+		for (final int[] type : new int[][] { { 8, 1 }, { 16, 1 }, { 32, 1 }, { 32, 2 }, { 32, 3 }, { 64, 3 } }) {
+			final Path tif = dir.resolve("movie" + type[0] + "-" + type[1] + ".tif");
+			TestMovies.writeTiff(tif, false, type[0], type[1], frames, null, 0);
+			assertTrack(track(tif, "120"), FRAMES, 0.02);
+		}
+	}
+
+	@Test
+	void signed16BitDataInTheFilesOwnValues() throws IOException {
+		// data from -3000 to 3000: ImageJ stores them as 29768..35768 with a calibration function
+		final List<float[]> frames = TestMovies.frames(FRAMES, -3000, 3000);
+		final Path tif = dir.resolve("signed.tif");
+		TestMovies.writeTiff(tif, false, 16, 2, frames, null, 0);
+		assertTrack(track(tif, "150"), FRAMES, 0.02);
+		final Object[] r = ContactTrackerCliTest.run("track", tif.toString(), "--threshold", "30000", "--r-out", "14");
+		assertEquals(ContactTrackerCli.EXIT_BAD_INPUT, r[0]);
+		assertTrue(((String) r[2]).contains("threshold 30000 is outside the data range [-3000, 29"), (String) r[2]);
+		// the same through ImageJ's writer (which stores the offset values and the calibration function)
+		final Path bigTiffSigned = dir.resolve("signed-big.tif");
+		TestMovies.writeTiff(bigTiffSigned, true, 16, 2, frames, null, 0);
+		assertTrack(track(bigTiffSigned, "150"), FRAMES, 0.02);
+	}
+
+	@Test
+	void bigTiffWithPixelsBeyondFourGigabytes() throws IOException {
+		final Path tif = dir.resolve("big.tif");
+		final long beyond = (1L << 32) + 12345; // sparse: the gap takes no disk space
+		TestMovies.writeTiff(tif, true, 16, 1, TestMovies.frames(FRAMES, 20, 220), null, beyond);
+		assertTrue(Files.size(tif) > beyond);
+		assertTrack(track(tif, "120"), FRAMES, 0.02);
+	}
+
+	@Test
+	void omeTiffPlanesAreTimePointsAndOtherOrdersAreRefused() throws IOException {
+		final List<float[]> frames = TestMovies.frames(FRAMES, 20, 220);
+		final Path ome = dir.resolve("movie.ome.tif");
+		TestMovies.writeTiff(ome, false, 16, 1, frames, "<?xml version=\"1.0\"?><OME><Image><Pixels " +
+			"DimensionOrder=\"XYZCT\" SizeC=\"1\" SizeZ=\"1\" SizeT=\"" + FRAMES + "\" PhysicalSizeX=\"0.5\"/></Image>" +
+			"</OME>", 0);
+		final Object[] r = ContactTrackerCliTest.run("track", ome.toString(), "--threshold", "120", "--r-out", "14",
+			"--method", "paper");
+		assertEquals(0, r[0], (String) r[2]);
+		final List<String> lines = ((String) r[1]).lines().toList();
+		assertEquals(FRAMES + 1, lines.size());
+		// PhysicalSizeX sets the calibration: positions in microns
+		assertEquals(TestMovies.x(1) * 0.5, Double.parseDouble(lines.get(2).split(",")[2]), 0.01);
+
+		final Path mixed = dir.resolve("mixed.ome.tif");
+		TestMovies.writeTiff(mixed, false, 16, 1, frames, "<OME><Pixels DimensionOrder=\"XYTCZ\" SizeC=\"2\" " +
+			"SizeZ=\"1\" SizeT=\"2\"/></OME>", 0);
+		final Object[] bad = ContactTrackerCliTest.run("track", mixed.toString(), "--threshold", "120", "--r-out", "14");
+		assertEquals(ContactTrackerCli.EXIT_BAD_INPUT, bad[0]);
+		assertTrue(((String) bad[2]).contains("OME-TIFF with planes in XYTCZ order"), (String) bad[2]);
+	}
+
+	@Test
+	void anUnreadableMovieIsOneLineNamingTheFileAndTheReason() throws IOException {
+		final Path avi = dir.resolve("broken.avi");
+		new AVI_Writer().writeImage(movie8(), avi.toString(), AVI_Writer.JPEG_COMPRESSION, 90);
+		final byte[] all = Files.readAllBytes(avi);
+		Files.write(avi, java.util.Arrays.copyOf(all, 300)); // truncated inside the header
+		final Path empty = Files.createDirectories(dir.resolve("empty"));
+		final Path compressedBig = dir.resolve("half-float.tif");
+		TestMovies.writeTiff(compressedBig, true, 16, 3, TestMovies.frames(1, 0, 1), null, 0);
+		for (final Path bad : List.of(avi, empty, compressedBig)) {
+			final Object[] r = ContactTrackerCliTest.run("track", bad.toString(), "--threshold", "120", "--r-out", "14");
+			final String err = ((String) r[2]).trim();
+			assertEquals(ContactTrackerCli.EXIT_BAD_INPUT, r[0], err);
+			assertEquals(1, err.lines().count(), err);
+			assertTrue(err.contains(bad.toString()), err);
+			assertFalse(err.contains("null"), err);
+		}
+	}
+
+	@Test
+	void aVirtualStackIsReadFrameByFrame() throws IOException {
+		final Path tif = dir.resolve("stack.tif");
+		IJ.saveAsTiff(movie8(), tif.toString());
+		final ImagePlus imp = io.github.contacttracker.io.ImageFiles.open(tif);
+		assertTrue(imp.getStack().isVirtual());
+		final io.github.contacttracker.io.ImagePlusFrames frames = io.github.contacttracker.io.ImagePlusFrames.of(imp,
+			0);
+		assertEquals(FRAMES, frames.frameCount());
+		assertEquals(0, frames.reads(), "nothing is read before it is asked for");
+		final ImageProcessor expected = movie8().getStack().getProcessor(3);
+		final var f = frames.frame(2).randomAccess();
+		f.setPosition(new int[] { 25, 23 });
+		assertEquals(expected.get(25, 23), f.get().getRealDouble());
+		frames.frame(2);
+		assertEquals(1, frames.reads(), "a frame asked for twice in a row is read once");
+	}
+}
