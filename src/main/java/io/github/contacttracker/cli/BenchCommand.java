@@ -1,7 +1,12 @@
 package io.github.contacttracker.cli;
 
 import io.github.contacttracker.core.InvalidInputException;
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
 import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
@@ -9,6 +14,9 @@ import java.util.concurrent.Callable;
 import io.github.contacttracker.core.Method;
 import io.github.contacttracker.core.StackTracker;
 import io.github.contacttracker.core.TrackerParameters;
+import io.github.contacttracker.io.AtomicFile;
+import io.github.contacttracker.io.Calibration;
+import io.github.contacttracker.io.ImageFiles;
 import io.github.contacttracker.sim.PaperParticles;
 import io.github.contacttracker.sim.ParticleType;
 import io.github.contacttracker.sim.SimulatedStack;
@@ -35,8 +43,17 @@ final class BenchCommand implements Callable<Integer> {
 	int rounds;
 
 	@Option(names = "--profile-frames", paramLabel = "N", defaultValue = "64", description = "Frames for the " +
-		"slower profile methods (deblend, fit). Default: ${DEFAULT-VALUE}.")
+		"slower profile methods (deblend, fit) in the in-process part. Default: ${DEFAULT-VALUE}.")
 	int profileFramesOption;
+
+	@Option(names = "--end-to-end", negatable = true, defaultValue = "true", fallbackValue = "true",
+		description = "Also time 'track' from the TIFF file to the CSV file, every method on all frames " +
+			"(default: on).")
+	boolean endToEnd;
+
+	@Option(names = "--save-stack", paramLabel = "FILE.tif", description = "Also save the simulated stack here " +
+		"(e.g. to time another tracker on the same frames: scripts/compare-trackpy-speed.py).")
+	Path saveStack;
 
 	private final PrintStream out;
 
@@ -45,12 +62,15 @@ final class BenchCommand implements Callable<Integer> {
 	}
 
 	@Override
-	public Integer call() {
+	public Integer call() throws IOException {
 		final int profileFrames = Math.min(frames, profileFramesOption);
 		if (frames < 1 || rounds < 1 || profileFrames < 1)
 			throw new InvalidInputException("--frames, --rounds and --profile-frames must be at least 1");
+		if (saveStack != null) AtomicFile.checkFolder("--save-stack", saveStack);
 		final ParticleType type = PaperParticles.silica553();
 		final SimulatedStack<UnsignedByteType> stack = SimulatedStack.benchmarkStack(type, frames, 7);
+		if (saveStack != null) ImageFiles.saveTiff(ImageFiles.timeSeries(saveStack.getFileName().toString(), stack
+			.frames(), Calibration.ofPixelSize(type.pixelSizeMicrons(), "micron")), saveStack);
 		final List<ArrayImg<UnsignedByteType, ?>> imgs = stack.frames();
 		final double mpx = (double) frames * stack.width() * stack.height() / 1e6;
 		final int cores = Runtime.getRuntime().availableProcessors();
@@ -87,7 +107,53 @@ final class BenchCommand implements Callable<Integer> {
 					readSeconds * set.size() / frames);
 			}
 		}
+		if (endToEnd) endToEnd(stack, type, cores);
 		return 0;
+	}
+
+	/**
+	 * The user's view: {@code track MOVIE.tif ... --csv OUT.csv} run in this JVM (so JIT warm, no JVM start-up),
+	 * from reading the TIFF file to the CSV file, every method on every frame: reading, the threshold check, the
+	 * tracking, the uncertainties and the writing included.
+	 */
+	private void endToEnd(final SimulatedStack<UnsignedByteType> stack, final ParticleType type, final int cores)
+		throws IOException
+	{
+		final Path dir = Files.createTempDirectory("contact-tracker-bench");
+		try {
+			final Path tif = dir.resolve("bench.tif"), csv = dir.resolve("spots.csv");
+			ImageFiles.saveTiff(ImageFiles.timeSeries("bench", stack.frames(), Calibration.ofPixelSize(type
+				.pixelSizeMicrons(), "micron")), tif);
+			out.printf(Locale.ROOT, "%nEnd to end: track %s (%d frames, %.0f MB) --csv, in this JVM, best of %d%n",
+				tif.getFileName(), frames, Files.size(tif) / 1e6, Math.min(rounds, 2));
+			out.printf(Locale.ROOT, "%-28s %10s %10s%n", "", "frames/s", "ms/frame");
+			final ByteArrayOutputStream sink = new ByteArrayOutputStream();
+			final PrintStream quiet = new PrintStream(sink, true, StandardCharsets.UTF_8);
+			for (final Method m : Method.values())
+				for (final int threads : new int[] { 1, cores }) {
+					final String[] args = { "track", tif.toString(), "--threshold", fmt(type.threshold()), "--r-out", fmt(type
+						.rOut()), "--method", m.key(), "--threads", Integer.toString(threads), "--csv", csv.toString(),
+						"--no-progress" };
+					final double s = best(Math.min(rounds, 2), () -> {
+						sink.reset();
+						if (ContactTrackerCli.run(args, quiet, quiet) != 0)
+							throw new IllegalStateException("track failed: " + sink.toString(StandardCharsets.UTF_8));
+					});
+					out.printf(Locale.ROOT, "%-28s %10.0f %10.2f%n", m.key() + " (" + threads + " thread" + (threads == 1 ?
+						"" : "s") + ")", frames / s, 1000 * s / frames);
+				}
+		}
+		finally {
+			try (var files = Files.list(dir)) {
+				for (final Path p : (Iterable<Path>) files::iterator)
+					Files.deleteIfExists(p);
+			}
+			Files.deleteIfExists(dir);
+		}
+	}
+
+	private static String fmt(final double v) {
+		return v == Math.rint(v) ? Long.toString((long) v) : Double.toString(v);
 	}
 
 	private void row(final String name, final int frames, final double mpx, final double seconds,
