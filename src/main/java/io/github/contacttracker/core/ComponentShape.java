@@ -1,6 +1,5 @@
 package io.github.contacttracker.core;
 
-import java.util.ArrayDeque;
 import java.util.Arrays;
 
 /**
@@ -135,15 +134,29 @@ final class ComponentShape {
 			Arrays.fill(map, row + region.runStart(r), row + region.runEnd(r) + 1, (byte) 1);
 		}
 		// the outside: free pixels 4-connected to the frame; the rest (holes included) is the filled area
-		final ArrayDeque<Integer> queue = new ArrayDeque<>();
+		// a plain int queue: every pixel enters at most once (no boxing: this runs for every component)
+		final int[] queue = new int[w * h];
+		int head = 0, tail = 0;
 		map[0] = 2;
-		queue.add(0);
-		while (!queue.isEmpty()) {
-			final int i = queue.poll(), x = i % w, y = i / w;
-			if (x > 0) visit(map, i - 1, queue);
-			if (x < w - 1) visit(map, i + 1, queue);
-			if (y > 0) visit(map, i - w, queue);
-			if (y < h - 1) visit(map, i + w, queue);
+		queue[tail++] = 0;
+		while (head < tail) {
+			final int i = queue[head++], x = i % w, y = i / w;
+			if (x > 0 && map[i - 1] == 0) {
+				map[i - 1] = 2;
+				queue[tail++] = i - 1;
+			}
+			if (x < w - 1 && map[i + 1] == 0) {
+				map[i + 1] = 2;
+				queue[tail++] = i + 1;
+			}
+			if (y > 0 && map[i - w] == 0) {
+				map[i - w] = 2;
+				queue[tail++] = i - w;
+			}
+			if (y < h - 1 && map[i + w] == 0) {
+				map[i + w] = 2;
+				queue[tail++] = i + w;
+			}
 		}
 		// each row's first and last filled pixel: enough for the convex hull
 		final int rows = h - 2;
@@ -198,12 +211,6 @@ final class ComponentShape {
 
 	private double[] residualPair() {
 		return new double[] { symmetryResidual, noiseResidualPerSigma };
-	}
-
-	private static void visit(final byte[] map, final int i, final ArrayDeque<Integer> queue) {
-		if (map[i] != 0) return;
-		map[i] = 2;
-		queue.add(i);
 	}
 
 	private static long pack(final int x, final int y) {
