@@ -16,6 +16,7 @@ import io.github.contacttracker.core.Method;
 import io.github.contacttracker.eval.CramerRao;
 import io.github.contacttracker.eval.DistanceError;
 import io.github.contacttracker.eval.DistanceStudy;
+import io.github.contacttracker.eval.SceneStudy;
 import io.github.contacttracker.io.AtomicFile;
 import io.github.contacttracker.sim.PaperParticles;
 import io.github.contacttracker.sim.ParticleType;
@@ -30,7 +31,7 @@ import io.github.contacttracker.sim.SimulatedStack;
 final class AccuracyCommand {
 
 	private static final Set<String> OPTIONS = Set.of("reps", "threads", "csv", "particle", "scenario", "methods",
-		"separations");
+		"separations", "scene");
 
 	private final PrintStream out;
 
@@ -44,6 +45,14 @@ final class AccuracyCommand {
 		if (reps < 2) throw new InvalidInputException("--reps must be at least 2");
 		final int threads = o.integer("threads", 0);
 		final Path csv = o.outputPath("csv");
+		if (o.has("scene")) { // the scenes of eval.SceneStudy (clusters, unlike particles, ramp, saturation)
+			final long t0 = System.nanoTime();
+			final String sceneCsv = new SceneStudy(Method.parse(o.string("methods", "fit")), threads).report(out,
+				o.string("particle", "5.53,2.06"), o.string("scene", "all"), reps);
+			out.printf(Locale.ROOT, "%nAccuracy run took %.0f s.%n", (System.nanoTime() - t0) * 1e-9);
+			if (csv != null) AtomicFile.write(csv, os -> os.write(sceneCsv.getBytes(StandardCharsets.UTF_8)));
+			return 0;
+		}
 		final List<ParticleType> types = new ArrayList<>();
 		for (final String p : o.string("particle", "5.53,2.06").split(","))
 			types.add(SimulateCommand.particle(p));

@@ -39,6 +39,13 @@ class StackTrackerTest {
 		final List<FrameResult> parallel = StackTracker.withThreads(3, () -> new StackTracker(p).track(frames
 			.size(), t -> {
 				workers.add(Thread.currentThread().getName());
+				// a slow supplier: on a loaded machine one quick thread could otherwise take every frame
+				try {
+					Thread.sleep(20);
+				}
+				catch (final InterruptedException e) {
+					Thread.currentThread().interrupt();
+				}
 				return frames.get(t);
 			}, false, (done, total) -> {
 				calls.incrementAndGet();
