@@ -16,6 +16,7 @@ import io.github.contacttracker.core.Method;
 import io.github.contacttracker.eval.CramerRao;
 import io.github.contacttracker.eval.DistanceError;
 import io.github.contacttracker.eval.DistanceStudy;
+import io.github.contacttracker.eval.SceneStudy;
 import io.github.contacttracker.io.AtomicFile;
 import io.github.contacttracker.sim.ParticleType;
 import io.github.contacttracker.sim.Scenario;
@@ -51,9 +52,13 @@ final class AccuracyCommand implements Callable<Integer> {
 		"Default: ${DEFAULT-VALUE}.")
 	String scenarioList;
 
-	@Option(names = "--methods", paramLabel = "M,...", defaultValue = "first,paper,iterative,deblend,fit",
-		description = "Methods. Default: ${DEFAULT-VALUE}.")
+	@Option(names = "--methods", paramLabel = "M,...", description = "Methods. Default: every method for the " +
+		"paper's protocol, fit for --scene.")
 	String methodList;
+
+	@Option(names = "--scene", paramLabel = "S,...", description = "Instead of the paper's protocol, the harder " +
+		"scenes at contact (eval.SceneStudy): pair, chain4, triple, hex7, unlike, unlike13, ramp, saturated, or all.")
+	String scene;
 
 	@Option(names = "--separations", paramLabel = "R,...", description = "Separations over the diameter (1 = " +
 		"contact). Default: 2 down to 1.")
@@ -69,6 +74,14 @@ final class AccuracyCommand implements Callable<Integer> {
 	public Integer call() throws IOException {
 		if (reps < 2) throw new InvalidInputException("--reps must be at least 2");
 		final Path csv = ContactTrackerCli.output("--csv", csvOption);
+		if (scene != null) { // the scenes of eval.SceneStudy (clusters, unlike particles, ramp, saturation)
+			final long t0 = System.nanoTime();
+			final String sceneCsv = new SceneStudy(Method.parse(methodList == null ? "fit" : methodList),
+				threadsOption.threads).report(out, particles, scene, reps);
+			out.printf(Locale.ROOT, "%nAccuracy run took %.0f s.%n", (System.nanoTime() - t0) * 1e-9);
+			if (csv != null) AtomicFile.write(csv, os -> os.write(sceneCsv.getBytes(StandardCharsets.UTF_8)));
+			return 0;
+		}
 		final List<ParticleType> types = new ArrayList<>();
 		for (final String p : ContactTrackerCli.list(particles))
 			types.add(SimulateCommand.particle(p));
@@ -76,7 +89,7 @@ final class AccuracyCommand implements Callable<Integer> {
 		for (final String s : ContactTrackerCli.list(scenarioList))
 			scenarios.add(SimulateCommand.scenario(s));
 		final List<Method> methods = new ArrayList<>();
-		for (final String m : ContactTrackerCli.list(methodList))
+		for (final String m : ContactTrackerCli.list(methodList == null ? "first,paper,iterative,deblend,fit" : methodList))
 			methods.add(Method.parse(m));
 		final double[] separations = parseList(separationList);
 

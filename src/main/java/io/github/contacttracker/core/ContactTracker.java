@@ -117,7 +117,7 @@ public final class ContactTracker {
 			}
 			spots.add(new Localization(frameIndex, e.x() + dx, e.y() + dy, p.first.x() + dx, p.first.y() + dy,
 				p.region.area(), e.secondArea(), p.quality, Math.sqrt(p.region.area() / Math.PI), e.flags(),
-				e.iterations(), sx, sy));
+				e.iterations(), sx, sy, e.amplitude(), e.scale()));
 			if (keepRegions) {
 				active.add(p.region.translate(dx, dy));
 				second.add(SecondPass.secondRegion(p.region, k, outcome.discs(), params.rOut()).translate(dx, dy));

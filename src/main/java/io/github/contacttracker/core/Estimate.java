@@ -12,21 +12,30 @@ package io.github.contacttracker.core;
  * @param sigmaX standard error the method estimated itself (the joint fit); NaN to propagate it from
  *        {@code solve}
  * @param sigmaY likewise along y
+ * @param amplitude the joint fit's amplitude relative to the profile, NaN if none
+ * @param scale the joint fit's radial scale relative to the profile, NaN if none
  */
 record Estimate(double x, double y, int flags, int secondArea, int iterations, Solve solve, double sigmaX,
-	double sigmaY)
+	double sigmaY, double amplitude, double scale)
 {
+	/** An estimate without amplitude and scale. */
+	Estimate(final double x, final double y, final int flags, final int secondArea, final int iterations,
+		final Solve solve, final double sigmaX, final double sigmaY)
+	{
+		this(x, y, flags, secondArea, iterations, solve, sigmaX, sigmaY, Double.NaN, Double.NaN);
+	}
+
 	/** A first-pass estimate: one solve, no self-estimated error. */
 	static Estimate first(final double x, final double y, final int flags, final int area, final Solve solve) {
 		return new Estimate(x, y, flags, area, 1, solve, Double.NaN, Double.NaN);
 	}
 
 	Estimate withFlags(final int newFlags) {
-		return new Estimate(x, y, newFlags, secondArea, iterations, solve, sigmaX, sigmaY);
+		return new Estimate(x, y, newFlags, secondArea, iterations, solve, sigmaX, sigmaY, amplitude, scale);
 	}
 
 	Estimate withIterations(final int newIterations) {
-		return new Estimate(x, y, flags, secondArea, newIterations, solve, sigmaX, sigmaY);
+		return new Estimate(x, y, flags, secondArea, newIterations, solve, sigmaX, sigmaY, amplitude, scale);
 	}
 
 	boolean has(final Flag flag) {

@@ -82,24 +82,42 @@ final class GroupFit {
 		return i;
 	}
 
+	/** Parameters per particle: x, y, amplitude, radial scale. */
+	static final int PER_PARTICLE = 4;
+	/** Background terms per group: B, bx, by (a plane). */
+	static final int BACKGROUND = 3;
+	/** Radial scales outside this range are not accepted as steps (a particle of another kind entirely). */
+	static final double MIN_SCALE = 0.5, MAX_SCALE = 2;
+
+	private static double amplitudeOf(final Estimate e) {
+		return Double.isFinite(e.amplitude()) ? e.amplitude() : 1;
+	}
+
+	private static double scaleOf(final Estimate e) {
+		return e.scale() > 0 ? e.scale() : 1;
+	}
+
 	/** Fits one group, replacing its members' estimates in {@code e} on success; returns the iterations. */
 	private static int fitGroup(final Plane plane, final Particle[] ps, final Estimate[] e, final int[] group,
 		final EmpiricalProfile profile)
 	{
-		final int n = group.length, np = 3 * n + 1;
-		final double R = profile.radius(), r2 = R * R;
-		// The pixels: within R of any member (taken at the starting centres).
+		final int n = group.length, np = PER_PARTICLE * n + BACKGROUND;
+		final double R = profile.radius();
+		final double saturation = plane.saturation();
+		// The pixels: within each member's reach (at its starting centre and scale), not saturated.
 		int x0 = Integer.MAX_VALUE, y0 = Integer.MAX_VALUE, x1 = Integer.MIN_VALUE, y1 = Integer.MIN_VALUE;
 		for (final int k : group) {
-			x0 = Math.min(x0, (int) Math.floor(e[k].x() - R));
-			x1 = Math.max(x1, (int) Math.ceil(e[k].x() + R));
-			y0 = Math.min(y0, (int) Math.floor(e[k].y() - R));
-			y1 = Math.max(y1, (int) Math.ceil(e[k].y() + R));
+			final double reach = R * scaleOf(e[k]);
+			x0 = Math.min(x0, (int) Math.floor(e[k].x() - reach));
+			x1 = Math.max(x1, (int) Math.ceil(e[k].x() + reach));
+			y0 = Math.min(y0, (int) Math.floor(e[k].y() - reach));
+			y1 = Math.max(y1, (int) Math.ceil(e[k].y() + reach));
 		}
 		x0 = Math.max(0, x0);
 		y0 = Math.max(0, y0);
 		x1 = Math.min(plane.width() - 1, x1);
 		y1 = Math.min(plane.height() - 1, y1);
+		final double mx = 0.5 * (x0 + x1), my = 0.5 * (y0 + y1), unit = Math.max(1, 0.5 * (x1 - x0));
 		int count = 0;
 		final int cap = (x1 - x0 + 1) * (y1 - y0 + 1);
 		final int[] px = new int[cap], py = new int[cap];
@@ -108,39 +126,44 @@ final class GroupFit {
 			for (int x = x0; x <= x1; x++) {
 				boolean inside = false;
 				for (final int k : group) {
-					final double dx = x - e[k].x(), dy = y - e[k].y();
-					if (dx * dx + dy * dy < r2) {
+					final double dx = x - e[k].x(), dy = y - e[k].y(), reach = R * scaleOf(e[k]);
+					if (dx * dx + dy * dy < reach * reach) {
 						inside = true;
 						break;
 					}
 				}
 				if (!inside) continue;
+				final double v = plane.get(x, y);
+				if (v >= saturation) continue; // censored: its true value is unknown
 				px[count] = x;
 				py[count] = y;
-				pv[count++] = plane.get(x, y);
+				pv[count++] = v;
 			}
 		if (count <= np) return 0;
-		// The light of reliable particles outside the group, at their current centres and amplitude 1.
+		// The light of reliable particles outside the group, at their current centres, amplitudes and scales.
 		final double[] fixed = new double[count];
 		for (int k = 0; k < ps.length; k++) {
 			if (!ps[k].reliable() || contains(group, k)) continue;
-			final double kx = e[k].x(), ky = e[k].y();
-			if (kx < x0 - R || kx > x1 + R || ky < y0 - R || ky > y1 + R) continue;
+			final double kx = e[k].x(), ky = e[k].y(), ks = scaleOf(e[k]), ka = amplitudeOf(e[k]), reach = R * ks;
+			if (kx < x0 - reach || kx > x1 + reach || ky < y0 - reach || ky > y1 + reach) continue;
 			for (int i = 0; i < count; i++) {
 				final double dx = px[i] - kx, dy = py[i] - ky, d2 = dx * dx + dy * dy;
-				if (d2 < r2) fixed[i] += profile.lookup(Math.sqrt(d2));
+				if (d2 < reach * reach) fixed[i] += ka * profile.lookup(Math.sqrt(d2) / ks);
 			}
 		}
 		final double[] p = new double[np];
 		for (int q = 0; q < n; q++) {
-			p[3 * q] = e[group[q]].x();
-			p[3 * q + 1] = e[group[q]].y();
-			p[3 * q + 2] = 1;
+			final Estimate s = e[group[q]];
+			p[PER_PARTICLE * q] = s.x();
+			p[PER_PARTICLE * q + 1] = s.y();
+			p[PER_PARTICLE * q + 2] = amplitudeOf(s);
+			p[PER_PARTICLE * q + 3] = scaleOf(s);
 		}
-		p[np - 1] = profile.background();
+		p[np - BACKGROUND] = profile.background();
+		final Pixels pixels = new Pixels(px, py, pv, fixed, count, mx, my, unit);
 		final double[][] jtj = new double[np][np];
 		final double[] jtr = new double[np];
-		double rss = accumulate(px, py, pv, fixed, count, p, n, profile, jtj, jtr);
+		double rss = accumulate(pixels, p, n, profile, jtj, jtr);
 		double mu = 1e-3;
 		int it = 1;
 		boolean converged = false;
@@ -153,14 +176,19 @@ final class GroupFit {
 			final double[] step = SymmetricSolver.solve(a, jtr);
 			if (step == null) break;
 			final double[] trial = p.clone();
+			boolean allowed = true;
 			for (int i = 0; i < np; i++)
 				trial[i] += step[i];
-			final double[][] tj = new double[np][np];
-			final double[] tr = new double[np];
-			final double trialRss = accumulate(px, py, pv, fixed, count, trial, n, profile, tj, tr);
+			for (int q = 0; q < n; q++) {
+				final double sc = trial[PER_PARTICLE * q + 3];
+				if (!(sc >= MIN_SCALE && sc <= MAX_SCALE)) allowed = false;
+			}
 			double move = 0;
 			for (int q = 0; q < n; q++)
-				move = Math.max(move, Math.hypot(step[3 * q], step[3 * q + 1]));
+				move = Math.max(move, Math.hypot(step[PER_PARTICLE * q], step[PER_PARTICLE * q + 1]));
+			final double[][] tj = new double[np][np];
+			final double[] tr = new double[np];
+			final double trialRss = allowed ? accumulate(pixels, trial, n, profile, tj, tr) : Double.POSITIVE_INFINITY;
 			if (trialRss <= rss) {
 				System.arraycopy(trial, 0, p, 0, np);
 				for (int i = 0; i < np; i++) {
@@ -176,7 +204,7 @@ final class GroupFit {
 			}
 			else {
 				mu *= 10;
-				if (move < TOLERANCE) {
+				if (move < TOLERANCE && allowed) {
 					converged = true; // no better point within a negligible distance
 					break;
 				}
@@ -187,45 +215,65 @@ final class GroupFit {
 		final double s2 = rss / (count - np);
 		for (int q = 0; q < n; q++) {
 			final Estimate old = e[group[q]];
-			e[group[q]] = new Estimate(p[3 * q], p[3 * q + 1], old.flags(), old.secondArea(), old.iterations(), old.solve(),
-				Math.sqrt(s2 * inv[3 * q][3 * q]), Math.sqrt(s2 * inv[3 * q + 1][3 * q + 1]));
+			final int b = PER_PARTICLE * q;
+			e[group[q]] = new Estimate(p[b], p[b + 1], old.flags(), old.secondArea(), old.iterations(), old.solve(), Math
+				.sqrt(s2 * inv[b][b]), Math.sqrt(s2 * inv[b + 1][b + 1]), p[b + 2], p[b + 3]);
 		}
 		return converged ? it : -it;
 	}
 
+	/** The pixels of a group's fit: positions, values, other groups' light, and the plane's origin and unit. */
+	private record Pixels(int[] x, int[] y, double[] value, double[] fixed, int count, double mx, double my,
+		double unit)
+	{}
+
 	/** Fills J^T J and J^T r at parameters {@code p}; returns the residual sum of squares. */
-	private static double accumulate(final int[] px, final int[] py, final double[] pv, final double[] fixed,
-		final int count,
-		final double[] p, final int n, final EmpiricalProfile profile, final double[][] jtj, final double[] jtr)
+	private static double accumulate(final Pixels px, final double[] p, final int n, final EmpiricalProfile profile,
+		final double[][] jtj, final double[] jtr)
 	{
-		final int np = 3 * n + 1;
+		final int np = PER_PARTICLE * n + BACKGROUND, b0 = np - BACKGROUND;
 		final double R = profile.radius();
 		final double[] grad = new double[np];
+		// the parameters a pixel depends on: the background's and those of the members within reach
+		final int[] nz = new int[np];
 		double rss = 0;
-		for (int i = 0; i < count; i++) {
-			double model = p[np - 1] + fixed[i];
-			java.util.Arrays.fill(grad, 0);
-			grad[np - 1] = 1;
+		for (int i = 0; i < px.count(); i++) {
+			final double u = (px.x()[i] - px.mx()) / px.unit(), v = (px.y()[i] - px.my()) / px.unit();
+			double model = p[b0] + p[b0 + 1] * u + p[b0 + 2] * v + px.fixed()[i];
+			int len = 0;
+			grad[b0] = 1;
+			grad[b0 + 1] = u;
+			grad[b0 + 2] = v;
 			for (int q = 0; q < n; q++) {
-				final double dx = px[i] - p[3 * q], dy = py[i] - p[3 * q + 1];
-				final double r = Math.sqrt(dx * dx + dy * dy);
-				if (r >= R) continue;
-				final double a = p[3 * q + 2], v = profile.lookup(r);
-				model += a * v;
-				grad[3 * q + 2] = v;
-				if (r > 1e-12) {
-					final double d = a * profile.lookupDerivative(r) / r;
-					grad[3 * q] = -d * dx;
-					grad[3 * q + 1] = -d * dy;
-				}
+				final int b = PER_PARTICLE * q;
+				final double dx = px.x()[i] - p[b], dy = px.y()[i] - p[b + 1], sc = p[b + 3];
+				final double r = Math.sqrt(dx * dx + dy * dy), rs = r / sc;
+				if (rs >= R) continue;
+				final double a = p[b + 2], val = profile.lookup(rs);
+				model += a * val;
+				final double d = a * profile.lookupDerivative(rs);
+				grad[b] = r > 1e-12 ? -d / sc * dx / r : 0;
+				grad[b + 1] = r > 1e-12 ? -d / sc * dy / r : 0;
+				grad[b + 2] = val;
+				grad[b + 3] = -d * rs / sc;
+				nz[len++] = b;
+				nz[len++] = b + 1;
+				nz[len++] = b + 2;
+				nz[len++] = b + 3;
 			}
-			final double res = pv[i] - model;
+			nz[len++] = b0;
+			nz[len++] = b0 + 1;
+			nz[len++] = b0 + 2;
+			final double res = px.value()[i] - model;
 			rss += res * res;
-			for (int a = 0; a < np; a++) {
-				if (grad[a] == 0) continue;
-				jtr[a] += grad[a] * res;
-				for (int b = 0; b <= a; b++)
-					jtj[a][b] += grad[a] * grad[b];
+			// indices in nz increase, so (a, b) with b <= a fills the lower triangle
+			for (int ia = 0; ia < len; ia++) {
+				final int a = nz[ia];
+				final double ga = grad[a];
+				jtr[a] += ga * res;
+				final double[] row = jtj[a];
+				for (int ib = 0; ib <= ia; ib++)
+					row[nz[ib]] += ga * grad[nz[ib]];
 			}
 		}
 		for (int a = 0; a < np; a++)

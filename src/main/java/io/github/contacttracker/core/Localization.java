@@ -24,10 +24,24 @@ import java.util.Set;
  *        iterative methods)
  * @param sigmaX estimated standard error of x (px), NaN when it could not be estimated
  * @param sigmaY estimated standard error of y (px), NaN when it could not be estimated
+ * @param amplitude the {@code fit} method's amplitude of the particle relative to the measured profile, NaN for
+ *        the other methods
+ * @param scale the {@code fit} method's radial scale of the particle relative to the measured profile (1.2: its
+ *        image is 1.2 times larger), NaN for the other methods
  */
 public record Localization(int frame, double x, double y, double firstX, double firstY, int activeArea,
-	int secondArea, double quality, double radius, int flags, int iterations, double sigmaX, double sigmaY)
+	int secondArea, double quality, double radius, int flags, int iterations, double sigmaX, double sigmaY,
+	double amplitude, double scale)
 {
+
+	/** A spot without the fit's amplitude and scale (NaN). */
+	public Localization(final int frame, final double x, final double y, final double firstX, final double firstY,
+		final int activeArea, final int secondArea, final double quality, final double radius, final int flags,
+		final int iterations, final double sigmaX, final double sigmaY)
+	{
+		this(frame, x, y, firstX, firstY, activeArea, secondArea, quality, radius, flags, iterations, sigmaX, sigmaY,
+			Double.NaN, Double.NaN);
+	}
 
 	/** @return whether {@code flag} is set */
 	public boolean has(final Flag flag) {
@@ -49,18 +63,18 @@ public record Localization(int frame, double x, double y, double firstX, double 
 	/** @return a copy with another frame index */
 	public Localization withFrame(final int newFrame) {
 		return new Localization(newFrame, x, y, firstX, firstY, activeArea, secondArea, quality, radius, flags,
-			iterations, sigmaX, sigmaY);
+			iterations, sigmaX, sigmaY, amplitude, scale);
 	}
 
 	/** @return a copy moved by (dx, dy) pixels, e.g. from a crop's frame into the whole image's */
 	public Localization translate(final double dx, final double dy) {
 		return new Localization(frame, x + dx, y + dy, firstX + dx, firstY + dy, activeArea, secondArea, quality,
-			radius, flags, iterations, sigmaX, sigmaY);
+			radius, flags, iterations, sigmaX, sigmaY, amplitude, scale);
 	}
 
 	/** @return a copy with another radius (px), e.g. half the particle diameter the user gave */
 	public Localization withRadius(final double newRadius) {
 		return new Localization(frame, x, y, firstX, firstY, activeArea, secondArea, quality, newRadius, flags,
-			iterations, sigmaX, sigmaY);
+			iterations, sigmaX, sigmaY, amplitude, scale);
 	}
 }

@@ -43,6 +43,14 @@ public abstract class Plane {
 	/** @return the grey value at local (x, y) */
 	public abstract double get(int x, int y);
 
+	/**
+	 * @return the grey level at which the pixel type clips (255 for 8 bits, 65535 for 16 bits), infinite for
+	 *         floating-point data: pixels at this level are saturated, their true value unknown (censored)
+	 */
+	public double saturation() {
+		return Double.POSITIVE_INFINITY;
+	}
+
 	/** @return whether pixels can be NaN or infinite (floating-point data) */
 	protected abstract boolean floatingPoint();
 
@@ -197,6 +205,11 @@ public abstract class Plane {
 		@Override
 		protected final boolean floatingPoint() {
 			return false;
+		}
+
+		@Override
+		public final double saturation() {
+			return maxValue;
 		}
 
 		@Override

@@ -42,8 +42,8 @@ public final class ProfileEstimator {
 			" px, not " + radius);
 		this.count = (int) Math.round(radius / SPACING) - 1;
 		this.radius = (count + 1) * SPACING;
-		ata = new double[count + 1][count + 1];
-		atb = new double[count + 1];
+		ata = new double[count + 3][count + 3];
+		atb = new double[count + 3];
 	}
 
 	/** @return an estimator reaching {@link #REACH_FACTOR} times {@code rOut} */
@@ -63,46 +63,91 @@ public final class ProfileEstimator {
 
 	/**
 	 * Adds a frame with its spots (positions in the frame's coordinates). Spots flagged merged or degenerate
-	 * are masked out.
+	 * are masked out. Each spot's fitted amplitude and radial scale are used where known (divided by their means
+	 * {@code amplitudeNorm} and {@code scaleNorm}, which fix the profile's own height and size).
 	 */
-	public <T extends RealType<T>> void add(final RandomAccessibleInterval<T> frame, final List<Localization> spots) {
+	public <T extends RealType<T>> void add(final RandomAccessibleInterval<T> frame, final List<Localization> spots,
+		final double amplitudeNorm, final double scaleNorm)
+	{
 		final Plane plane = Plane.of(frame);
 		final int n = spots.size();
-		final double[] cx = new double[n], cy = new double[n];
+		final double[] cx = new double[n], cy = new double[n], amp = new double[n], scale = new double[n];
 		final boolean[] masked = new boolean[n];
 		for (int k = 0; k < n; k++) {
 			final Localization s = spots.get(k);
 			cx[k] = s.x() - plane.minX();
 			cy[k] = s.y() - plane.minY();
+			amp[k] = Double.isFinite(s.amplitude()) ? s.amplitude() / amplitudeNorm : 1;
+			scale[k] = Double.isFinite(s.scale()) && s.scale() > 0 ? s.scale() / scaleNorm : 1;
 			masked[k] = s.has(Flag.MERGED) || s.has(Flag.DEGENERATE);
 		}
-		add(plane, cx, cy, masked);
+		add(plane, cx, cy, amp, scale, masked);
 	}
 
-	/** Adds a plane with centres in its local coordinates; pixels near masked centres are skipped. */
+	/** Adds a frame with its spots, taken as alike (amplitude and scale 1 for spots without fitted ones). */
+	public <T extends RealType<T>> void add(final RandomAccessibleInterval<T> frame, final List<Localization> spots) {
+		add(frame, spots, 1, 1);
+	}
+
+	/**
+	 * @return {mean amplitude, geometric mean scale} of the spots' fitted values (1 where none is known), over
+	 *         spots that are neither merged nor degenerate
+	 */
+	public static double[] norms(final List<Localization> spots) {
+		double a = 0, s = 0;
+		int n = 0;
+		for (final Localization l : spots) {
+			if (l.has(Flag.MERGED) || l.has(Flag.DEGENERATE) || !Double.isFinite(l.amplitude()) || !(l.scale() > 0))
+				continue;
+			a += l.amplitude();
+			s += Math.log(l.scale());
+			n++;
+		}
+		return n == 0 || !(a > 0) ? new double[] { 1, 1 } : new double[] { a / n, Math.exp(s / n) };
+	}
+
+	/** Adds a plane with centres in its local coordinates, particles alike; pixels near masked centres are skipped. */
 	void add(final Plane plane, final double[] cx, final double[] cy, final boolean[] masked) {
+		final double[] ones = new double[cx.length];
+		java.util.Arrays.fill(ones, 1);
+		add(plane, cx, cy, ones, ones, masked);
+	}
+
+	/**
+	 * Adds a plane with centres in its local coordinates, each particle drawn as {@code amp_k P(r / scale_k)};
+	 * pixels near masked centres, and saturated pixels, are skipped.
+	 */
+	void add(final Plane plane, final double[] cx, final double[] cy, final double[] amp, final double[] scale,
+		final boolean[] masked)
+	{
 		final int n = cx.length, w = plane.width(), h = plane.height();
-		final double r2 = radius * radius;
+		final double saturation = plane.saturation();
 		final int[] near = new int[n];
-		final int[] idx = new int[4 * n + 1];
-		final double[] val = new double[4 * n + 1];
+		final int[] idx = new int[4 * n + 3];
+		final double[] val = new double[4 * n + 3];
 		final int bIndex = count;
+		double maxScale = 1;
+		for (int k = 0; k < n; k++)
+			maxScale = Math.max(maxScale, scale[k]);
+		final double mx = 0.5 * (w - 1), my = 0.5 * (h - 1);
 		for (int y = 0; y < h; y++) {
 			int nn = 0;
 			for (int k = 0; k < n; k++)
-				if (Math.abs(y - cy[k]) < radius) near[nn++] = k;
+				if (Math.abs(y - cy[k]) < radius * maxScale) near[nn++] = k;
 			for (int x = 0; x < w; x++) {
+				final double v = plane.get(x, y);
+				if (v >= saturation) continue;
 				int len = 0;
 				boolean skip = false;
 				for (int q = 0; q < nn && !skip; q++) {
 					final int k = near[q];
-					final double dx = x - cx[k], dy = y - cy[k], d2 = dx * dx + dy * dy;
-					if (d2 >= r2) continue;
+					final double dx = x - cx[k], dy = y - cy[k], d2 = dx * dx + dy * dy, reach = radius * scale[k];
+					if (d2 >= reach * reach) continue;
 					if (masked[k]) {
 						skip = true;
 						break;
 					}
-					final double u = Math.sqrt(d2) / SPACING;
+					final double u = Math.sqrt(d2) / (SPACING * scale[k]);
 					final int i = (int) u;
 					for (int j = i - 1; j <= i + 2; j++) {
 						final int c = EmpiricalProfile.coefficientIndex(j, count);
@@ -110,13 +155,31 @@ public final class ProfileEstimator {
 						final double b = EmpiricalProfile.bspline(u - j);
 						if (b == 0) continue;
 						idx[len] = c;
-						val[len++] = b;
+						val[len++] = amp[k] * b;
 					}
 				}
 				if (skip) continue;
+				if (len == 0) { // the background alone: its six sums, without the general outer product
+					final double bu = (x - mx) / RAMP_UNIT, bv = (y - my) / RAMP_UNIT;
+					atb[bIndex] += v;
+					atb[bIndex + 1] += bu * v;
+					atb[bIndex + 2] += bv * v;
+					ata[bIndex][bIndex] += 1;
+					ata[bIndex + 1][bIndex] += bu;
+					ata[bIndex + 1][bIndex + 1] += bu * bu;
+					ata[bIndex + 2][bIndex] += bv;
+					ata[bIndex + 2][bIndex + 1] += bv * bu;
+					ata[bIndex + 2][bIndex + 2] += bv * bv;
+					samples++;
+					continue;
+				}
+				// the background plane B + bx u + by v, about the frame's centre (u, v in hundreds of px)
 				idx[len] = bIndex;
 				val[len++] = 1;
-				final double v = plane.get(x, y);
+				idx[len] = bIndex + 1;
+				val[len++] = (x - mx) / RAMP_UNIT;
+				idx[len] = bIndex + 2;
+				val[len++] = (y - my) / RAMP_UNIT;
 				for (int a = 0; a < len; a++) {
 					atb[idx[a]] += val[a] * v;
 					// Lower triangle only (by index): mirrored in estimate().
@@ -124,17 +187,20 @@ public final class ProfileEstimator {
 						if (idx[b] <= idx[a]) ata[idx[a]][idx[b]] += val[a] * val[b];
 				}
 				samples++;
-				if (len > 1) profileSamples++;
+				if (len > 3) profileSamples++;
 			}
 		}
 	}
 
+	/** Unit of the background plane's coordinates (px): keeps its columns of the size of the others. */
+	static final double RAMP_UNIT = 100;
+
 	/** Adds what {@code other} (of the same radius) has accumulated, so frames can be measured in parallel. */
 	public void merge(final ProfileEstimator other) {
 		if (other.count != count) throw new IllegalArgumentException("profile radii differ");
-		for (int i = 0; i <= count; i++) {
+		for (int i = 0; i < atb.length; i++) {
 			atb[i] += other.atb[i];
-			for (int j = 0; j <= count; j++)
+			for (int j = 0; j < atb.length; j++)
 				ata[i][j] += other.ata[i][j];
 		}
 		samples += other.samples;
@@ -146,17 +212,20 @@ public final class ProfileEstimator {
 	 * @throws IllegalStateException when the data cannot determine it
 	 */
 	public EmpiricalProfile estimate() {
-		final int m = count + 1;
+		final int m = count + 3;
 		final double[][] a = new double[m][m];
 		double trace = 0;
 		for (int i = 0; i < m; i++) {
 			for (int j = 0; j <= i; j++)
 				a[i][j] = a[j][i] = ata[i][j];
-			trace += ata[i][i];
+			if (i <= count) trace += ata[i][i];
 		}
+		// A background without a ramp (one frame: no pixel off its centre row) leaves the plane's slopes free
+		for (int i = count + 1; i < m; i++)
+			if (a[i][i] == 0) a[i][i] = 1;
 		// Penalty on second differences d_j = c_{j-1} - 2 c_j + c_{j+1}, j = 0..count, with c_-1 = c_1 and
 		// c_count = 0 (beyond the last coefficient).
-		final double lambda = SMOOTHNESS * trace / m;
+		final double lambda = SMOOTHNESS * trace / (count + 1);
 		for (int j = 0; j <= count; j++) {
 			final int[] ci = { EmpiricalProfile.coefficientIndex(j - 1, count), EmpiricalProfile.coefficientIndex(j,
 				count), EmpiricalProfile.coefficientIndex(j + 1, count) };
@@ -167,7 +236,7 @@ public final class ProfileEstimator {
 		}
 		final double[] x = SymmetricSolver.solve(a, atb);
 		// pixels of the background alone determine no profile: the smoothness penalty would make one up
-		if (x == null || samples < 4 * m || profileSamples < 4 * count)
+		if (x == null || samples < 4 * (count + 1) || profileSamples < 4 * count)
 			throw new IllegalStateException("too few pixels (" + samples + ", " + profileSamples + " within reach of a " +
 				"usable particle) to estimate the particles' profile");
 		final double[] coefficients = new double[count];

@@ -4,7 +4,7 @@ import java.util.Arrays;
 
 /**
  * The profile methods, {@code deblend} and {@code fit}: iterative centres first; then the particles' radial profile
- * (given, or measured on this frame: twice, the second time around the refined centres); then the centres
+ * (given, or measured on this frame: again and again around the refined centres, until they settle); then the centres
  * refined with it by {@link Deblender} or {@link GroupFit}. If the frame's profile cannot be measured the
  * iterative centres are kept, flagged {@code FELL_BACK}.
  */
@@ -34,7 +34,8 @@ final class ProfileRefinement implements Refinement {
 		final Outcome iterative = SecondPass.iterate(ps, params);
 		Estimate[] e = iterative.estimates();
 		if (ps.length == 0) return iterative;
-		final int rounds = given == null ? 2 : 1;
+		// measured here: alternated with the centres until these stop moving (see StackTracker)
+		final int rounds = given == null ? StackTracker.PROFILE_ROUNDS : 1;
 		EmpiricalProfile profile = given;
 		for (int round = 0; round < rounds; round++) {
 			if (given == null) {
@@ -58,9 +59,13 @@ final class ProfileRefinement implements Refinement {
 			for (int k = 0; k < next.length; k++) {
 				final int flags = (next[k].flags() & ~clear) | (r.iterations() < 0 ? Flag.NOT_CONVERGED.bit() : 0);
 				next[k] = new Estimate(next[k].x(), next[k].y(), flags, next[k].secondArea(), Math.abs(r.iterations()),
-					next[k].solve(), next[k].sigmaX(), next[k].sigmaY());
+					next[k].solve(), next[k].sigmaX(), next[k].sigmaY(), next[k].amplitude(), next[k].scale());
 			}
+			double move = 0;
+			for (int k = 0; k < next.length; k++)
+				move = Math.max(move, next[k].distanceTo(e[k]));
 			e = next;
+			if (round > 0 && move <= StackTracker.PROFILE_TOLERANCE) break;
 		}
 		return new Outcome(e, iterative.discs());
 	}
@@ -70,14 +75,32 @@ final class ProfileRefinement implements Refinement {
 		final double rOut)
 	{
 		final ProfileEstimator estimator = ProfileEstimator.forROut(rOut);
-		final double[] cx = new double[ps.length], cy = new double[ps.length];
-		final boolean[] masked = new boolean[ps.length];
-		for (int k = 0; k < ps.length; k++) {
+		final int n = ps.length;
+		final double[] cx = new double[n], cy = new double[n], amp = new double[n], scale = new double[n];
+		final boolean[] masked = new boolean[n];
+		double ampSum = 0, logScaleSum = 0;
+		int fitted = 0;
+		for (int k = 0; k < n; k++) {
 			cx[k] = e[k].x();
 			cy[k] = e[k].y();
 			masked[k] = !ps[k].reliable();
+			final boolean known = Double.isFinite(e[k].amplitude()) && e[k].scale() > 0;
+			amp[k] = known ? e[k].amplitude() : 1;
+			scale[k] = known ? e[k].scale() : 1;
+			if (known && !masked[k]) {
+				ampSum += amp[k];
+				logScaleSum += Math.log(scale[k]);
+				fitted++;
+			}
 		}
-		estimator.add(plane, cx, cy, masked);
+		// the profile's own height and size: the particles' mean amplitude and (geometric) mean scale
+		final double ampNorm = fitted > 0 && ampSum > 0 ? ampSum / fitted : 1;
+		final double scaleNorm = fitted > 0 ? Math.exp(logScaleSum / fitted) : 1;
+		for (int k = 0; k < n; k++) {
+			amp[k] /= ampNorm;
+			scale[k] /= scaleNorm;
+		}
+		estimator.add(plane, cx, cy, amp, scale, masked);
 		try {
 			return estimator.estimate();
 		}

@@ -95,10 +95,37 @@ public final class StackTracker {
 		progress.total += sample.length;
 		final List<FrameResult> iterative = pass(new ContactTracker(params.withMethod(Method.ITERATIVE)), null, all,
 			frame, false, progress, cancelled);
-		final List<FrameResult> firstRound = pass(tracker, profile(pick(iterative, sample), sample, frame, params
-			.rOut()), sample, frame, false, progress, cancelled);
-		return pass(tracker, profile(firstRound, sample, frame, params.rOut()), all, frame, keepRegions, progress,
-			cancelled);
+		// The profile is measured around estimated centres, and in a configuration that never changes (every frame
+		// the same cluster) it absorbs part of their error; so profile and centres are alternated on the sample
+		// frames until the centres stop moving (the joint least-squares fixed point).
+		List<FrameResult> previous = pick(iterative, sample);
+		EmpiricalProfile used = profile(previous, sample, frame, params.rOut());
+		List<FrameResult> round = pass(tracker, used, sample, frame, false, progress, cancelled);
+		for (int r = 1; r < PROFILE_ROUNDS && largestMove(previous, round) > PROFILE_TOLERANCE; r++) {
+			progress.total += sample.length;
+			previous = round;
+			used = profile(round, sample, frame, params.rOut());
+			round = pass(tracker, used, sample, frame, false, progress, cancelled);
+		}
+		// settled: the profile of the last round is the fixed point's (to within the tolerance)
+		return pass(tracker, used, all, frame, keepRegions, progress, cancelled);
+	}
+
+	/** At most this many rounds of profile and centres on the sample frames... */
+	public static final int PROFILE_ROUNDS = 30;
+	/** ...which stop when no centre moves more than this between rounds (px). */
+	public static final double PROFILE_TOLERANCE = 1e-3;
+
+	/** The largest distance any spot moved between two results of the same frames (spots in the same order). */
+	static double largestMove(final List<FrameResult> before, final List<FrameResult> after) {
+		double move = 0;
+		for (int t = 0; t < before.size(); t++) {
+			final List<Localization> a = before.get(t).spots(), b = after.get(t).spots();
+			if (a.size() != b.size()) return Double.POSITIVE_INFINITY;
+			for (int k = 0; k < a.size(); k++)
+				move = Math.max(move, Math.hypot(a.get(k).x() - b.get(k).x(), a.get(k).y() - b.get(k).y()));
+		}
+		return move;
 	}
 
 	/** Frames done over frames to do, across the passes of one run. */
@@ -165,10 +192,11 @@ public final class StackTracker {
 	{
 		// One estimator per frame, merged in frame order: the sums, and so the results, do not depend on the
 		// number of threads.
+		final double[] norms = ProfileEstimator.norms(spots(results));
 		final List<ProfileEstimator> parts = Parallelization.getTaskExecutor().forEachApply(positions(indices.length),
 			i -> {
 				final ProfileEstimator part = ProfileEstimator.forROut(rOut);
-				part.add(frame.apply(indices[i]), results.get(i).spots());
+				part.add(frame.apply(indices[i]), results.get(i).spots(), norms[0], norms[1]);
 				return part;
 			});
 		final ProfileEstimator all = parts.get(0);

@@ -29,7 +29,7 @@ public final class ImageSimulator {
 	public static final double TABLE_STEP_PX = 0.01;
 
 	/** Extra table length (px) beyond the cutoff, zero-filled: sub-points of boundary pixels need no range test. */
-	private static final double TABLE_PADDING_PX = 2;
+	private static final double TABLE_PADDING_PX = 4;
 
 	private final double cutoffRadius;
 	private final int supersampling;
@@ -98,8 +98,25 @@ public final class ImageSimulator {
 	 * @param y centre y (px)
 	 */
 	public void addParticle(final NoiseFreeImage image, final double x, final double y) {
+		addParticle(image, x, y, 1, 1);
+	}
+
+	/**
+	 * Adds one pixel-integrated particle of another size and brightness: {@code amplitude * P(r / scale)}, for
+	 * unlike particles (scale 1 and amplitude 1 is {@link #addParticle(NoiseFreeImage, double, double)}).
+	 *
+	 * @param scale radial scale of the profile ({@code >= 0.5}; 1.2 = 1.2 times larger)
+	 * @param amplitude factor on the profile's grey levels
+	 */
+	public void addParticle(final NoiseFreeImage image, final double x, final double y, final double scale,
+		final double amplitude)
+	{
+		if (!(scale >= 0.5) || !Double.isFinite(scale) || !Double.isFinite(amplitude))
+			throw new IllegalArgumentException("scale must be at least 0.5 and amplitude finite, not " + scale + ", " +
+				amplitude);
 		final int width = image.width();
 		final double[] pixels = image.pixels();
+		final double cutoffRadius = this.cutoffRadius * scale;
 		final double reach2 = cutoffRadius * cutoffRadius;
 		final int iMin = (int) Math.max(0, Math.floor(x - cutoffRadius - 0.5));
 		final int iMax = (int) Math.min(width - 1, Math.ceil(x + cutoffRadius + 0.5));
@@ -119,8 +136,8 @@ public final class ImageSimulator {
 				final double d = i + offsets[k] - x;
 				dx2[(i - iMin) * n + k] = (float) (d * d);
 			}
-		final double weight = 1.0 / (n * n);
-		final float invStep = (float) (1 / TABLE_STEP_PX);
+		final double weight = amplitude / (n * n);
+		final float invStep = (float) (1 / (TABLE_STEP_PX * scale));
 		final double[] values = tableValues;
 		final double[] slopes = tableSlopes;
 		// per sub-column, the sum over the current pixel row's sub-rows: long simple inner loops run fastest

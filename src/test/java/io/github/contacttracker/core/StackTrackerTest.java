@@ -73,13 +73,16 @@ class StackTrackerTest {
 	void profileMethodsCountEveryPassAndStayDeterministic() {
 		final List<RandomAccessibleInterval<FloatType>> frames = frames(6);
 		final TrackerParameters p = TrackerParameters.of(80, 20).withMethod(Method.FIT);
-		final AtomicInteger last = new AtomicInteger();
+		final AtomicInteger last = new AtomicInteger(), announced = new AtomicInteger();
 		final List<FrameResult> parallel = StackTracker.withThreads(2, () -> new StackTracker(p).track(frames
 			.size(), frames::get, false, (done, total) -> {
-				assertEquals(6 + 6 + 6, total); // iterative, refinement of the profile frames (all 6 here), final
+				// iterative, refinement of the profile frames (all 6 here) in one or more rounds, final
+				assertTrue(total >= 6 + 6 + 6 && total % 6 == 0, "total " + total);
+				assertTrue(done <= total);
+				announced.accumulateAndGet(total, Math::max);
 				last.accumulateAndGet(done, Math::max);
 			}, () -> false));
-		assertEquals(18, last.get());
+		assertEquals(announced.get(), last.get());
 		assertEquals(StackTracker.spots(new StackTracker(p).track(frames, false)), StackTracker.spots(parallel));
 		for (final FrameResult r : parallel)
 			for (final Localization s : r.spots())

@@ -1,0 +1,279 @@
+package io.github.contacttracker.sim;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.SplittableRandom;
+
+import io.github.contacttracker.core.InvalidInputException;
+import net.imglib2.img.array.ArrayImg;
+
+/**
+ * A harder scene than the paper's two: a cluster of touching particles (any layout), particles of unlike size
+ * and brightness, a background ramp, photon (Poisson) plus read noise, and saturated cores. Every frame shows the
+ * same scene moved as a whole by a random sub-pixel offset, with fresh noise; 8-bit, clipped at 255 (the clipped
+ * pixels are counted).
+ *
+ * @param key short name ({@code pair}, {@code hex7}, ...)
+ * @param type the particles (profile, background, pixel size, r_out)
+ * @param particles the particles, centred on (0, 0) (px)
+ * @param rampX background slope along x (grey levels per px), about the frame's centre
+ * @param rampY background slope along y
+ * @param photonGain grey levels per photon for photon noise, or 0 for the type's additive noise
+ * @param readNoise standard deviation of the read noise (grey levels), with photon noise
+ * @param threshold the active-area threshold for this scene
+ */
+public record Scene(String key, ParticleType type, List<Particle> particles, double rampX, double rampY,
+	double photonGain, double readNoise, double threshold)
+{
+
+	/** The scenes {@link #of} knows, in order. */
+	public static final List<String> KEYS = List.of("pair", "chain4", "triple", "hex7", "unlike", "unlike13", "ramp",
+		"saturated");
+
+	/** Grey levels per photon of the photon-noise scenes: about 300 photons at a background of 60. */
+	public static final double PHOTON_GAIN = 0.2;
+	/** Read noise of the photon-noise scenes (grey levels). */
+	public static final double READ_NOISE = 1.5;
+	/** How much brighter the saturated scene's particles are: their cores clip at 255. */
+	public static final double SATURATED_BRIGHTNESS = 2;
+
+	/**
+	 * One particle: centre, radial scale of the profile (1.2 = 1.2 times larger) and factor on its grey levels.
+	 *
+	 * @param x centre x relative to the scene's centre (px)
+	 * @param y centre y (px)
+	 * @param scale radial scale
+	 * @param amplitude brightness factor
+	 */
+	public record Particle(double x, double y, double scale, double amplitude) {}
+
+	/** Copies the list. */
+	public Scene {
+		particles = List.copyOf(particles);
+	}
+
+	/**
+	 * @param key one of {@link #KEYS}
+	 * @param type the particles
+	 * @return the scene at contact
+	 * @throws InvalidInputException for an unknown key
+	 */
+	public static Scene of(final String key, final ParticleType type) {
+		final double d = type.diameterPx();
+		final double th = type.threshold();
+		return switch (key.trim().toLowerCase(Locale.ROOT)) {
+			case "pair" -> plain("pair", type, line(2, d));
+			case "chain4" -> plain("chain4", type, line(4, d));
+			case "triple" -> plain("triple", type, triangle(d));
+			case "hex7" -> plain("hex7", type, hexagon(d));
+			case "unlike" -> plain("unlike", type, unlike(d, 1.2, 1.1));
+			case "unlike13" -> plain("unlike13", type, unlike(d, 1.3, 1.15));
+			case "ramp" -> new Scene("ramp", type, line(2, d), 0.05, 0.03, PHOTON_GAIN, READ_NOISE, th);
+			case "saturated" -> {
+				final List<Particle> bright = new ArrayList<>();
+				for (final Particle p : line(2, d))
+					bright.add(new Particle(p.x, p.y, 1, SATURATED_BRIGHTNESS));
+				// the threshold keeps its place on the (brighter) profile
+				yield new Scene("saturated", type, bright, 0, 0, 0, 0, type.background() + SATURATED_BRIGHTNESS * (th -
+					type.background()));
+			}
+			default -> throw new InvalidInputException("--scene must be among " + String.join(",", KEYS) + ", not '" +
+				key + "'");
+		};
+	}
+
+	private static Scene plain(final String key, final ParticleType type, final List<Particle> ps) {
+		return new Scene(key, type, ps, 0, 0, 0, 0, type.threshold());
+	}
+
+	private static List<Particle> line(final int n, final double d) {
+		final List<Particle> ps = new ArrayList<>();
+		for (int i = 0; i < n; i++)
+			ps.add(new Particle((i - 0.5 * (n - 1)) * d, 0, 1, 1));
+		return ps;
+	}
+
+	/** The paper's scenario (b) at contact: a touching equilateral triangle. */
+	private static List<Particle> triangle(final double d) {
+		final double h = d * Math.sqrt(3) / 2;
+		return List.of(new Particle(-d / 2, h / 3, 1, 1), new Particle(d / 2, h / 3, 1, 1), new Particle(0, -2 * h / 3,
+			1, 1));
+	}
+
+	/** A central particle and six touching it, each touching its two neighbours. */
+	private static List<Particle> hexagon(final double d) {
+		final List<Particle> ps = new ArrayList<>();
+		ps.add(new Particle(0, 0, 1, 1));
+		for (int k = 0; k < 6; k++) {
+			// tilted by 10 degrees, so that no pair lies along the pixel grid
+			final double a = Math.toRadians(10 + 60 * k);
+			ps.add(new Particle(d * Math.cos(a), d * Math.sin(a), 1, 1));
+		}
+		return ps;
+	}
+
+	/** A pair at contact, the right one {@code scale} times larger and {@code amplitude} times brighter. */
+	private static List<Particle> unlike(final double d, final double scale, final double amplitude) {
+		final double contact = 0.5 * d * (1 + scale);
+		// tilted, so that the displacement between them has both an x and a y part
+		final double a = Math.toRadians(20);
+		final double ux = Math.cos(a) * contact / 2, uy = Math.sin(a) * contact / 2;
+		return List.of(new Particle(-ux, -uy, 1, 1), new Particle(ux, uy, scale, amplitude));
+	}
+
+	/** @return whether the noise is photon noise (Poisson) plus read noise */
+	public boolean photonNoise() {
+		return photonGain > 0;
+	}
+
+	/**
+	 * @param x pixel x
+	 * @param y pixel y
+	 * @param width frame width
+	 * @param height frame height
+	 * @return the background at a pixel (the ramp is zero at the frame's centre)
+	 */
+	public double background(final int x, final int y, final int width, final int height) {
+		return type.background() + rampX * (x - 0.5 * (width - 1)) + rampY * (y - 0.5 * (height - 1));
+	}
+
+	/**
+	 * The variance of a pixel whose exact value is {@code value}, noise and rounding to integers.
+	 *
+	 * @param value the exact grey level
+	 * @return its variance (grey levels squared)
+	 */
+	public double variance(final double value) {
+		final double noise = photonNoise() ? photonGain * Math.max(value, 0) + readNoise * readNoise : type.noise()
+			.sigma() * type.noise().sigma();
+		return noise + 1.0 / 12;
+	}
+
+	/** @return the frame size (px, square-ish: {width, height}) that holds every particle's visible reach */
+	public int[] frameSize() {
+		final double[] e = extent();
+		final double reach = Math.max(type.profile().reach(PaperParticles.REACH_LEVEL) * e[4], type.rOut());
+		final double border = reach + SimulatedStack.MARGIN_PX + 0.5;
+		return new int[] { (int) Math.ceil(e[1] - e[0] + 2 * border) + 1, (int) Math.ceil(e[3] - e[2] + 2 * border) +
+			1 };
+	}
+
+	/** @return {min x, max x, min y, max y, largest scale (at least 1)} of the particles */
+	private double[] extent() {
+		final double[] e = { Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.POSITIVE_INFINITY,
+			Double.NEGATIVE_INFINITY, 1 };
+		for (final Particle p : particles) {
+			e[0] = Math.min(e[0], p.x);
+			e[1] = Math.max(e[1], p.x);
+			e[2] = Math.min(e[2], p.y);
+			e[3] = Math.max(e[3], p.y);
+			e[4] = Math.max(e[4], p.scale);
+		}
+		return e;
+	}
+
+	/** @return the particles' centres in a frame of {@code frameSize()}, before the frame's offset */
+	public List<double[]> layout() {
+		final int[] size = frameSize();
+		final double[] e = extent();
+		final double sx = 0.5 * (size[0] - 1) - 0.5 * (e[0] + e[1]), sy = 0.5 * (size[1] - 1) - 0.5 * (e[2] + e[3]);
+		final List<double[]> out = new ArrayList<>();
+		for (final Particle p : particles)
+			out.add(new double[] { p.x + sx, p.y + sy });
+		return out;
+	}
+
+	/**
+	 * The exact image of the scene with its particles at {@code centres}.
+	 *
+	 * @param simulator a renderer of the type's profile
+	 */
+	public NoiseFreeImage render(final ImageSimulator simulator, final List<double[]> centres, final int width,
+		final int height)
+	{
+		final NoiseFreeImage img = NoiseFreeImage.uniform(width, height, 0);
+		final double[] px = img.pixels();
+		for (int y = 0; y < height; y++)
+			for (int x = 0; x < width; x++)
+				px[y * width + x] = background(x, y, width, height);
+		for (int k = 0; k < particles.size(); k++)
+			simulator.addParticle(img, centres.get(k)[0], centres.get(k)[1], particles.get(k).scale, particles.get(
+				k).amplitude);
+		return img;
+	}
+
+	/**
+	 * Simulates {@code frameCount} 8-bit frames. The measured pairs are the touching ones.
+	 *
+	 * @param seed seed of the offsets and the noise: equal seeds give identical stacks
+	 * @return the stack with its truth
+	 */
+	public SimulatedStack<?> simulate(final int frameCount, final long seed) {
+		final int[] size = frameSize();
+		final int w = size[0], h = size[1];
+		final List<double[]> layout = layout();
+		final ImageSimulator simulator = new ImageSimulator(type.profile());
+		final SplittableRandom random = new SplittableRandom(seed);
+		final List<ArrayImg<?, ?>> frames = new ArrayList<>();
+		final List<List<double[]>> truth = new ArrayList<>();
+		long clipped = 0;
+		for (int f = 0; f < frameCount; f++) {
+			final double ox = random.nextDouble(-0.5, 0.5), oy = random.nextDouble(-0.5, 0.5);
+			final List<double[]> centres = new ArrayList<>();
+			for (final double[] c : layout)
+				centres.add(new double[] { c[0] + ox, c[1] + oy });
+			final NoiseFreeImage exact = render(simulator, centres, w, h);
+			final QuantisedFrame<?> frame;
+			if (photonNoise()) {
+				final double[] px = exact.pixels();
+				for (int i = 0; i < px.length; i++)
+					px[i] = photonGain * Poisson.sample(Math.max(px[i], 0) / photonGain, random);
+				frame = Quantiser.quantise(exact, NoiseModel.gaussian(readNoise), random, 8);
+			}
+			else frame = Quantiser.quantise(exact, type.noise(), random, 8);
+			frames.add(frame.image());
+			truth.add(List.copyOf(centres));
+			clipped += frame.clippedPixels();
+		}
+		return typed(frames, truth, w, h, clipped);
+	}
+
+	/** @return the index pairs of touching particles (centre distance within 1% of the sum of their radii) */
+	public List<int[]> touchingPairs() {
+		final List<int[]> pairs = new ArrayList<>();
+		final double d = type.diameterPx();
+		for (int i = 0; i < particles.size(); i++)
+			for (int j = i + 1; j < particles.size(); j++) {
+				final Particle a = particles.get(i), b = particles.get(j);
+				if (Math.hypot(a.x - b.x, a.y - b.y) <= 1.01 * 0.5 * d * (a.scale + b.scale)) pairs.add(new int[] { i, j });
+			}
+		return pairs;
+	}
+
+	@SuppressWarnings({ "unchecked", "rawtypes" })
+	private SimulatedStack<?> typed(final List<ArrayImg<?, ?>> frames, final List<List<double[]>> truth,
+		final int w, final int h, final long clipped)
+	{
+		return new SimulatedStack(frames, truth, type, java.util.Optional.empty(), 1.0, touchingPairs(), w, h,
+			clipped);
+	}
+
+	/**
+	 * "Flat-top" particles, a profile that neither preset has: a super-Gaussian core (flat top, steep edge), a
+	 * dark ring and a faint bright ring, D = 50 px at 84.7 nm/px; reaches about 1.2 D.
+	 *
+	 * @return the type
+	 */
+	public static ParticleType flatTop() {
+		final RadialProfile profile = r -> 110 * Math.exp(-Math.pow(r / 14, 4)) - 22 * Math.exp(-sq((r - 25) / 6)) + 7 *
+			Math.exp(-sq((r - 42) / 9));
+		final double rOut = Math.ceil(profile.reach(PaperParticles.REACH_LEVEL) + PaperParticles.R_OUT_MARGIN_PX);
+		return new ParticleType("flat-top 4.2 um", 50 * 84.7 / 1000, 84.7, profile, 70, 70 + 35, rOut, NoiseModel
+			.uniform(5));
+	}
+
+	private static double sq(final double v) {
+		return v * v;
+	}
+}

@@ -1,0 +1,56 @@
+package io.github.contacttracker.sim;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+import java.util.SplittableRandom;
+
+import org.junit.jupiter.api.Test;
+
+class SceneTest {
+
+	@Test
+	void poissonHasItsMeanAndVariance() {
+		final SplittableRandom r = new SplittableRandom(3);
+		for (final double mean : new double[] { 2.5, 40, 900 }) {
+			double s = 0, s2 = 0;
+			final int n = 40000;
+			for (int i = 0; i < n; i++) {
+				final double k = Poisson.sample(mean, r);
+				s += k;
+				s2 += k * k;
+			}
+			final double m = s / n, v = s2 / n - m * m;
+			// standard errors: sqrt(mean / n) for the mean, about mean sqrt(2 / n) for the variance
+			assertEquals(mean, m, 5 * Math.sqrt(mean / n), "mean " + mean);
+			assertEquals(mean, v, 5 * mean * Math.sqrt(2.0 / n) + 0.05, "variance at mean " + mean);
+		}
+	}
+
+	@Test
+	void scaledParticleIsTheProfileStretched() {
+		final RadialProfile p = GaussianBesselProfile.gaussian(100, 5);
+		final ImageSimulator sim = new ImageSimulator(p, 1);
+		final NoiseFreeImage img = NoiseFreeImage.uniform(61, 61, 0);
+		sim.addParticle(img, 30, 30, 1.3, 1.1);
+		for (final int dx : new int[] { 0, 3, 7, 12 })
+			assertEquals(110 * Math.exp(-dx * dx / (2 * 6.5 * 6.5)), img.get(30 + dx, 30), 0.02, "r = " + dx);
+	}
+
+	@Test
+	void scenesAreTouchingClustersOfTheirSize() {
+		final ParticleType t = PaperParticles.silica553();
+		assertEquals(6 + 6, Scene.of("hex7", t).touchingPairs().size());
+		assertEquals(3, Scene.of("chain4", t).touchingPairs().size());
+		assertEquals(3, Scene.of("triple", t).touchingPairs().size());
+		assertEquals(1, Scene.of("unlike13", t).touchingPairs().size());
+		final Scene ramp = Scene.of("ramp", t);
+		final SimulatedStack<?> s = ramp.simulate(2, 1);
+		assertEquals(2, s.frameCount());
+		final List<double[]> c = s.truth().get(0);
+		assertEquals(t.diameterPx(), Math.hypot(c.get(0)[0] - c.get(1)[0], c.get(0)[1] - c.get(1)[1]), 1e-9);
+		assertTrue(Scene.of("saturated", t).simulate(1, 1).clippedPixels() > 50, "cores clip");
+		assertEquals(0, Scene.of("pair", t).simulate(1, 1).clippedPixels());
+	}
+}
