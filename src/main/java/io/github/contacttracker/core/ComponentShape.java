@@ -73,10 +73,12 @@ final class ComponentShape {
 	/**
 	 * @param atBorder whether the component is cut by the image border (then elongation does not count)
 	 * @param noise the frame's pixel-noise standard deviation (grey levels)
+	 * @param alone whether no neighbour's light reaches the component: a neighbour's light tilts the gradient lines
+	 *        of a single particle too (long-range profiles at contact), so the symmetry residual counts only alone
 	 * @return whether the component looks like several particles
 	 */
-	boolean merged(final boolean atBorder, final double noise) {
-		return !atBorder && elongation > MERGE_ELONGATION || bayDepth >= mergeDepth(filledArea) ||
+	boolean merged(final boolean atBorder, final double noise, final boolean alone) {
+		return !atBorder && elongation > MERGE_ELONGATION || bayDepth >= mergeDepth(filledArea) || alone &&
 			excessResidual(noise) > MERGE_RESIDUAL_FRACTION * Math.sqrt(filledArea / Math.PI);
 	}
 

@@ -82,7 +82,7 @@ public final class ContactTracker {
 			final Particle p = r.area() >= params.minArea() ? Particle.firstPass(plane, r, params.threshold()) : null;
 			if (p != null) found.add(p);
 		}
-		return withShapeFlags(found, NoiseEstimate.sigma(plane));
+		return withShapeFlags(found, NoiseEstimate.sigma(plane), params.rOut());
 	}
 
 	FrameResult analyse(final Plane plane, final int frameIndex, final boolean keepRegions,
@@ -98,7 +98,7 @@ public final class ContactTracker {
 			else discarded++;
 		}
 		final double noise = NoiseEstimate.sigma(plane);
-		final Particle[] ps = withShapeFlags(found, noise);
+		final Particle[] ps = withShapeFlags(found, noise, params.rOut());
 		final Refinement.Outcome outcome = params.method().refinement().refine(plane, ps, params, profile);
 		final Estimate[] est = outcome.estimates();
 		final List<Localization> spots = new ArrayList<>(ps.length);
@@ -137,13 +137,27 @@ public final class ContactTracker {
 	 * ({@link ComponentShape}: elongated, or with a bay as deep as a waist between two lobes). Size plays no part:
 	 * particles in and out of focus differ in size, not in shape.
 	 */
-	private static Particle[] withShapeFlags(final List<Particle> particles, final double noise) {
+	private static Particle[] withShapeFlags(final List<Particle> particles, final double noise, final double rOut) {
 		final Particle[] ps = new Particle[particles.size()];
 		for (int k = 0; k < ps.length; k++) {
 			final Particle p = particles.get(k);
-			ps[k] = p.withShapeFlags((p.atBorder ? Flag.AT_BORDER.bit() : 0) | (p.shape.merged(p.atBorder, noise) ? Flag.MERGED
-				.bit() : 0));
+			final boolean merged = p.shape.merged(p.atBorder, noise, alone(particles, k, rOut));
+			ps[k] = p.withShapeFlags((p.atBorder ? Flag.AT_BORDER.bit() : 0) | (merged ? Flag.MERGED.bit() : 0));
 		}
 		return ps;
+	}
+
+	/**
+	 * @return whether no other particle's image (reaching {@code r_out} from its first-pass centre) reaches particle
+	 *         {@code k}'s active area: only then do its gradient lines owe nothing to a neighbour's light, so that
+	 *         their failing to meet in one point means several particles
+	 */
+	private static boolean alone(final List<Particle> particles, final int k, final double rOut) {
+		final Particle p = particles.get(k);
+		final double reach = rOut + Math.sqrt(p.region.area() / Math.PI);
+		for (int q = 0; q < particles.size(); q++)
+			if (q != k && Math.hypot(particles.get(q).first.x() - p.first.x(), particles.get(q).first.y() - p.first
+				.y()) < reach) return false;
+		return true;
 	}
 }
