@@ -30,13 +30,13 @@ final class GroupFit {
 	 *         negative if a group hit the limit
 	 */
 	static ProfileRefinement.Refined refine(final Plane plane, final Particle[] particles, final Estimate[] start,
-		final EmpiricalProfile profile, final double groupDistance)
+		final EmpiricalProfile profile, final double groupDistance, final double window)
 	{
 		final Estimate[] e = start.clone();
 		final List<int[]> groups = groups(particles, e, groupDistance);
 		int worst = 0;
 		for (final int[] group : groups) {
-			final int it = fitGroup(plane, particles, e, group, profile);
+			final int it = fitGroup(plane, particles, e, group, profile, window);
 			if (it < 0) worst = Math.min(worst, it);
 			else if (worst >= 0) worst = Math.max(worst, it);
 		}
@@ -97,17 +97,23 @@ final class GroupFit {
 		return e.scale() > 0 ? e.scale() : 1;
 	}
 
-	/** Fits one group, replacing its members' estimates in {@code e} on success; returns the iterations. */
+	/**
+	 * Fits one group, replacing its members' estimates in {@code e} on success; returns the iterations. The pixels
+	 * fitted lie within {@code window} (px, times each member's scale) of a member: out to {@code r_out}, where a
+	 * particle's image has returned to the background, not to the profile's full reach (1.5 {@code r_out}), whose
+	 * faint tail carries almost no information on the centre but more than doubles the pixels. The model itself
+	 * keeps the full reach: every member's and neighbour's tail is in the light of the pixels fitted.
+	 */
 	private static int fitGroup(final Plane plane, final Particle[] ps, final Estimate[] e, final int[] group,
-		final EmpiricalProfile profile)
+		final EmpiricalProfile profile, final double window)
 	{
 		final int n = group.length, np = PER_PARTICLE * n + BACKGROUND;
-		final double R = profile.radius();
+		final double R = profile.radius(), W = Math.min(R, window);
 		final double saturation = plane.saturation();
-		// The pixels: within each member's reach (at its starting centre and scale), not saturated.
+		// The pixels: within each member's window (at its starting centre and scale), not saturated.
 		int x0 = Integer.MAX_VALUE, y0 = Integer.MAX_VALUE, x1 = Integer.MIN_VALUE, y1 = Integer.MIN_VALUE;
 		for (final int k : group) {
-			final double reach = R * scaleOf(e[k]);
+			final double reach = W * scaleOf(e[k]);
 			x0 = Math.min(x0, (int) Math.floor(e[k].x() - reach));
 			x1 = Math.max(x1, (int) Math.ceil(e[k].x() + reach));
 			y0 = Math.min(y0, (int) Math.floor(e[k].y() - reach));
@@ -126,7 +132,7 @@ final class GroupFit {
 			for (int x = x0; x <= x1; x++) {
 				boolean inside = false;
 				for (final int k : group) {
-					final double dx = x - e[k].x(), dy = y - e[k].y(), reach = R * scaleOf(e[k]);
+					final double dx = x - e[k].x(), dy = y - e[k].y(), reach = W * scaleOf(e[k]);
 					if (dx * dx + dy * dy < reach * reach) {
 						inside = true;
 						break;

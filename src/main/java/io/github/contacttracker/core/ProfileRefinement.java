@@ -53,7 +53,7 @@ final class ProfileRefinement implements Refinement {
 				if (disc < 3) disc = medianEquivalentRadius(ps);
 				r = Deblender.refine(plane, ps, e, profile, disc);
 			}
-			else r = GroupFit.refine(plane, ps, e, profile, 2 * params.rOut());
+			else r = GroupFit.refine(plane, ps, e, profile, 2 * params.rOut(), params.rOut());
 			final int clear = Flag.SECOND_PASS.bit() | Flag.FELL_BACK.bit() | Flag.NOT_CONVERGED.bit();
 			final Estimate[] next = r.estimates();
 			for (int k = 0; k < next.length; k++) {
