@@ -228,63 +228,102 @@ final class GroupFit {
 		return converged ? it : -it;
 	}
 
-	/** The pixels of a group's fit: positions, values, other groups' light, and the plane's origin and unit. */
-	private record Pixels(int[] x, int[] y, double[] value, double[] fixed, int count, double mx, double my,
-		double unit)
-	{}
+	/**
+	 * The pixels of a group's fit: positions, values, other groups' light, and their coordinates {@code u, v} in
+	 * the background plane's frame (origin and unit of the group's box), computed once for every iteration.
+	 */
+	private record Pixels(int[] x, int[] y, double[] value, double[] fixed, int count, double[] u, double[] v) {
 
-	/** Fills J^T J and J^T r at parameters {@code p}; returns the residual sum of squares. */
+		Pixels(final int[] x, final int[] y, final double[] value, final double[] fixed, final int count,
+			final double mx, final double my, final double unit)
+		{
+			this(x, y, value, fixed, count, planeCoordinate(x, count, mx, unit), planeCoordinate(y, count, my, unit));
+		}
+
+		private static double[] planeCoordinate(final int[] c, final int count, final double origin, final double unit) {
+			final double[] out = new double[count];
+			for (int i = 0; i < count; i++)
+				out[i] = (c[i] - origin) / unit;
+			return out;
+		}
+	}
+
+	/**
+	 * Fills J^T J (lower triangle mirrored) and J^T r at parameters {@code p}; returns the residual sum of squares.
+	 * A pixel's gradient is non-zero only for the background plane and the members within reach, so J^T J is
+	 * updated block by block for those: every entry receives the same terms, in the same pixel order, as a dense
+	 * update would add where they are non-zero. This is the fit's inner loop (most of {@code fit}'s time).
+	 */
 	private static double accumulate(final Pixels px, final double[] p, final int n, final EmpiricalProfile profile,
 		final double[][] jtj, final double[] jtr)
 	{
 		final int np = PER_PARTICLE * n + BACKGROUND, b0 = np - BACKGROUND;
 		final double R = profile.radius();
+		final int[] xs = px.x(), ys = px.y();
+		final double[] us = px.u(), vs = px.v(), values = px.value(), fixed = px.fixed();
+		final int count = px.count();
 		final double[] grad = new double[np];
-		// the parameters a pixel depends on: the background's and those of the members within reach
-		final int[] nz = new int[np];
+		final boolean[] within = new boolean[n];
+		final double[] vd = new double[2];
 		double rss = 0;
-		for (int i = 0; i < px.count(); i++) {
-			final double u = (px.x()[i] - px.mx()) / px.unit(), v = (px.y()[i] - px.my()) / px.unit();
-			double model = p[b0] + p[b0 + 1] * u + p[b0 + 2] * v + px.fixed()[i];
-			int len = 0;
+		for (int i = 0; i < count; i++) {
+			final double u = us[i], v = vs[i];
+			double model = p[b0] + p[b0 + 1] * u + p[b0 + 2] * v + fixed[i];
 			grad[b0] = 1;
 			grad[b0 + 1] = u;
 			grad[b0 + 2] = v;
 			for (int q = 0; q < n; q++) {
 				final int b = PER_PARTICLE * q;
-				final double dx = px.x()[i] - p[b], dy = px.y()[i] - p[b + 1], sc = p[b + 3];
+				final double dx = xs[i] - p[b], dy = ys[i] - p[b + 1], sc = p[b + 3];
 				final double r = Math.sqrt(dx * dx + dy * dy), rs = r / sc;
-				if (rs >= R) continue;
-				final double a = p[b + 2], val = profile.lookup(rs);
+				within[q] = rs < R;
+				if (!within[q]) continue;
+				final double a = p[b + 2];
+				profile.lookupBoth(rs, vd);
+				final double val = vd[0];
 				model += a * val;
-				final double d = a * profile.lookupDerivative(rs);
+				final double d = a * vd[1];
 				grad[b] = r > 1e-12 ? -d / sc * dx / r : 0;
 				grad[b + 1] = r > 1e-12 ? -d / sc * dy / r : 0;
 				grad[b + 2] = val;
 				grad[b + 3] = -d * rs / sc;
-				nz[len++] = b;
-				nz[len++] = b + 1;
-				nz[len++] = b + 2;
-				nz[len++] = b + 3;
 			}
-			nz[len++] = b0;
-			nz[len++] = b0 + 1;
-			nz[len++] = b0 + 2;
-			final double res = px.value()[i] - model;
+			final double res = values[i] - model;
 			rss += res * res;
-			// indices in nz increase, so (a, b) with b <= a fills the lower triangle
-			for (int ia = 0; ia < len; ia++) {
-				final int a = nz[ia];
-				final double ga = grad[a];
-				jtr[a] += ga * res;
-				final double[] row = jtj[a];
-				for (int ib = 0; ib <= ia; ib++)
-					row[nz[ib]] += ga * grad[nz[ib]];
+			// rows of the members within reach, then the background's; columns up to the diagonal
+			for (int qa = 0; qa < n; qa++) {
+				if (!within[qa]) continue;
+				final int ba = PER_PARTICLE * qa;
+				for (int a = ba; a < ba + PER_PARTICLE; a++)
+					addRow(jtj[a], jtr, a, grad, res, within, qa, ba, a);
 			}
+			for (int a = b0; a < np; a++)
+				addRow(jtj[a], jtr, a, grad, res, within, n, b0, a);
 		}
 		for (int a = 0; a < np; a++)
 			for (int b = a + 1; b < np; b++)
 				jtj[a][b] = jtj[b][a];
 		return rss;
+	}
+
+	/**
+	 * Adds one pixel's terms to row {@code a}: the columns of the members {@code 0..before-1} within reach, then
+	 * {@code from..to} of the row's own block.
+	 */
+	private static void addRow(final double[] row, final double[] jtr, final int a, final double[] grad,
+		final double res, final boolean[] within, final int before, final int from, final int to)
+	{
+		final double ga = grad[a];
+		jtr[a] += ga * res;
+		for (int qb = 0; qb < before; qb++) {
+			if (!within[qb]) continue;
+			final int bb = PER_PARTICLE * qb;
+			row[bb] += ga * grad[bb];
+			row[bb + 1] += ga * grad[bb + 1];
+			row[bb + 2] += ga * grad[bb + 2];
+			row[bb + 3] += ga * grad[bb + 3];
+		}
+		for (int c = from; c <= to; c++)
+			row[c] += ga * grad[c];
 	}
 }
