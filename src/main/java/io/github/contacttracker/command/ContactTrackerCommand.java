@@ -149,7 +149,7 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 		try {
 			analyse();
 		}
-		catch (final IllegalArgumentException | IOException e) {
+		catch (final InvalidInputException | IOException e) {
 			fail(e.getMessage());
 		}
 		catch (final CancellationException e) {

@@ -101,7 +101,7 @@ public class ContactTrackerPotentialCommand extends ContextCommand {
 		try {
 			analyse();
 		}
-		catch (final IllegalArgumentException | IOException e) {
+		catch (final InvalidInputException | IOException e) {
 			log.error(PLOT_TITLE + ": " + e.getMessage());
 			cancel(e.getMessage());
 		}

@@ -85,7 +85,7 @@ public class ContactTrackerProfileCommand extends ContextCommand {
 		try {
 			analyse();
 		}
-		catch (final IllegalArgumentException e) {
+		catch (final InvalidInputException e) {
 			log.error(PLOT_TITLE + ": " + e.getMessage());
 			cancel(e.getMessage());
 			MacroFailure.report(PLOT_TITLE, imp == null ? null : imp.getTitle(), e.getMessage());
