@@ -92,7 +92,8 @@ public final class StackTracker {
 		// deblend and fit: iterative centres first; the profile measured on a spread of frames; those frames
 		// refined with it and the profile measured again around the refined centres; then every frame.
 		final int[] sample = profileFrames(count, frame);
-		progress.total += sample.length;
+		// the first round; without regions to keep, the final pass skips the sample frames (see below)
+		progress.total += keepRegions ? sample.length : 0;
 		final List<FrameResult> iterative = pass(new ContactTracker(params.withMethod(Method.ITERATIVE)), null, all,
 			frame, false, progress, cancelled);
 		// The profile is measured around estimated centres, and in a configuration that never changes (every frame
@@ -107,8 +108,20 @@ public final class StackTracker {
 			used = profile(round, sample, frame, params.rOut());
 			round = pass(tracker, used, sample, frame, false, progress, cancelled);
 		}
-		// settled: the profile of the last round is the fixed point's (to within the tolerance)
-		return pass(tracker, used, all, frame, keepRegions, progress, cancelled);
+		// settled: the profile of the last round is the fixed point's (to within the tolerance). The sample frames
+		// were just refined with that very profile: without regions to keep, their results are the final ones.
+		if (keepRegions) return pass(tracker, used, all, frame, true, progress, cancelled);
+		final boolean[] done = new boolean[count];
+		for (final int t : sample)
+			done[t] = true;
+		final int[] rest = new int[count - sample.length];
+		for (int t = 0, k = 0; t < count; t++)
+			if (!done[t]) rest[k++] = t;
+		final List<FrameResult> others = pass(tracker, used, rest, frame, false, progress, cancelled);
+		final List<FrameResult> results = new ArrayList<>(count);
+		for (int t = 0, s = 0, o = 0; t < count; t++)
+			results.add(done[t] ? round.get(s++) : others.get(o++));
+		return results;
 	}
 
 	/** At most this many rounds of profile and centres on the sample frames... */

@@ -76,8 +76,9 @@ class StackTrackerTest {
 		final AtomicInteger last = new AtomicInteger(), announced = new AtomicInteger();
 		final List<FrameResult> parallel = StackTracker.withThreads(2, () -> new StackTracker(p).track(frames
 			.size(), frames::get, false, (done, total) -> {
-				// iterative, refinement of the profile frames (all 6 here) in one or more rounds, final
-				assertTrue(total >= 6 + 6 + 6 && total % 6 == 0, "total " + total);
+				// iterative, refinement of the profile frames (all 6 here) in one or more rounds, final (none left:
+				// the sample frames' last round is final)
+				assertTrue(total >= 6 + 6 && total % 6 == 0, "total " + total);
 				assertTrue(done <= total);
 				announced.accumulateAndGet(total, Math::max);
 				last.accumulateAndGet(done, Math::max);
