@@ -76,27 +76,30 @@ public final class ContactTracker {
 
 	/** The first pass with shape flags: the particles every refinement starts from (package-private for tests). */
 	static Particle[] particles(final Plane plane, final TrackerParameters params) {
+		return withShapeFlags(firstPasses(plane, params, new int[1]), NoiseEstimate.sigma(plane), params.rOut());
+	}
+
+	/**
+	 * Labels the active areas and runs the first pass on each; components below {@code min_area}, or without any
+	 * gradient line (a flat plateau: nothing to localize), are counted in {@code discarded[0]}.
+	 */
+	private static List<Particle> firstPasses(final Plane plane, final TrackerParameters params,
+		final int[] discarded)
+	{
 		final List<Particle> found = new ArrayList<>();
 		for (final Region r : ComponentLabeling.label(plane, params.threshold(), params.connectivity())) {
-			// A component without any gradient line (a flat plateau) holds nothing to localize.
 			final Particle p = r.area() >= params.minArea() ? Particle.firstPass(plane, r, params.threshold()) : null;
 			if (p != null) found.add(p);
+			else discarded[0]++;
 		}
-		return withShapeFlags(found, NoiseEstimate.sigma(plane), params.rOut());
+		return found;
 	}
 
 	FrameResult analyse(final Plane plane, final int frameIndex, final boolean keepRegions,
 		final EmpiricalProfile profile)
 	{
-		final List<Region> regions = new ArrayList<>();
-		final List<Particle> found = new ArrayList<>();
-		int discarded = 0;
-		for (final Region r : ComponentLabeling.label(plane, params.threshold(), params.connectivity())) {
-			// A component without any gradient line (a flat plateau) holds nothing to localize.
-			final Particle p = r.area() >= params.minArea() ? Particle.firstPass(plane, r, params.threshold()) : null;
-			if (p != null) found.add(p);
-			else discarded++;
-		}
+		final int[] discarded = new int[1];
+		final List<Particle> found = firstPasses(plane, params, discarded);
 		final double noise = NoiseEstimate.sigma(plane);
 		final Particle[] ps = withShapeFlags(found, noise, params.rOut());
 		final Refinement.Outcome outcome = params.method().refinement().refine(plane, ps, params, profile);
@@ -123,7 +126,7 @@ public final class ContactTracker {
 				second.add(SecondPass.secondRegion(p.region, k, outcome.discs(), params.rOut()).translate(dx, dy));
 			}
 		}
-		return new FrameResult(spots, active, second, noise, discarded, profile == null && params.method()
+		return new FrameResult(spots, active, second, noise, discarded[0], profile == null && params.method()
 			.needsProfile());
 	}
 
