@@ -34,11 +34,15 @@ final class CentreUncertainty {
 			y1 = Math.max(y1, f.y[i]);
 		}
 		if (x0 > x1) return new double[] { Double.NaN, Double.NaN, Double.NaN };
-		final int m2 = GradientOperator.MARGIN;
-		final int ox = x0 - m2, oy = y0 - m2, w = x1 - x0 + 1 + 2 * m2, h = y1 - y0 + 1 + 2 * m2;
+		// The influences live on the used pixels' box grown by the operators' reach (MARGIN); the buffers have two
+		// more pixels of zeros all round, so the stencils below read no bounds (a zero adds nothing: the sums are
+		// those of the stencils clipped at the box).
+		final int m2 = GradientOperator.MARGIN, pad = 2;
+		final int w = x1 - x0 + 1 + 2 * m2, h = y1 - y0 + 1 + 2 * m2, W = w + 2 * pad, H = h + 2 * pad;
+		final int ox = x0 - m2 - pad, oy = y0 - m2 - pad, size = W * H;
+		final Scratch s = SCRATCH.get().fit(size);
 		// Per gradient pixel: d(A r)/dgx and d(A r)/dgy, two 2-vectors, placed on the pixel grid.
-		final double[] fxa = new double[w * h], fxb = new double[w * h], fya = new double[w * h],
-			fyb = new double[w * h];
+		final double[] fxa = s.fxa, fxb = s.fxb, fya = s.fya, fyb = s.fyb;
 		for (int i = 0; i < f.size; i++) {
 			if (used != null && !used[i]) continue;
 			final double gx = f.gx[i], gy = f.gy[i];
@@ -46,26 +50,45 @@ final class CentreUncertainty {
 			if (g2 == 0) continue;
 			final double g = Math.sqrt(g2), g3 = g2 * g;
 			final double rx = f.x[i] - cx, ry = f.y[i] - cy;
-			final double ux = -gy, uy = gx, s = ux * rx + uy * ry;
-			final int k = (f.y[i] - oy) * w + (f.x[i] - ox);
-			fxa[k] = ux * ry / g - ux * s * gx / g3;
-			fxb[k] = (s + uy * ry) / g - uy * s * gx / g3;
-			fya[k] = (-s - ux * rx) / g - ux * s * gy / g3;
-			fyb[k] = -uy * rx / g - uy * s * gy / g3;
+			final double ux = -gy, uy = gx, t = ux * rx + uy * ry;
+			final int k = (f.y[i] - oy) * W + (f.x[i] - ox);
+			fxa[k] = ux * ry / g - ux * t * gx / g3;
+			fxb[k] = (t + uy * ry) / g - uy * t * gx / g3;
+			fya[k] = (-t - ux * rx) / g - ux * t * gy / g3;
+			fyb[k] = -uy * rx / g - uy * t * gy / g3;
 		}
 		// gx_i depends on I_p with sign h(px - ix) for |py - iy| <= 1 (h = -1,-1,0,+1,+1): box over y, then
-		// difference over x; gy_i the transpose.
-		final double[] bxa = boxY(fxa, w, h), bxb = boxY(fxb, w, h);
-		final double[] bya = boxX(fya, w, h), byb = boxX(fyb, w, h);
+		// difference over x; gy_i the transpose. Box sums where the differences will read them: over y on the
+		// rows of the influences (every column), over x on their columns (every row).
+		final double[] bxa = s.bxa, bxb = s.bxb, bya = s.bya, byb = s.byb;
+		for (int y = pad; y < pad + h; y++)
+			for (int x = 0, k = y * W; x < W; x++, k++) {
+				bxa[k] = fxa[k] + fxa[k - W] + fxa[k + W];
+				bxb[k] = fxb[k] + fxb[k - W] + fxb[k + W];
+			}
+		for (int y = 0; y < H; y++)
+			for (int x = pad, k = y * W + pad; x < pad + w; x++, k++) {
+				bya[k] = fya[k] + fya[k - 1] + fya[k + 1];
+				byb[k] = fyb[k] + fyb[k - 1] + fyb[k + 1];
+			}
 		double sxx = 0, sxy = 0, syy = 0;
-		for (int y = 0; y < h; y++) {
-			for (int x = 0; x < w; x++) {
-				final double va = diffX(bxa, x, y, w) + diffY(bya, x, y, w, h);
-				final double vb = diffX(bxb, x, y, w) + diffY(byb, x, y, w, h);
+		final int W2 = 2 * W;
+		for (int y = pad; y < pad + h; y++)
+			for (int x = pad, k = y * W + pad; x < pad + w; x++, k++) {
+				// B(x-1) + B(x-2) - B(x+1) - B(x+2), then the same over y
+				final double va = bxa[k - 1] + bxa[k - 2] - bxa[k + 1] - bxa[k + 2] + (bya[k - W] + bya[k - W2] - bya[k +
+					W] - bya[k + W2]);
+				final double vb = bxb[k - 1] + bxb[k - 2] - bxb[k + 1] - bxb[k + 2] + (byb[k - W] + byb[k - W2] - byb[k +
+					W] - byb[k + W2]);
 				sxx += va * va;
 				sxy += va * vb;
 				syy += vb * vb;
 			}
+		// leave the coefficient buffers zero for the next spot (the box sums are always written before read)
+		for (int i = 0; i < f.size; i++) {
+			if (used != null && !used[i]) continue;
+			final int k = (f.y[i] - oy) * W + (f.x[i] - ox);
+			fxa[k] = fxb[k] = fya[k] = fyb[k] = 0;
 		}
 		final double det = m[0] * m[2] - m[1] * m[1];
 		final double ixx = m[2] / det, ixy = -m[1] / det, iyy = m[0] / det;
@@ -75,47 +98,25 @@ final class CentreUncertainty {
 		return new double[] { axx * ixx + axy * ixy, ayx * ixy + ayy * iyy, axx * ixy + axy * iyy };
 	}
 
-	private static double[] boxY(final double[] a, final int w, final int h) {
-		final double[] out = new double[a.length];
-		for (int y = 0; y < h; y++)
-			for (int x = 0; x < w; x++) {
-				double s = a[y * w + x];
-				if (y > 0) s += a[(y - 1) * w + x];
-				if (y < h - 1) s += a[(y + 1) * w + x];
-				out[y * w + x] = s;
+	/** Per-thread buffers: a spot's influences would otherwise allocate (and zero) eight arrays of its box. */
+	private static final ThreadLocal<Scratch> SCRATCH = ThreadLocal.withInitial(Scratch::new);
+
+	/** The buffers of one thread; the coefficient ones are all zero between calls. */
+	private static final class Scratch {
+		double[] fxa = new double[0], fxb = fxa, fya = fxa, fyb = fxa, bxa = fxa, bxb = fxa, bya = fxa, byb = fxa;
+
+		Scratch fit(final int size) {
+			if (fxa.length < size) {
+				fxa = new double[size];
+				fxb = new double[size];
+				fya = new double[size];
+				fyb = new double[size];
+				bxa = new double[size];
+				bxb = new double[size];
+				bya = new double[size];
+				byb = new double[size];
 			}
-		return out;
-	}
-
-	private static double[] boxX(final double[] a, final int w, final int h) {
-		final double[] out = new double[a.length];
-		for (int y = 0; y < h; y++)
-			for (int x = 0; x < w; x++) {
-				double s = a[y * w + x];
-				if (x > 0) s += a[y * w + x - 1];
-				if (x < w - 1) s += a[y * w + x + 1];
-				out[y * w + x] = s;
-			}
-		return out;
-	}
-
-	/** B(x-1) + B(x-2) - B(x+1) - B(x+2), zero outside the buffer. */
-	private static double diffX(final double[] b, final int x, final int y, final int w) {
-		final int row = y * w;
-		double s = 0;
-		if (x >= 1) s += b[row + x - 1];
-		if (x >= 2) s += b[row + x - 2];
-		if (x + 1 < w) s -= b[row + x + 1];
-		if (x + 2 < w) s -= b[row + x + 2];
-		return s;
-	}
-
-	private static double diffY(final double[] b, final int x, final int y, final int w, final int h) {
-		double s = 0;
-		if (y >= 1) s += b[(y - 1) * w + x];
-		if (y >= 2) s += b[(y - 2) * w + x];
-		if (y + 1 < h) s -= b[(y + 1) * w + x];
-		if (y + 2 < h) s -= b[(y + 2) * w + x];
-		return s;
+			return this;
+		}
 	}
 }

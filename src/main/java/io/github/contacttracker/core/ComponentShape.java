@@ -135,30 +135,30 @@ final class ComponentShape {
 			final int row = (region.runY(r) - y0) * w - x0;
 			Arrays.fill(map, row + region.runStart(r), row + region.runEnd(r) + 1, (byte) 1);
 		}
-		// the outside: free pixels 4-connected to the frame; the rest (holes included) is the filled area
-		// a plain int queue: every pixel enters at most once (no boxing: this runs for every component)
+		// the outside: free pixels 4-connected to the frame; the rest (holes included) is the filled area. The frame
+		// is free all round, so it is outside, and the search runs over the inner pixels only, seeded next to the
+		// frame: no bounds to test. A plain int queue (every pixel enters at most once; no boxing: this runs for
+		// every component).
 		final int[] queue = new int[w * h];
-		int head = 0, tail = 0;
-		map[0] = 2;
-		queue[tail++] = 0;
-		while (head < tail) {
-			final int i = queue[head++], x = i % w, y = i / w;
-			if (x > 0 && map[i - 1] == 0) {
-				map[i - 1] = 2;
-				queue[tail++] = i - 1;
-			}
-			if (x < w - 1 && map[i + 1] == 0) {
-				map[i + 1] = 2;
-				queue[tail++] = i + 1;
-			}
-			if (y > 0 && map[i - w] == 0) {
-				map[i - w] = 2;
-				queue[tail++] = i - w;
-			}
-			if (y < h - 1 && map[i + w] == 0) {
-				map[i + w] = 2;
-				queue[tail++] = i + w;
-			}
+		int tail = 0;
+		for (int x = 0; x < w; x++)
+			map[x] = map[(h - 1) * w + x] = 2;
+		for (int y = 1; y < h - 1; y++)
+			map[y * w] = map[y * w + w - 1] = 2;
+		for (int x = 1; x < w - 1; x++) {
+			tail = enqueueFree(map, queue, tail, w + x);
+			tail = enqueueFree(map, queue, tail, (h - 2) * w + x);
+		}
+		for (int y = 1; y < h - 1; y++) {
+			tail = enqueueFree(map, queue, tail, y * w + 1);
+			tail = enqueueFree(map, queue, tail, y * w + w - 2);
+		}
+		for (int head = 0; head < tail; head++) {
+			final int i = queue[head];
+			tail = enqueueFree(map, queue, tail, i - 1);
+			tail = enqueueFree(map, queue, tail, i + 1);
+			tail = enqueueFree(map, queue, tail, i - w);
+			tail = enqueueFree(map, queue, tail, i + w);
 		}
 		// each row's first and last filled pixel: enough for the convex hull
 		final int rows = h - 2;
@@ -182,22 +182,27 @@ final class ComponentShape {
 		double depth = 0;
 		int inside = 0;
 		final int m = hull.length;
-		for (int y = 1; y <= rows; y++) {
-			double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
-			for (int e = 0; e < m; e++) {
-				final long a = hull[e], b = hull[(e + 1) % m];
-				final int ay = py(a), by = py(b);
-				if (y < Math.min(ay, by) || y > Math.max(ay, by)) continue;
+		// the hull's extent on every row, edge by edge (each edge visits only the rows it spans)
+		final double[] lows = new double[rows + 1], highs = new double[rows + 1];
+		Arrays.fill(lows, Double.POSITIVE_INFINITY);
+		Arrays.fill(highs, Double.NEGATIVE_INFINITY);
+		for (int e = 0; e < m; e++) {
+			final long a = hull[e], b = hull[(e + 1) % m];
+			final int ay = py(a), by = py(b);
+			for (int y = Math.max(1, Math.min(ay, by)); y <= Math.min(rows, Math.max(ay, by)); y++) {
 				if (ay == by) {
-					lo = Math.min(lo, Math.min(px(a), px(b)));
-					hi = Math.max(hi, Math.max(px(a), px(b)));
+					lows[y] = Math.min(lows[y], Math.min(px(a), px(b)));
+					highs[y] = Math.max(highs[y], Math.max(px(a), px(b)));
 				}
 				else {
 					final double x = px(a) + (double) (px(b) - px(a)) * (y - ay) / (by - ay);
-					lo = Math.min(lo, x);
-					hi = Math.max(hi, x);
+					lows[y] = Math.min(lows[y], x);
+					highs[y] = Math.max(highs[y], x);
 				}
 			}
+		}
+		for (int y = 1; y <= rows; y++) {
+			final double lo = lows[y], hi = highs[y];
 			if (lo > hi) continue;
 			for (int x = (int) Math.ceil(lo - 1e-9); x <= (int) Math.floor(hi + 1e-9); x++) {
 				inside++;
@@ -209,6 +214,14 @@ final class ComponentShape {
 			}
 		}
 		return new ComponentShape(elongation, residualPair(), depth, filled, inside);
+	}
+
+	/** Marks pixel {@code i} outside and queues it if it is free; returns the queue's new length. */
+	private static int enqueueFree(final byte[] map, final int[] queue, final int tail, final int i) {
+		if (map[i] != 0) return tail;
+		map[i] = 2;
+		queue[tail] = i;
+		return tail + 1;
 	}
 
 	private double[] residualPair() {

@@ -52,30 +52,14 @@ public final class EmpiricalProfile {
 		return tableValue[i] + f * (tableValue[i + 1] - tableValue[i]);
 	}
 
-	/**
-	 * P(r) and P'(r) from the tables at once, exactly as {@link #lookup} and {@link #lookupDerivative}.
-	 *
-	 * @param out receives {P(r), P'(r)}
-	 */
-	void lookupBoth(final double r, final double[] out) {
-		final double u = r / TABLE_STEP;
-		final int i = (int) u;
-		if (i >= tableValue.length - 1) {
-			out[0] = out[1] = 0;
-			return;
-		}
-		final double f = u - i;
-		out[0] = tableValue[i] + f * (tableValue[i + 1] - tableValue[i]);
-		out[1] = tableDerivative[i] + f * (tableDerivative[i + 1] - tableDerivative[i]);
+	/** @return the table of P at multiples of {@link #TABLE_STEP} (not a copy: for inner loops, read only) */
+	double[] valueTable() {
+		return tableValue;
 	}
 
-	/** P'(r) from the table (linear interpolation); 0 beyond the radius. */
-	double lookupDerivative(final double r) {
-		final double u = r / TABLE_STEP;
-		final int i = (int) u;
-		if (i >= tableDerivative.length - 1) return 0;
-		final double f = u - i;
-		return tableDerivative[i] + f * (tableDerivative[i + 1] - tableDerivative[i]);
+	/** @return the table of P' at multiples of {@link #TABLE_STEP} (not a copy: for inner loops, read only) */
+	double[] derivativeTable() {
+		return tableDerivative;
 	}
 
 	/** @return the grey level above background at distance {@code r} (px) */

@@ -149,14 +149,13 @@ public final class ProfileEstimator {
 					}
 					final double u = Math.sqrt(d2) / (SPACING * scale[k]);
 					final int i = (int) u;
-					for (int j = i - 1; j <= i + 2; j++) {
-						final int c = EmpiricalProfile.coefficientIndex(j, count);
-						if (c < 0) continue;
-						final double b = EmpiricalProfile.bspline(u - j);
-						if (b == 0) continue;
-						idx[len] = c;
-						val[len++] = amp[k] * b;
-					}
+					// the four cubic B-spline weights of knots i-1..i+2 (EmpiricalProfile.bspline at u - j)
+					final double f = u - i, g = 1 - f, f3 = f * f * f, g3 = g * g * g;
+					final double a = amp[k];
+					len = term(idx, val, len, i - 1, a * g3 / 6);
+					len = term(idx, val, len, i, a * (2.0 / 3 - f * f + 0.5 * f3));
+					len = term(idx, val, len, i + 1, a * (2.0 / 3 - g * g + 0.5 * g3));
+					len = term(idx, val, len, i + 2, a * f3 / 6);
 				}
 				if (skip) continue;
 				if (len == 0) { // the background alone: its six sums, without the general outer product
@@ -180,16 +179,35 @@ public final class ProfileEstimator {
 				val[len++] = (x - mx) / RAMP_UNIT;
 				idx[len] = bIndex + 2;
 				val[len++] = (y - my) / RAMP_UNIT;
+				// The outer product, lower triangle only (by index: mirrored in estimate()), each unordered pair of
+				// terms once; two terms on one coefficient (the mirror at r = 0, two particles) add twice.
 				for (int a = 0; a < len; a++) {
-					atb[idx[a]] += val[a] * v;
-					// Lower triangle only (by index): mirrored in estimate().
-					for (int b = 0; b < len; b++)
-						if (idx[b] <= idx[a]) ata[idx[a]][idx[b]] += val[a] * val[b];
+					final int ia = idx[a];
+					final double va = val[a];
+					final double[] row = ata[ia];
+					atb[ia] += va * v;
+					row[ia] += va * va;
+					for (int b = 0; b < a; b++) {
+						final int ib = idx[b];
+						final double pv = va * val[b];
+						if (ib < ia) row[ib] += pv;
+						else if (ib > ia) ata[ib][ia] += pv;
+						else row[ia] += 2 * pv;
+					}
 				}
 				samples++;
 				if (len > 3) profileSamples++;
 			}
 		}
+	}
+
+	/** Appends knot {@code j}'s term {@code value} (if it has a coefficient and is not zero); returns the length. */
+	private int term(final int[] idx, final double[] val, final int len, final int j, final double value) {
+		final int c = EmpiricalProfile.coefficientIndex(j, count);
+		if (c < 0 || value == 0) return len;
+		idx[len] = c;
+		val[len] = value;
+		return len + 1;
 	}
 
 	/** Unit of the background plane's coordinates (px): keeps its columns of the size of the others. */
