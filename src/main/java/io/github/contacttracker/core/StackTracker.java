@@ -72,8 +72,8 @@ public final class StackTracker {
 	 * @param frame supplies frame {@code t}, 2D; called from the worker threads, so it must be thread-safe, and
 	 *        may be called more than once for a frame (the profile methods read their sample frames twice)
 	 * @param keepRegions whether to keep the active and second areas (for overlays; costs memory)
-	 * @param listener progress, or null (for deblend and fit the progress also counts the iterative pass over
-	 *        all frames and the refinement of the frames the profile is measured on)
+	 * @param listener progress, or null (for deblend and fit the progress also counts the iterative pass and the
+	 *        rounds of profile and centres on the frames the profile is measured on)
 	 * @param cancelled polled before each frame; when it turns true the run stops with a
 	 *        {@link CancellationException}
 	 * @return one result per frame, in frame order
@@ -86,20 +86,20 @@ public final class StackTracker {
 	{
 		final TrackerParameters params = tracker.parameters();
 		final int[] all = range(count);
-		final Progress progress = new Progress(listener, params.method().needsProfile() ? 2 * count : count);
 		if (!params.method().needsProfile() || count == 0)
-			return pass(tracker, null, all, frame, keepRegions, progress, cancelled);
-		// deblend and fit: iterative centres first; the profile measured on a spread of frames; those frames
+			return pass(tracker, null, all, frame, keepRegions, new Progress(listener, count), cancelled);
+		// deblend and fit: iterative centres on a spread of frames; the profile measured on them; those frames
 		// refined with it and the profile measured again around the refined centres; then every frame.
 		final int[] sample = profileFrames(count, frame);
-		// the first round; without regions to keep, the final pass skips the sample frames (see below)
-		progress.total += keepRegions ? sample.length : 0;
-		final List<FrameResult> iterative = pass(new ContactTracker(params.withMethod(Method.ITERATIVE)), null, all,
-			frame, false, progress, cancelled);
+		// the iterative pass and the first round on the sample; all frames at the end, but without regions to keep
+		// the sample frames are done by then (see below)
+		final Progress progress = new Progress(listener, 2 * sample.length + count - (keepRegions ? 0 : sample.length));
+		final List<FrameResult> iterative = pass(new ContactTracker(params.withMethod(Method.ITERATIVE)), null,
+			sample, frame, false, progress, cancelled);
 		// The profile is measured around estimated centres, and in a configuration that never changes (every frame
 		// the same cluster) it absorbs part of their error; so profile and centres are alternated on the sample
 		// frames until the centres stop moving (the joint least-squares fixed point).
-		List<FrameResult> previous = pick(iterative, sample);
+		List<FrameResult> previous = iterative;
 		EmpiricalProfile used = profile(previous, sample, frame, params.rOut());
 		List<FrameResult> round = pass(tracker, used, sample, frame, false, progress, cancelled);
 		for (int r = 1; r < PROFILE_ROUNDS && largestMove(previous, round) > PROFILE_TOLERANCE; r++) {
@@ -187,13 +187,6 @@ public final class StackTracker {
 		for (int i = 0; i < n; i++)
 			list.add(i);
 		return list;
-	}
-
-	private static List<FrameResult> pick(final List<FrameResult> results, final int[] indices) {
-		final List<FrameResult> picked = new ArrayList<>(indices.length);
-		for (final int t : indices)
-			picked.add(results.get(t));
-		return picked;
 	}
 
 	/**
