@@ -213,11 +213,9 @@ public abstract class Plane {
 		}
 
 		@Override
-		final void scanRow(final int y, final double threshold, final RunList runs) {
-			// For integer v: v >= threshold  <=>  v >= ceil(threshold).
-			final double c = Math.ceil(threshold);
-			if (c > maxValue) return;
-			final int t = (int) Math.max(c, 0);
+		void scanRow(final int y, final double threshold, final RunList runs) {
+			final int t = integerThreshold(threshold);
+			if (t < 0) return;
 			final int off = y * width;
 			int start = -1;
 			for (int x = 0; x < width; x++) {
@@ -230,6 +228,12 @@ public abstract class Plane {
 				}
 			}
 			if (start >= 0) runs.add(y, start, width - 1);
+		}
+
+		/** For integer v: v >= threshold  <=>  v >= ceil(threshold); -1 if no value reaches it. */
+		final int integerThreshold(final double threshold) {
+			final double c = Math.ceil(threshold);
+			return c > maxValue ? -1 : (int) Math.max(c, 0);
 		}
 	}
 
@@ -244,6 +248,29 @@ public abstract class Plane {
 		@Override
 		int at(final int i) {
 			return data[i] & 0xff;
+		}
+
+		/**
+		 * As the general scan, on the bytes directly: the scan reads every pixel of every frame, and a short job
+		 * runs on code from the client compiler (scripts/contact-tracker), which does not inline the call per pixel.
+		 */
+		@Override
+		void scanRow(final int y, final double threshold, final RunList runs) {
+			final int t = integerThreshold(threshold);
+			if (t < 0) return;
+			final byte[] d = data;
+			final int off = y * width;
+			int start = -1;
+			for (int x = 0; x < width; x++) {
+				if ((d[off + x] & 0xff) >= t) {
+					if (start < 0) start = x;
+				}
+				else if (start >= 0) {
+					runs.add(y, start, x - 1);
+					start = -1;
+				}
+			}
+			if (start >= 0) runs.add(y, start, width - 1);
 		}
 	}
 
