@@ -115,13 +115,14 @@ public final class ProfileEstimator {
 
 	/**
 	 * Adds a plane with centres in its local coordinates, each particle drawn as {@code amp_k P(r / scale_k)};
-	 * pixels near masked centres, and saturated pixels, are skipped.
+	 * pixels near masked centres, and clipped pixels (saturated, or at 0 where a dark ring falls below it), are
+	 * skipped.
 	 */
 	void add(final Plane plane, final double[] cx, final double[] cy, final double[] amp, final double[] scale,
 		final boolean[] masked)
 	{
 		final int n = cx.length, w = plane.width(), h = plane.height();
-		final double saturation = plane.saturation();
+		final double saturation = plane.saturation(), floor = plane.floor();
 		final int[] near = new int[n];
 		final int[] idx = new int[4 * n + 3];
 		final double[] val = new double[4 * n + 3];
@@ -136,7 +137,7 @@ public final class ProfileEstimator {
 				if (Math.abs(y - cy[k]) < radius * maxScale) near[nn++] = k;
 			for (int x = 0; x < w; x++) {
 				final double v = plane.get(x, y);
-				if (v >= saturation) continue;
+				if (v >= saturation || v <= floor) continue;
 				int len = 0;
 				boolean skip = false;
 				for (int q = 0; q < nn && !skip; q++) {

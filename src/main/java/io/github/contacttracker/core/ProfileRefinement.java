@@ -35,6 +35,8 @@ final class ProfileRefinement implements Refinement {
 		Estimate[] e = iterative.estimates();
 		if (ps.length == 0) return iterative;
 		// measured here: alternated with the centres until these stop moving (see StackTracker)
+		// pixels near the clip levels, chosen by the model (see Censoring), at the frame's noise
+		final Censoring censoring = Censoring.of(plane, NoiseEstimate.sigma(plane));
 		final int rounds = given == null ? StackTracker.PROFILE_ROUNDS : 1;
 		EmpiricalProfile profile = given;
 		for (int round = 0; round < rounds; round++) {
@@ -53,7 +55,7 @@ final class ProfileRefinement implements Refinement {
 				if (disc < 3) disc = medianEquivalentRadius(ps);
 				r = Deblender.refine(plane, ps, e, profile, disc);
 			}
-			else r = GroupFit.refine(plane, ps, e, profile, 2 * params.rOut(), params.rOut());
+			else r = GroupFit.refine(plane, ps, e, profile, 2 * params.rOut(), params.rOut(), censoring);
 			final int clear = Flag.SECOND_PASS.bit() | Flag.FELL_BACK.bit() | Flag.NOT_CONVERGED.bit();
 			final Estimate[] next = r.estimates();
 			for (int k = 0; k < next.length; k++) {
