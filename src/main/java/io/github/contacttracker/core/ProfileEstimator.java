@@ -69,6 +69,17 @@ public final class ProfileEstimator {
 	public <T extends RealType<T>> void add(final RandomAccessibleInterval<T> frame, final List<Localization> spots,
 		final double amplitudeNorm, final double scaleNorm)
 	{
+		add(frame, spots, amplitudeNorm, scaleNorm, null, 0);
+	}
+
+	/**
+	 * As {@link #add(RandomAccessibleInterval, List, double, double)}, the spots fitted with {@code previous}: where
+	 * its model comes near a clip level of the frame (of noise {@code noise}), pixels are left out (see
+	 * {@link Censoring}); with {@code previous} null only the clipped pixels are.
+	 */
+	<T extends RealType<T>> void add(final RandomAccessibleInterval<T> frame, final List<Localization> spots,
+		final double amplitudeNorm, final double scaleNorm, final EmpiricalProfile previous, final double noise)
+	{
 		final Plane plane = Plane.of(frame);
 		final int n = spots.size();
 		final double[] cx = new double[n], cy = new double[n], amp = new double[n], scale = new double[n];
@@ -81,8 +92,15 @@ public final class ProfileEstimator {
 			scale[k] = Double.isFinite(s.scale()) && s.scale() > 0 ? s.scale() / scaleNorm : 1;
 			masked[k] = s.has(Flag.MERGED) || s.has(Flag.DEGENERATE);
 		}
-		add(plane, cx, cy, amp, scale, masked);
+		add(plane, cx, cy, amp, scale, masked, previous == null ? null : new Previous(previous, Censoring.of(plane,
+			noise), amplitudeNorm, scaleNorm));
 	}
+
+	/**
+	 * The previous estimate's model, which chooses the pixels left out near the clip levels: its profile, the rule,
+	 * and the norms that turn the spots' amplitudes and scales given to {@code add} back into those fitted with it.
+	 */
+	record Previous(EmpiricalProfile profile, Censoring censoring, double amplitudeNorm, double scaleNorm) {}
 
 	/** Adds a frame with its spots, taken as alike (amplitude and scale 1 for spots without fitted ones). */
 	public <T extends RealType<T>> void add(final RandomAccessibleInterval<T> frame, final List<Localization> spots) {
@@ -113,13 +131,20 @@ public final class ProfileEstimator {
 		add(plane, cx, cy, ones, ones, masked);
 	}
 
+	/** As {@link #add(Plane, double[], double[], double[], double[], boolean[], Previous)} without a previous model. */
+	void add(final Plane plane, final double[] cx, final double[] cy, final double[] amp, final double[] scale,
+		final boolean[] masked)
+	{
+		add(plane, cx, cy, amp, scale, masked, null);
+	}
+
 	/**
 	 * Adds a plane with centres in its local coordinates, each particle drawn as {@code amp_k P(r / scale_k)};
 	 * pixels near masked centres, and clipped pixels (saturated, or at 0 where a dark ring falls below it), are
-	 * skipped.
+	 * skipped, and so are those where the {@code previous} model (if not null) comes near a clip level.
 	 */
 	void add(final Plane plane, final double[] cx, final double[] cy, final double[] amp, final double[] scale,
-		final boolean[] masked)
+		final boolean[] masked, final Previous previous)
 	{
 		final int n = cx.length, w = plane.width(), h = plane.height();
 		final double saturation = plane.saturation(), floor = plane.floor();
@@ -140,6 +165,7 @@ public final class ProfileEstimator {
 				if (v >= saturation || v <= floor) continue;
 				int len = 0;
 				boolean skip = false;
+				double model = previous == null ? 0 : previous.profile().background();
 				for (int q = 0; q < nn && !skip; q++) {
 					final int k = near[q];
 					final double dx = x - cx[k], dy = y - cy[k], d2 = dx * dx + dy * dy, reach = radius * scale[k];
@@ -148,7 +174,9 @@ public final class ProfileEstimator {
 						skip = true;
 						break;
 					}
-					final double u = Math.sqrt(d2) / (SPACING * scale[k]);
+					final double r = Math.sqrt(d2), u = r / (SPACING * scale[k]);
+					if (previous != null) model += previous.amplitudeNorm() * amp[k] * previous.profile().lookup(r /
+						(previous.scaleNorm() * scale[k]));
 					final int i = (int) u;
 					for (int j = i - 1; j <= i + 2; j++) {
 						final int c = EmpiricalProfile.coefficientIndex(j, count);
@@ -159,7 +187,7 @@ public final class ProfileEstimator {
 						val[len++] = amp[k] * b;
 					}
 				}
-				if (skip) continue;
+				if (skip || previous != null && !previous.censoring().usable(model)) continue;
 				if (len == 0) { // the background alone: its six sums, without the general outer product
 					final double bu = (x - mx) / RAMP_UNIT, bv = (y - my) / RAMP_UNIT;
 					atb[bIndex] += v;

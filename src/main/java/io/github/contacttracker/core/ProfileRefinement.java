@@ -41,7 +41,7 @@ final class ProfileRefinement implements Refinement {
 		EmpiricalProfile profile = given;
 		for (int round = 0; round < rounds; round++) {
 			if (given == null) {
-				profile = measure(plane, ps, e, params.rOut());
+				profile = measure(plane, ps, e, params.rOut(), round == 0 ? null : profile, censoring);
 				if (profile == null) {
 					final Estimate[] kept = e.clone();
 					for (int k = 0; k < kept.length; k++)
@@ -72,9 +72,12 @@ final class ProfileRefinement implements Refinement {
 		return new Outcome(e, iterative.discs());
 	}
 
-	/** The profile on this frame around centres {@code e}, unreliable particles masked; null if too few pixels. */
+	/**
+	 * The profile on this frame around centres {@code e}, unreliable particles masked; null if too few pixels. The
+	 * profile {@code e} was fitted with, if any, chooses the pixels left out near clip levels.
+	 */
 	private static EmpiricalProfile measure(final Plane plane, final Particle[] ps, final Estimate[] e,
-		final double rOut)
+		final double rOut, final EmpiricalProfile fittedWith, final Censoring censoring)
 	{
 		final ProfileEstimator estimator = ProfileEstimator.forROut(rOut);
 		final int n = ps.length;
@@ -102,7 +105,8 @@ final class ProfileRefinement implements Refinement {
 			amp[k] /= ampNorm;
 			scale[k] /= scaleNorm;
 		}
-		estimator.add(plane, cx, cy, amp, scale, masked);
+		estimator.add(plane, cx, cy, amp, scale, masked, fittedWith == null ? null : new ProfileEstimator.Previous(
+			fittedWith, censoring, ampNorm, scaleNorm));
 		try {
 			return estimator.estimate();
 		}

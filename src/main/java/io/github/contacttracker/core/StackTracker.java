@@ -100,12 +100,12 @@ public final class StackTracker {
 		// the same cluster) it absorbs part of their error; so profile and centres are alternated on the sample
 		// frames until the centres stop moving (the joint least-squares fixed point).
 		List<FrameResult> previous = pick(iterative, sample);
-		EmpiricalProfile used = profile(previous, sample, frame, params.rOut());
+		EmpiricalProfile used = profile(previous, null, sample, frame, params.rOut());
 		List<FrameResult> round = pass(tracker, used, sample, frame, false, progress, cancelled);
 		for (int r = 1; r < PROFILE_ROUNDS && largestMove(previous, round) > PROFILE_TOLERANCE; r++) {
 			progress.total += sample.length;
 			previous = round;
-			used = profile(round, sample, frame, params.rOut());
+			used = profile(round, used, sample, frame, params.rOut());
 			round = pass(tracker, used, sample, frame, false, progress, cancelled);
 		}
 		// settled: the profile of the last round is the fixed point's (to within the tolerance). The sample frames
@@ -198,10 +198,11 @@ public final class StackTracker {
 
 	/**
 	 * Measures the radial profile on frames {@code indices} (with their results, in the same order), the frames
-	 * shared among the threads; null (each frame then measures its own) when they hold too few usable pixels.
+	 * shared among the threads; null (each frame then measures its own) when they hold too few usable pixels. The
+	 * profile the results were refined with, if any, chooses the pixels left out near clip levels.
 	 */
 	private static <T extends RealType<T>> EmpiricalProfile profile(final List<FrameResult> results,
-		final int[] indices, final IntFunction<? extends RandomAccessibleInterval<T>> frame, final double rOut)
+		final EmpiricalProfile fittedWith, final int[] indices, final IntFunction<? extends RandomAccessibleInterval<T>> frame, final double rOut)
 	{
 		// One estimator per frame, merged in frame order: the sums, and so the results, do not depend on the
 		// number of threads.
@@ -209,7 +210,8 @@ public final class StackTracker {
 		final List<ProfileEstimator> parts = Parallelization.getTaskExecutor().forEachApply(positions(indices.length),
 			i -> {
 				final ProfileEstimator part = ProfileEstimator.forROut(rOut);
-				part.add(frame.apply(indices[i]), results.get(i).spots(), norms[0], norms[1]);
+				part.add(frame.apply(indices[i]), results.get(i).spots(), norms[0], norms[1], fittedWith, results.get(i)
+					.noiseSigma());
 				return part;
 			});
 		final ProfileEstimator all = parts.get(0);
