@@ -26,8 +26,9 @@ final class GroupFit {
 	 * Refines the centres of the reliable particles, starting from {@code start}, group by group; a group's
 	 * neighbours are held at their latest estimates (those of groups already fitted included).
 	 *
-	 * @return the new estimates (the others unchanged) and the largest number of iterations a group needed,
-	 *         negative if a group hit the limit
+	 * @return the new estimates (the others unchanged; the members of a group that could not be fitted, too few
+	 *         pixels left or a singular system, keep theirs flagged {@code FELL_BACK}) and the largest number of
+	 *         iterations a group needed, negative if a group hit the limit
 	 */
 	static ProfileRefinement.Refined refine(final Plane plane, final Particle[] particles, final Estimate[] start,
 		final EmpiricalProfile profile, final double groupDistance, final double window, final Censoring censoring)
@@ -37,6 +38,8 @@ final class GroupFit {
 		int worst = 0;
 		for (final int[] group : groups) {
 			final int it = fitGroup(plane, particles, e, group, profile, window, censoring);
+			if (it == 0) for (final int k : group)
+				e[k] = e[k].withFlags(e[k].flags() | Flag.FELL_BACK.bit());
 			if (it < 0) worst = Math.min(worst, it);
 			else if (worst >= 0) worst = Math.max(worst, it);
 		}
@@ -98,7 +101,8 @@ final class GroupFit {
 	}
 
 	/**
-	 * Fits one group, replacing its members' estimates in {@code e} on success; returns the iterations. The pixels
+	 * Fits one group, replacing its members' estimates in {@code e} on success; returns the iterations (0: not
+	 * fitted). The pixels
 	 * fitted lie within {@code window} (px, times each member's scale) of a member: out to {@code r_out}, where a
 	 * particle's image has returned to the background, not to the profile's full reach (1.5 {@code r_out}), whose
 	 * faint tail carries almost no information on the centre but more than doubles the pixels. The model itself
@@ -230,7 +234,7 @@ final class GroupFit {
 			}
 		}
 		final double[][] inv = SymmetricSolver.invert(jtj);
-		if (inv == null) return converged ? it : -it;
+		if (inv == null) return 0;
 		final double s2 = rss / (pixels.count() - np);
 		for (int q = 0; q < n; q++) {
 			final Estimate old = e[group[q]];

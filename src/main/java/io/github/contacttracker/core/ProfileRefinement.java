@@ -39,6 +39,8 @@ final class ProfileRefinement implements Refinement {
 		final Censoring censoring = Censoring.of(plane, NoiseEstimate.sigma(plane));
 		final int rounds = given == null ? StackTracker.PROFILE_ROUNDS : 1;
 		EmpiricalProfile profile = given;
+		final int clear = Flag.SECOND_PASS.bit() | Flag.FELL_BACK.bit() | Flag.NOT_CONVERGED.bit();
+		boolean settled = given != null;
 		for (int round = 0; round < rounds; round++) {
 			if (given == null) {
 				profile = measure(plane, ps, e, params.rOut(), round == 0 ? null : profile, censoring);
@@ -49,17 +51,20 @@ final class ProfileRefinement implements Refinement {
 					return new Outcome(kept, iterative.discs());
 				}
 			}
+			// the iterative pass's flags do not describe the refined centres (a group that cannot be fitted sets its own)
+			final Estimate[] start = e.clone();
+			for (int k = 0; k < start.length; k++)
+				start[k] = start[k].withFlags(start[k].flags() & ~clear);
 			final Refined r;
 			if (deblend) {
 				double disc = profile.activeRadius(params.threshold());
 				if (disc < 3) disc = medianEquivalentRadius(ps);
-				r = Deblender.refine(plane, ps, e, profile, disc);
+				r = Deblender.refine(plane, ps, start, profile, disc);
 			}
-			else r = GroupFit.refine(plane, ps, e, profile, 2 * params.rOut(), params.rOut(), censoring);
-			final int clear = Flag.SECOND_PASS.bit() | Flag.FELL_BACK.bit() | Flag.NOT_CONVERGED.bit();
+			else r = GroupFit.refine(plane, ps, start, profile, 2 * params.rOut(), params.rOut(), censoring);
 			final Estimate[] next = r.estimates();
 			for (int k = 0; k < next.length; k++) {
-				final int flags = (next[k].flags() & ~clear) | (r.iterations() < 0 ? Flag.NOT_CONVERGED.bit() : 0);
+				final int flags = next[k].flags() | (r.iterations() < 0 ? Flag.NOT_CONVERGED.bit() : 0);
 				next[k] = new Estimate(next[k].x(), next[k].y(), flags, next[k].secondArea(), Math.abs(r.iterations()),
 					next[k].solve(), next[k].sigmaX(), next[k].sigmaY(), next[k].amplitude(), next[k].scale());
 			}
@@ -67,8 +72,14 @@ final class ProfileRefinement implements Refinement {
 			for (int k = 0; k < next.length; k++)
 				move = Math.max(move, next[k].distanceTo(e[k]));
 			e = next;
-			if (round > 0 && move <= StackTracker.PROFILE_TOLERANCE) break;
+			if (round > 0 && move <= StackTracker.PROFILE_TOLERANCE) {
+				settled = true;
+				break;
+			}
 		}
+		// profile and centres still moving at the last round: no fixed point, the centres can be off by that much
+		if (!settled) for (int k = 0; k < e.length; k++)
+			e[k] = e[k].withFlags(e[k].flags() | Flag.NOT_CONVERGED.bit());
 		return new Outcome(e, iterative.discs());
 	}
 

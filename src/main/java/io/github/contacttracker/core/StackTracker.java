@@ -108,9 +108,11 @@ public final class StackTracker {
 			used = profile(round, used, sample, frame, params.rOut());
 			round = pass(tracker, used, sample, frame, false, progress, cancelled);
 		}
+		// no fixed point within the rounds: every centre rests on a profile that was still moving
+		final boolean settled = largestMove(previous, round) <= PROFILE_TOLERANCE;
 		// settled: the profile of the last round is the fixed point's (to within the tolerance). The sample frames
 		// were just refined with that very profile: without regions to keep, their results are the final ones.
-		if (keepRegions) return pass(tracker, used, all, frame, true, progress, cancelled);
+		if (keepRegions) return flagged(pass(tracker, used, all, frame, true, progress, cancelled), settled);
 		final boolean[] done = new boolean[count];
 		for (final int t : sample)
 			done[t] = true;
@@ -121,7 +123,21 @@ public final class StackTracker {
 		final List<FrameResult> results = new ArrayList<>(count);
 		for (int t = 0, s = 0, o = 0; t < count; t++)
 			results.add(done[t] ? round.get(s++) : others.get(o++));
-		return results;
+		return flagged(results, settled);
+	}
+
+	/** @return the results, every spot flagged {@code NOT_CONVERGED} unless the profile rounds {@code settled} */
+	private static List<FrameResult> flagged(final List<FrameResult> results, final boolean settled) {
+		if (settled) return results;
+		final List<FrameResult> out = new ArrayList<>(results.size());
+		for (final FrameResult r : results) {
+			final List<Localization> spots = new ArrayList<>(r.spots().size());
+			for (final Localization l : r.spots())
+				spots.add(l.withFlags(l.flags() | Flag.NOT_CONVERGED.bit()));
+			out.add(new FrameResult(spots, r.activeAreas(), r.secondAreas(), r.noiseSigma(), r.discarded(), r
+				.ownProfile()));
+		}
+		return out;
 	}
 
 	/** At most this many rounds of profile and centres on the sample frames... */
