@@ -284,11 +284,12 @@ final class GroupFit {
 			this(x, y, value, fixed, count, planeCoordinate(x, count, mx, unit), planeCoordinate(y, count, my, unit));
 		}
 
-		/** @return the pixels marked in {@code keep}, in the same order */
+		/** @return the pixels marked in {@code keep}, in the same order (these pixels if all are) */
 		Pixels subset(final boolean[] keep) {
 			int m = 0;
 			for (int i = 0; i < count; i++)
 				if (keep[i]) m++;
+			if (m == count) return this;
 			final int[] sx = new int[m], sy = new int[m];
 			final double[] sv = new double[m], sf = new double[m], su = new double[m], sw = new double[m];
 			for (int i = 0, j = 0; i < count; i++) {
