@@ -13,7 +13,8 @@ import net.imglib2.type.numeric.RealType;
  * measured even where no particle has an undistorted side (long-range profiles at contact).
  * <p>
  * A light penalty on the coefficients' second differences keeps sparsely sampled knots (near r = 0) stable.
- * Pixels near spots flagged as merged or degenerate are left out, since their centres do not describe them.
+ * Pixels near spots flagged as merged or degenerate are left out, since their centres do not describe them; so
+ * are clipped pixels and, given the previous estimate, those near a clip level ({@link Censoring}).
  * Not thread-safe.
  */
 public final class ProfileEstimator {
