@@ -102,10 +102,10 @@ final class GroupFit {
 
 	/**
 	 * Fits one group, replacing its members' estimates in {@code e} on success; returns the iterations (0: not
-	 * fitted). The pixels
-	 * fitted lie within {@code window} (px, times each member's scale) of a member: out to {@code r_out}, where a
-	 * particle's image has returned to the background, not to the profile's full reach (1.5 {@code r_out}), whose
-	 * faint tail carries almost no information on the centre but more than doubles the pixels. The model itself
+	 * fitted). The pixels fitted lie within {@code window} (px, times each member's scale) of a member: out to
+	 * {@code r_out}, where a particle's image has returned to the background, not to the profile's full reach
+	 * (1.5 {@code r_out}), whose faint tail carries almost no information on the centre but more than doubles the
+	 * pixels. The model itself
 	 * keeps the full reach: every member's and neighbour's tail is in the light of the pixels fitted. Where the
 	 * pixel type clips, the pixels used are those the {@code censoring} rule keeps at the model's current
 	 * parameters: chosen again when the fit has settled, and the fit continued, until the choice stays put.
