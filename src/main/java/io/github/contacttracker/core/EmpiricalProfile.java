@@ -18,6 +18,8 @@ public final class EmpiricalProfile {
 	/** Tables of P and P' at {@link #TABLE_STEP} for fast lookups. */
 	private final double[] tableValue;
 	private final double[] tableDerivative;
+	/** The least and greatest values in {@link #tableValue} (linear interpolation stays between them). */
+	private final double least, greatest;
 
 	/** Step of the lookup tables (px): linear interpolation errs by well under 1e-3 grey levels there. */
 	static final double TABLE_STEP = 1.0 / 32;
@@ -37,10 +39,15 @@ public final class EmpiricalProfile {
 		final int n = (int) Math.ceil(radius / TABLE_STEP) + 2;
 		tableValue = new double[n];
 		tableDerivative = new double[n];
+		double lo = 0, hi = 0;
 		for (int i = 0; i < n; i++) {
 			tableValue[i] = value(i * TABLE_STEP);
 			tableDerivative[i] = derivative(i * TABLE_STEP);
+			lo = Math.min(lo, tableValue[i]);
+			hi = Math.max(hi, tableValue[i]);
 		}
+		least = lo;
+		greatest = hi;
 	}
 
 	/** P(r) from the table (linear interpolation); 0 beyond the radius. */
@@ -50,6 +57,16 @@ public final class EmpiricalProfile {
 		if (i >= tableValue.length - 1) return 0;
 		final double f = u - i;
 		return tableValue[i] + f * (tableValue[i + 1] - tableValue[i]);
+	}
+
+	/** @return the least value of P over its tables (at most 0: P is 0 beyond its radius) */
+	double leastValue() {
+		return least;
+	}
+
+	/** @return the greatest value of P over its tables (at least 0) */
+	double greatestValue() {
+		return greatest;
 	}
 
 	/** @return the table of P at multiples of {@link #TABLE_STEP} (not a copy: for inner loops, read only) */

@@ -25,7 +25,11 @@ public enum Flag {
 	AT_BORDER("touches border"),
 	/** The active area looks like several particles merged into one component (see README). */
 	MERGED("suspected merge"),
-	/** An iterative method stopped at its iteration limit before the centres settled. */
+	/**
+	 * An iterative method stopped at its iteration limit before the centres settled; for the profile methods also
+	 * when the alternation of profile and centres found no fixed point within its rounds (every spot that rests
+	 * on that profile).
+	 */
 	NOT_CONVERGED("not converged");
 
 	private final String description;

@@ -32,17 +32,20 @@ final class GroupFit {
 	 * Refines the centres of the reliable particles, starting from {@code start}, group by group; a group's
 	 * neighbours are held at their latest estimates (those of groups already fitted included).
 	 *
-	 * @return the new estimates (the others unchanged) and the largest number of iterations a group needed,
-	 *         negative if a group hit the limit
+	 * @return the new estimates (the others unchanged; the members of a group that could not be fitted, too few
+	 *         pixels left or a singular system, keep theirs flagged {@code FELL_BACK}) and the largest number of
+	 *         iterations a group needed, negative if a group hit the limit
 	 */
 	static ProfileRefinement.Refined refine(final Plane plane, final Particle[] particles, final Estimate[] start,
-		final EmpiricalProfile profile, final double groupDistance, final double window)
+		final EmpiricalProfile profile, final double groupDistance, final double window, final Censoring censoring)
 	{
 		final Estimate[] e = start.clone();
 		final List<int[]> groups = groups(particles, e, groupDistance);
 		int worst = 0;
 		for (final int[] group : groups) {
-			final int it = fitGroup(plane, particles, e, group, profile, window);
+			final int it = fitGroup(plane, particles, e, group, profile, window, censoring);
+			if (it == 0) for (final int k : group)
+				e[k] = e[k].withFlags(e[k].flags() | Flag.FELL_BACK.bit());
 			if (it < 0) worst = Math.min(worst, it);
 			else if (worst >= 0) worst = Math.max(worst, it);
 		}
@@ -104,19 +107,21 @@ final class GroupFit {
 	}
 
 	/**
-	 * Fits one group, replacing its members' estimates in {@code e} on success; returns the iterations. The pixels
-	 * fitted lie within {@code window} (px, times each member's scale) of a member: out to {@code r_out}, where a
-	 * particle's image has returned to the background, not to the profile's full reach (1.5 {@code r_out}), whose
-	 * faint tail carries almost no information on the centre but more than doubles the pixels. The model itself
-	 * keeps the full reach: every member's and neighbour's tail is in the light of the pixels fitted.
+	 * Fits one group, replacing its members' estimates in {@code e} on success; returns the iterations (0: not
+	 * fitted). The pixels fitted lie within {@code window} (px, times each member's scale) of a member: out to
+	 * {@code r_out}, where a particle's image has returned to the background, not to the profile's full reach
+	 * (1.5 {@code r_out}), whose faint tail carries almost no information on the centre but more than doubles the
+	 * pixels. The model itself
+	 * keeps the full reach: every member's and neighbour's tail is in the light of the pixels fitted. Where the
+	 * pixel type clips, the pixels used are those the {@code censoring} rule keeps at the model's current
+	 * parameters: chosen again when the fit has settled, and the fit continued, until the choice stays put.
 	 */
 	private static int fitGroup(final Plane plane, final Particle[] ps, final Estimate[] e, final int[] group,
-		final EmpiricalProfile profile, final double window)
+		final EmpiricalProfile profile, final double window, final Censoring censoring)
 	{
 		final int n = group.length, np = PER_PARTICLE * n + BACKGROUND;
 		final double R = profile.radius(), W = Math.min(R, window);
-		final double saturation = plane.saturation();
-		// The pixels: within each member's window (at its starting centre and scale), not saturated.
+		// The pixels: within each member's window (at its starting centre and scale), not clipped.
 		int x0 = Integer.MAX_VALUE, y0 = Integer.MAX_VALUE, x1 = Integer.MIN_VALUE, y1 = Integer.MIN_VALUE;
 		for (final int k : group) {
 			final double reach = W * scaleOf(e[k]);
@@ -146,7 +151,7 @@ final class GroupFit {
 				}
 				if (!inside) continue;
 				final double v = plane.get(x, y);
-				if (v >= saturation) continue; // censored: its true value is unknown
+				if (censoring.clipped(v)) continue; // censored: its true value is unknown
 				px[count] = x;
 				py[count] = y;
 				pv[count++] = v;
@@ -172,7 +177,12 @@ final class GroupFit {
 			p[PER_PARTICLE * q + 3] = scaleOf(s);
 		}
 		p[np - BACKGROUND] = profile.background();
-		final Pixels pixels = new Pixels(px, py, pv, fixed, count, mx, my, unit);
+		final Pixels candidates = new Pixels(px, py, pv, fixed, count, mx, my, unit);
+		final boolean[] use = censoring.active() ? new boolean[count] : null;
+		if (use != null) select(candidates, p, n, profile, censoring, use);
+		Pixels pixels = use == null ? candidates : candidates.subset(use);
+		if (pixels.count() <= np) return 0;
+		int selections = 1;
 		final double[][] jtj = new double[np][np];
 		final double[] jtr = new double[np];
 		double rss = accumulate(pixels, p, n, profile, jtj, jtr);
@@ -199,9 +209,23 @@ final class GroupFit {
 			for (int q = 0; q < n; q++)
 				move = Math.max(move, Math.hypot(step[PER_PARTICLE * q], step[PER_PARTICLE * q + 1]));
 			if (allowed && move < TOLERANCE) {
-				// Converged: the step is taken without evaluating the model there (a pass over every pixel, a
-				// third of the fit's time); J^T J and the residuals at p serve the uncertainties as well.
+				// Settled: the step is taken without evaluating the model there (a pass over every pixel, a third of
+				// the fit's time); J^T J and the residuals at p serve the uncertainties as well. Where the pixel type
+				// clips, the pixels are chosen again at the settled model, and if the choice changed the fit goes on.
 				System.arraycopy(trial, 0, p, 0, np);
+				if (use != null && selections < MAX_SELECTIONS && select(candidates, p, n, profile, censoring, use)) {
+					selections++;
+					final Pixels chosen = candidates.subset(use);
+					if (chosen.count() <= np) break;
+					pixels = chosen;
+					for (int i = 0; i < np; i++) {
+						jtj[i] = new double[np];
+						jtr[i] = 0;
+					}
+					rss = accumulate(pixels, p, n, profile, jtj, jtr);
+					mu = 1e-3;
+					continue;
+				}
 				converged = true;
 				break;
 			}
@@ -220,8 +244,8 @@ final class GroupFit {
 			else mu *= 10;
 		}
 		final double[][] inv = SymmetricSolver.invert(jtj);
-		if (inv == null) return converged ? it : -it;
-		final double s2 = rss / (count - np);
+		if (inv == null) return 0;
+		final double s2 = rss / (pixels.count() - np);
 		for (int q = 0; q < n; q++) {
 			final Estimate old = e[group[q]];
 			final int b = PER_PARTICLE * q;
@@ -229,6 +253,65 @@ final class GroupFit {
 				.sqrt(s2 * inv[b][b]), Math.sqrt(s2 * inv[b + 1][b + 1]), p[b + 2], p[b + 3]);
 		}
 		return converged ? it : -it;
+	}
+
+	/** The usable pixels are chosen at most this many times per fit (one pixel could flip back and forth). */
+	static final int MAX_SELECTIONS = 5;
+
+	/**
+	 * Marks in {@code use} the candidates whose model value at parameters {@code p} the censoring rule keeps.
+	 *
+	 * @return whether any mark changed
+	 */
+	private static boolean select(final Pixels candidates, final double[] p, final int n,
+		final EmpiricalProfile profile, final Censoring censoring, final boolean[] use)
+	{
+		final int b0 = PER_PARTICLE * n;
+		boolean changed = false;
+		if (withinBounds(candidates, p, n, profile, censoring)) { // usually: no model value comes near a clip level
+			for (int i = 0; i < candidates.count(); i++) {
+				changed |= !use[i];
+				use[i] = true;
+			}
+			return changed;
+		}
+		for (int i = 0; i < candidates.count(); i++) {
+			double model = p[b0] + p[b0 + 1] * candidates.u()[i] + p[b0 + 2] * candidates.v()[i] + candidates.fixed()[i];
+			for (int q = 0; q < n; q++) {
+				final int b = PER_PARTICLE * q;
+				final double dx = candidates.x()[i] - p[b], dy = candidates.y()[i] - p[b + 1];
+				model += p[b + 2] * profile.lookup(Math.sqrt(dx * dx + dy * dy) / p[b + 3]);
+			}
+			final boolean usable = censoring.usable(model);
+			changed |= usable != use[i];
+			use[i] = usable;
+		}
+		return changed;
+	}
+
+	/**
+	 * @return whether bounds on the model over all candidates, cheap to get (no root, no lookup), lie where the
+	 *         censoring rule keeps every pixel: background plane and other groups' light at their extremes, each
+	 *         member's light between its amplitude times the profile's least and greatest values (or 0)
+	 */
+	private static boolean withinBounds(final Pixels candidates, final double[] p, final int n,
+		final EmpiricalProfile profile, final Censoring censoring)
+	{
+		final int b0 = PER_PARTICLE * n;
+		double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
+		for (int i = 0; i < candidates.count(); i++) {
+			final double plane = p[b0] + p[b0 + 1] * candidates.u()[i] + p[b0 + 2] * candidates.v()[i] + candidates
+				.fixed()[i];
+			lo = Math.min(lo, plane);
+			hi = Math.max(hi, plane);
+		}
+		for (int q = 0; q < n; q++) {
+			final double a = p[PER_PARTICLE * q + 2], least = a * profile.leastValue(), greatest = a * profile
+				.greatestValue();
+			lo += Math.min(0, Math.min(least, greatest));
+			hi += Math.max(0, Math.max(least, greatest));
+		}
+		return censoring.usable(lo) && censoring.usable(hi);
 	}
 
 	/**
@@ -263,6 +346,26 @@ final class GroupFit {
 				svv += v[i] * v[i];
 			}
 			return new double[] { count, su, sv, su, suu, suv, sv, suv, svv };
+		}
+
+		/** @return the pixels marked in {@code keep}, in the same order (these pixels if all are) */
+		Pixels subset(final boolean[] keep) {
+			int m = 0;
+			for (int i = 0; i < count; i++)
+				if (keep[i]) m++;
+			if (m == count) return this;
+			final int[] sx = new int[m], sy = new int[m];
+			final double[] sv = new double[m], sf = new double[m], su = new double[m], sw = new double[m];
+			for (int i = 0, j = 0; i < count; i++) {
+				if (!keep[i]) continue;
+				sx[j] = x[i];
+				sy[j] = y[i];
+				sv[j] = value[i];
+				sf[j] = fixed[i];
+				su[j] = u[i];
+				sw[j++] = v[i];
+			}
+			return new Pixels(sx, sy, sv, sf, m, su, sw);
 		}
 
 		private static double[] planeCoordinate(final int[] c, final int count, final double origin, final double unit) {

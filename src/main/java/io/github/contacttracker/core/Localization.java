@@ -72,6 +72,12 @@ public record Localization(int frame, double x, double y, double firstX, double 
 			radius, flags, iterations, sigmaX, sigmaY, amplitude, scale);
 	}
 
+	/** @return a copy with other flags */
+	public Localization withFlags(final int newFlags) {
+		return new Localization(frame, x, y, firstX, firstY, activeArea, secondArea, quality, radius, newFlags,
+			iterations, sigmaX, sigmaY, amplitude, scale);
+	}
+
 	/** @return a copy with another radius (px), e.g. half the particle diameter the user gave */
 	public Localization withRadius(final double newRadius) {
 		return new Localization(frame, x, y, firstX, firstY, activeArea, secondArea, quality, newRadius, flags,

@@ -51,6 +51,15 @@ public abstract class Plane {
 		return Double.POSITIVE_INFINITY;
 	}
 
+	/**
+	 * @return the grey level at which the pixel type clips from below (0 for unsigned integers), minus infinity for
+	 *         floating-point data: a dark ring brighter particles push below 0 reads 0 there, its true value unknown
+	 *         (censored) like a saturated pixel's
+	 */
+	public double floor() {
+		return Double.NEGATIVE_INFINITY;
+	}
+
 	/** @return whether pixels can be NaN or infinite (floating-point data) */
 	protected abstract boolean floatingPoint();
 
@@ -210,6 +219,11 @@ public abstract class Plane {
 		@Override
 		public final double saturation() {
 			return maxValue;
+		}
+
+		@Override
+		public final double floor() {
+			return 0;
 		}
 
 		@Override

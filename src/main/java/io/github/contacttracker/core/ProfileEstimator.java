@@ -13,7 +13,8 @@ import net.imglib2.type.numeric.RealType;
  * measured even where no particle has an undistorted side (long-range profiles at contact).
  * <p>
  * A light penalty on the coefficients' second differences keeps sparsely sampled knots (near r = 0) stable.
- * Pixels near spots flagged as merged or degenerate are left out, since their centres do not describe them.
+ * Pixels near spots flagged as merged or degenerate are left out, since their centres do not describe them; so
+ * are clipped pixels and, given the previous estimate, those near a clip level ({@link Censoring}).
  * Not thread-safe.
  */
 public final class ProfileEstimator {
@@ -69,6 +70,17 @@ public final class ProfileEstimator {
 	public <T extends RealType<T>> void add(final RandomAccessibleInterval<T> frame, final List<Localization> spots,
 		final double amplitudeNorm, final double scaleNorm)
 	{
+		add(frame, spots, amplitudeNorm, scaleNorm, null, 0);
+	}
+
+	/**
+	 * As {@link #add(RandomAccessibleInterval, List, double, double)}, the spots fitted with {@code previous}: where
+	 * its model comes near a clip level of the frame (of noise {@code noise}), pixels are left out (see
+	 * {@link Censoring}); with {@code previous} null only the clipped pixels are.
+	 */
+	<T extends RealType<T>> void add(final RandomAccessibleInterval<T> frame, final List<Localization> spots,
+		final double amplitudeNorm, final double scaleNorm, final EmpiricalProfile previous, final double noise)
+	{
 		final Plane plane = Plane.of(frame);
 		final int n = spots.size();
 		final double[] cx = new double[n], cy = new double[n], amp = new double[n], scale = new double[n];
@@ -81,8 +93,15 @@ public final class ProfileEstimator {
 			scale[k] = Double.isFinite(s.scale()) && s.scale() > 0 ? s.scale() / scaleNorm : 1;
 			masked[k] = s.has(Flag.MERGED) || s.has(Flag.DEGENERATE);
 		}
-		add(plane, cx, cy, amp, scale, masked);
+		add(plane, cx, cy, amp, scale, masked, previous == null ? null : new Previous(previous, Censoring.of(plane,
+			noise), amplitudeNorm, scaleNorm));
 	}
+
+	/**
+	 * The previous estimate's model, which chooses the pixels left out near the clip levels: its profile, the rule,
+	 * and the norms that turn the spots' amplitudes and scales given to {@code add} back into those fitted with it.
+	 */
+	record Previous(EmpiricalProfile profile, Censoring censoring, double amplitudeNorm, double scaleNorm) {}
 
 	/** Adds a frame with its spots, taken as alike (amplitude and scale 1 for spots without fitted ones). */
 	public <T extends RealType<T>> void add(final RandomAccessibleInterval<T> frame, final List<Localization> spots) {
@@ -113,15 +132,23 @@ public final class ProfileEstimator {
 		add(plane, cx, cy, ones, ones, masked);
 	}
 
-	/**
-	 * Adds a plane with centres in its local coordinates, each particle drawn as {@code amp_k P(r / scale_k)};
-	 * pixels near masked centres, and saturated pixels, are skipped.
-	 */
+	/** As {@link #add(Plane, double[], double[], double[], double[], boolean[], Previous)} without a previous model. */
 	void add(final Plane plane, final double[] cx, final double[] cy, final double[] amp, final double[] scale,
 		final boolean[] masked)
 	{
+		add(plane, cx, cy, amp, scale, masked, null);
+	}
+
+	/**
+	 * Adds a plane with centres in its local coordinates, each particle drawn as {@code amp_k P(r / scale_k)};
+	 * pixels near masked centres, and clipped pixels (saturated, or at 0 where a dark ring falls below it), are
+	 * skipped, and so are those where the {@code previous} model (if not null) comes near a clip level.
+	 */
+	void add(final Plane plane, final double[] cx, final double[] cy, final double[] amp, final double[] scale,
+		final boolean[] masked, final Previous previous)
+	{
 		final int n = cx.length, w = plane.width(), h = plane.height();
-		final double saturation = plane.saturation();
+		final double saturation = plane.saturation(), floor = plane.floor();
 		final int[] near = new int[n];
 		final int[] idx = new int[4 * n + 3];
 		final double[] val = new double[4 * n + 3];
@@ -136,9 +163,10 @@ public final class ProfileEstimator {
 				if (Math.abs(y - cy[k]) < radius * maxScale) near[nn++] = k;
 			for (int x = 0; x < w; x++) {
 				final double v = plane.get(x, y);
-				if (v >= saturation) continue;
+				if (v >= saturation || v <= floor) continue;
 				int len = 0;
 				boolean skip = false;
+				double model = previous == null ? 0 : previous.profile().background();
 				for (int q = 0; q < nn && !skip; q++) {
 					final int k = near[q];
 					final double dx = x - cx[k], dy = y - cy[k], d2 = dx * dx + dy * dy, reach = radius * scale[k];
@@ -147,7 +175,9 @@ public final class ProfileEstimator {
 						skip = true;
 						break;
 					}
-					final double u = Math.sqrt(d2) / (SPACING * scale[k]);
+					final double r = Math.sqrt(d2), u = r / (SPACING * scale[k]);
+					if (previous != null) model += previous.amplitudeNorm() * amp[k] * previous.profile().lookup(r /
+						(previous.scaleNorm() * scale[k]));
 					final int i = (int) u;
 					// the four cubic B-spline weights of knots i-1..i+2 (EmpiricalProfile.bspline at u - j)
 					final double f = u - i, g = 1 - f, f3 = f * f * f, g3 = g * g * g;
@@ -157,7 +187,7 @@ public final class ProfileEstimator {
 					len = term(idx, val, len, i + 1, a * (2.0 / 3 - g * g + 0.5 * g3));
 					len = term(idx, val, len, i + 2, a * f3 / 6);
 				}
-				if (skip) continue;
+				if (skip || previous != null && !previous.censoring().usable(model)) continue;
 				if (len == 0 || len == 4 && idx[1] == idx[0] + 1 && idx[2] == idx[1] + 1 && idx[3] == idx[2] + 1) {
 					// The common cases without the general outer product: the background alone, or one particle's
 					// four distinct knots; every sum receives the same products as there.

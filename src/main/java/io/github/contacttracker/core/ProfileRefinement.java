@@ -35,11 +35,15 @@ final class ProfileRefinement implements Refinement {
 		Estimate[] e = iterative.estimates();
 		if (ps.length == 0) return iterative;
 		// measured here: alternated with the centres until these stop moving (see StackTracker)
+		// pixels near the clip levels, chosen by the model (see Censoring), at the frame's noise
+		final Censoring censoring = Censoring.of(plane, NoiseEstimate.sigma(plane));
 		final int rounds = given == null ? StackTracker.PROFILE_ROUNDS : 1;
 		EmpiricalProfile profile = given;
+		final int clear = Flag.SECOND_PASS.bit() | Flag.FELL_BACK.bit() | Flag.NOT_CONVERGED.bit();
+		boolean settled = given != null;
 		for (int round = 0; round < rounds; round++) {
 			if (given == null) {
-				profile = measure(plane, ps, e, params.rOut());
+				profile = measure(plane, ps, e, params.rOut(), round == 0 ? null : profile, censoring);
 				if (profile == null) {
 					final Estimate[] kept = e.clone();
 					for (int k = 0; k < kept.length; k++)
@@ -47,17 +51,20 @@ final class ProfileRefinement implements Refinement {
 					return new Outcome(kept, iterative.discs());
 				}
 			}
+			// the iterative pass's flags do not describe the refined centres (a group that cannot be fitted sets its own)
+			final Estimate[] start = e.clone();
+			for (int k = 0; k < start.length; k++)
+				start[k] = start[k].withFlags(start[k].flags() & ~clear);
 			final Refined r;
 			if (deblend) {
 				double disc = profile.activeRadius(params.threshold());
 				if (disc < 3) disc = medianEquivalentRadius(ps);
-				r = Deblender.refine(plane, ps, e, profile, disc);
+				r = Deblender.refine(plane, ps, start, profile, disc);
 			}
-			else r = GroupFit.refine(plane, ps, e, profile, 2 * params.rOut(), params.rOut());
-			final int clear = Flag.SECOND_PASS.bit() | Flag.FELL_BACK.bit() | Flag.NOT_CONVERGED.bit();
+			else r = GroupFit.refine(plane, ps, start, profile, 2 * params.rOut(), params.rOut(), censoring);
 			final Estimate[] next = r.estimates();
 			for (int k = 0; k < next.length; k++) {
-				final int flags = (next[k].flags() & ~clear) | (r.iterations() < 0 ? Flag.NOT_CONVERGED.bit() : 0);
+				final int flags = next[k].flags() | (r.iterations() < 0 ? Flag.NOT_CONVERGED.bit() : 0);
 				next[k] = new Estimate(next[k].x(), next[k].y(), flags, next[k].secondArea(), Math.abs(r.iterations()),
 					next[k].solve(), next[k].sigmaX(), next[k].sigmaY(), next[k].amplitude(), next[k].scale());
 			}
@@ -65,14 +72,23 @@ final class ProfileRefinement implements Refinement {
 			for (int k = 0; k < next.length; k++)
 				move = Math.max(move, next[k].distanceTo(e[k]));
 			e = next;
-			if (round > 0 && move <= StackTracker.PROFILE_TOLERANCE) break;
+			if (round > 0 && move <= StackTracker.PROFILE_TOLERANCE) {
+				settled = true;
+				break;
+			}
 		}
+		// profile and centres still moving at the last round: no fixed point, the centres can be off by that much
+		if (!settled) for (int k = 0; k < e.length; k++)
+			e[k] = e[k].withFlags(e[k].flags() | Flag.NOT_CONVERGED.bit());
 		return new Outcome(e, iterative.discs());
 	}
 
-	/** The profile on this frame around centres {@code e}, unreliable particles masked; null if too few pixels. */
+	/**
+	 * The profile on this frame around centres {@code e}, unreliable particles masked; null if too few pixels. The
+	 * profile {@code e} was fitted with, if any, chooses the pixels left out near clip levels.
+	 */
 	private static EmpiricalProfile measure(final Plane plane, final Particle[] ps, final Estimate[] e,
-		final double rOut)
+		final double rOut, final EmpiricalProfile fittedWith, final Censoring censoring)
 	{
 		final ProfileEstimator estimator = ProfileEstimator.forROut(rOut);
 		final int n = ps.length;
@@ -100,7 +116,8 @@ final class ProfileRefinement implements Refinement {
 			amp[k] /= ampNorm;
 			scale[k] /= scaleNorm;
 		}
-		estimator.add(plane, cx, cy, amp, scale, masked);
+		estimator.add(plane, cx, cy, amp, scale, masked, fittedWith == null ? null : new ProfileEstimator.Previous(
+			fittedWith, censoring, ampNorm, scaleNorm));
 		try {
 			return estimator.estimate();
 		}

@@ -100,17 +100,19 @@ public final class StackTracker {
 		// the same cluster) it absorbs part of their error; so profile and centres are alternated on the sample
 		// frames until the centres stop moving (the joint least-squares fixed point).
 		List<FrameResult> previous = iterative;
-		EmpiricalProfile used = profile(previous, sample, frame, params.rOut());
+		EmpiricalProfile used = profile(previous, null, sample, frame, params.rOut());
 		List<FrameResult> round = pass(tracker, used, sample, frame, false, progress, cancelled);
 		for (int r = 1; r < PROFILE_ROUNDS && largestMove(previous, round) > PROFILE_TOLERANCE; r++) {
 			progress.total += sample.length;
 			previous = round;
-			used = profile(round, sample, frame, params.rOut());
+			used = profile(round, used, sample, frame, params.rOut());
 			round = pass(tracker, used, sample, frame, false, progress, cancelled);
 		}
+		// no fixed point within the rounds: every centre rests on a profile that was still moving
+		final boolean settled = largestMove(previous, round) <= PROFILE_TOLERANCE;
 		// settled: the profile of the last round is the fixed point's (to within the tolerance). The sample frames
 		// were just refined with that very profile: without regions to keep, their results are the final ones.
-		if (keepRegions) return pass(tracker, used, all, frame, true, progress, cancelled);
+		if (keepRegions) return flagged(pass(tracker, used, all, frame, true, progress, cancelled), settled);
 		final boolean[] done = new boolean[count];
 		for (final int t : sample)
 			done[t] = true;
@@ -121,7 +123,21 @@ public final class StackTracker {
 		final List<FrameResult> results = new ArrayList<>(count);
 		for (int t = 0, s = 0, o = 0; t < count; t++)
 			results.add(done[t] ? round.get(s++) : others.get(o++));
-		return results;
+		return flagged(results, settled);
+	}
+
+	/** @return the results, every spot flagged {@code NOT_CONVERGED} unless the profile rounds {@code settled} */
+	private static List<FrameResult> flagged(final List<FrameResult> results, final boolean settled) {
+		if (settled) return results;
+		final List<FrameResult> out = new ArrayList<>(results.size());
+		for (final FrameResult r : results) {
+			final List<Localization> spots = new ArrayList<>(r.spots().size());
+			for (final Localization l : r.spots())
+				spots.add(l.withFlags(l.flags() | Flag.NOT_CONVERGED.bit()));
+			out.add(new FrameResult(spots, r.activeAreas(), r.secondAreas(), r.noiseSigma(), r.discarded(), r
+				.ownProfile()));
+		}
+		return out;
 	}
 
 	/** At most this many rounds of profile and centres on the sample frames... */
@@ -191,10 +207,11 @@ public final class StackTracker {
 
 	/**
 	 * Measures the radial profile on frames {@code indices} (with their results, in the same order), the frames
-	 * shared among the threads; null (each frame then measures its own) when they hold too few usable pixels.
+	 * shared among the threads; null (each frame then measures its own) when they hold too few usable pixels. The
+	 * profile the results were refined with, if any, chooses the pixels left out near clip levels.
 	 */
 	private static <T extends RealType<T>> EmpiricalProfile profile(final List<FrameResult> results,
-		final int[] indices, final IntFunction<? extends RandomAccessibleInterval<T>> frame, final double rOut)
+		final EmpiricalProfile fittedWith, final int[] indices, final IntFunction<? extends RandomAccessibleInterval<T>> frame, final double rOut)
 	{
 		// One estimator per frame, merged in frame order: the sums, and so the results, do not depend on the
 		// number of threads.
@@ -202,7 +219,8 @@ public final class StackTracker {
 		final List<ProfileEstimator> parts = Parallelization.getTaskExecutor().forEachApply(positions(indices.length),
 			i -> {
 				final ProfileEstimator part = ProfileEstimator.forROut(rOut);
-				part.add(frame.apply(indices[i]), results.get(i).spots(), norms[0], norms[1]);
+				part.add(frame.apply(indices[i]), results.get(i).spots(), norms[0], norms[1], fittedWith, results.get(i)
+					.noiseSigma());
 				return part;
 			});
 		final ProfileEstimator all = parts.get(0);

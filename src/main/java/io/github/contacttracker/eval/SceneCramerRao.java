@@ -12,14 +12,19 @@ import io.github.contacttracker.sim.Scene;
  * The Cramer-Rao bound of a {@link Scene}: the Fisher matrix over every particle's centre, amplitude and (if
  * asked) radial scale, and the background plane {@code B + bx x + by y}, with each pixel's own variance (photon
  * noise: expected value times gain plus read variance; additive noise: its variance; plus 1/12 for the rounding).
- * Pixels whose expected value is saturated (at or above 254.5 on 8 bits) are censored: they carry no information
- * here, as in the fit. Derivatives by central differences of the pixel-integrated model.
+ * Pixels whose expected value is clipped (at or above 254.5 on 8 bits, or at or below 0.5: a dark ring that bright
+ * particles push below 0) are censored: they carry no information here, as in the fit. The bound is the method's
+ * ideal: it keeps the band near the clip levels that the fit leaves out to avoid a selection bias (see
+ * {@code core.Censoring}), so the fit's spread can exceed it a little where pixels clip. Derivatives by central
+ * differences of the pixel-integrated model.
  */
 public final class SceneCramerRao {
 
 	static final double STEP = 1e-3;
 	/** Expected values at or above this are clipped on 8 bits: censored. */
 	public static final double SATURATION = 254.5;
+	/** Expected values at or below this read 0 on 8 bits: censored. */
+	public static final double FLOOR = 0.5;
 
 	private final double[][] inverse;
 	private final int perParticle;
@@ -65,7 +70,7 @@ public final class SceneCramerRao {
 		final double[] weight = new double[width * height];
 		for (int i = 0; i < weight.length; i++) {
 			final double v = model.pixels()[i];
-			weight[i] = v >= SATURATION ? 0 : 1 / scene.variance(v);
+			weight[i] = v >= SATURATION || v <= FLOOR ? 0 : 1 / scene.variance(v);
 		}
 		final double[][] fisher = new double[np][np];
 		for (int a = 0; a < np; a++)

@@ -42,7 +42,7 @@ public final class SceneStudy {
 	 * @param flagged spots with a warning flag, over all frames
 	 * @param sigmaRatioMin smallest reported sigma / observed spread, over particles and axes
 	 * @param sigmaRatioMax largest
-	 * @param clipped pixels clipped at 255, over all frames
+	 * @param clipped pixels clipped at 255 or 0, over all frames
 	 */
 	public record Result(String scene, String particle, int images, double meanError, double worstPairMean,
 		double std, double crb, double worstStdOverCrb, double bias, String biasWhere, int lost, int extra,

@@ -1,0 +1,51 @@
+package io.github.contacttracker.core;
+
+/**
+ * Which pixels a least-squares fit of a model to the data may use when the pixel type clips: saturated cores at its
+ * maximum, and dark rings pushed below 0 by bright particles. A clipped pixel's true value is unknown, so it is left
+ * out. Leaving out only the clipped ones is not enough: near a clip level the pixels kept are those whose noise
+ * happened to pull them away from it, a selection bias of the order of the noise. So a pixel is also left out where
+ * the model, at the current estimate and not the data, comes within {@value #MARGIN_SIGMAS} noise standard
+ * deviations of a clip level: whether such a pixel is used then does not depend on its own noise, and the pixels
+ * used are (to within the normal tail beyond the margin) never clipped. The price is the information of that band.
+ */
+final class Censoring {
+
+	/** Margin between the model and a clip level, in noise standard deviations (0.1% of normal noise goes beyond). */
+	static final double MARGIN_SIGMAS = 3;
+
+	/** No clip levels (floating-point data): every pixel usable. */
+	static final Censoring NONE = new Censoring(Double.NEGATIVE_INFINITY, Double.POSITIVE_INFINITY, 0);
+
+	private final double floor, saturation, lowest, highest;
+
+	private Censoring(final double floor, final double saturation, final double margin) {
+		this.floor = floor;
+		this.saturation = saturation;
+		lowest = floor + margin;
+		highest = saturation - margin;
+	}
+
+	/**
+	 * @param plane the data, with its clip levels
+	 * @param noise the noise standard deviation (grey levels)
+	 */
+	static Censoring of(final Plane plane, final double noise) {
+		return new Censoring(plane.floor(), plane.saturation(), MARGIN_SIGMAS * Math.max(noise, 0));
+	}
+
+	/** @return whether an observed value is at a clip level (its true value unknown) */
+	boolean clipped(final double value) {
+		return value <= floor || value >= saturation;
+	}
+
+	/** @return whether a pixel whose model value is {@code model} is usable: not within the margin of a clip level */
+	boolean usable(final double model) {
+		return model > lowest && model < highest;
+	}
+
+	/** @return whether any model value can be unusable (the pixel type clips) */
+	boolean active() {
+		return lowest > Double.NEGATIVE_INFINITY || highest < Double.POSITIVE_INFINITY;
+	}
+}
