@@ -120,6 +120,106 @@ final class GroupFit {
 		final EmpiricalProfile profile, final double window, final Censoring censoring)
 	{
 		final int n = group.length, np = PER_PARTICLE * n + BACKGROUND;
+		final Pixels candidates = candidates(plane, ps, e, group, profile, window, censoring);
+		if (candidates.count() <= np) return 0;
+		final double[] p = new double[np];
+		for (int q = 0; q < n; q++) {
+			final Estimate s = e[group[q]];
+			p[PER_PARTICLE * q] = s.x();
+			p[PER_PARTICLE * q + 1] = s.y();
+			p[PER_PARTICLE * q + 2] = amplitudeOf(s);
+			p[PER_PARTICLE * q + 3] = scaleOf(s);
+		}
+		p[np - BACKGROUND] = profile.background();
+		final boolean[] use = censoring.active() ? new boolean[candidates.count()] : null;
+		if (use != null) select(candidates, p, n, profile, censoring, use);
+		Pixels pixels = use == null ? candidates : candidates.subset(use);
+		if (pixels.count() <= np) return 0;
+		int selections = 1;
+		final double[][] jtj = new double[np][np];
+		final double[] jtr = new double[np];
+		double rss = accumulate(pixels, p, n, profile, jtj, jtr);
+		double mu = 1e-3;
+		int it = 1;
+		boolean converged = false;
+		// Whether J^T J was computed at p. A step is evaluated by the residuals alone (a third of the cost of J^T J);
+		// once accepted, the next step comes from the previous J^T J with the new J^T r (a chord step): near the
+		// solution J^T J hardly changes, so that step is as good, and when it is below TOLERANCE the fit has
+		// settled. Otherwise J^T J is computed at p first.
+		boolean hessianAtP = true;
+		for (; it <= MAX_ITERATIONS; it++) {
+			final double[][] a = new double[np][np];
+			for (int i = 0; i < np; i++) {
+				a[i] = jtj[i].clone();
+				a[i][i] += mu * jtj[i][i];
+			}
+			final double[] step = SymmetricSolver.solve(a, jtr);
+			if (step == null) break;
+			final double[] trial = p.clone();
+			boolean allowed = true;
+			for (int i = 0; i < np; i++)
+				trial[i] += step[i];
+			for (int q = 0; q < n; q++) {
+				final double sc = trial[PER_PARTICLE * q + 3];
+				if (!(sc >= MIN_SCALE && sc <= MAX_SCALE)) allowed = false;
+			}
+			double move = 0;
+			for (int q = 0; q < n; q++)
+				move = Math.max(move, Math.hypot(step[PER_PARTICLE * q], step[PER_PARTICLE * q + 1]));
+			if (allowed && move < TOLERANCE) {
+				// Settled: the step is taken without evaluating the model there (a pass over every pixel, a third of
+				// the fit's time); J^T J and the residuals at p serve the uncertainties as well. Where the pixel type
+				// clips, the pixels are chosen again at the settled model, and if the choice changed the fit goes on.
+				System.arraycopy(trial, 0, p, 0, np);
+				if (use != null && selections < MAX_SELECTIONS && select(candidates, p, n, profile, censoring, use)) {
+					selections++;
+					final Pixels chosen = candidates.subset(use);
+					if (chosen.count() <= np) break;
+					pixels = chosen;
+					rss = accumulate(pixels, p, n, profile, jtj, jtr);
+					hessianAtP = true;
+					mu = 1e-3;
+					continue;
+				}
+				converged = true;
+				break;
+			}
+			if (!hessianAtP) { // a chord step that was not small: J^T J at p, and the step again from it
+				rss = accumulate(pixels, p, n, profile, jtj, jtr);
+				hessianAtP = true;
+				continue;
+			}
+			final double[] tr = new double[np];
+			final double trialRss = allowed ? accumulate(pixels, trial, n, profile, null, tr) : Double.POSITIVE_INFINITY;
+			if (trialRss <= rss) {
+				System.arraycopy(trial, 0, p, 0, np);
+				System.arraycopy(tr, 0, jtr, 0, np);
+				hessianAtP = false;
+				rss = trialRss;
+				mu = Math.max(mu / 10, 1e-9);
+			}
+			else mu *= 10;
+		}
+		final double[][] inv = SymmetricSolver.invert(jtj);
+		if (inv == null) return 0;
+		final double s2 = rss / (pixels.count() - np);
+		for (int q = 0; q < n; q++) {
+			final Estimate old = e[group[q]];
+			final int b = PER_PARTICLE * q;
+			e[group[q]] = new Estimate(p[b], p[b + 1], old.flags(), old.secondArea(), old.iterations(), old.solve(), Math
+				.sqrt(s2 * inv[b][b]), Math.sqrt(s2 * inv[b + 1][b + 1]), p[b + 2], p[b + 3]);
+		}
+		return converged ? it : -it;
+	}
+
+	/**
+	 * The pixels a group's fit may use: within each member's window (at its starting centre and scale), not clipped,
+	 * with the light of the reliable particles outside the group at their current centres, amplitudes and scales.
+	 * (Apart from the fit's loop, so that the compiler sees small methods, each with its own pixel loop.)
+	 */
+	private static Pixels candidates(final Plane plane, final Particle[] ps, final Estimate[] e, final int[] group,
+		final EmpiricalProfile profile, final double window, final Censoring censoring)
+	{
 		final double R = profile.radius(), W = Math.min(R, window);
 		// The pixels: within each member's window (at its starting centre and scale), not clipped.
 		int x0 = Integer.MAX_VALUE, y0 = Integer.MAX_VALUE, x1 = Integer.MIN_VALUE, y1 = Integer.MIN_VALUE;
@@ -156,7 +256,6 @@ final class GroupFit {
 				py[count] = y;
 				pv[count++] = v;
 			}
-		if (count <= np) return 0;
 		// The light of reliable particles outside the group, at their current centres, amplitudes and scales.
 		final double[] fixed = new double[count];
 		for (int k = 0; k < ps.length; k++) {
@@ -168,91 +267,7 @@ final class GroupFit {
 				if (d2 < reach * reach) fixed[i] += ka * profile.lookup(Math.sqrt(d2) / ks);
 			}
 		}
-		final double[] p = new double[np];
-		for (int q = 0; q < n; q++) {
-			final Estimate s = e[group[q]];
-			p[PER_PARTICLE * q] = s.x();
-			p[PER_PARTICLE * q + 1] = s.y();
-			p[PER_PARTICLE * q + 2] = amplitudeOf(s);
-			p[PER_PARTICLE * q + 3] = scaleOf(s);
-		}
-		p[np - BACKGROUND] = profile.background();
-		final Pixels candidates = new Pixels(px, py, pv, fixed, count, mx, my, unit);
-		final boolean[] use = censoring.active() ? new boolean[count] : null;
-		if (use != null) select(candidates, p, n, profile, censoring, use);
-		Pixels pixels = use == null ? candidates : candidates.subset(use);
-		if (pixels.count() <= np) return 0;
-		int selections = 1;
-		final double[][] jtj = new double[np][np];
-		final double[] jtr = new double[np];
-		double rss = accumulate(pixels, p, n, profile, jtj, jtr);
-		double mu = 1e-3;
-		int it = 1;
-		boolean converged = false;
-		for (; it <= MAX_ITERATIONS; it++) {
-			final double[][] a = new double[np][np];
-			for (int i = 0; i < np; i++) {
-				a[i] = jtj[i].clone();
-				a[i][i] += mu * jtj[i][i];
-			}
-			final double[] step = SymmetricSolver.solve(a, jtr);
-			if (step == null) break;
-			final double[] trial = p.clone();
-			boolean allowed = true;
-			for (int i = 0; i < np; i++)
-				trial[i] += step[i];
-			for (int q = 0; q < n; q++) {
-				final double sc = trial[PER_PARTICLE * q + 3];
-				if (!(sc >= MIN_SCALE && sc <= MAX_SCALE)) allowed = false;
-			}
-			double move = 0;
-			for (int q = 0; q < n; q++)
-				move = Math.max(move, Math.hypot(step[PER_PARTICLE * q], step[PER_PARTICLE * q + 1]));
-			if (allowed && move < TOLERANCE) {
-				// Settled: the step is taken without evaluating the model there (a pass over every pixel, a third of
-				// the fit's time); J^T J and the residuals at p serve the uncertainties as well. Where the pixel type
-				// clips, the pixels are chosen again at the settled model, and if the choice changed the fit goes on.
-				System.arraycopy(trial, 0, p, 0, np);
-				if (use != null && selections < MAX_SELECTIONS && select(candidates, p, n, profile, censoring, use)) {
-					selections++;
-					final Pixels chosen = candidates.subset(use);
-					if (chosen.count() <= np) break;
-					pixels = chosen;
-					for (int i = 0; i < np; i++) {
-						jtj[i] = new double[np];
-						jtr[i] = 0;
-					}
-					rss = accumulate(pixels, p, n, profile, jtj, jtr);
-					mu = 1e-3;
-					continue;
-				}
-				converged = true;
-				break;
-			}
-			final double[][] tj = new double[np][np];
-			final double[] tr = new double[np];
-			final double trialRss = allowed ? accumulate(pixels, trial, n, profile, tj, tr) : Double.POSITIVE_INFINITY;
-			if (trialRss <= rss) {
-				System.arraycopy(trial, 0, p, 0, np);
-				for (int i = 0; i < np; i++) {
-					jtj[i] = tj[i];
-					jtr[i] = tr[i];
-				}
-				rss = trialRss;
-				mu = Math.max(mu / 10, 1e-9);
-			}
-			else mu *= 10;
-		}
-		final double[][] inv = SymmetricSolver.invert(jtj);
-		if (inv == null) return 0;
-		final double s2 = rss / (pixels.count() - np);
-		for (int q = 0; q < n; q++) {
-			final Estimate old = e[group[q]];
-			final int b = PER_PARTICLE * q;
-			e[group[q]] = new Estimate(p[b], p[b + 1], old.flags(), old.secondArea(), old.iterations(), old.solve(), Math
-				.sqrt(s2 * inv[b][b]), Math.sqrt(s2 * inv[b + 1][b + 1]), p[b + 2], p[b + 3]);
-		}
-		return converged ? it : -it;
+		return new Pixels(px, py, pv, fixed, count, mx, my, unit);
 	}
 
 	/** The usable pixels are chosen at most this many times per fit (one pixel could flip back and forth). */
@@ -377,7 +392,8 @@ final class GroupFit {
 	}
 
 	/**
-	 * Fills J^T J and J^T r at parameters {@code p}; returns the residual sum of squares. This is the fit's inner
+	 * Fills J^T J (every entry; unless {@code jtj} is null) and J^T r at parameters {@code p}; returns the residual
+	 * sum of squares. This is the fit's inner
 	 * loop (most of {@code fit}'s time), so it is written for speed: a pixel's gradient is non-zero only for the
 	 * members within the profile's reach (usually one or two) and the background plane, so only their blocks are
 	 * updated, on a flat lower triangle; the background's own block does not depend on {@code p} and was summed once
@@ -393,7 +409,9 @@ final class GroupFit {
 		final int[] xs = px.x(), ys = px.y();
 		final double[] us = px.u(), vs = px.v(), values = px.value(), fixed = px.fixed();
 		final int count = px.count();
-		final double[] h = new double[np * np];
+		java.util.Arrays.fill(jtr, 0);
+		final boolean hessian = jtj != null;
+		final double[] h = hessian ? new double[np * np] : null;
 		final double[] g = new double[PER_PARTICLE * n];
 		final int[] within = new int[n];
 		final double pb = p[b0], pu = p[b0 + 1], pv = p[b0 + 2];
@@ -442,6 +460,7 @@ final class GroupFit {
 				jtr[ba + 1] += g1 * res;
 				jtr[ba + 2] += g2 * res;
 				jtr[ba + 3] += g3 * res;
+				if (!hessian) continue;
 				// the member's own block (lower triangle)
 				final int row0 = ba * np + ba, row1 = row0 + np, row2 = row1 + np, row3 = row2 + np;
 				h[row0] += g0 * g0;
@@ -498,6 +517,7 @@ final class GroupFit {
 		jtr[b0] = r0;
 		jtr[b0 + 1] = ru;
 		jtr[b0 + 2] = rv;
+		if (!hessian) return rss;
 		final double[] bg = px.backgroundBlock();
 		for (int a = 0; a < BACKGROUND; a++)
 			for (int b = 0; b <= a; b++)

@@ -273,9 +273,16 @@ public abstract class Plane {
 			final int t = integerThreshold(threshold);
 			if (t < 0) return;
 			final byte[] d = data;
-			final int off = y * width;
+			final int off = y * width, below = t - 1;
 			int start = -1;
 			for (int x = 0; x < width; x++) {
+				// outside a run, eight pixels below the threshold at once (the usual case): b >= t <=> t - 1 - b < 0
+				while (start < 0 && x + 8 <= width && ((below - (d[off + x] & 0xff)) | (below - (d[off + x + 1] & 0xff)) |
+					(below - (d[off + x + 2] & 0xff)) | (below - (d[off + x + 3] & 0xff)) | (below - (d[off + x + 4] &
+						0xff)) | (below - (d[off + x + 5] & 0xff)) | (below - (d[off + x + 6] & 0xff)) | (below - (d[off + x +
+							7] & 0xff))) >= 0)
+					x += 8;
+				if (x >= width) break;
 				if ((d[off + x] & 0xff) >= t) {
 					if (start < 0) start = x;
 				}
