@@ -57,7 +57,7 @@ final class AccuracyCommand implements Callable<Integer> {
 	String methodList;
 
 	@Option(names = "--scene", paramLabel = "S,...", description = "Instead of the paper's protocol, the harder " +
-		"scenes at contact (eval.SceneStudy): pair, chain4, triple, hex7, unlike, unlike13, ramp, saturated, or all.")
+		"scenes at contact (eval.SceneStudy): pair, chain4, triple, hex7, unlike, unlike13, ramp, saturated, photon, or all.")
 	String scene;
 
 	@Option(names = "--separations", paramLabel = "R,...", description = "Separations over the diameter (1 = " +

@@ -138,7 +138,7 @@ final class GroupFit {
 		int selections = 1;
 		final double[][] jtj = new double[np][np];
 		final double[] jtr = new double[np];
-		double rss = accumulate(pixels, p, n, profile, jtj, jtr);
+		double rss = accumulate(pixels, p, n, profile, jtj, jtr, null);
 		double mu = 1e-3;
 		int it = 1;
 		boolean converged = false;
@@ -147,6 +147,9 @@ final class GroupFit {
 		// solution J^T J hardly changes, so that step is as good, and when it is below TOLERANCE the fit has
 		// settled. Otherwise J^T J is computed at p first.
 		boolean hessianAtP = true;
+		// per member, the residuals' variance where its centre's information lies (see accumulate), from the latest
+		// residual pass; null: none, one variance for all pixels
+		double[] noise = null;
 		for (; it <= MAX_ITERATIONS; it++) {
 			final double[][] a = new double[np][np];
 			for (int i = 0; i < np; i++) {
@@ -176,8 +179,9 @@ final class GroupFit {
 					final Pixels chosen = candidates.subset(use);
 					if (chosen.count() <= np) break;
 					pixels = chosen;
-					rss = accumulate(pixels, p, n, profile, jtj, jtr);
+					rss = accumulate(pixels, p, n, profile, jtj, jtr, null);
 					hessianAtP = true;
+					noise = null;
 					mu = 1e-3;
 					continue;
 				}
@@ -185,16 +189,19 @@ final class GroupFit {
 				break;
 			}
 			if (!hessianAtP) { // a chord step that was not small: J^T J at p, and the step again from it
-				rss = accumulate(pixels, p, n, profile, jtj, jtr);
+				rss = accumulate(pixels, p, n, profile, jtj, jtr, null);
 				hessianAtP = true;
+				noise = null;
 				continue;
 			}
-			final double[] tr = new double[np];
-			final double trialRss = allowed ? accumulate(pixels, trial, n, profile, null, tr) : Double.POSITIVE_INFINITY;
+			final double[] tr = new double[np], trialNoise = new double[PER_PARTICLE * n];
+			final double trialRss = allowed ? accumulate(pixels, trial, n, profile, null, tr, trialNoise)
+				: Double.POSITIVE_INFINITY;
 			if (trialRss <= rss) {
 				System.arraycopy(trial, 0, p, 0, np);
 				System.arraycopy(tr, 0, jtr, 0, np);
 				hessianAtP = false;
+				noise = trialNoise;
 				rss = trialRss;
 				mu = Math.max(mu / 10, 1e-9);
 			}
@@ -202,12 +209,14 @@ final class GroupFit {
 		}
 		final double[][] inv = SymmetricSolver.invert(jtj);
 		if (inv == null) return 0;
-		final double s2 = rss / (pixels.count() - np);
+		final double dof = pixels.count() / (double) (pixels.count() - np), s2 = rss / (pixels.count() - np);
 		for (int q = 0; q < n; q++) {
 			final Estimate old = e[group[q]];
 			final int b = PER_PARTICLE * q;
+			final double vx = noise != null && noise[b] > 0 ? dof * noise[b + 1] / noise[b] : s2;
+			final double vy = noise != null && noise[b + 2] > 0 ? dof * noise[b + 3] / noise[b + 2] : s2;
 			e[group[q]] = new Estimate(p[b], p[b + 1], old.flags(), old.secondArea(), old.iterations(), old.solve(), Math
-				.sqrt(s2 * inv[b][b]), Math.sqrt(s2 * inv[b + 1][b + 1]), p[b + 2], p[b + 3]);
+				.sqrt(vx * inv[b][b]), Math.sqrt(vy * inv[b + 1][b + 1]), p[b + 2], p[b + 3]);
 		}
 		return converged ? it : -it;
 	}
@@ -393,14 +402,19 @@ final class GroupFit {
 
 	/**
 	 * Fills J^T J (every entry; unless {@code jtj} is null) and J^T r at parameters {@code p}; returns the residual
-	 * sum of squares. This is the fit's inner
+	 * sum of squares. With {@code noise} (not null), adds per member {@code b = 4 q}: {@code sum w_x}, {@code sum w_x
+	 * r^2}, {@code sum w_y}, {@code sum w_y r^2}, with {@code w_x, w_y} the squares of the model's derivatives with
+	 * respect to the member's x and y: their ratios are the residuals' variance weighted by where each coordinate's
+	 * information lies. That variance, rather than one for all pixels, gives the centres' standard errors: the same
+	 * for uniform noise, right also when the noise grows with the light (photon noise), where one variance for all
+	 * pixels, mostly background, understates the spread of the centres. This is the fit's inner
 	 * loop (most of {@code fit}'s time), so it is written for speed: a pixel's gradient is non-zero only for the
 	 * members within the profile's reach (usually one or two) and the background plane, so only their blocks are
 	 * updated, on a flat lower triangle; the background's own block does not depend on {@code p} and was summed once
 	 * ({@link Pixels#backgroundBlock}).
 	 */
 	private static double accumulate(final Pixels px, final double[] p, final int n, final EmpiricalProfile profile,
-		final double[][] jtj, final double[] jtr)
+		final double[][] jtj, final double[] jtr, final double[] noise)
 	{
 		final int np = PER_PARTICLE * n + BACKGROUND, b0 = np - BACKGROUND;
 		final double R = profile.radius();
@@ -460,6 +474,13 @@ final class GroupFit {
 				jtr[ba + 1] += g1 * res;
 				jtr[ba + 2] += g2 * res;
 				jtr[ba + 3] += g3 * res;
+				if (noise != null) {
+					final double r2 = res * res, wx = g0 * g0, wy = g1 * g1;
+					noise[ba] += wx;
+					noise[ba + 1] += wx * r2;
+					noise[ba + 2] += wy;
+					noise[ba + 3] += wy * r2;
+				}
 				if (!hessian) continue;
 				// the member's own block (lower triangle)
 				final int row0 = ba * np + ba, row1 = row0 + np, row2 = row1 + np, row3 = row2 + np;

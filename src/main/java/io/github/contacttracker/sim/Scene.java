@@ -29,7 +29,7 @@ public record Scene(String key, ParticleType type, List<Particle> particles, dou
 
 	/** The scenes {@link #of} knows, in order. */
 	public static final List<String> KEYS = List.of("pair", "chain4", "triple", "hex7", "unlike", "unlike13", "ramp",
-		"saturated");
+		"saturated", "photon");
 
 	/** Grey levels per photon of the photon-noise scenes: about 300 photons at a background of 60. */
 	public static final double PHOTON_GAIN = 0.2;
@@ -70,17 +70,24 @@ public record Scene(String key, ParticleType type, List<Particle> particles, dou
 			case "unlike" -> plain("unlike", type, unlike(d, 1.2, 1.1));
 			case "unlike13" -> plain("unlike13", type, unlike(d, 1.3, 1.15));
 			case "ramp" -> new Scene("ramp", type, line(2, d), 0.05, 0.03, PHOTON_GAIN, READ_NOISE, th);
-			case "saturated" -> {
-				final List<Particle> bright = new ArrayList<>();
-				for (final Particle p : line(2, d))
-					bright.add(new Particle(p.x, p.y, 1, SATURATED_BRIGHTNESS));
-				// the threshold keeps its place on the (brighter) profile
-				yield new Scene("saturated", type, bright, 0, 0, 0, 0, type.background() + SATURATED_BRIGHTNESS * (th -
-					type.background()));
-			}
+			case "saturated" -> bright("saturated", type, d, 0, 0);
+			// photon noise where it matters most: bright particles, whose noise grows far above the background's
+			case "photon" -> bright("photon", type, d, PHOTON_GAIN, READ_NOISE);
 			default -> throw new InvalidInputException("--scene must be among " + String.join(",", KEYS) + ", not '" +
 				key + "'");
 		};
+	}
+
+	/** A pair {@link #SATURATED_BRIGHTNESS} times as bright, cores clipped at 255, with the given noise. */
+	private static Scene bright(final String key, final ParticleType type, final double d, final double photonGain,
+		final double readNoise)
+	{
+		final List<Particle> bright = new ArrayList<>();
+		for (final Particle p : line(2, d))
+			bright.add(new Particle(p.x, p.y, 1, SATURATED_BRIGHTNESS));
+		// the threshold keeps its place on the (brighter) profile
+		return new Scene(key, type, bright, 0, 0, photonGain, readNoise, type.background() + SATURATED_BRIGHTNESS * (
+			type.threshold() - type.background()));
 	}
 
 	private static Scene plain(final String key, final ParticleType type, final List<Particle> ps) {

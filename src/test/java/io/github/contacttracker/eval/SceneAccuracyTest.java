@@ -56,6 +56,20 @@ class SceneAccuracyTest {
 	 * at 0 as data pushed the pair 2.8 nm apart (1.4 nm per particle); leaving out only those, and the saturated ones,
 	 * would still keep near each clip level just the pixels whose noise pulled them away from it.
 	 */
+	/**
+	 * Photon noise on bright particles: the noise under them is far above the background's. With one variance for
+	 * all of a group's pixels the reported sigma was 0.64 of the observed spread here; weighted by where the centres'
+	 * information lies, it must be within a factor 1.5 of it (40 images: the spread itself is known to about 11%).
+	 */
+	@Test
+	void reportedSigmaFollowsPhotonNoise() {
+		final SceneStudy.Result r = new SceneStudy(Method.FIT, 2).run(Scene.of("photon", PaperParticles.silica553()),
+			40, 7);
+		check(r, r.std(), 40);
+		assertTrue(r.sigmaRatioMin() > 1 / 1.5 && r.sigmaRatioMax() < 1.5, "reported sigma / spread " + r
+			.sigmaRatioMin() + " to " + r.sigmaRatioMax());
+	}
+
 	@Test
 	void saturatedLongRangePairIsUnbiased() {
 		final SceneStudy.Result r = new SceneStudy(Method.FIT, 2).run(Scene.of("saturated", PaperParticles
