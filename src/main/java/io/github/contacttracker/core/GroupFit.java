@@ -138,7 +138,7 @@ final class GroupFit {
 		int selections = 1;
 		final double[][] jtj = new double[np][np];
 		final double[] jtr = new double[np];
-		double rss = accumulate(pixels, p, n, profile, jtj, jtr, null);
+		double rss = accumulate(pixels, p, n, profile, jtj, jtr, null, null);
 		double mu = 1e-3;
 		int it = 1;
 		boolean converged = false;
@@ -150,6 +150,8 @@ final class GroupFit {
 		// per member, the residuals' variance where its centre's information lies (see accumulate), from the latest
 		// residual pass; null: none, one variance for all pixels
 		double[] noise = null;
+		// the model on the pixels at the latest point accepted by a residual pass, for the re-choice of the pixels
+		Evaluated evaluated = null;
 		for (; it <= MAX_ITERATIONS; it++) {
 			final double[][] a = new double[np][np];
 			for (int i = 0; i < np; i++) {
@@ -174,14 +176,19 @@ final class GroupFit {
 				// the fit's time); J^T J and the residuals at p serve the uncertainties as well. Where the pixel type
 				// clips, the pixels are chosen again at the settled model, and if the choice changed the fit goes on.
 				System.arraycopy(trial, 0, p, 0, np);
-				if (use != null && selections < MAX_SELECTIONS && select(candidates, p, n, profile, censoring, use)) {
+				// chosen at the point of the latest residual pass, whose model is known on the pixels in use (the
+				// settled point is within TOLERANCE of it)
+				if (use != null && selections < MAX_SELECTIONS && (evaluated == null ? select(candidates, p, n, profile,
+					censoring, use) : select(candidates, evaluated.p(), n, profile, censoring, use, evaluated.pixels(),
+						evaluated.models()))) {
 					selections++;
 					final Pixels chosen = candidates.subset(use);
 					if (chosen.count() <= np) break;
 					pixels = chosen;
-					rss = accumulate(pixels, p, n, profile, jtj, jtr, null);
+					rss = accumulate(pixels, p, n, profile, jtj, jtr, null, null);
 					hessianAtP = true;
 					noise = null;
+					evaluated = null;
 					mu = 1e-3;
 					continue;
 				}
@@ -189,19 +196,22 @@ final class GroupFit {
 				break;
 			}
 			if (!hessianAtP) { // a chord step that was not small: J^T J at p, and the step again from it
-				rss = accumulate(pixels, p, n, profile, jtj, jtr, null);
+				rss = accumulate(pixels, p, n, profile, jtj, jtr, null, null);
 				hessianAtP = true;
 				noise = null;
+				evaluated = null;
 				continue;
 			}
 			final double[] tr = new double[np], trialNoise = new double[PER_PARTICLE * n];
-			final double trialRss = allowed ? accumulate(pixels, trial, n, profile, null, tr, trialNoise)
+			final double[] trialModels = use != null ? new double[pixels.count()] : null;
+			final double trialRss = allowed ? accumulate(pixels, trial, n, profile, null, tr, trialNoise, trialModels)
 				: Double.POSITIVE_INFINITY;
 			if (trialRss <= rss) {
 				System.arraycopy(trial, 0, p, 0, np);
 				System.arraycopy(tr, 0, jtr, 0, np);
 				hessianAtP = false;
 				noise = trialNoise;
+				evaluated = new Evaluated(pixels, trial, trialModels);
 				rss = trialRss;
 				mu = Math.max(mu / 10, 1e-9);
 			}
@@ -279,6 +289,9 @@ final class GroupFit {
 		return new Pixels(px, py, pv, fixed, count, mx, my, unit);
 	}
 
+	/** The model on a fit's pixels at parameters {@code p}, as a residual pass computed it. */
+	private record Evaluated(Pixels pixels, double[] p, double[] models) {}
+
 	/** The usable pixels are chosen at most this many times per fit (one pixel could flip back and forth). */
 	static final int MAX_SELECTIONS = 5;
 
@@ -290,6 +303,18 @@ final class GroupFit {
 	private static boolean select(final Pixels candidates, final double[] p, final int n,
 		final EmpiricalProfile profile, final Censoring censoring, final boolean[] use)
 	{
+		return select(candidates, p, n, profile, censoring, use, null, null);
+	}
+
+	/**
+	 * As {@link #select(Pixels, double[], int, EmpiricalProfile, Censoring, boolean[])}, with the model at {@code p}
+	 * already known on the pixels {@code known} (a subset of the candidates; {@code knownModels} in its order) from
+	 * the fit's latest pass: only the other candidates are evaluated.
+	 */
+	private static boolean select(final Pixels candidates, final double[] p, final int n,
+		final EmpiricalProfile profile, final Censoring censoring, final boolean[] use, final Pixels known,
+		final double[] knownModels)
+	{
 		final int b0 = PER_PARTICLE * n;
 		boolean changed = false;
 		if (withinBounds(candidates, p, n, profile, censoring)) { // usually: no model value comes near a clip level
@@ -299,7 +324,17 @@ final class GroupFit {
 			}
 			return changed;
 		}
+		final double[] models = new double[candidates.count()];
+		java.util.Arrays.fill(models, Double.NaN);
+		if (known != null) for (int j = 0; j < known.count(); j++)
+			models[known.candidate(j)] = knownModels[j];
 		for (int i = 0; i < candidates.count(); i++) {
+			if (!Double.isNaN(models[i])) {
+				final boolean usable = censoring.usable(models[i]);
+				changed |= usable != use[i];
+				use[i] = usable;
+				continue;
+			}
 			double model = p[b0] + p[b0 + 1] * candidates.u()[i] + p[b0 + 2] * candidates.v()[i] + candidates.fixed()[i];
 			for (int q = 0; q < n; q++) {
 				final int b = PER_PARTICLE * q;
@@ -344,19 +379,25 @@ final class GroupFit {
 	 * for every iteration.
 	 */
 	private record Pixels(int[] x, int[] y, double[] value, double[] fixed, int count, double[] u, double[] v,
-		double[] backgroundBlock)
+		double[] backgroundBlock, int[] candidates)
 	{
 
 		Pixels(final int[] x, final int[] y, final double[] value, final double[] fixed, final int count,
 			final double mx, final double my, final double unit)
 		{
-			this(x, y, value, fixed, count, planeCoordinate(x, count, mx, unit), planeCoordinate(y, count, my, unit));
+			this(x, y, value, fixed, count, planeCoordinate(x, count, mx, unit), planeCoordinate(y, count, my, unit),
+				null);
+		}
+
+		/** @return the index among the candidates of pixel {@code j} (a subset's; the candidates' own: j) */
+		int candidate(final int j) {
+			return candidates == null ? j : candidates[j];
 		}
 
 		private Pixels(final int[] x, final int[] y, final double[] value, final double[] fixed, final int count,
-			final double[] u, final double[] v)
+			final double[] u, final double[] v, final int[] candidates)
 		{
-			this(x, y, value, fixed, count, u, v, backgroundBlock(u, v, count));
+			this(x, y, value, fixed, count, u, v, backgroundBlock(u, v, count), candidates);
 		}
 
 		/** The background plane's block of J^T J, {1, u, v} x {1, u, v} row by row: the same at every step. */
@@ -380,8 +421,10 @@ final class GroupFit {
 			if (m == count) return this;
 			final int[] sx = new int[m], sy = new int[m];
 			final double[] sv = new double[m], sf = new double[m], su = new double[m], sw = new double[m];
+			final int[] from = new int[m];
 			for (int i = 0, j = 0; i < count; i++) {
 				if (!keep[i]) continue;
+				from[j] = candidate(i);
 				sx[j] = x[i];
 				sy[j] = y[i];
 				sv[j] = value[i];
@@ -389,7 +432,7 @@ final class GroupFit {
 				su[j] = u[i];
 				sw[j++] = v[i];
 			}
-			return new Pixels(sx, sy, sv, sf, m, su, sw);
+			return new Pixels(sx, sy, sv, sf, m, su, sw, from);
 		}
 
 		private static double[] planeCoordinate(final int[] c, final int count, final double origin, final double unit) {
@@ -414,7 +457,7 @@ final class GroupFit {
 	 * ({@link Pixels#backgroundBlock}).
 	 */
 	private static double accumulate(final Pixels px, final double[] p, final int n, final EmpiricalProfile profile,
-		final double[][] jtj, final double[] jtr, final double[] noise)
+		final double[][] jtj, final double[] jtr, final double[] noise, final double[] models)
 	{
 		final int np = PER_PARTICLE * n + BACKGROUND, b0 = np - BACKGROUND;
 		final double R = profile.radius();
@@ -462,6 +505,7 @@ final class GroupFit {
 				g[c + 3] = -d * rs;
 				within[m++] = b;
 			}
+			if (models != null) models[i] = model;
 			final double res = values[i] - model;
 			rss += res * res;
 			r0 += res;
