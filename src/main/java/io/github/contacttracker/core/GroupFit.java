@@ -132,13 +132,36 @@ final class GroupFit {
 		}
 		p[np - BACKGROUND] = profile.background();
 		final boolean[] use = censoring.active() ? new boolean[candidates.count()] : null;
-		if (use != null) select(candidates, p, n, profile, censoring, use);
-		Pixels pixels = use == null ? candidates : candidates.subset(use);
-		if (pixels.count() <= np) return 0;
-		int selections = 1;
 		final double[][] jtj = new double[np][np];
 		final double[] jtr = new double[np];
-		double rss = accumulate(pixels, p, n, profile, jtj, jtr, null, null);
+		double rss;
+		Pixels pixels = candidates;
+		if (use == null || allUsable(candidates, p, n, profile, censoring, use))
+			rss = accumulate(candidates, p, n, profile, jtj, jtr, null, null);
+		else {
+			// The first pass over every candidate chooses the pixels from the model it computes, and the pixels left
+			// out are then taken out of its sums (a pass over them alone): one pass, not a choice and a pass.
+			final double[] models = new double[candidates.count()];
+			rss = accumulate(candidates, p, n, profile, jtj, jtr, null, models);
+			final boolean[] out = new boolean[use.length];
+			for (int i = 0; i < use.length; i++) {
+				use[i] = censoring.usable(models[i]);
+				out[i] = !use[i];
+			}
+			pixels = candidates.subset(use);
+			if (pixels != candidates) {
+				final double[][] outJtj = new double[np][np];
+				final double[] outJtr = new double[np];
+				rss -= accumulate(candidates.subset(out), p, n, profile, outJtj, outJtr, null, null);
+				for (int a = 0; a < np; a++) {
+					jtr[a] -= outJtr[a];
+					for (int b = 0; b < np; b++)
+						jtj[a][b] -= outJtj[a][b];
+				}
+			}
+		}
+		if (pixels.count() <= np) return 0;
+		int selections = 1;
 		double mu = 1e-3;
 		int it = 1;
 		boolean converged = false;
@@ -304,6 +327,18 @@ final class GroupFit {
 		final EmpiricalProfile profile, final Censoring censoring, final boolean[] use)
 	{
 		return select(candidates, p, n, profile, censoring, use, null, null);
+	}
+
+	/**
+	 * Marks every candidate used and returns true if cheap bounds on the model show that all are usable; else returns
+	 * false and leaves {@code use} unchanged (the caller chooses from the model itself).
+	 */
+	private static boolean allUsable(final Pixels candidates, final double[] p, final int n,
+		final EmpiricalProfile profile, final Censoring censoring, final boolean[] use)
+	{
+		if (!withinBounds(candidates, p, n, profile, censoring)) return false;
+		java.util.Arrays.fill(use, true);
+		return true;
 	}
 
 	/**
