@@ -352,7 +352,8 @@ final class GroupFit {
 	{
 		final int b0 = PER_PARTICLE * n;
 		boolean changed = false;
-		if (withinBounds(candidates, p, n, profile, censoring)) { // usually: no model value comes near a clip level
+		// usually no model value comes near a clip level (a shortcut where the model is not known already)
+		if (known == null && withinBounds(candidates, p, n, profile, censoring)) {
 			for (int i = 0; i < candidates.count(); i++) {
 				changed |= !use[i];
 				use[i] = true;
