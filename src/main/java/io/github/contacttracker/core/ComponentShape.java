@@ -113,7 +113,7 @@ final class ComponentShape {
 		if (field == null || !Double.isFinite(cx) || !Double.isFinite(cy)) return new double[] { Double.NaN, 0 };
 		double sw = 0, swd = 0, swn = 0;
 		for (int i = 0; i < field.size; i++) {
-			final double gx = field.gx[i], gy = field.gy[i], g = Math.hypot(gx, gy);
+			final double gx = field.gx[i], gy = field.gy[i], g = Math.sqrt(gx * gx + gy * gy); // (hypot: 4x slower)
 			if (g == 0) continue;
 			// distance of c from the line through p along g: |g x (c - p)| / |g|
 			final double px = cx - field.x[i], py = cy - field.y[i];
@@ -243,7 +243,7 @@ final class ComponentShape {
 	/** Distance of (x, y) from the line through a and b. */
 	private static double distanceToLine(final long a, final long b, final int x, final int y) {
 		final double dx = px(b) - px(a), dy = py(b) - py(a);
-		return Math.abs(dx * (y - py(a)) - dy * (x - px(a))) / Math.hypot(dx, dy);
+		return Math.abs(dx * (y - py(a)) - dy * (x - px(a))) / Math.sqrt(dx * dx + dy * dy); // integers: exact squares
 	}
 
 	/** Convex hull (Andrew's monotone chain), counter-clockwise, collinear points dropped. */
