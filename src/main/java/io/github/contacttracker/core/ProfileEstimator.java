@@ -157,6 +157,20 @@ public final class ProfileEstimator {
 		for (int k = 0; k < n; k++)
 			maxScale = Math.max(maxScale, scale[k]);
 		final double mx = 0.5 * (w - 1), my = 0.5 * (h - 1);
+		// The previous model decides which pixels are too near a clip level. Where a pixel is within reach of one
+		// particle alone whose whole range of light keeps the model usable (or of none, and the background is), the
+		// decision is known without evaluating it.
+		final boolean[] aloneUsable = new boolean[n];
+		final int[] inReach = new int[n];
+		final double[] inReachR = new double[n];
+		final boolean backgroundUsable = previous == null || previous.censoring().usable(previous.profile()
+			.background());
+		if (previous != null) for (int k = 0; k < n; k++) {
+			final double a = previous.amplitudeNorm() * amp[k], b = previous.profile().background();
+			final double least = a * previous.profile().leastValue(), greatest = a * previous.profile().greatestValue();
+			aloneUsable[k] = previous.censoring().usable(b + Math.min(0, Math.min(least, greatest))) && previous
+				.censoring().usable(b + Math.max(0, Math.max(least, greatest)));
+		}
 		for (int y = 0; y < h; y++) {
 			int nn = 0;
 			for (int k = 0; k < n; k++)
@@ -164,9 +178,8 @@ public final class ProfileEstimator {
 			for (int x = 0; x < w; x++) {
 				final double v = plane.get(x, y);
 				if (v >= saturation || v <= floor) continue;
-				int len = 0;
+				int len = 0, reached = 0;
 				boolean skip = false;
-				double model = previous == null ? 0 : previous.profile().background();
 				for (int q = 0; q < nn && !skip; q++) {
 					final int k = near[q];
 					final double dx = x - cx[k], dy = y - cy[k], d2 = dx * dx + dy * dy, reach = radius * scale[k];
@@ -176,8 +189,8 @@ public final class ProfileEstimator {
 						break;
 					}
 					final double r = Math.sqrt(d2), u = r / (SPACING * scale[k]);
-					if (previous != null) model += previous.amplitudeNorm() * amp[k] * previous.profile().lookup(r /
-						(previous.scaleNorm() * scale[k]));
+					inReach[reached] = k;
+					inReachR[reached++] = r;
 					final int i = (int) u;
 					// the four cubic B-spline weights of knots i-1..i+2 (EmpiricalProfile.bspline at u - j)
 					final double f = u - i, g = 1 - f, f3 = f * f * f, g3 = g * g * g;
@@ -187,7 +200,8 @@ public final class ProfileEstimator {
 					len = term(idx, val, len, i + 1, a * (2.0 / 3 - g * g + 0.5 * g3));
 					len = term(idx, val, len, i + 2, a * f3 / 6);
 				}
-				if (skip || previous != null && !previous.censoring().usable(model)) continue;
+				if (skip || previous != null && !usable(previous, reached, inReach, inReachR, amp, scale, aloneUsable,
+					backgroundUsable)) continue;
 				if (len == 0 || len == 4 && idx[1] == idx[0] + 1 && idx[2] == idx[1] + 1 && idx[3] == idx[2] + 1) {
 					// The common cases without the general outer product: the background alone, or one particle's
 					// four distinct knots; every sum receives the same products as there.
@@ -270,6 +284,25 @@ public final class ProfileEstimator {
 		b2[c + 1] += bv * w1;
 		b2[c + 2] += bv * w2;
 		b2[c + 3] += bv * w3;
+	}
+
+	/**
+	 * @return whether the {@code previous} model keeps a pixel within reach of the {@code reached} particles
+	 *         {@code inReach} (at distances {@code inReachR}); evaluated only when the particle alone, or the
+	 *         background, does not settle it
+	 */
+	private static boolean usable(final Previous previous, final int reached, final int[] inReach,
+		final double[] inReachR, final double[] amp, final double[] scale, final boolean[] aloneUsable,
+		final boolean backgroundUsable)
+	{
+		if (reached == 0 && backgroundUsable || reached == 1 && aloneUsable[inReach[0]]) return true;
+		double model = previous.profile().background();
+		for (int q = 0; q < reached; q++) {
+			final int k = inReach[q];
+			model += previous.amplitudeNorm() * amp[k] * previous.profile().lookup(inReachR[q] / (previous.scaleNorm() *
+				scale[k]));
+		}
+		return previous.censoring().usable(model);
 	}
 
 	/** Appends knot {@code j}'s term {@code value} (if it has a coefficient and is not zero); returns the length. */
