@@ -7,11 +7,11 @@ import java.util.Random;
 
 import org.junit.jupiter.api.Test;
 
-/** The least-squares passes of {@link GroupFit}: the fast path for a group of one against the general one. */
-class GroupFitTest {
+/** The least-squares passes of {@link GroupFit} ({@link NormalEquations}): the fast path for a group of one against the general one. */
+class NormalEquationsTest {
 
 	/** A ringed profile (bright core, dark ring) reaching 30 px, and a noisy particle on a plane with others' light. */
-	private static GroupFit.Pixels pixels(final EmpiricalProfile profile, final double cx, final double cy) {
+	private static FitPixels pixels(final EmpiricalProfile profile, final double cx, final double cy) {
 		final Random random = new Random(11);
 		final int w = 70, h = 64, n = w * h;
 		final int[] xs = new int[n], ys = new int[n];
@@ -24,7 +24,7 @@ class GroupFitTest {
 				values[i] = 40 + 0.05 * x + fixed[i] + 1.1 * profile.value(Math.hypot(x - cx, y - cy) / 0.97) + 3 *
 					random.nextGaussian();
 			}
-		return new GroupFit.Pixels(xs, ys, values, fixed, n, 0.5 * (w - 1), 0.5 * (h - 1), 0.5 * (w - 1));
+		return new FitPixels(xs, ys, values, fixed, n, 0.5 * (w - 1), 0.5 * (h - 1), 0.5 * (w - 1));
 	}
 
 	private static EmpiricalProfile ringed() {
@@ -38,14 +38,14 @@ class GroupFitTest {
 	@Test
 	void singleMemberFastPathIsIdentical() {
 		final EmpiricalProfile profile = ringed();
-		final GroupFit.Pixels px = pixels(profile, 34.3, 31.8);
+		final FitPixels px = pixels(profile, 34.3, 31.8);
 		final double[] p = { 34.1, 32.0, 1.05, 0.98, 39, 0.4, -0.2 };
 		for (final boolean hessian : new boolean[] { true, false }) {
 			final double[][] jg = hessian ? new double[7][7] : null, js = hessian ? new double[7][7] : null;
 			final double[] rg = new double[7], rs = new double[7], ng = new double[4], ns = new double[4];
 			final double[] mg = new double[px.count()], ms = new double[px.count()];
-			final double rssGroup = GroupFit.accumulateGroup(px, p, 1, profile, jg, rg, ng, mg);
-			final double rssSingle = GroupFit.accumulateSingle(px, p, profile, js, rs, ns, ms);
+			final double rssGroup = NormalEquations.accumulateGroup(px, p, 1, profile, jg, rg, ng, mg);
+			final double rssSingle = NormalEquations.accumulateSingle(px, p, profile, js, rs, ns, ms);
 			assertEquals(rssGroup, rssSingle, 0);
 			assertArrayEquals(rg, rs, 0);
 			assertArrayEquals(ng, ns, 0);
