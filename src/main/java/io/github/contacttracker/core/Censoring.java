@@ -14,9 +14,6 @@ final class Censoring {
 	/** Margin between the model and a clip level, in noise standard deviations (0.1% of normal noise goes beyond). */
 	static final double MARGIN_SIGMAS = 3;
 
-	/** No clip levels (floating-point data): every pixel usable. */
-	static final Censoring NONE = new Censoring(Double.NEGATIVE_INFINITY, Double.POSITIVE_INFINITY, 0);
-
 	private final double floor, saturation, lowest, highest;
 
 	private Censoring(final double floor, final double saturation, final double margin) {
@@ -42,6 +39,11 @@ final class Censoring {
 	/** @return whether a pixel whose model value is {@code model} is usable: not within the margin of a clip level */
 	boolean usable(final double model) {
 		return model > lowest && model < highest;
+	}
+
+	/** @return whether every model value from {@code lo} to {@code hi} is usable (the band is an interval) */
+	boolean usableBetween(final double lo, final double hi) {
+		return usable(lo) && usable(hi);
 	}
 
 	/** @return whether any model value can be unusable (the pixel type clips) */

@@ -102,7 +102,8 @@ public final class ContactTracker {
 		final List<Particle> found = firstPasses(plane, params, discarded);
 		final double noise = NoiseEstimate.sigma(plane);
 		final Particle[] ps = withShapeFlags(found, noise, params.rOut());
-		final Refinement.Outcome outcome = params.method().refinement().refine(plane, ps, params, profile);
+		final Refinement.Outcome outcome = params.method().refinement().refine(plane, ps, params, profile,
+			noise);
 		final Estimate[] est = outcome.estimates();
 		final List<Localization> spots = new ArrayList<>(ps.length);
 		final List<Region> active = new ArrayList<>(), second = new ArrayList<>();

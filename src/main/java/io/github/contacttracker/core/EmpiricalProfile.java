@@ -59,14 +59,17 @@ public final class EmpiricalProfile {
 		return tableValue[i] + f * (tableValue[i + 1] - tableValue[i]);
 	}
 
-	/** @return the least value of P over its tables (at most 0: P is 0 beyond its radius) */
-	double leastValue() {
-		return least;
+	/**
+	 * @return the least of {@code amplitude P(r)} over all r, as the lookup gives it (at most 0: P is 0 beyond its
+	 *         radius): a bound on the light of a particle of that amplitude, for any scale and distance
+	 */
+	double leastLight(final double amplitude) {
+		return Math.min(0, Math.min(amplitude * least, amplitude * greatest));
 	}
 
-	/** @return the greatest value of P over its tables (at least 0) */
-	double greatestValue() {
-		return greatest;
+	/** @return the greatest of {@code amplitude P(r)} over all r, as the lookup gives it (at least 0) */
+	double greatestLight(final double amplitude) {
+		return Math.max(0, Math.max(amplitude * least, amplitude * greatest));
 	}
 
 	/** @return the table of P at multiples of {@link #TABLE_STEP} (not a copy: for inner loops, read only) */

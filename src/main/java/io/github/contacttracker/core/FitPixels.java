@@ -126,7 +126,8 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 		final double[] fixed = new double[count];
 		for (int k = 0; k < ps.length; k++) {
 			if (!ps[k].reliable() || GroupFit.contains(group, k)) continue;
-			final double kx = e[k].x(), ky = e[k].y(), ks = GroupFit.scaleOf(e[k]), ka = GroupFit.amplitudeOf(e[k]), reach = R * ks;
+			final double kx = e[k].x(), ky = e[k].y(), ks = GroupFit.scaleOf(e[k]), ka = GroupFit.amplitudeOf(e[k]);
+			final double reach = R * ks;
 			if (kx < x0 - reach || kx > x1 + reach || ky < y0 - reach || ky > y1 + reach) continue;
 			for (int i = 0; i < count; i++) {
 				final double dx = px[i] - kx, dy = py[i] - ky, d2 = dx * dx + dy * dy;
@@ -134,17 +135,6 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 			}
 		}
 		return new FitPixels(px, py, pv, fixed, count, mx, my, unit);
-	}
-
-	/**
-	 * Marks in {@code use} the candidates whose model value at parameters {@code p} the censoring rule keeps.
-	 *
-	 * @return whether any mark changed
-	 */
-	static boolean select(final FitPixels candidates, final double[] p, final int n,
-		final EmpiricalProfile profile, final Censoring censoring, final boolean[] use)
-	{
-		return select(candidates, p, n, profile, censoring, use, null, null);
 	}
 
 	/**
@@ -160,9 +150,12 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 	}
 
 	/**
-	 * As {@link #select(FitPixels, double[], int, EmpiricalProfile, Censoring, boolean[])}, with the model at {@code p}
-	 * already known on the pixels {@code known} (a subset of the candidates; {@code knownModels} in its order) from
-	 * the fit's latest pass: only the other candidates are evaluated.
+	 * Marks in {@code use} the candidates whose model value at parameters {@code p} the censoring rule keeps. Where
+	 * the model at {@code p} is already known, on the pixels {@code known} (a subset of the candidates; {@code
+	 * knownModels} in its order) from the fit's latest pass, only the other candidates are evaluated; both null: none
+	 * known.
+	 *
+	 * @return whether any mark changed
 	 */
 	static boolean select(final FitPixels candidates, final double[] p, final int n,
 		final EmpiricalProfile profile, final Censoring censoring, final boolean[] use, final FitPixels known,
@@ -219,11 +212,9 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 			hi = Math.max(hi, plane);
 		}
 		for (int q = 0; q < n; q++) {
-			final double a = p[GroupFit.PER_PARTICLE * q + 2], least = a * profile.leastValue(), greatest = a * profile
-				.greatestValue();
-			lo += Math.min(0, Math.min(least, greatest));
-			hi += Math.max(0, Math.max(least, greatest));
+			lo += profile.leastLight(p[GroupFit.PER_PARTICLE * q + 2]);
+			hi += profile.greatestLight(p[GroupFit.PER_PARTICLE * q + 2]);
 		}
-		return censoring.usable(lo) && censoring.usable(hi);
+		return censoring.usableBetween(lo, hi);
 	}
 }

@@ -204,9 +204,9 @@ final class GroupFit {
 				System.arraycopy(trial, 0, p, 0, np);
 				// chosen at the point of the latest residual pass, whose model is known on the pixels in use (the
 				// settled point is within TOLERANCE of it)
-				if (use != null && selections < MAX_SELECTIONS && (evaluated == null ? FitPixels.select(candidates, p, n, profile,
-					censoring, use) : FitPixels.select(candidates, evaluated.p(), n, profile, censoring, use, evaluated.pixels(),
-						evaluated.models()))) {
+				if (use != null && selections < MAX_SELECTIONS && (evaluated == null ? FitPixels.select(candidates, p, n,
+					profile, censoring, use, null, null) : FitPixels.select(candidates, evaluated.p(), n, profile, censoring,
+						use, evaluated.pixels(), evaluated.models()))) {
 					selections++;
 					final FitPixels chosen = candidates.subset(use);
 					if (chosen.count() <= np) break;
@@ -230,8 +230,8 @@ final class GroupFit {
 			}
 			final double[] tr = new double[np], trialNoise = new double[PER_PARTICLE * n];
 			final double[] trialModels = use != null ? new double[pixels.count()] : null;
-			final double trialRss = allowed ? NormalEquations.accumulate(pixels, trial, n, profile, null, tr, trialNoise, trialModels)
-				: Double.POSITIVE_INFINITY;
+			final double trialRss = allowed ? NormalEquations.accumulate(pixels, trial, n, profile, null, tr, trialNoise,
+				trialModels) : Double.POSITIVE_INFINITY;
 			if (trialRss <= rss) {
 				System.arraycopy(trial, 0, p, 0, np);
 				System.arraycopy(tr, 0, jtr, 0, np);

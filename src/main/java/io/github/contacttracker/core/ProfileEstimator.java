@@ -167,9 +167,8 @@ public final class ProfileEstimator {
 			.background());
 		if (previous != null) for (int k = 0; k < n; k++) {
 			final double a = previous.amplitudeNorm() * amp[k], b = previous.profile().background();
-			final double least = a * previous.profile().leastValue(), greatest = a * previous.profile().greatestValue();
-			aloneUsable[k] = previous.censoring().usable(b + Math.min(0, Math.min(least, greatest))) && previous
-				.censoring().usable(b + Math.max(0, Math.max(least, greatest)));
+			aloneUsable[k] = previous.censoring().usableBetween(b + previous.profile().leastLight(a), b + previous
+				.profile().greatestLight(a));
 		}
 		for (int y = 0; y < h; y++) {
 			int nn = 0;

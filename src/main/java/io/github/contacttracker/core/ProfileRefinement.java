@@ -29,14 +29,14 @@ final class ProfileRefinement implements Refinement {
 
 	@Override
 	public Outcome refine(final Plane plane, final Particle[] ps, final TrackerParameters params,
-		final EmpiricalProfile given)
+		final EmpiricalProfile given, final double noise)
 	{
 		final Outcome iterative = SecondPass.iterate(ps, params);
 		Estimate[] e = iterative.estimates();
 		if (ps.length == 0) return iterative;
 		// measured here: alternated with the centres until these stop moving (see StackTracker)
 		// pixels near the clip levels, chosen by the model (see Censoring), at the frame's noise
-		final Censoring censoring = Censoring.of(plane, NoiseEstimate.sigma(plane));
+		final Censoring censoring = Censoring.of(plane, noise);
 		final int rounds = given == null ? StackTracker.PROFILE_ROUNDS : 1;
 		EmpiricalProfile profile = given;
 		final int clear = Flag.SECOND_PASS.bit() | Flag.FELL_BACK.bit() | Flag.NOT_CONVERGED.bit();

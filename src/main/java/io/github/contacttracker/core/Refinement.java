@@ -19,12 +19,14 @@ interface Refinement {
 	 * @param params the parameters
 	 * @param profile a radial profile measured beforehand (over a stack), or {@code null}; only the profile
 	 *        methods use it, and measure their own on this frame when it is {@code null}
+	 * @param noise the frame's noise standard deviation ({@link NoiseEstimate}, measured once per frame)
 	 * @return one estimate per particle, same order
 	 */
-	Outcome refine(Plane plane, Particle[] particles, TrackerParameters params, EmpiricalProfile profile);
+	Outcome refine(Plane plane, Particle[] particles, TrackerParameters params, EmpiricalProfile profile,
+		double noise);
 
 	/** The {@code first} method: the first pass is final. */
-	Refinement FIRST_PASS = (plane, ps, params, profile) -> {
+	Refinement FIRST_PASS = (plane, ps, params, profile, noise) -> {
 		final Estimate[] e = new Estimate[ps.length];
 		for (int k = 0; k < ps.length; k++)
 			e[k] = ps[k].first;

@@ -15,13 +15,13 @@ final class SecondPass {
 	static final double TOLERANCE = 1e-4;
 
 	/** The {@code paper} method. */
-	static final Refinement PAPER = (plane, ps, params, profile) -> {
+	static final Refinement PAPER = (plane, ps, params, profile, noise) -> {
 		final double[][] discs = centres(firsts(ps));
 		return new Refinement.Outcome(passes(ps, discs, params), discs);
 	};
 
 	/** The {@code iterative} method. */
-	static final Refinement ITERATIVE = (plane, ps, params, profile) -> iterate(ps, params);
+	static final Refinement ITERATIVE = (plane, ps, params, profile, noise) -> iterate(ps, params);
 
 	private SecondPass() {}
 

@@ -102,14 +102,16 @@ public final class StackTracker {
 		List<FrameResult> previous = iterative;
 		EmpiricalProfile used = profile(previous, null, sample, frame, params.rOut());
 		List<FrameResult> round = pass(tracker, used, sample, frame, false, progress, cancelled);
-		for (int r = 1; r < PROFILE_ROUNDS && largestMove(previous, round) > PROFILE_TOLERANCE; r++) {
+		double move = largestMove(previous, round);
+		for (int r = 1; r < PROFILE_ROUNDS && move > PROFILE_TOLERANCE; r++) {
 			progress.total += sample.length;
 			previous = round;
 			used = profile(round, used, sample, frame, params.rOut());
 			round = pass(tracker, used, sample, frame, false, progress, cancelled);
+			move = largestMove(previous, round);
 		}
 		// no fixed point within the rounds: every centre rests on a profile that was still moving
-		final boolean settled = largestMove(previous, round) <= PROFILE_TOLERANCE;
+		final boolean settled = move <= PROFILE_TOLERANCE;
 		// settled: the profile of the last round is the fixed point's (to within the tolerance). The sample frames
 		// were just refined with that very profile: without regions to keep, their results are the final ones.
 		if (keepRegions) return flagged(pass(tracker, used, all, frame, true, progress, cancelled), settled);
@@ -215,7 +217,8 @@ public final class StackTracker {
 	 * profile the results were refined with, if any, chooses the pixels left out near clip levels.
 	 */
 	private static <T extends RealType<T>> EmpiricalProfile profile(final List<FrameResult> results,
-		final EmpiricalProfile fittedWith, final int[] indices, final IntFunction<? extends RandomAccessibleInterval<T>> frame, final double rOut)
+		final EmpiricalProfile fittedWith, final int[] indices,
+		final IntFunction<? extends RandomAccessibleInterval<T>> frame, final double rOut)
 	{
 		// One estimator per frame, merged in frame order: the sums, and so the results, do not depend on the
 		// number of threads.
