@@ -9,7 +9,7 @@ package io.github.contacttracker.core;
  * ({@link #select}): the pixels of {@link GroupFit}'s least squares, whose passes are {@link NormalEquations}.
  */
 record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, double[] u, double[] v,
-	double[] backgroundBlock, int[] candidates)
+	double[] backgroundBlock, double[] extent, int[] candidates)
 {
 
 	FitPixels(final int[] x, final int[] y, final double[] value, final double[] fixed, final int count,
@@ -27,20 +27,39 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 	private FitPixels(final int[] x, final int[] y, final double[] value, final double[] fixed, final int count,
 		final double[] u, final double[] v, final int[] candidates)
 	{
-		this(x, y, value, fixed, count, u, v, backgroundBlock(u, v, count), candidates);
+		this(x, y, value, fixed, count, u, v, summary(u, v, fixed, count), candidates);
 	}
 
-	/** The background plane's block of J^T J, {1, u, v} x {1, u, v} row by row: the same at every step. */
-	private static double[] backgroundBlock(final double[] u, final double[] v, final int count) {
+	private FitPixels(final int[] x, final int[] y, final double[] value, final double[] fixed, final int count,
+		final double[] u, final double[] v, final double[] summary, final int[] candidates)
+	{
+		this(x, y, value, fixed, count, u, v, java.util.Arrays.copyOf(summary, 9), java.util.Arrays.copyOfRange(
+			summary, 9, 15), candidates);
+	}
+
+	/**
+	 * In one pass: the background plane's block of J^T J, {1, u, v} x {1, u, v} row by row (the same at every
+	 * step), then the least and greatest u, v and other groups' light ({@link #extent}).
+	 */
+	private static double[] summary(final double[] u, final double[] v, final double[] fixed, final int count) {
 		double su = 0, sv = 0, suu = 0, suv = 0, svv = 0;
+		double u0 = Double.POSITIVE_INFINITY, u1 = Double.NEGATIVE_INFINITY, v0 = u0, v1 = u1, f0 = u0, f1 = u1;
 		for (int i = 0; i < count; i++) {
-			su += u[i];
-			sv += v[i];
-			suu += u[i] * u[i];
-			suv += u[i] * v[i];
-			svv += v[i] * v[i];
+			final double ui = u[i], vi = v[i], fi = fixed[i];
+			su += ui;
+			sv += vi;
+			suu += ui * ui;
+			suv += ui * vi;
+			svv += vi * vi;
+			// comparisons, not Math.min/max: no NaN here, and the client compiler calls those
+			if (ui < u0) u0 = ui;
+			if (ui > u1) u1 = ui;
+			if (vi < v0) v0 = vi;
+			if (vi > v1) v1 = vi;
+			if (fi < f0) f0 = fi;
+			if (fi > f1) f1 = fi;
 		}
-		return new double[] { count, su, sv, su, suu, suv, sv, suv, svv };
+		return new double[] { count, su, sv, su, suu, suv, sv, suv, svv, u0, u1, v0, v1, f0, f1 };
 	}
 
 	/** @return the pixels marked in {@code keep}, in the same order (these pixels if all are) */
@@ -75,6 +94,7 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 	/**
 	 * The pixels a group's fit may use: within each member's window (at its starting centre and scale), not clipped,
 	 * with the light of the reliable particles outside the group at their current centres, amplitudes and scales.
+	 * Read row by row, each row as the spans the members' windows cover: no membership test per pixel.
 	 * (Apart from the fit's loop, so that the compiler sees small methods, each with its own pixel loop.)
 	 */
 	static FitPixels gather(final Plane plane, final Particle[] ps, final Estimate[] e, final int[] group,
@@ -95,10 +115,6 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 		x1 = Math.min(plane.width() - 1, x1);
 		y1 = Math.min(plane.height() - 1, y1);
 		final double mx = 0.5 * (x0 + x1), my = 0.5 * (y0 + y1), unit = Math.max(1, 0.5 * (x1 - x0));
-		int count = 0;
-		final int cap = (x1 - x0 + 1) * (y1 - y0 + 1);
-		final int[] px = new int[cap], py = new int[cap];
-		final double[] pv = new double[cap];
 		final int n = group.length;
 		final double[] gx = new double[n], gy = new double[n], reach2 = new double[n];
 		for (int q = 0; q < n; q++) {
@@ -108,33 +124,113 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 			gy[q] = m.y();
 			reach2[q] = reach * reach;
 		}
-		for (int y = y0; y <= y1; y++)
-			for (int x = x0; x <= x1; x++) {
-				boolean inside = false;
-				for (int q = 0; q < n && !inside; q++) {
-					final double dx = x - gx[q], dy = y - gy[q];
-					inside = dx * dx + dy * dy < reach2[q];
-				}
-				if (!inside) continue;
-				final double v = plane.get(x, y);
-				if (censoring.clipped(v)) continue; // censored: its true value is unknown
-				px[count] = x;
-				py[count] = y;
-				pv[count++] = v;
+		final int cap = Math.max(0, (x1 - x0 + 1) * (y1 - y0 + 1));
+		final int[] px = new int[cap], py = new int[cap];
+		final double[] pv = new double[cap];
+		final int[] spans = new int[2 * n];
+		final int[] rowStart = new int[Math.max(0, y1 - y0 + 2)]; // the first pixel of each row, and the end
+		int count = 0;
+		for (int y = y0; y <= y1; y++) {
+			rowStart[y - y0] = count;
+			final int m = spans(y, x0, x1, gx, gy, reach2, spans);
+			for (int s = 0; s < m; s += 2) {
+				final int a = spans[s], b = spans[s + 1];
+				plane.row(y, a, b, pv, count);
+				count = keep(censoring, y, a, b, px, py, pv, count);
 			}
-		// The light of reliable particles outside the group, at their current centres, amplitudes and scales.
+		}
+		if (rowStart.length > 0) rowStart[rowStart.length - 1] = count;
+		// The light of reliable particles outside the group, at their current centres, amplitudes and scales: on
+		// the rows within their reach only.
 		final double[] fixed = new double[count];
 		for (int k = 0; k < ps.length; k++) {
 			if (!ps[k].reliable() || GroupFit.contains(group, k)) continue;
 			final double kx = e[k].x(), ky = e[k].y(), ks = GroupFit.scaleOf(e[k]), ka = GroupFit.amplitudeOf(e[k]);
 			final double reach = R * ks;
 			if (kx < x0 - reach || kx > x1 + reach || ky < y0 - reach || ky > y1 + reach) continue;
-			for (int i = 0; i < count; i++) {
-				final double dx = px[i] - kx, dy = py[i] - ky, d2 = dx * dx + dy * dy;
-				if (d2 < reach * reach) fixed[i] += ka * profile.lookup(Math.sqrt(d2) / ks);
-			}
+			final int from = rowStart[Math.max(0, (int) Math.floor(ky - reach) - y0)];
+			final int to = rowStart[Math.min(y1 - y0 + 1, (int) Math.ceil(ky + reach) - y0 + 1)];
+			addLight(px, py, fixed, from, to, kx, ky, ks, ka, reach, profile);
 		}
 		return new FitPixels(px, py, pv, fixed, count, mx, my, unit);
+	}
+
+	/** Adds to {@code fixed} over pixels {@code from} to {@code to} the light of a particle outside the group. */
+	private static void addLight(final int[] px, final int[] py, final double[] fixed, final int from, final int to,
+		final double kx, final double ky, final double ks, final double ka, final double reach,
+		final EmpiricalProfile profile)
+	{
+		for (int i = from; i < to; i++) {
+			final double dx = px[i] - kx, dy = py[i] - ky, d2 = dx * dx + dy * dy;
+			if (d2 < reach * reach) fixed[i] += ka * profile.lookup(Math.sqrt(d2) / ks);
+		}
+	}
+
+	/**
+	 * The x ranges of row {@code y} within {@code [x0, x1]} where some member's window holds a pixel ({@code (x -
+	 * gx)^2 + (y - gy)^2 < reach2}, the very test of a pixel), merged and in increasing order, as pairs of inclusive
+	 * ends in {@code out}; returns twice their number.
+	 */
+	private static int spans(final int y, final int x0, final int x1, final double[] gx, final double[] gy,
+		final double[] reach2, final int[] out)
+	{
+		int m = 0;
+		for (int q = 0; q < gx.length; q++) {
+			final double dy = y - gy[q], dy2 = dy * dy;
+			// the pixel nearest the centre: if it is out, the whole row is (the test grows with |x - gx|)
+			final int c = (int) Math.max(x0, Math.min(x1, Math.rint(gx[q])));
+			if (!within(c, y, gx[q], dy2, reach2[q])) continue;
+			final double half = Math.sqrt(Math.max(0, reach2[q] - dy2));
+			// the ends from the root, then made exact by the test itself
+			int a = (int) Math.max(x0, Math.min(c, Math.ceil(gx[q] - half)));
+			while (a > x0 && within(a - 1, y, gx[q], dy2, reach2[q]))
+				a--;
+			while (!within(a, y, gx[q], dy2, reach2[q]))
+				a++;
+			int b = (int) Math.min(x1, Math.max(c, Math.floor(gx[q] + half)));
+			while (b < x1 && within(b + 1, y, gx[q], dy2, reach2[q]))
+				b++;
+			while (!within(b, y, gx[q], dy2, reach2[q]))
+				b--;
+			// insert [a, b] in order of start, merging overlapping or adjacent spans
+			int i = 0;
+			while (i < m && out[i + 1] < a - 1)
+				i += 2;
+			int j = i;
+			while (j < m && out[j] <= b + 1) {
+				a = Math.min(a, out[j]);
+				b = Math.max(b, out[j + 1]);
+				j += 2;
+			}
+			// spans i .. j-2 are merged into [a, b]
+			System.arraycopy(out, j, out, i + 2, m - j);
+			m += i + 2 - j;
+			out[i] = a;
+			out[i + 1] = b;
+		}
+		return m;
+	}
+
+	private static boolean within(final int x, final int y, final double gx, final double dy2, final double reach2) {
+		final double dx = x - gx;
+		return dx * dx + dy2 < reach2;
+	}
+
+	/**
+	 * Keeps, of the values just read into {@code pv} from index {@code count} (row {@code y}, x from {@code a} to
+	 * {@code b}), the unclipped ones with their positions, in order; returns the new count.
+	 */
+	private static int keep(final Censoring censoring, final int y, final int a, final int b, final int[] px,
+		final int[] py, final double[] pv, int count)
+	{
+		for (int x = a, i = count; x <= b; x++, i++) {
+			final double v = pv[i];
+			if (censoring.clipped(v)) continue; // censored: its true value is unknown
+			px[count] = x;
+			py[count] = y;
+			pv[count++] = v;
+		}
+		return count;
 	}
 
 	/**
@@ -171,10 +267,14 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 			}
 			return changed;
 		}
-		final double[] models = new double[candidates.count()];
-		java.util.Arrays.fill(models, Double.NaN);
-		if (known != null) for (int j = 0; j < known.count(); j++)
-			models[known.candidate(j)] = knownModels[j];
+		final double[] models;
+		if (known != null && known.count() == candidates.count()) models = knownModels; // known everywhere
+		else {
+			models = new double[candidates.count()];
+			java.util.Arrays.fill(models, Double.NaN);
+			if (known != null) for (int j = 0; j < known.count(); j++)
+				models[known.candidate(j)] = knownModels[j];
+		}
 		for (int i = 0; i < candidates.count(); i++) {
 			if (!Double.isNaN(models[i])) {
 				final boolean usable = censoring.usable(models[i]);
@@ -196,21 +296,20 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 	}
 
 	/**
-	 * @return whether bounds on the model over all candidates, cheap to get (no root, no lookup), lie where the
-	 *         censoring rule keeps every pixel: background plane and other groups' light at their extremes, each
-	 *         member's light between its amplitude times the profile's least and greatest values (or 0)
+	 * @return whether bounds on the model over all candidates, at no cost per pixel, lie where the censoring rule
+	 *         keeps every pixel: the background plane at its extremes over the pixels' extent plus other groups'
+	 *         light at its extremes, each member's light between its amplitude times the profile's least and
+	 *         greatest values (or 0). Looser than the extremes of their sum; where they do not settle it, the caller
+	 *         chooses from the model itself, with the same result.
 	 */
 	private static boolean withinBounds(final FitPixels candidates, final double[] p, final int n,
 		final EmpiricalProfile profile, final Censoring censoring)
 	{
 		final int b0 = GroupFit.PER_PARTICLE * n;
-		double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
-		for (int i = 0; i < candidates.count(); i++) {
-			final double plane = p[b0] + p[b0 + 1] * candidates.u()[i] + p[b0 + 2] * candidates.v()[i] + candidates
-				.fixed()[i];
-			lo = Math.min(lo, plane);
-			hi = Math.max(hi, plane);
-		}
+		final double[] x = candidates.extent(); // u0, u1, v0, v1, f0, f1
+		final double pu = p[b0 + 1], pv = p[b0 + 2];
+		double lo = p[b0] + Math.min(pu * x[0], pu * x[1]) + Math.min(pv * x[2], pv * x[3]) + x[4];
+		double hi = p[b0] + Math.max(pu * x[0], pu * x[1]) + Math.max(pv * x[2], pv * x[3]) + x[5];
 		for (int q = 0; q < n; q++) {
 			lo += profile.leastLight(p[GroupFit.PER_PARTICLE * q + 2]);
 			hi += profile.greatestLight(p[GroupFit.PER_PARTICLE * q + 2]);

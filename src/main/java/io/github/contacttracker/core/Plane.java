@@ -44,6 +44,15 @@ public abstract class Plane {
 	public abstract double get(int x, int y);
 
 	/**
+	 * Copies the grey values of row {@code y} from {@code x0} to {@code x1} (inclusive) to {@code out}, from index
+	 * {@code at}: what {@link #get} gives, read in one loop (the fit's pixels are gathered by row spans).
+	 */
+	public void row(final int y, final int x0, final int x1, final double[] out, final int at) {
+		for (int x = x0; x <= x1; x++)
+			out[at + x - x0] = get(x, y);
+	}
+
+	/**
 	 * @return the grey level at which the pixel type clips (255 for 8 bits, 65535 for 16 bits), infinite for
 	 *         floating-point data: pixels at this level are saturated, their true value unknown (censored)
 	 */
@@ -264,6 +273,13 @@ public abstract class Plane {
 			return data[i] & 0xff;
 		}
 
+		@Override
+		public void row(final int y, final int x0, final int x1, final double[] out, final int at) {
+			final byte[] d = data;
+			for (int i = y * width + x0, end = y * width + x1, j = at; i <= end; i++, j++)
+				out[j] = d[i] & 0xff;
+		}
+
 		/**
 		 * As the general scan, on the bytes directly: the scan reads every pixel of every frame, and a short job
 		 * runs on code from the client compiler (scripts/contact-tracker), which does not inline the call per pixel.
@@ -307,6 +323,13 @@ public abstract class Plane {
 		int at(final int i) {
 			return data[i] & 0xffff;
 		}
+
+		@Override
+		public void row(final int y, final int x0, final int x1, final double[] out, final int at) {
+			final short[] d = data;
+			for (int i = y * width + x0, end = y * width + x1, j = at; i <= end; i++, j++)
+				out[j] = d[i] & 0xffff;
+		}
 	}
 
 	private static final class FloatPlane extends Plane {
@@ -320,6 +343,13 @@ public abstract class Plane {
 		@Override
 		public double get(final int x, final int y) {
 			return data[y * width + x];
+		}
+
+		@Override
+		public void row(final int y, final int x0, final int x1, final double[] out, final int at) {
+			final float[] d = data;
+			for (int i = y * width + x0, end = y * width + x1, j = at; i <= end; i++, j++)
+				out[j] = d[i];
 		}
 
 		@Override

@@ -1,8 +1,6 @@
 package io.github.contacttracker.io;
 
-import java.io.BufferedWriter;
 import java.io.IOException;
-import java.io.OutputStreamWriter;
 import java.io.Writer;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
@@ -28,26 +26,42 @@ public final class SpotCsvWriter {
 
 	/** @return the table as the body of an {@link AtomicFile} write (UTF-8) */
 	public static AtomicFile.Body body(final List<Localization> spots, final Calibration cal) {
-		return out -> {
-			final Writer w = new BufferedWriter(new OutputStreamWriter(out, StandardCharsets.UTF_8));
-			write(w, spots, cal);
-			w.flush();
-		};
+		// bytes straight from the text (all ASCII), not through a character encoder: a third of the writing time
+		return out -> write(spots, cal, block -> out.write(block.toString().getBytes(StandardCharsets.UTF_8)));
 	}
 
 	/** Writes the table to {@code out} (not closed). */
 	public static void write(final Writer out, final List<Localization> spots, final Calibration cal)
 		throws IOException
 	{
+		write(spots, cal, out::append);
+	}
+
+	/** A piece of the table's text, handed on before the builder is reused. */
+	private interface Block {
+		void take(StringBuilder text) throws IOException;
+	}
+
+	private static void write(final List<Localization> spots, final Calibration cal, final Block to)
+		throws IOException
+	{
 		final SpotColumn[] cols = SpotColumn.values();
+		final StringBuilder b = new StringBuilder(1 << 16);
 		for (int c = 0; c < cols.length; c++)
-			out.write((c == 0 ? "" : ",") + cols[c].key());
-		out.write('\n');
+			b.append(c == 0 ? "" : ",").append(cols[c].key());
+		b.append('\n');
 		for (int id = 0; id < spots.size(); id++) {
 			final Localization s = spots.get(id);
-			for (int c = 0; c < cols.length; c++)
-				out.write((c == 0 ? "" : ",") + cols[c].format(s, id, cal));
-			out.write('\n');
+			for (int c = 0; c < cols.length; c++) {
+				if (c > 0) b.append(',');
+				cols[c].appendTo(b, s, id, cal);
+			}
+			b.append('\n');
+			if (b.length() >= 1 << 15) { // in blocks: a movie's table is not held twice
+				to.take(b);
+				b.setLength(0);
+			}
 		}
+		to.take(b);
 	}
 }
