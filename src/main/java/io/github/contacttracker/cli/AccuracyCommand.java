@@ -10,7 +10,6 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
-import java.util.concurrent.Callable;
 
 import io.github.contacttracker.core.Method;
 import io.github.contacttracker.eval.CramerRao;
@@ -21,48 +20,31 @@ import io.github.contacttracker.io.AtomicFile;
 import io.github.contacttracker.sim.ParticleType;
 import io.github.contacttracker.sim.Scenario;
 import io.github.contacttracker.sim.SimulatedStack;
-import picocli.CommandLine.Command;
-import picocli.CommandLine.Mixin;
-import picocli.CommandLine.Option;
 
 /**
  * {@code accuracy}: the paper's protocol for every method: two and three particles of the 5.53 um-like and
  * 2.06 um-like profiles, from 2 D down to contact, many noisy images per separation; prints per separation
  * and method the bias and spread of the measured distance against the Cramer-Rao bound.
  */
-@Command(name = "accuracy", description = { "The paper's protocol for every method, against the Cramer-Rao " +
-	"bound." })
-final class AccuracyCommand implements Callable<Integer> {
+final class AccuracyCommand implements ContactTrackerCli.Subcommand {
 
-	@Option(names = "--reps", paramLabel = "N", defaultValue = "200", description = "Noisy images per separation " +
-		"(at least 2). Default: ${DEFAULT-VALUE}.")
-	int reps;
-
-	@Mixin
-	ContactTrackerCli.Threads threadsOption;
-
-	@Option(names = "--csv", paramLabel = "OUT.csv", description = "Also write the table as CSV.")
-	Path csvOption;
-
-	@Option(names = "--particle", paramLabel = "5.53,2.06", defaultValue = "5.53,2.06", description = "Particle " +
-		"types (um). Default: ${DEFAULT-VALUE}.")
-	String particles;
-
-	@Option(names = "--scenario", paramLabel = "pair,triple", defaultValue = "pair,triple", description = "Scenarios. " +
-		"Default: ${DEFAULT-VALUE}.")
-	String scenarioList;
-
-	@Option(names = "--methods", paramLabel = "M,...", description = "Methods. Default: every method for the " +
-		"paper's protocol, fit for --scene.")
-	String methodList;
-
-	@Option(names = "--scene", paramLabel = "S,...", description = "Instead of the paper's protocol, the harder " +
-		"scenes at contact (eval.SceneStudy): pair, chain4, triple, hex7, unlike, unlike13, ramp, saturated, photon, or all.")
-	String scene;
-
-	@Option(names = "--separations", paramLabel = "R,...", description = "Separations over the diameter (1 = " +
-		"contact). Default: 2 down to 1.")
-	String separationList;
+	private final CommandOptions options = new CommandOptions("contact-tracker accuracy", "The paper's protocol for " +
+		"every method, against the Cramer-Rao bound.");
+	private final Option<Integer> repsOption = options.add(Option.integer("--reps", "N", "Noisy images per " +
+		"separation (at least 2).").withDefault("200"));
+	private final Option<Integer> threadsOption = ContactTrackerCli.threads(options);
+	private final Option<Path> csvOption = options.add(Option.path("--csv", "OUT.csv", "Also write the table as CSV."));
+	private final Option<String> particlesOption = options.add(Option.text("--particle", "5.53,2.06", "Particle " +
+		"types (um).").withDefault("5.53,2.06"));
+	private final Option<String> scenariosOption = options.add(Option.text("--scenario", "pair,triple", "Scenarios.")
+		.withDefault("pair,triple"));
+	private final Option<String> methodsOption = options.add(Option.text("--methods", "M,...", "Methods. Default: " +
+		"every method for the paper's protocol, fit for --scene."));
+	private final Option<String> sceneOption = options.add(Option.text("--scene", "S,...", "Instead of the paper's " +
+		"protocol, the harder scenes at contact (eval.SceneStudy): pair, chain4, triple, hex7, unlike, unlike13, " +
+		"ramp, saturated, photon, or all."));
+	private final Option<String> separationsOption = options.add(Option.text("--separations", "R,...", "Separations " +
+		"over the diameter (1 = contact). Default: 2 down to 1."));
 
 	private final PrintStream out;
 
@@ -71,13 +53,21 @@ final class AccuracyCommand implements Callable<Integer> {
 	}
 
 	@Override
+	public CommandOptions options() {
+		return options;
+	}
+
+	@Override
 	public Integer call() throws IOException {
+		final int reps = options.value(repsOption), threads = options.value(threadsOption);
+		final String particles = options.value(particlesOption), scene = options.value(sceneOption), methodList =
+			options.value(methodsOption);
 		if (reps < 2) throw new InvalidInputException("--reps must be at least 2");
-		final Path csv = ContactTrackerCli.output("--csv", csvOption);
+		final Path csv = ContactTrackerCli.output("--csv", options.value(csvOption));
 		if (scene != null) { // the scenes of eval.SceneStudy (clusters, unlike particles, ramp, saturation)
 			final long t0 = System.nanoTime();
 			final String sceneCsv = new SceneStudy(Method.parse(methodList == null ? "fit" : methodList),
-				threadsOption.threads).report(out, particles, scene, reps);
+				threads).report(out, particles, scene, reps);
 			out.printf(Locale.ROOT, "%nAccuracy run took %.0f s.%n", (System.nanoTime() - t0) * 1e-9);
 			if (csv != null) AtomicFile.write(csv, os -> os.write(sceneCsv.getBytes(StandardCharsets.UTF_8)));
 			return 0;
@@ -86,12 +76,12 @@ final class AccuracyCommand implements Callable<Integer> {
 		for (final String p : ContactTrackerCli.list(particles))
 			types.add(SimulateCommand.particle(p));
 		final List<Scenario> scenarios = new ArrayList<>();
-		for (final String s : ContactTrackerCli.list(scenarioList))
+		for (final String s : ContactTrackerCli.list(options.value(scenariosOption)))
 			scenarios.add(SimulateCommand.scenario(s));
 		final List<Method> methods = new ArrayList<>();
 		for (final String m : ContactTrackerCli.list(methodList == null ? "first,paper,iterative,deblend,fit" : methodList))
 			methods.add(Method.parse(m));
-		final double[] separations = parseList(separationList);
+		final double[] separations = parseList(options.value(separationsOption));
 
 		final StringBuilder table = new StringBuilder(
 			"particle,scenario,separation_over_d,method,images,measured,failures,fallbacks,mean_error_nm,std_nm," +
@@ -99,7 +89,7 @@ final class AccuracyCommand implements Callable<Integer> {
 		final long start = System.nanoTime();
 		for (final ParticleType type : types)
 			for (final Scenario scenario : scenarios) {
-				final DistanceStudy study = new DistanceStudy(type, scenario, threadsOption.threads);
+				final DistanceStudy study = new DistanceStudy(type, scenario, threads);
 				out.printf(Locale.ROOT, "%n%s, %s (D = %.1f px at %.1f nm/px), threshold %.0f, r_out %.0f px, %d " +
 					"images per separation, %s%n", type.name(), scenario == Scenario.PAIR ? "two particles" :
 						"three particles", type.diameterPx(), type.pixelSizeNm(), type.threshold(), type.rOut(), reps, type

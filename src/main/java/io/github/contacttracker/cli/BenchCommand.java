@@ -9,7 +9,6 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
-import java.util.concurrent.Callable;
 
 import io.github.contacttracker.core.Method;
 import io.github.contacttracker.core.StackTracker;
@@ -23,37 +22,26 @@ import io.github.contacttracker.sim.SimulatedStack;
 import net.imglib2.img.array.ArrayImg;
 import net.imglib2.img.basictypeaccess.array.ByteArray;
 import net.imglib2.type.numeric.integer.UnsignedByteType;
-import picocli.CommandLine.Command;
-import picocli.CommandLine.Option;
 
 /**
  * {@code bench}: speed of each method on a simulated 512x512 8-bit stack with 12 particles (4 touching pairs),
  * on one thread and on all, against the time of one plain read pass over the same frames (the memory limit).
  */
-@Command(name = "bench", description = { "Speed of each method on a simulated 512x512 8-bit stack with 12 " +
-	"particles, on one thread and on all." })
-final class BenchCommand implements Callable<Integer> {
+final class BenchCommand implements ContactTrackerCli.Subcommand {
 
-	@Option(names = "--frames", paramLabel = "N", defaultValue = "400", description = "Frames. Default: " +
-		"${DEFAULT-VALUE}.")
-	int frames;
-
-	@Option(names = "--rounds", paramLabel = "N", defaultValue = "5", description = "Timed rounds (the best " +
-		"counts). Default: ${DEFAULT-VALUE}.")
-	int rounds;
-
-	@Option(names = "--profile-frames", paramLabel = "N", defaultValue = "64", description = "Frames for the " +
-		"slower profile methods (deblend, fit) in the in-process part. Default: ${DEFAULT-VALUE}.")
-	int profileFramesOption;
-
-	@Option(names = "--end-to-end", negatable = true, defaultValue = "true", fallbackValue = "true",
-		description = "Also time 'track' from the TIFF file to the CSV file, every method on all frames " +
-			"(default: on).")
-	boolean endToEnd;
-
-	@Option(names = "--save-stack", paramLabel = "FILE.tif", description = "Also save the simulated stack here " +
-		"(e.g. to time another tracker on the same frames: scripts/compare-trackpy-speed.py).")
-	Path saveStack;
+	private final CommandOptions options = new CommandOptions("contact-tracker bench", "Speed of each method on a " +
+		"simulated 512x512 8-bit stack with 12 particles, on one thread and on all.");
+	private final Option<Integer> framesOption = options.add(Option.integer("--frames", "N", "Frames.").withDefault(
+		"400"));
+	private final Option<Integer> roundsOption = options.add(Option.integer("--rounds", "N", "Timed rounds (the best " +
+		"counts).").withDefault("5"));
+	private final Option<Integer> profileFramesOption = options.add(Option.integer("--profile-frames", "N", "Frames " +
+		"for the slower profile methods (deblend, fit) in the in-process part.").withDefault("64"));
+	private final Option<Boolean> endToEndOption = options.add(Option.negatableFlag("--end-to-end", "Also time " +
+		"'track' from the TIFF file to the CSV file, every method on all frames (default: on).").withDefaultExplained(
+			"true"));
+	private final Option<Path> saveStackOption = options.add(Option.path("--save-stack", "FILE.tif", "Also save the " +
+		"simulated stack here (e.g. to time another tracker on the same frames: scripts/compare-trackpy-speed.py)."));
 
 	private final PrintStream out;
 
@@ -62,8 +50,16 @@ final class BenchCommand implements Callable<Integer> {
 	}
 
 	@Override
+	public CommandOptions options() {
+		return options;
+	}
+
+	@Override
 	public Integer call() throws IOException {
-		final int profileFrames = Math.min(frames, profileFramesOption);
+		final int frames = options.value(framesOption);
+		final int rounds = options.value(roundsOption);
+		final int profileFrames = Math.min(frames, options.value(profileFramesOption));
+		final Path saveStack = options.value(saveStackOption);
 		if (frames < 1 || rounds < 1 || profileFrames < 1)
 			throw new InvalidInputException("--frames, --rounds and --profile-frames must be at least 1");
 		if (saveStack != null) AtomicFile.checkFolder("--save-stack", saveStack);
@@ -107,7 +103,7 @@ final class BenchCommand implements Callable<Integer> {
 					readSeconds * set.size() / frames);
 			}
 		}
-		if (endToEnd) endToEnd(stack, type, cores);
+		if (options.value(endToEndOption)) endToEnd(stack, type, cores, rounds);
 		return 0;
 	}
 
@@ -116,9 +112,10 @@ final class BenchCommand implements Callable<Integer> {
 	 * from reading the TIFF file to the CSV file, every method on every frame: reading, the threshold check, the
 	 * tracking, the uncertainties and the writing included.
 	 */
-	private void endToEnd(final SimulatedStack<UnsignedByteType> stack, final ParticleType type, final int cores)
-		throws IOException
+	private void endToEnd(final SimulatedStack<UnsignedByteType> stack, final ParticleType type, final int cores,
+		final int rounds) throws IOException
 	{
+		final int frames = stack.frames().size();
 		final Path dir = Files.createTempDirectory("contact-tracker-bench");
 		try {
 			final Path tif = dir.resolve("bench.tif"), csv = dir.resolve("spots.csv");

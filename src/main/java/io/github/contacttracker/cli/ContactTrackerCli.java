@@ -2,9 +2,7 @@ package io.github.contacttracker.cli;
 
 import java.io.IOException;
 import java.io.PrintStream;
-import java.io.PrintWriter;
 import java.io.UncheckedIOException;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.Callable;
@@ -12,42 +10,26 @@ import java.util.concurrent.CancellationException;
 
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.io.AtomicFile;
-import picocli.CommandLine;
-import picocli.CommandLine.Command;
-import picocli.CommandLine.Model.CommandSpec;
-import picocli.CommandLine.ParameterException;
-import picocli.CommandLine.ParseResult;
 
 /**
  * The command line: {@code contact-tracker demo | track | simulate | bench | accuracy | potential |
- * demo-potential}, parsed with picocli; every subcommand has {@code --help}. Bad input (an unknown or mistyped
- * option, a missing file, an untrackable image) ends with a one-line error on stderr and exit status 2; an
- * unexpected failure with a stack trace and exit status 1.
+ * demo-potential | profile}, each subcommand's arguments parsed by its {@link CommandOptions}; every subcommand has
+ * {@code --help}. Bad input (an unknown or mistyped option, a missing file, an untrackable image) ends with a
+ * one-line error on stderr and exit status 2; an unexpected failure with a stack trace and exit status 1.
  */
 public final class ContactTrackerCli {
 
 	/** Exit status for bad input (missing file, bad option, untrackable image). */
 	public static final int EXIT_BAD_INPUT = 2;
 
-	/** The top-level command: only a list of subcommands and the help. */
-	@Command(name = "contact-tracker", mixinStandardHelpOptions = true, version = "Contact Tracker",
-		description = "Sub-pixel localization of colloidal particles, also when they touch.", footer = { "",
-			"Run 'contact-tracker COMMAND --help' for a command's options. Bad input exits with status 2 and a " +
-				"one-line error; no partial output file is left behind." })
-	static final class Root {}
+	/** What {@code --version} prints. */
+	static final String VERSION = "Contact Tracker";
 
-	/** {@code -h}/{@code --help} of every subcommand. */
-	@Command(mixinStandardHelpOptions = false)
-	static final class Help {
-		@CommandLine.Option(names = { "-h", "--help" }, usageHelp = true, description = "Show this help and exit.")
-		boolean help;
-	}
+	/** A subcommand: its options, and its work (run once they are parsed), which returns the exit status. */
+	interface Subcommand extends Callable<Integer> {
 
-	/** {@code --threads N} of the subcommands that simulate and track. */
-	static final class Threads {
-		@CommandLine.Option(names = "--threads", paramLabel = "N", defaultValue = "0", description = "Worker threads " +
-			"(0: all processors).")
-		int threads;
+		/** @return the command's options, which {@link #call()} reads once they are parsed */
+		CommandOptions options();
 	}
 
 	private ContactTrackerCli() {}
@@ -60,63 +42,69 @@ public final class ContactTrackerCli {
 		System.exit(run(args, stdout, System.err));
 	}
 
-	/** @return the command line with every subcommand, writing to {@code out} and {@code err} */
-	static CommandLine commandLine(final PrintStream out, final PrintStream err) {
-		final CommandLine cl = new CommandLine(new Root());
-		cl.addSubcommand("demo", withHelp(new DemoCommand(out)));
-		cl.addSubcommand("track", new CommandLine(TrackCommand.spec(out, err)));
-		cl.addSubcommand("simulate", withHelp(new SimulateCommand(out)));
-		cl.addSubcommand("bench", withHelp(new BenchCommand(out)));
-		cl.addSubcommand("accuracy", withHelp(new AccuracyCommand(out)));
-		cl.addSubcommand("potential", withHelp(new PotentialCommand(out, err)));
-		cl.addSubcommand("demo-potential", withHelp(new DemoPotentialCommand(out)));
-		cl.addSubcommand("profile", new CommandLine(new ProfileCommand(out))); // has its own -h/--help
-		cl.setOut(new PrintWriter(out, true, StandardCharsets.UTF_8));
-		cl.setErr(new PrintWriter(err, true, StandardCharsets.UTF_8));
-		cl.setUsageHelpWidth(100);
-		return cl;
+	/** @return every subcommand, writing to {@code out} and {@code err}, in the order the help lists them */
+	private static List<Subcommand> subcommands(final PrintStream out, final PrintStream err) {
+		return List.of(new DemoCommand(out), new TrackCommand(out, err), new SimulateCommand(out), new BenchCommand(out),
+			new AccuracyCommand(out), new PotentialCommand(out, err), new DemoPotentialCommand(out), new ProfileCommand(
+				out));
 	}
 
-	private static CommandLine withHelp(final Object command) {
-		final CommandSpec spec = CommandSpec.forAnnotatedObject(command);
-		spec.addMixin("help", CommandSpec.forAnnotatedObject(new Help()));
-		return new CommandLine(spec);
+	/** @return the top level: only {@code --help}, {@code --version} and the list of subcommands */
+	private static CommandOptions root(final List<Subcommand> subcommands) {
+		return new CommandOptions("contact-tracker", "Sub-pixel localization of colloidal particles, also when they " +
+			"touch.").withVersion().withSubcommands(subcommands.stream().map(Subcommand::options).toList()).withFooter(
+				"Run 'contact-tracker COMMAND --help' for a command's options. Bad input exits with status 2 and a " +
+					"one-line error; no partial output file is left behind.");
+	}
+
+	/** @return {@code --threads N} of the subcommands that simulate and track, added to {@code options} */
+	static Option<Integer> threads(final CommandOptions options) {
+		return options.add(Option.integer("--threads", "N", "Worker threads (0: all processors).").withDefaultExplained(
+			"0"));
 	}
 
 	/** Runs a command; returns the exit status. */
 	public static int run(final String[] args, final PrintStream out, final PrintStream err) {
-		final CommandLine cl = commandLine(out, err);
+		final List<Subcommand> subcommands = subcommands(out, err);
+		final CommandOptions root = root(subcommands);
 		if (args.length == 0) {
-			cl.usage(err);
+			err.print(root.usage());
 			return EXIT_BAD_INPUT;
 		}
 		if (args[0].equals("help")) {
-			cl.usage(out);
+			out.print(root.usage());
 			return 0;
 		}
-		if (!args[0].startsWith("-") && !cl.getSubcommands().containsKey(args[0])) {
-			err.println("contact-tracker: error: unknown command '" + args[0] + "' (" + String.join(", ", cl
-				.getSubcommands().keySet()) + ")");
+		final Subcommand command = subcommands.stream().filter(c -> c.options().name().equals(args[0])).findFirst()
+			.orElse(null);
+		if (command == null && !args[0].startsWith("-")) {
+			err.println("contact-tracker: error: unknown command '" + args[0] + "' (" + String.join(", ", subcommands
+				.stream().map(c -> c.options().name()).toList()) + ")");
 			return EXIT_BAD_INPUT;
 		}
-		final ParseResult parsed;
+		final CommandOptions options = command == null ? root : command.options();
 		try {
-			parsed = cl.parseArgs(args);
+			options.parse(args, command == null ? 0 : 1);
 		}
-		catch (final ParameterException e) {
-			final String sub = e.getCommandLine() == cl ? "" : " " + e.getCommandLine().getCommandName();
-			err.println("contact-tracker: error: " + oneLine(e.getMessage()) + " (see contact-tracker" + sub +
+		catch (final CommandOptions.BadOptionException e) {
+			err.println("contact-tracker: error: " + oneLine(e.getMessage()) + " (see " + options.commandLine() +
 				" --help)");
 			return EXIT_BAD_INPUT;
 		}
-		if (CommandLine.printHelpIfRequested(parsed)) return 0;
-		if (!parsed.hasSubcommand()) {
-			cl.usage(err);
+		if (options.helpRequested()) {
+			out.print(options.usage());
+			return 0;
+		}
+		if (options.versionRequested()) {
+			out.println(VERSION);
+			return 0;
+		}
+		if (command == null) {
+			err.print(root.usage());
 			return EXIT_BAD_INPUT;
 		}
 		try {
-			return ((Callable<?>) parsed.subcommand().commandSpec().userObject()).call() instanceof Integer status ? status
-				: 0;
+			return command.call();
 		}
 		catch (final InvalidInputException | IOException | UncheckedIOException e) {
 			err.println("contact-tracker: error: " + oneLine(e.getMessage()));

@@ -8,7 +8,6 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
-import java.util.concurrent.Callable;
 
 import io.github.contacttracker.core.ContactTracker;
 import io.github.contacttracker.core.FrameResult;
@@ -20,29 +19,21 @@ import io.github.contacttracker.sim.PaperParticles;
 import io.github.contacttracker.sim.ParticleType;
 import io.github.contacttracker.sim.Scenario;
 import io.github.contacttracker.sim.SimulatedStack;
-import picocli.CommandLine.Command;
-import picocli.CommandLine.Mixin;
-import picocli.CommandLine.Option;
 
 /**
  * {@code demo}: the paper's two scenarios for 5.53 um particles, from well apart to contact, tracked with the
  * first pass, the paper's method and the default method; prints the distance errors and writes an overlay PNG
  * at contact.
  */
-@Command(name = "demo", description = { "Simulate pairs and triples of 5.53 um particles from apart to contact, " +
-	"track them, print the distance errors, write an overlay PNG." })
-final class DemoCommand implements Callable<Integer> {
+final class DemoCommand implements ContactTrackerCli.Subcommand {
 
-	@Option(names = "--reps", paramLabel = "N", defaultValue = "50", description = "Noisy images per separation " +
-		"(at least 2). Default: ${DEFAULT-VALUE}.")
-	int reps;
-
-	@Option(names = "--out-dir", paramLabel = "DIR", defaultValue = "demo-output", description = "Where the " +
-		"overlay PNG goes. Default: ${DEFAULT-VALUE}.")
-	Path dir;
-
-	@Mixin
-	ContactTrackerCli.Threads threadsOption;
+	private final CommandOptions options = new CommandOptions("contact-tracker demo", "Simulate pairs and triples of " +
+		"5.53 um particles from apart to contact, track them, print the distance errors, write an overlay PNG.");
+	private final Option<Integer> repsOption = options.add(Option.integer("--reps", "N", "Noisy images per " +
+		"separation (at least 2).").withDefault("50"));
+	private final Option<Path> dirOption = options.add(Option.path("--out-dir", "DIR", "Where the overlay PNG goes.")
+		.withDefault("demo-output"));
+	private final Option<Integer> threadsOption = ContactTrackerCli.threads(options);
 
 	private final PrintStream out;
 
@@ -51,14 +42,21 @@ final class DemoCommand implements Callable<Integer> {
 	}
 
 	@Override
+	public CommandOptions options() {
+		return options;
+	}
+
+	@Override
 	public Integer call() throws IOException {
+		final int reps = options.value(repsOption), threads = options.value(threadsOption);
+		final Path dir = options.value(dirOption);
 		if (reps < 2) throw new InvalidInputException("--reps must be at least 2");
 		Files.createDirectories(dir);
 		final ParticleType type = PaperParticles.silica553();
 		final List<OverlayPng.Panel> panels = new ArrayList<>();
 		final long start = System.nanoTime();
 		for (final Scenario scenario : Scenario.values()) {
-			final DistanceStudy study = new DistanceStudy(type, scenario, threadsOption.threads);
+			final DistanceStudy study = new DistanceStudy(type, scenario, threads);
 			out.printf(Locale.ROOT, "%n%s of %s particles (%.1f nm/px, D = %.1f px): threshold %.0f, r_out %.0f px, " +
 				"%d images per separation, noise %s%n", scenario == Scenario.PAIR ? "Two" : "Three", type.name(), type
 					.pixelSizeNm(), type.diameterPx(), type.threshold(), type.rOut(), reps, type.noise());

@@ -8,7 +8,6 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
-import java.util.concurrent.Callable;
 
 import io.github.contacttracker.core.Localization;
 import io.github.contacttracker.core.Method;
@@ -19,33 +18,23 @@ import io.github.contacttracker.io.SpotCsvWriter;
 import io.github.contacttracker.potential.PairCorrelation;
 import io.github.contacttracker.sim.FluidMovie;
 import io.github.contacttracker.sim.ParticleType;
-import picocli.CommandLine.Command;
-import picocli.CommandLine.Mixin;
-import picocli.CommandLine.Option;
 
 /**
  * {@code demo-potential}: a simulated 2D fluid with a known pair potential (hard core + short-range attraction),
  * rendered as a movie, tracked with the default method and with the first pass, and U(r) measured from both
  * against the truth; writes the comparison plot and the default method's spots (to rerun {@code potential} on).
  */
-@Command(name = "demo-potential", description = { "A simulated fluid with a known U(r): U(r) by the default " +
-	"method and the first pass against the truth." })
-final class DemoPotentialCommand implements Callable<Integer> {
+final class DemoPotentialCommand implements ContactTrackerCli.Subcommand {
 
-	@Option(names = "--frames", paramLabel = "N", defaultValue = "300", description = "Frames to simulate (at " +
-		"least 10). Default: ${DEFAULT-VALUE}.")
-	int frames;
-
-	@Option(names = "--particle", paramLabel = "2.06|5.53", defaultValue = "2.06", description = "Particle type " +
-		"(um). Default: ${DEFAULT-VALUE}.")
-	String particle;
-
-	@Option(names = "--out-dir", paramLabel = "DIR", defaultValue = "demo-output", description = "Where the plot " +
-		"and spots go. Default: ${DEFAULT-VALUE}.")
-	Path dir;
-
-	@Mixin
-	ContactTrackerCli.Threads threadsOption;
+	private final CommandOptions options = new CommandOptions("contact-tracker demo-potential", "A simulated fluid " +
+		"with a known U(r): U(r) by the default method and the first pass against the truth.");
+	private final Option<Integer> framesOption = options.add(Option.integer("--frames", "N", "Frames to simulate (at " +
+		"least 10).").withDefault("300"));
+	private final Option<String> particleOption = options.add(Option.text("--particle", "2.06|5.53", "Particle type " +
+		"(um).").withDefault("2.06"));
+	private final Option<Path> dirOption = options.add(Option.path("--out-dir", "DIR", "Where the plot and spots go.")
+		.withDefault("demo-output"));
+	private final Option<Integer> threadsOption = ContactTrackerCli.threads(options);
 
 	private final PrintStream out;
 
@@ -54,9 +43,16 @@ final class DemoPotentialCommand implements Callable<Integer> {
 	}
 
 	@Override
+	public CommandOptions options() {
+		return options;
+	}
+
+	@Override
 	public Integer call() throws IOException {
+		final int frames = options.value(framesOption), threads = options.value(threadsOption);
+		final Path dir = options.value(dirOption);
 		if (frames < 10) throw new InvalidInputException("--frames must be at least 10");
-		final ParticleType type = SimulateCommand.particle(particle);
+		final ParticleType type = SimulateCommand.particle(options.value(particleOption));
 		Files.createDirectories(dir);
 		final long start = System.nanoTime();
 
@@ -66,8 +62,8 @@ final class DemoPotentialCommand implements Callable<Integer> {
 			"Carlo sweeps apart%n  true potential: %s%n", type.name(), d, type.pixelSizeNm(), study.particles(), study
 				.size(), study.size(), frames, study.sweepsBetween(), study.interaction().describe());
 		final FluidMovie movie = study.simulate();
-		final List<Localization> fit = study.track(movie, Method.DEFAULT, threadsOption.threads);
-		final List<Localization> first = study.track(movie, Method.FIRST, threadsOption.threads);
+		final List<Localization> fit = study.track(movie, Method.DEFAULT, threads);
+		final List<Localization> first = study.track(movie, Method.FIRST, threads);
 		final PairCorrelation.Result truth = study.measureTruth(movie), best = study.measure(fit), biased = study
 			.measure(first);
 

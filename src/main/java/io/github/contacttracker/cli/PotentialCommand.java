@@ -9,7 +9,6 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Locale;
-import java.util.concurrent.Callable;
 
 import io.github.contacttracker.io.PotentialCsv;
 import io.github.contacttracker.io.PotentialPlots;
@@ -18,50 +17,33 @@ import io.github.contacttracker.potential.FieldOfView;
 import io.github.contacttracker.potential.PairCorrelation;
 import io.github.contacttracker.potential.PotentialReport;
 import io.github.contacttracker.potential.SpotSet;
-import picocli.CommandLine.Command;
-import picocli.CommandLine.Option;
-import picocli.CommandLine.Parameters;
 
 /**
  * {@code potential SPOTS.csv --bin W --r-max R [--csv OUT.csv] [--png OUT.png]}: g(r) and U(r)/kT from a spots
  * table (ours or TrackMate's export). CSV to stdout without {@code --csv}; the summary then goes to stderr.
  */
-@Command(name = "potential", description = { "Pair distribution g(r) and pair potential U(r)/kT from a spots " +
-	"table (ours or TrackMate's export); CSV to stdout without --csv." })
-final class PotentialCommand implements Callable<Integer> {
+final class PotentialCommand implements ContactTrackerCli.Subcommand {
 
-	@Parameters(paramLabel = "SPOTS.csv", description = "The spots table.")
-	Path input;
-
-	@Option(names = "--bin", required = true, paramLabel = "W", description = "Bin width of r, in the spots' units.")
-	double bin;
-
-	@Option(names = "--r-max", required = true, paramLabel = "R", description = "Largest r, in the spots' units.")
-	double rMax;
-
-	@Option(names = "--csv", paramLabel = "OUT.csv", description = "Write the table here (else to stdout).")
-	Path csvOption;
-
-	@Option(names = "--png", paramLabel = "OUT.png", description = "Also plot U(r).")
-	Path pngOption;
-
-	@Option(names = "--width", paramLabel = "W", description = "Field of view width (with --height); else " +
-		"inferred from the spots.")
-	Double width;
-
-	@Option(names = "--height", paramLabel = "H", description = "Field of view height (with --width).")
-	Double height;
-
-	@Option(names = "--start-frame", paramLabel = "F", defaultValue = "0", description = "Leave out earlier " +
-		"frames. Default: ${DEFAULT-VALUE}.")
-	int startFrame;
-
-	@Option(names = "--flagged", paramLabel = "drop|keep", defaultValue = "drop", description = "Flagged spots: " +
-		"left out or kept. Default: ${DEFAULT-VALUE}.")
-	String flagged;
-
-	@Option(names = "--zero", paramLabel = "FROM,TO", description = "Set U(r) to 0 on average over this range of r.")
-	String zeroOption;
+	private final CommandOptions options = new CommandOptions("contact-tracker potential", "Pair distribution g(r) " +
+		"and pair potential U(r)/kT from a spots table (ours or TrackMate's export); CSV to stdout without --csv.");
+	private final Option<Path> inputOption = options.add(Option.positionalPath("SPOTS.csv", "The spots table."));
+	private final Option<Double> binOption = options.add(Option.decimal("--bin", "W", "Bin width of r, in the " +
+		"spots' units.").asRequired());
+	private final Option<Double> rMaxOption = options.add(Option.decimal("--r-max", "R", "Largest r, in the spots' " +
+		"units.").asRequired());
+	private final Option<Path> csvOption = options.add(Option.path("--csv", "OUT.csv", "Write the table here (else " +
+		"to stdout)."));
+	private final Option<Path> pngOption = options.add(Option.path("--png", "OUT.png", "Also plot U(r)."));
+	private final Option<Double> widthOption = options.add(Option.decimal("--width", "W", "Field of view width " +
+		"(with --height); else inferred from the spots."));
+	private final Option<Double> heightOption = options.add(Option.decimal("--height", "H", "Field of view height " +
+		"(with --width)."));
+	private final Option<Integer> startFrameOption = options.add(Option.integer("--start-frame", "F", "Leave out " +
+		"earlier frames.").withDefault("0"));
+	private final Option<String> flaggedOption = options.add(Option.text("--flagged", "drop|keep", "Flagged spots: " +
+		"left out or kept.").withDefault("drop"));
+	private final Option<String> zeroOption = options.add(Option.text("--zero", "FROM,TO", "Set U(r) to 0 on " +
+		"average over this range of r."));
 
 	private final PrintStream out;
 	private final PrintStream err;
@@ -72,16 +54,26 @@ final class PotentialCommand implements Callable<Integer> {
 	}
 
 	@Override
+	public CommandOptions options() {
+		return options;
+	}
+
+	@Override
 	public Integer call() throws IOException {
+		final Path input = options.value(inputOption);
+		final double bin = options.value(binOption), rMax = options.value(rMaxOption);
+		final Double width = options.value(widthOption), height = options.value(heightOption);
 		if (!Double.isFinite(bin) || !Double.isFinite(rMax))
 			throw new InvalidInputException("--bin and --r-max must be finite numbers");
-		final Path csv = ContactTrackerCli.output("--csv", csvOption), png = ContactTrackerCli.output("--png",
-			pngOption);
+		final Path csv = ContactTrackerCli.output("--csv", options.value(csvOption)), png = ContactTrackerCli.output(
+			"--png", options.value(pngOption));
 		if ((width == null) != (height == null))
 			throw new InvalidInputException("give both --width and --height of the field of view, or neither (then " +
 				"it is inferred from the spots)");
-		final SpotSet.Selection selection = new SpotSet.Selection(startFrame, dropFlagged(flagged));
-		final double[] zero = zeroOption != null ? zeroRange(zeroOption) : null;
+		final SpotSet.Selection selection = new SpotSet.Selection(options.value(startFrameOption), dropFlagged(options
+			.value(flaggedOption)));
+		final String zeroText = options.value(zeroOption);
+		final double[] zero = zeroText != null ? zeroRange(zeroText) : null;
 
 		final SpotTableCsv.Table table = SpotTableCsv.read(input, SpotSet::reads);
 		final SpotSet spots;

@@ -7,7 +7,6 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
-import java.util.concurrent.Callable;
 
 import ij.ImagePlus;
 import io.github.contacttracker.core.InvalidInputException;
@@ -17,10 +16,6 @@ import io.github.contacttracker.io.ImageFiles;
 import io.github.contacttracker.io.ImagePlusFrames;
 import io.github.contacttracker.io.ProfilePlots;
 import net.imglib2.RandomAccessibleInterval;
-import picocli.CommandLine;
-import picocli.CommandLine.Command;
-import picocli.CommandLine.Option;
-import picocli.CommandLine.Parameters;
 
 /**
  * {@code profile MOVIE [--at X,Y] [--frame N] [--diameter D] [--max-radius R] [--png OUT.png] [--csv OUT.csv]}:
@@ -28,43 +23,30 @@ import picocli.CommandLine.Parameters;
  * and read off into the tracking settings to copy. The same analysis as Fiji's Contact Tracker Profile
  * ({@link ProfileAnalysis}).
  */
-@Command(name = "profile", sortOptions = false, mixinStandardHelpOptions = true,
-	description = { "Radial profile of isolated particles and suggested --threshold, --r-out and --diameter.",
-		"Finds the frame's most isolated particles itself (or takes --at X,Y), pools their profiles (ring medians " +
-			"above a local background plane), estimates the noise robustly, and prints a line to copy." })
-public final class ProfileCommand implements Callable<Integer> {
+public final class ProfileCommand implements ContactTrackerCli.Subcommand {
 
 	/** The line the command ends with, followed by the suggested options. */
 	public static final String SUGGESTION = "suggested:";
 
-	@Parameters(index = "0", paramLabel = "MOVIE", description = "the image or movie (as 'track' reads it)")
-	Path movie;
-
-	@Option(names = "--at", paramLabel = "X,Y", split = ",", arity = "1",
-		description = "a point on the particle to profile (px, pixel (0,0)'s centre at 0,0); default: find isolated " +
-			"particles")
-	double[] at;
-
-	@Option(names = "--frame", paramLabel = "N", description = "frame to profile, counted from 1 (default: 1)")
-	int frame = 1;
-
-	@Option(names = "--diameter", paramLabel = "D",
-		description = "particle diameter in px (the centre distance at contact); default: estimated from the " +
-			"particles' nearest-neighbour distances")
-	double diameter = 0;
-
-	@Option(names = "--max-radius", paramLabel = "R",
-		description = "how far out the profile is measured (px); default: 2.5 diameters")
-	double maxRadius = 0;
-
-	@Option(names = "--channel", paramLabel = "C", description = "channel of a multi-channel image (from 1)")
-	int channel = 0;
-
-	@Option(names = "--png", paramLabel = "OUT.png", description = "write the profile plot")
-	Path png;
-
-	@Option(names = "--csv", paramLabel = "OUT.csv", description = "write the profile table")
-	Path csv;
+	private final CommandOptions options = new CommandOptions("contact-tracker profile", "Radial profile of isolated " +
+		"particles and suggested --threshold, --r-out and --diameter.", "Finds the frame's most isolated particles " +
+			"itself (or takes --at X,Y), pools their profiles (ring medians above a local background plane), estimates " +
+			"the noise robustly, and prints a line to copy.").inDeclarationOrder();
+	private final Option<Path> movieOption = options.add(Option.positionalPath("MOVIE", "the image or movie (as " +
+		"'track' reads it)"));
+	private final Option<double[]> atOption = options.add(Option.valued("--at", "X,Y", "a point on the particle to " +
+		"profile (px, pixel (0,0)'s centre at 0,0); default: find isolated particles", ProfileCommand::numbers));
+	private final Option<Integer> frameOption = options.add(Option.integer("--frame", "N", "frame to profile, " +
+		"counted from 1 (default: 1)").withDefaultExplained("1"));
+	private final Option<Double> diameterOption = options.add(Option.decimal("--diameter", "D", "particle diameter " +
+		"in px (the centre distance at contact); default: estimated from the particles' nearest-neighbour distances")
+		.withDefaultExplained("0"));
+	private final Option<Double> maxRadiusOption = options.add(Option.decimal("--max-radius", "R", "how far out the " +
+		"profile is measured (px); default: 2.5 diameters").withDefaultExplained("0"));
+	private final Option<Integer> channelOption = options.add(Option.integer("--channel", "C", "channel of a " +
+		"multi-channel image (from 1)").withDefaultExplained("0"));
+	private final Option<Path> pngOption = options.add(Option.path("--png", "OUT.png", "write the profile plot"));
+	private final Option<Path> csvOption = options.add(Option.path("--csv", "OUT.csv", "write the profile table"));
 
 	private final PrintStream out;
 
@@ -73,17 +55,25 @@ public final class ProfileCommand implements Callable<Integer> {
 	}
 
 	@Override
+	public CommandOptions options() {
+		return options;
+	}
+
+	@Override
 	public Integer call() throws IOException {
+		final Path movie = options.value(movieOption), png = options.value(pngOption), csv = options.value(csvOption);
+		final double[] at = options.value(atOption);
+		final int frame = options.value(frameOption);
 		if (at != null && at.length != 2) throw new InvalidInputException("--at needs X,Y, not " + at.length +
 			" numbers");
 		if (png != null) AtomicFile.checkFolder("png", png);
 		if (csv != null) AtomicFile.checkFolder("csv", csv);
 		final ImagePlus imp = ImageFiles.open(movie);
-		final ImagePlusFrames frames = ImagePlusFrames.of(imp, channel);
+		final ImagePlusFrames frames = ImagePlusFrames.of(imp, options.value(channelOption));
 		if (frame < 1 || frame > frames.frameCount())
 			throw new InvalidInputException("--frame " + frame + " does not exist: " + movie + " has " + frames
 				.frameCount() + " frame" + (frames.frameCount() == 1 ? "" : "s"));
-		final ProfileAnalysis.Result r = analyse(frames.frames().get(frame - 1));
+		final ProfileAnalysis.Result r = analyse(frames.frames().get(frame - 1), at);
 		final boolean integerData = imp.getBitDepth() != 32;
 		final double threshold = r.suggestedThreshold(integerData), rOut = r.suggestedROut();
 
@@ -121,9 +111,19 @@ public final class ProfileCommand implements Callable<Integer> {
 	}
 
 	@SuppressWarnings({ "unchecked", "rawtypes" })
-	private ProfileAnalysis.Result analyse(final RandomAccessibleInterval frame) {
+	private ProfileAnalysis.Result analyse(final RandomAccessibleInterval frame, final double[] at) {
+		final double diameter = options.value(diameterOption), maxRadius = options.value(maxRadiusOption);
 		return at != null ? ProfileAnalysis.analyse(frame, at[0], at[1], diameter, maxRadius) : ProfileAnalysis.analyse(
 			frame, diameter, maxRadius);
+	}
+
+	/** @return the numbers of {@code --at}, separated by commas (their count is checked when the command runs) */
+	private static double[] numbers(final String text) {
+		final String[] parts = text.split(",");
+		final double[] numbers = new double[parts.length];
+		for (int i = 0; i < parts.length; i++)
+			numbers[i] = Option.DOUBLE.apply(parts[i]);
+		return numbers;
 	}
 
 	private static String centres(final ProfileAnalysis.Result r) {

@@ -10,7 +10,6 @@ import java.io.PrintStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Locale;
-import java.util.concurrent.Callable;
 
 import io.github.contacttracker.io.Calibration;
 import io.github.contacttracker.io.ImageFiles;
@@ -18,43 +17,28 @@ import io.github.contacttracker.sim.PaperParticles;
 import io.github.contacttracker.sim.ParticleType;
 import io.github.contacttracker.sim.Scenario;
 import io.github.contacttracker.sim.SimulatedStack;
-import picocli.CommandLine.Command;
-import picocli.CommandLine.Option;
 
 /** {@code simulate --scenario pair|triple --separation R --out stack.tif --truth truth.csv}. */
-@Command(name = "simulate", description = { "Write a simulated TIFF time series of a pair or triple and its " +
-	"truth CSV; print the suggested --threshold and --r-out." })
-final class SimulateCommand implements Callable<Integer> {
+final class SimulateCommand implements ContactTrackerCli.Subcommand {
 
-	@Option(names = "--scenario", required = true, paramLabel = "pair|triple", description = "Two particles, or " +
-		"three starting as a touching triangle.")
-	String scenarioName;
-
-	@Option(names = "--separation", required = true, paramLabel = "R_OVER_D", description = "Centre distance over " +
-		"the diameter (1 = contact).")
-	double separation;
-
-	@Option(names = "--frames", paramLabel = "N", defaultValue = "100", description = "Frames. Default: " +
-		"${DEFAULT-VALUE}.")
-	int frames;
-
-	@Option(names = "--seed", paramLabel = "S", defaultValue = "1", description = "Random seed. Default: " +
-		"${DEFAULT-VALUE}.")
-	long seed;
-
-	@Option(names = "--out", required = true, paramLabel = "stack.tif", description = "The TIFF to write.")
-	Path outFile;
-
-	@Option(names = "--truth", required = true, paramLabel = "truth.csv", description = "The true centres (CSV).")
-	Path truthOption;
-
-	@Option(names = "--particle", paramLabel = "5.53|2.06", defaultValue = "5.53", description = "Particle type " +
-		"(um). Default: ${DEFAULT-VALUE}.")
-	String particleName;
-
-	@Option(names = "--bit-depth", paramLabel = "8|16", defaultValue = "8", description = "Bits per pixel. " +
-		"Default: ${DEFAULT-VALUE}.")
-	int bits;
+	private final CommandOptions options = new CommandOptions("contact-tracker simulate", "Write a simulated TIFF " +
+		"time series of a pair or triple and its truth CSV; print the suggested --threshold and --r-out.");
+	private final Option<String> scenarioOption = options.add(Option.text("--scenario", "pair|triple", "Two " +
+		"particles, or three starting as a touching triangle.").asRequired());
+	private final Option<Double> separationOption = options.add(Option.decimal("--separation", "R_OVER_D", "Centre " +
+		"distance over the diameter (1 = contact).").asRequired());
+	private final Option<Integer> framesOption = options.add(Option.integer("--frames", "N", "Frames.").withDefault(
+		"100"));
+	private final Option<Long> seedOption = options.add(Option.longInteger("--seed", "S", "Random seed.").withDefault(
+		"1"));
+	private final Option<Path> outOption = options.add(Option.path("--out", "stack.tif", "The TIFF to write.")
+		.asRequired());
+	private final Option<Path> truthOption = options.add(Option.path("--truth", "truth.csv", "The true centres (CSV).")
+		.asRequired());
+	private final Option<String> particleOption = options.add(Option.text("--particle", "5.53|2.06", "Particle type " +
+		"(um).").withDefault("5.53"));
+	private final Option<Integer> bitsOption = options.add(Option.integer("--bit-depth", "8|16", "Bits per pixel.")
+		.withDefault("8"));
 
 	private final PrintStream out;
 
@@ -63,16 +47,24 @@ final class SimulateCommand implements Callable<Integer> {
 	}
 
 	@Override
+	public CommandOptions options() {
+		return options;
+	}
+
+	@Override
 	public Integer call() throws IOException {
-		final Scenario scenario = scenario(scenarioName);
+		final Scenario scenario = scenario(options.value(scenarioOption));
+		final double separation = options.value(separationOption);
+		final int frames = options.value(framesOption), bits = options.value(bitsOption);
 		if (!(separation > 0) || Double.isInfinite(separation))
 			throw new InvalidInputException("--separation must be positive (1 = contact)");
 		if (frames < 1) throw new InvalidInputException("--frames must be at least 1");
 		if (bits != 8 && bits != 16) throw new InvalidInputException("--bit-depth must be 8 or 16");
-		final ParticleType type = particle(particleName);
-		final Path stackFile = ContactTrackerCli.output("--out", outFile), truthFile = ContactTrackerCli.output(
-			"--truth", truthOption);
-		final SimulatedStack<?> stack = SimulatedStack.simulate(type, scenario, separation, frames, seed, bits);
+		final ParticleType type = particle(options.value(particleOption));
+		final Path stackFile = ContactTrackerCli.output("--out", options.value(outOption)), truthFile = ContactTrackerCli
+			.output("--truth", options.value(truthOption));
+		final SimulatedStack<?> stack = SimulatedStack.simulate(type, scenario, separation, frames, options.value(
+			seedOption), bits);
 		final Calibration cal = Calibration.ofPixelSize(type.pixelSizeMicrons(), "micron");
 		ImageFiles.saveTiff(ImageFiles.timeSeries(stackFile.getFileName().toString(), stack.frames(), cal), stackFile);
 		try {

@@ -48,7 +48,7 @@ class CliHelpTest {
 		final String help = (String) ContactTrackerCliTest.run("track", "--help")[1];
 		for (final Setting<?> s : TrackingSettings.ALL) {
 			assertTrue(help.contains(s.cliOption() + "="), s.cliOption() + " in\n" + help);
-			// the help text's first words (picocli wraps the rest)
+			// the help text's first words (the help wraps the rest)
 			final String start = String.join(" ", List.of(s.help().split(" ")).subList(0, 3));
 			assertTrue(help.contains(start), start + " in\n" + help);
 		}
