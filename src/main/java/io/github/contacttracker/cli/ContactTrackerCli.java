@@ -43,13 +43,33 @@ public final class ContactTrackerCli {
 	}
 
 	/** @return every subcommand, writing to {@code out} and {@code err}, in the order the help lists them */
-	private static List<Subcommand> subcommands(final PrintStream out, final PrintStream err) {
-		return List.of(new DemoCommand(out), new TrackCommand(out, err), new SimulateCommand(out), new BenchCommand(out),
-			new AccuracyCommand(out), new PotentialCommand(out, err), new DemoPotentialCommand(out), new ProfileCommand(
-				out));
+	/** The subcommands' names, in the order the help lists them. */
+	private static final List<String> COMMANDS = List.of("demo", "track", "simulate", "bench", "accuracy", "potential",
+		"demo-potential", "profile");
+
+	/**
+	 * @return the subcommand {@code name} (one of {@link #COMMANDS}), or null. Only the one run is made: building a
+	 *         command's options links lambdas and streams, a few milliseconds each on a fresh JVM
+	 */
+	private static Subcommand subcommand(final String name, final PrintStream out, final PrintStream err) {
+		return switch (name) {
+			case "demo" -> new DemoCommand(out);
+			case "track" -> new TrackCommand(out, err);
+			case "simulate" -> new SimulateCommand(out);
+			case "bench" -> new BenchCommand(out);
+			case "accuracy" -> new AccuracyCommand(out);
+			case "potential" -> new PotentialCommand(out, err);
+			case "demo-potential" -> new DemoPotentialCommand(out);
+			case "profile" -> new ProfileCommand(out);
+			default -> null;
+		};
 	}
 
-	/** @return the top level: only {@code --help}, {@code --version} and the list of subcommands */
+	/** @return every subcommand (for the top-level help, which lists them all) */
+	private static List<Subcommand> subcommands(final PrintStream out, final PrintStream err) {
+		return COMMANDS.stream().map(name -> subcommand(name, out, err)).toList();
+	}
+
 	private static CommandOptions root(final List<Subcommand> subcommands) {
 		return new CommandOptions("contact-tracker", "Sub-pixel localization of colloidal particles, also when they " +
 			"touch.").withVersion().withSubcommands(subcommands.stream().map(Subcommand::options).toList()).withFooter(
@@ -65,23 +85,20 @@ public final class ContactTrackerCli {
 
 	/** Runs a command; returns the exit status. */
 	public static int run(final String[] args, final PrintStream out, final PrintStream err) {
-		final List<Subcommand> subcommands = subcommands(out, err);
-		final CommandOptions root = root(subcommands);
 		if (args.length == 0) {
-			err.print(root.usage());
+			err.print(root(subcommands(out, err)).usage());
 			return EXIT_BAD_INPUT;
 		}
 		if (args[0].equals("help")) {
-			out.print(root.usage());
+			out.print(root(subcommands(out, err)).usage());
 			return 0;
 		}
-		final Subcommand command = subcommands.stream().filter(c -> c.options().name().equals(args[0])).findFirst()
-			.orElse(null);
+		final Subcommand command = subcommand(args[0], out, err);
 		if (command == null && !args[0].startsWith("-")) {
-			err.println("contact-tracker: error: unknown command '" + args[0] + "' (" + String.join(", ", subcommands
-				.stream().map(c -> c.options().name()).toList()) + ")");
+			err.println("contact-tracker: error: unknown command '" + args[0] + "' (" + String.join(", ", COMMANDS) + ")");
 			return EXIT_BAD_INPUT;
 		}
+		final CommandOptions root = command == null ? root(subcommands(out, err)) : null;
 		final CommandOptions options = command == null ? root : command.options();
 		try {
 			options.parse(args, command == null ? 0 : 1);

@@ -85,9 +85,18 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 	}
 
 	private static double[] planeCoordinate(final int[] c, final int count, final double origin, final double unit) {
+		// one division per distinct coordinate (a row or column of the group's box), not one per pixel
+		int lo = Integer.MAX_VALUE, hi = Integer.MIN_VALUE;
+		for (int i = 0; i < count; i++) {
+			if (c[i] < lo) lo = c[i];
+			if (c[i] > hi) hi = c[i];
+		}
+		final double[] table = new double[count == 0 ? 0 : hi - lo + 1];
+		for (int k = 0; k < table.length; k++)
+			table[k] = (lo + k - origin) / unit;
 		final double[] out = new double[count];
 		for (int i = 0; i < count; i++)
-			out[i] = (c[i] - origin) / unit;
+			out[i] = table[c[i] - lo];
 		return out;
 	}
 
@@ -135,7 +144,7 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 			final int m = spans(y, x0, x1, gx, gy, reach2, spans);
 			for (int s = 0; s < m; s += 2) {
 				final int a = spans[s], b = spans[s + 1];
-				plane.row(y, a, b, pv, count);
+				plane.read(a, b, y, y, pv, count);
 				count = keep(censoring, y, a, b, px, py, pv, count);
 			}
 		}

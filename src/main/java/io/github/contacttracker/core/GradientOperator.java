@@ -63,7 +63,7 @@ public final class GradientOperator {
 
 	/**
 	 * Gradients along one run {@code (y, x0..x1)} whose pixels all have gradients, by running sums: about 7
-	 * reads a pixel instead of 24, from the five rows of the footprint read once each ({@link Plane#row}). Writes
+	 * reads a pixel instead of 24, from the five rows of the footprint read in one call ({@link Plane#read}). Writes
 	 * {@code gx[off + x - x0]} and {@code gy[...]}.
 	 */
 	static void alongRun(final Plane p, final int y, final int x0, final int x1, final double[] gx,
@@ -72,8 +72,7 @@ public final class GradientOperator {
 		final int n = x1 - x0 + 1, m = n + 4;
 		// rows y-2 .. y+2 over x0-2 .. x1+2: row j at scratch[rows + (j + 2) * m]
 		final int rows = 2 * n + 6;
-		for (int j = -2; j <= 2; j++)
-			p.row(y + j, x0 - 2, x1 + 2, scratch, rows + (j + 2) * m);
+		p.read(x0 - 2, x1 + 2, y - 2, y + 2, scratch, rows);
 		final int up2 = rows, up1 = rows + m, mid = rows + 2 * m, down1 = rows + 3 * m, down2 = rows + 4 * m;
 		// col[k] = I(x, y-1) + I(x, y) + I(x, y+1) for x = x0-2+k, k in 0..n+3
 		// dv[k]  = I(x, y+1) + I(x, y+2) - I(x, y-1) - I(x, y-2) for x = x0-1+k, k in 0..n+1

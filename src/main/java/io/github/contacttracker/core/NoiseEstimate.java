@@ -21,13 +21,11 @@ public final class NoiseEstimate {
 		final int stride = (int) Math.max(1, Math.floor(Math.sqrt((double) inner / SAMPLES)));
 		double sum = 0;
 		long n = 0;
-		// each sample's 3x3 neighbourhood in three row reads (Plane.row), not nine pixel reads
+		// each sample's 3x3 neighbourhood in one read (Plane.read), not nine pixel reads
 		final double[] b = new double[9];
 		for (int y = 1; y < h - 1; y += stride)
 			for (int x = 1 + (y / stride) % stride; x < w - 1; x += stride) {
-				p.row(y - 1, x - 1, x + 1, b, 0);
-				p.row(y, x - 1, x + 1, b, 3);
-				p.row(y + 1, x - 1, x + 1, b, 6);
+				p.read(x - 1, x + 1, y - 1, y + 1, b, 0);
 				final double r = b[0] - 2 * b[1] + b[2] //
 					- 2 * b[3] + 4 * b[4] - 2 * b[5] //
 					+ b[6] - 2 * b[7] + b[8];

@@ -25,8 +25,9 @@ final class NormalEquations {
 	static double accumulate(final FitPixels px, final double[] p, final int n, final EmpiricalProfile profile,
 		final double[][] jtj, final double[] jtr, final double[] noise, final double[] models)
 	{
-		return n == 1 ? accumulateSingle(px, p, profile, jtj, jtr, noise, models) : accumulateGroup(px, p, n, profile,
-			jtj, jtr, noise, models);
+		if (n == 1) return accumulateSingle(px, p, profile, jtj, jtr, noise, models);
+		if (n == 2) return accumulatePair(px, p, profile, jtj, jtr, noise, models);
+		return accumulateGroup(px, p, n, profile, jtj, jtr, noise, models);
 	}
 
 	/** {@link #accumulate} for any group (package-private for the test of {@link #accumulateSingle}). */
@@ -100,63 +101,89 @@ final class NormalEquations {
 					noise[ba + 3] += wy * r2;
 				}
 				if (!hessian) continue;
-				// the member's own block (lower triangle)
-				final int row0 = ba * np + ba, row1 = row0 + np, row2 = row1 + np, row3 = row2 + np;
-				h[row0] += g0 * g0;
-				h[row1] += g1 * g0;
-				h[row1 + 1] += g1 * g1;
-				h[row2] += g2 * g0;
-				h[row2 + 1] += g2 * g1;
-				h[row2 + 2] += g2 * g2;
-				h[row3] += g3 * g0;
-				h[row3 + 1] += g3 * g1;
-				h[row3 + 2] += g3 * g2;
-				h[row3 + 3] += g3 * g3;
+				ownBlock(h, np, b0, ba, u, v, g0, g1, g2, g3);
 				// with the members before it within reach (their columns lie left of the diagonal)
 				for (int mb = 0; mb < ma; mb++) {
-					final int bb = within[mb], e = GroupFit.PER_PARTICLE * mb;
-					final double e0 = g[e], e1 = g[e + 1], e2 = g[e + 2], e3 = g[e + 3];
-					int row = ba * np + bb;
-					h[row] += g0 * e0;
-					h[row + 1] += g0 * e1;
-					h[row + 2] += g0 * e2;
-					h[row + 3] += g0 * e3;
-					row += np;
-					h[row] += g1 * e0;
-					h[row + 1] += g1 * e1;
-					h[row + 2] += g1 * e2;
-					h[row + 3] += g1 * e3;
-					row += np;
-					h[row] += g2 * e0;
-					h[row + 1] += g2 * e1;
-					h[row + 2] += g2 * e2;
-					h[row + 3] += g2 * e3;
-					row += np;
-					h[row] += g3 * e0;
-					h[row + 1] += g3 * e1;
-					h[row + 2] += g3 * e2;
-					h[row + 3] += g3 * e3;
+					final int e = GroupFit.PER_PARTICLE * mb;
+					crossBlock(h, np, ba, within[mb], g0, g1, g2, g3, g[e], g[e + 1], g[e + 2], g[e + 3]);
 				}
-				// the background rows (gradients 1, u, v)
-				final int bg0 = b0 * np + ba, bg1 = bg0 + np, bg2 = bg1 + np;
-				h[bg0] += g0;
-				h[bg0 + 1] += g1;
-				h[bg0 + 2] += g2;
-				h[bg0 + 3] += g3;
-				h[bg1] += u * g0;
-				h[bg1 + 1] += u * g1;
-				h[bg1 + 2] += u * g2;
-				h[bg1 + 3] += u * g3;
-				h[bg2] += v * g0;
-				h[bg2 + 1] += v * g1;
-				h[bg2 + 2] += v * g2;
-				h[bg2 + 3] += v * g3;
 			}
 		}
+		return finish(px, np, h, jtj, jtr, r0, ru, rv, rss);
+	}
+
+	/**
+	 * Adds one pixel's terms of a member's own block of J^T J (lower triangle) and of its rows against the background
+	 * plane (gradients 1, u, v): {@code g0..g3} its gradient, {@code ba} its first parameter, on the flat {@code h}.
+	 */
+	private static void ownBlock(final double[] h, final int np, final int b0, final int ba, final double u,
+		final double v, final double g0, final double g1, final double g2, final double g3)
+	{
+		final int row0 = ba * np + ba, row1 = row0 + np, row2 = row1 + np, row3 = row2 + np;
+		h[row0] += g0 * g0;
+		h[row1] += g1 * g0;
+		h[row1 + 1] += g1 * g1;
+		h[row2] += g2 * g0;
+		h[row2 + 1] += g2 * g1;
+		h[row2 + 2] += g2 * g2;
+		h[row3] += g3 * g0;
+		h[row3 + 1] += g3 * g1;
+		h[row3 + 2] += g3 * g2;
+		h[row3 + 3] += g3 * g3;
+		final int bg0 = b0 * np + ba, bg1 = bg0 + np, bg2 = bg1 + np;
+		h[bg0] += g0;
+		h[bg0 + 1] += g1;
+		h[bg0 + 2] += g2;
+		h[bg0 + 3] += g3;
+		h[bg1] += u * g0;
+		h[bg1 + 1] += u * g1;
+		h[bg1 + 2] += u * g2;
+		h[bg1 + 3] += u * g3;
+		h[bg2] += v * g0;
+		h[bg2 + 1] += v * g1;
+		h[bg2 + 2] += v * g2;
+		h[bg2 + 3] += v * g3;
+	}
+
+	/**
+	 * Adds one pixel's terms of the block of J^T J between member {@code ba} (gradient {@code g0..g3}) and an earlier
+	 * member {@code bb} (gradient {@code e0..e3}), left of the diagonal.
+	 */
+	private static void crossBlock(final double[] h, final int np, final int ba, final int bb, final double g0,
+		final double g1, final double g2, final double g3, final double e0, final double e1, final double e2,
+		final double e3)
+	{
+		int row = ba * np + bb;
+		h[row] += g0 * e0;
+		h[row + 1] += g0 * e1;
+		h[row + 2] += g0 * e2;
+		h[row + 3] += g0 * e3;
+		row += np;
+		h[row] += g1 * e0;
+		h[row + 1] += g1 * e1;
+		h[row + 2] += g1 * e2;
+		h[row + 3] += g1 * e3;
+		row += np;
+		h[row] += g2 * e0;
+		h[row + 1] += g2 * e1;
+		h[row + 2] += g2 * e2;
+		h[row + 3] += g2 * e3;
+		row += np;
+		h[row] += g3 * e0;
+		h[row + 1] += g3 * e1;
+		h[row + 2] += g3 * e2;
+		h[row + 3] += g3 * e3;
+	}
+
+	/** The background's sums into J^T r; the background's own block and the full symmetric J^T J from {@code h}. */
+	private static double finish(final FitPixels px, final int np, final double[] h, final double[][] jtj,
+		final double[] jtr, final double r0, final double ru, final double rv, final double rss)
+	{
+		final int b0 = np - GroupFit.BACKGROUND;
 		jtr[b0] = r0;
 		jtr[b0 + 1] = ru;
 		jtr[b0 + 2] = rv;
-		if (!hessian) return rss;
+		if (jtj == null) return rss;
 		final double[] bg = px.backgroundBlock();
 		for (int a = 0; a < GroupFit.BACKGROUND; a++)
 			for (int b = 0; b <= a; b++)
@@ -165,6 +192,112 @@ final class NormalEquations {
 			for (int b = 0; b <= a; b++)
 				jtj[a][b] = jtj[b][a] = h[a * np + b];
 		return rss;
+	}
+
+	/**
+	 * {@link #accumulateGroup} for a group of two (a touching pair: most of the groups that are not alone), with the
+	 * same sums added in the same order; the two members' terms in local variables rather than in per-member arrays
+	 * and loops, which the client compiler does not keep in registers. Identical results ({@code
+	 * NormalEquationsTest}).
+	 */
+	static double accumulatePair(final FitPixels px, final double[] p, final EmpiricalProfile profile,
+		final double[][] jtj, final double[] jtr, final double[] noise, final double[] models)
+	{
+		final int np = 2 * GroupFit.PER_PARTICLE + GroupFit.BACKGROUND, b0 = np - GroupFit.BACKGROUND;
+		final int bb = GroupFit.PER_PARTICLE; // the second member's first parameter
+		final double R = profile.radius();
+		final double[] tv = profile.valueTable(), td = profile.derivativeTable();
+		final double perStep = 1 / EmpiricalProfile.TABLE_STEP;
+		final int[] xs = px.x(), ys = px.y();
+		final double[] us = px.u(), vs = px.v(), values = px.value(), fixed = px.fixed();
+		final int count = px.count();
+		java.util.Arrays.fill(jtr, 0);
+		final double[] h = jtj != null ? new double[np * np] : null;
+		final double pb = p[b0], pu = p[b0 + 1], pv = p[b0 + 2];
+		final double ax = p[0], ay = p[1], aa = p[2], as = p[3], bx = p[bb], by = p[bb + 1], ba = p[bb + 2],
+			bs = p[bb + 3];
+		final double aReach2 = R * as * (R * as), aPerScale = 1 / as, bReach2 = R * bs * (R * bs), bPerScale = 1 / bs;
+		double rss = 0, r0 = 0, ru = 0, rv = 0;
+		for (int i = 0; i < count; i++) {
+			final double u = us[i], v = vs[i];
+			double model = pb + pu * u + pv * v + fixed[i];
+			boolean inA = false, inB = false;
+			double a0 = 0, a1 = 0, a2 = 0, a3 = 0, e0 = 0, e1 = 0, e2 = 0, e3 = 0;
+			final double adx = xs[i] - ax, ady = ys[i] - ay, ar2 = adx * adx + ady * ady;
+			if (ar2 < aReach2) {
+				final double r = Math.sqrt(ar2), rs = r * aPerScale;
+				if (rs < R) {
+					final double t = rs * perStep;
+					final int k = (int) t;
+					final double f = t - k;
+					final double val = tv[k] + f * (tv[k + 1] - tv[k]);
+					final double d = aa * (td[k] + f * (td[k + 1] - td[k])) * aPerScale;
+					model += aa * val;
+					final double radial = r > 1e-12 ? -d / r : 0;
+					a0 = radial * adx;
+					a1 = radial * ady;
+					a2 = val;
+					a3 = -d * rs;
+					inA = true;
+				}
+			}
+			final double bdx = xs[i] - bx, bdy = ys[i] - by, br2 = bdx * bdx + bdy * bdy;
+			if (br2 < bReach2) {
+				final double r = Math.sqrt(br2), rs = r * bPerScale;
+				if (rs < R) {
+					final double t = rs * perStep;
+					final int k = (int) t;
+					final double f = t - k;
+					final double val = tv[k] + f * (tv[k + 1] - tv[k]);
+					final double d = ba * (td[k] + f * (td[k + 1] - td[k])) * bPerScale;
+					model += ba * val;
+					final double radial = r > 1e-12 ? -d / r : 0;
+					e0 = radial * bdx;
+					e1 = radial * bdy;
+					e2 = val;
+					e3 = -d * rs;
+					inB = true;
+				}
+			}
+			if (models != null) models[i] = model;
+			final double res = values[i] - model;
+			rss += res * res;
+			r0 += res;
+			ru += res * u;
+			rv += res * v;
+			if (inA) {
+				jtr[0] += a0 * res;
+				jtr[1] += a1 * res;
+				jtr[2] += a2 * res;
+				jtr[3] += a3 * res;
+				if (noise != null) {
+					final double r2 = res * res, wx = a0 * a0, wy = a1 * a1;
+					noise[0] += wx;
+					noise[1] += wx * r2;
+					noise[2] += wy;
+					noise[3] += wy * r2;
+				}
+				if (h != null) ownBlock(h, np, b0, 0, u, v, a0, a1, a2, a3);
+			}
+			if (inB) {
+				jtr[bb] += e0 * res;
+				jtr[bb + 1] += e1 * res;
+				jtr[bb + 2] += e2 * res;
+				jtr[bb + 3] += e3 * res;
+				if (noise != null) {
+					final double r2 = res * res, wx = e0 * e0, wy = e1 * e1;
+					noise[bb] += wx;
+					noise[bb + 1] += wx * r2;
+					noise[bb + 2] += wy;
+					noise[bb + 3] += wy * r2;
+				}
+				if (h != null) {
+					ownBlock(h, np, b0, bb, u, v, e0, e1, e2, e3);
+					if (inA) crossBlock(h, np, bb, 0, e0, e1, e2, e3, a0, a1, a2, a3);
+				}
+			}
+		}
+		return finish(px, np, h, jtj, jtr, r0, ru, rv, rss);
 	}
 
 	/**

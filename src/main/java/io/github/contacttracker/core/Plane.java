@@ -1,5 +1,9 @@
 package io.github.contacttracker.core;
 
+import java.lang.invoke.MethodHandles;
+import java.lang.invoke.VarHandle;
+import java.nio.ByteOrder;
+
 import net.imglib2.RandomAccess;
 import net.imglib2.RandomAccessibleInterval;
 import net.imglib2.blocks.PrimitiveBlocks;
@@ -44,12 +48,14 @@ public abstract class Plane {
 	public abstract double get(int x, int y);
 
 	/**
-	 * Copies the grey values of row {@code y} from {@code x0} to {@code x1} (inclusive) to {@code out}, from index
-	 * {@code at}: what {@link #get} gives, read in one loop (the fit's pixels are gathered by row spans).
+	 * Copies the grey values of the rectangle {@code x0..x1} by {@code y0..y1} (inclusive) to {@code out}, row after
+	 * row from index {@code at}: what {@link #get} gives, in one call and tight loops (row spans of the fit's pixels,
+	 * the gradient operators' rows, the noise estimate's neighbourhoods).
 	 */
-	public void row(final int y, final int x0, final int x1, final double[] out, final int at) {
-		for (int x = x0; x <= x1; x++)
-			out[at + x - x0] = get(x, y);
+	public void read(final int x0, final int x1, final int y0, final int y1, final double[] out, final int at) {
+		for (int y = y0, j = at; y <= y1; y++)
+			for (int x = x0; x <= x1; x++)
+				out[j++] = get(x, y);
 	}
 
 	/**
@@ -274,31 +280,44 @@ public abstract class Plane {
 		}
 
 		@Override
-		public void row(final int y, final int x0, final int x1, final double[] out, final int at) {
+		public void read(final int x0, final int x1, final int y0, final int y1, final double[] out, final int at) {
 			final byte[] d = data;
-			for (int i = y * width + x0, end = y * width + x1, j = at; i <= end; i++, j++)
-				out[j] = d[i] & 0xff;
+			for (int y = y0, j = at; y <= y1; y++)
+				for (int i = y * width + x0, end = y * width + x1; i <= end; i++, j++)
+					out[j] = d[i] & 0xff;
 		}
 
+		/** Eight bytes of a row as one long (byte order irrelevant: only "is any of them bright" is asked). */
+		private static final VarHandle EIGHT = MethodHandles.byteArrayViewVarHandle(long[].class,
+			ByteOrder.LITTLE_ENDIAN);
+		private static final long HIGH_BITS = 0x8080808080808080L, ONES = 0x0101010101010101L;
+
 		/**
-		 * As the general scan, on the bytes directly: the scan reads every pixel of every frame, and a short job
-		 * runs on code from the client compiler (scripts/contact-tracker), which does not inline the call per pixel.
+		 * As the general scan, on the bytes directly, skipping eight dark pixels at once: the scan reads every pixel
+		 * of every frame, and a short job runs on code from the client compiler (scripts/contact-tracker), which
+		 * neither inlines the call per pixel nor vectorises.
 		 */
 		@Override
 		void scanRow(final int y, final double threshold, final RunList runs) {
 			final int t = integerThreshold(threshold);
 			if (t < 0) return;
 			final byte[] d = data;
-			final int off = y * width, below = t - 1;
+			final int off = y * width;
+			// a word of eight bytes holds one >= t only if its test is non-zero: for t <= 128, each byte below 128
+			// plus (128 - t) sets its high bit exactly when it is >= t (a carry from a byte >= 128, whose own high
+			// bit is set anyway, can only add false alarms); for t > 128 such a byte has its high bit set
+			final long add = t <= 128 ? (128L - t) * ONES : 0;
+			final boolean skips = t >= 1;
 			int start = -1;
 			for (int x = 0; x < width; x++) {
-				// outside a run, eight pixels below the threshold at once (the usual case): b >= t <=> t - 1 - b < 0
-				while (start < 0 && x + 8 <= width && ((below - (d[off + x] & 0xff)) | (below - (d[off + x + 1] & 0xff)) |
-					(below - (d[off + x + 2] & 0xff)) | (below - (d[off + x + 3] & 0xff)) | (below - (d[off + x + 4] &
-						0xff)) | (below - (d[off + x + 5] & 0xff)) | (below - (d[off + x + 6] & 0xff)) | (below - (d[off + x +
-							7] & 0xff))) >= 0)
-					x += 8;
-				if (x >= width) break;
+				if (skips && start < 0) {
+					while (x + 8 <= width) {
+						final long w = (long) EIGHT.get(d, off + x);
+						if ((((w + add) | w) & HIGH_BITS) != 0) break;
+						x += 8;
+					}
+					if (x >= width) break;
+				}
 				if ((d[off + x] & 0xff) >= t) {
 					if (start < 0) start = x;
 				}
@@ -325,10 +344,11 @@ public abstract class Plane {
 		}
 
 		@Override
-		public void row(final int y, final int x0, final int x1, final double[] out, final int at) {
+		public void read(final int x0, final int x1, final int y0, final int y1, final double[] out, final int at) {
 			final short[] d = data;
-			for (int i = y * width + x0, end = y * width + x1, j = at; i <= end; i++, j++)
-				out[j] = d[i] & 0xffff;
+			for (int y = y0, j = at; y <= y1; y++)
+				for (int i = y * width + x0, end = y * width + x1; i <= end; i++, j++)
+					out[j] = d[i] & 0xffff;
 		}
 	}
 
@@ -346,10 +366,11 @@ public abstract class Plane {
 		}
 
 		@Override
-		public void row(final int y, final int x0, final int x1, final double[] out, final int at) {
+		public void read(final int x0, final int x1, final int y0, final int y1, final double[] out, final int at) {
 			final float[] d = data;
-			for (int i = y * width + x0, end = y * width + x1, j = at; i <= end; i++, j++)
-				out[j] = d[i];
+			for (int y = y0, j = at; y <= y1; y++)
+				for (int i = y * width + x0, end = y * width + x1; i <= end; i++, j++)
+					out[j] = d[i];
 		}
 
 		@Override

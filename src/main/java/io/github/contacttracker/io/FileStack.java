@@ -22,21 +22,31 @@ final class FileStack extends VirtualStack {
 	}
 
 	private final int size;
+	private final boolean concurrent;
 	private final PlaneReader reader;
 	private final String path;
 
 	/**
 	 * @param file the file or folder the planes come from, for messages
 	 * @param size the number of planes
-	 * @param reader reads plane {@code t} (0-based); may be called from several threads unless the caller
-	 *        serialises
+	 * @param concurrent whether {@code reader} may be called from several threads at once (each call opens the
+	 *        file itself); if not, callers serialise ({@link #readsConcurrently()})
+	 * @param reader reads plane {@code t} (0-based)
 	 */
-	FileStack(final Path file, final int size, final int width, final int height, final PlaneReader reader) {
+	FileStack(final Path file, final int size, final int width, final int height, final boolean concurrent,
+		final PlaneReader reader)
+	{
 		super(width, height, null, file.toAbsolutePath().getParent() == null ? "/" : file.toAbsolutePath().getParent()
 			.toString());
 		this.size = size;
+		this.concurrent = concurrent;
 		this.reader = reader;
 		this.path = file.toString();
+	}
+
+	/** @return whether planes may be read from several threads at once */
+	boolean readsConcurrently() {
+		return concurrent;
 	}
 
 	@Override

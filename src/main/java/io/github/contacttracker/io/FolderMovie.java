@@ -38,8 +38,8 @@ final class FolderMovie {
 			"frames");
 		final ImageProcessor first = read(files.get(0), 0, 0, 0);
 		final int w = first.getWidth(), h = first.getHeight(), bits = first.getBitDepth();
-		final FileStack stack = new FileStack(folder.resolve(files.get(0).getFileName()), files.size(), w, h, t -> read(
-			files.get(t), w, h, bits));
+		final FileStack stack = new FileStack(folder.resolve(files.get(0).getFileName()), files.size(), w, h, false,
+			t -> read(files.get(t), w, h, bits));
 		stack.setBitDepth(bits);
 		return new ImagePlus(folder.getFileName() == null ? folder.toString() : folder.getFileName().toString(), stack);
 	}

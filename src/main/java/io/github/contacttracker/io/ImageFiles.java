@@ -78,7 +78,7 @@ public final class ImageFiles {
 		final ImageStack avi = reader.makeStack(file.toAbsolutePath().toString(), 1, 0, true, true, false);
 		if (avi == null || avi.size() == 0 || reader.getErrorText() != null) throw new IOException("cannot read " +
 			file + " as an AVI movie: " + (reader.getErrorText() != null ? reader.getErrorText() : "no frames"));
-		final FileStack stack = new FileStack(file, avi.size(), avi.getWidth(), avi.getHeight(), t -> {
+		final FileStack stack = new FileStack(file, avi.size(), avi.getWidth(), avi.getHeight(), false, t -> {
 			// AVI_Reader reports a bad frame as null (and a message box): name the file and frame instead
 			final ImageProcessor ip = avi.getProcessor(t + 1);
 			if (ip == null) throw new IOException("cannot read frame " + (t + 1) + " of " + file + " (damaged AVI?)");

@@ -117,22 +117,43 @@ public final class ImagePlusFrames {
 		if (t < 0 || t >= stackIndex.length) throw new IndexOutOfBoundsException("frame " + t + " of " +
 			stackIndex.length);
 		if (!virtual) return wrap(stack.getProcessor(stackIndex[t]));
+		// Planes of our own TIFF reader are read in parallel (each read opens the file itself); other virtual stacks
+		// (ImageJ's AVI reader, a plugin's) one at a time.
+		if (!(stack instanceof FileStack files && files.readsConcurrently())) {
+			synchronized (cache) {
+				final RandomAccessibleInterval<? extends RealType<?>> cached = cache.get(t);
+				return cached != null ? cached : remember(t, read(t));
+			}
+		}
 		synchronized (cache) {
 			final RandomAccessibleInterval<? extends RealType<?>> cached = cache.get(t);
 			if (cached != null) return cached;
-			final ImageProcessor ip;
-			try {
-				ip = stack.getProcessor(stackIndex[t]);
-			}
-			catch (final UncheckedIOException e) {
-				throw new InvalidInputException(e.getCause().getMessage(), e);
-			}
-			if (ip == null) throw new InvalidInputException("cannot read frame " + (t + 1) + " of the virtual stack");
-			reads++;
-			final RandomAccessibleInterval<? extends RealType<?>> frame = wrap(ip);
-			cache.put(t, frame);
-			return frame;
 		}
+		final ImageProcessor ip = read(t);
+		synchronized (cache) {
+			final RandomAccessibleInterval<? extends RealType<?>> cached = cache.get(t); // read meanwhile by another
+			return cached != null ? cached : remember(t, ip);
+		}
+	}
+
+	private ImageProcessor read(final int t) {
+		final ImageProcessor ip;
+		try {
+			ip = stack.getProcessor(stackIndex[t]);
+		}
+		catch (final UncheckedIOException e) {
+			throw new InvalidInputException(e.getCause().getMessage(), e);
+		}
+		if (ip == null) throw new InvalidInputException("cannot read frame " + (t + 1) + " of the virtual stack");
+		return ip;
+	}
+
+	/** Caches frame {@code t} read as {@code ip}; called holding the cache's lock. */
+	private RandomAccessibleInterval<? extends RealType<?>> remember(final int t, final ImageProcessor ip) {
+		reads++;
+		final RandomAccessibleInterval<? extends RealType<?>> frame = wrap(ip);
+		cache.put(t, frame);
+		return frame;
 	}
 
 	/** @return how many frames were read from a virtual stack so far (for tests of the cache) */

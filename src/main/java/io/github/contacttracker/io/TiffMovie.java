@@ -92,7 +92,7 @@ final class TiffMovie {
 		final ImagePlus one = opener.openImage(); // plane 1: the calibration (incl. signed 16-bit), the bit depth
 		if (one == null) throw new IOException("cannot read " + file + ": ImageJ could not decode its first plane (" +
 			describe(first) + ")");
-		final FileStack stack = new FileStack(file, planes.length, one.getWidth(), one.getHeight(), t -> {
+		final FileStack stack = new FileStack(file, planes.length, one.getWidth(), one.getHeight(), true, t -> {
 			final ImageProcessor ip = new FileOpener((FileInfo) planes[t].clone()).openProcessor();
 			if (ip == null) throw new IOException("cannot read plane " + (t + 1) + " of " + file);
 			return ip;
@@ -199,7 +199,8 @@ final class TiffMovie {
 				throw new IOException("cannot read " + file + ": its pages differ in size or pixel type (a pyramid or " +
 					"thumbnails?)");
 		final ByteOrder order = little ? ByteOrder.LITTLE_ENDIAN : ByteOrder.BIG_ENDIAN;
-		final FileStack stack = new FileStack(file, planes.size(), p0.width, p0.height, t -> decode(file, planes.get(t), order));
+		final FileStack stack = new FileStack(file, planes.size(), p0.width, p0.height, true, t -> decode(file, planes.get(
+			t), order));
 		stack.setBitDepth(p0.bits == 8 ? 8 : p0.bits == 16 ? 16 : 32);
 		final ImagePlus imp = new ImagePlus(file.getFileName().toString(), stack);
 		// signed integers are stored with an offset (ImageJ's way); the calibration gives back the file's values

@@ -10,7 +10,11 @@ import java.util.Random;
 
 import org.junit.jupiter.api.Test;
 
-/** {@link FitPixels#gather}, read by row spans, against its definition pixel by pixel; and {@link Plane#row}. */
+/**
+ * {@link FitPixels#gather}, read by row spans, against its definition pixel by pixel; and the primitive-array fast
+ * paths of {@link Plane} it and the first pass rest on ({@link Plane#read}, the 8-bit threshold scan) against the
+ * general ones.
+ */
 class FitPixelsTest {
 
 	private static final int W = 150, H = 120;
@@ -141,23 +145,58 @@ class FitPixelsTest {
 	}
 
 	@Test
-	void rowReadsWhatGetReadsOnEveryPixelType() {
+	void readGivesWhatGetGivesOnEveryPixelType() {
 		final double[] img = TestImages.withUniformNoise(TestImages.render(37, 23, 20, TestImages.gaussian(150, 4),
 			new double[] { 15.2, 11.7 }), 9, 2);
 		for (int i = 0; i < img.length; i++)
 			img[i] = Math.round(img[i]);
 		for (final Plane plane : new Plane[] { Plane.of(TestImages.bytes(img, 37, 23)), Plane.of(TestImages.shorts(img,
 			37, 23)), Plane.of(TestImages.floats(img, 37, 23)), Plane.generic(TestImages.bytes(img, 37, 23)) }) {
-			final double[] out = new double[40];
-			for (int y = 0; y < 23; y += 5) {
+			final double[] out = new double[120];
+			for (int y = 0; y + 3 < 23; y += 5) {
 				java.util.Arrays.fill(out, -1);
-				plane.row(y, 3, 30, out, 2);
+				plane.read(3, 30, y, y + 3, out, 2); // 28 x 4 pixels, row after row
 				assertEquals(-1, out[1], 0, "nothing before the offset");
-				for (int x = 3; x <= 30; x++)
-					assertEquals(plane.get(x, y), out[2 + x - 3], 0, plane.getClass().getSimpleName() + " (" + x + ", " + y +
-						")");
-				assertEquals(-1, out[30], 0, "nothing after the span");
+				for (int yy = y; yy <= y + 3; yy++)
+					for (int x = 3; x <= 30; x++)
+						assertEquals(plane.get(x, yy), out[2 + 28 * (yy - y) + x - 3], 0, plane.getClass().getSimpleName() + " (" +
+							x + ", " + yy + ")");
+				assertEquals(-1, out[2 + 4 * 28], 0, "nothing after the rectangle");
 			}
+		}
+	}
+
+	/**
+	 * The 8-bit threshold scan, which skips eight dark pixels at once by a word test, finds the runs the general
+	 * scan finds: bright pixels at every position within a word, values on both sides of 128, thresholds at the
+	 * test's edges (1, 128, 129, 255) and between.
+	 */
+	@Test
+	void byteScanFindsTheRunsOfTheGeneralScan() {
+		final int w = 203, h = 40; // not a multiple of eight: words end inside the row
+		final Random random = new Random(9);
+		final double[] img = new double[w * h];
+		for (int i = 0; i < img.length; i++) {
+			final int kind = random.nextInt(10);
+			img[i] = kind < 6 ? random.nextInt(60) : kind < 8 ? 100 + random.nextInt(60) : random.nextInt(256);
+		}
+		img[0] = 255; // a bright first pixel of a row, and a bright last one
+		img[w - 1] = 200;
+		final Plane bytes = Plane.of(TestImages.bytes(img, w, h)), generic = Plane.generic(TestImages.bytes(img, w, h));
+		for (final double t : new double[] { 0, 0.5, 1, 2, 59.5, 60, 85, 127, 128, 128.5, 129, 130, 200, 254, 255 }) {
+			int found = 0;
+			for (int y = 0; y < h; y++) {
+				final RunList a = new RunList(), b = new RunList();
+				bytes.scanRow(y, t, a);
+				generic.scanRow(y, t, b);
+				assertEquals(b.size, a.size, "threshold " + t + ", row " + y);
+				for (int r = 0; r < a.size; r++) {
+					assertEquals(b.x0[r], a.x0[r], "threshold " + t + ", row " + y + ", run " + r);
+					assertEquals(b.x1[r], a.x1[r], "threshold " + t + ", row " + y + ", run " + r);
+				}
+				found += a.size;
+			}
+			assertTrue(found > 0, "threshold " + t + " finds runs");
 		}
 	}
 }

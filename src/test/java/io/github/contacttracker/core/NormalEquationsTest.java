@@ -2,16 +2,23 @@ package io.github.contacttracker.core;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.Random;
 
 import org.junit.jupiter.api.Test;
 
-/** The least-squares passes of {@link GroupFit} ({@link NormalEquations}): the fast path for a group of one against the general one. */
+/**
+ * The least-squares passes of {@link GroupFit} ({@link NormalEquations}): the fast paths for a group of one and of two
+ * against the general one.
+ */
 class NormalEquationsTest {
 
-	/** A ringed profile (bright core, dark ring) reaching 30 px, and a noisy particle on a plane with others' light. */
-	private static FitPixels pixels(final EmpiricalProfile profile, final double cx, final double cy) {
+	/**
+	 * A ringed profile (bright core, dark ring) reaching 30 px, and noisy particles at {@code (x, y)} pairs on a plane
+	 * with others' light.
+	 */
+	private static FitPixels pixels(final EmpiricalProfile profile, final double... centres) {
 		final Random random = new Random(11);
 		final int w = 70, h = 64, n = w * h;
 		final int[] xs = new int[n], ys = new int[n];
@@ -21,8 +28,9 @@ class NormalEquationsTest {
 				xs[i] = x;
 				ys[i] = y;
 				fixed[i] = 0.01 * x;
-				values[i] = 40 + 0.05 * x + fixed[i] + 1.1 * profile.value(Math.hypot(x - cx, y - cy) / 0.97) + 3 *
-					random.nextGaussian();
+				values[i] = 40 + 0.05 * x + fixed[i] + 3 * random.nextGaussian();
+				for (int c = 0; c < centres.length; c += 2)
+					values[i] += 1.1 * profile.value(Math.hypot(x - centres[c], y - centres[c + 1]) / 0.97);
 			}
 		return new FitPixels(xs, ys, values, fixed, n, 0.5 * (w - 1), 0.5 * (h - 1), 0.5 * (w - 1));
 	}
@@ -52,6 +60,35 @@ class NormalEquationsTest {
 			assertArrayEquals(mg, ms, 0);
 			if (hessian) for (int r = 0; r < 7; r++)
 				assertArrayEquals(jg[r], js[r], 0, "row " + r);
+		}
+	}
+
+	/**
+	 * The pair's path against the general one, bit for bit, members near enough for shared pixels and far enough
+	 * for pixels out of one member's reach (the profile reaches 30 px).
+	 */
+	@Test
+	void pairFastPathIsIdentical() {
+		final EmpiricalProfile profile = ringed();
+		final FitPixels px = pixels(profile, 24.3, 31.8, 47.6, 30.1);
+		final double[] p = { 24.1, 32.0, 1.05, 0.98, 47.9, 30.0, 0.9, 1.04, 39, 0.4, -0.2 };
+		int onlyOne = 0;
+		for (int i = 0; i < px.count(); i++)
+			if ((Math.hypot(px.x()[i] - p[0], px.y()[i] - p[1]) < 30 * p[3]) != (Math.hypot(px.x()[i] - p[4], px.y()[i] -
+				p[5]) < 30 * p[7])) onlyOne++;
+		assertTrue(onlyOne > 500, "pixels within reach of one member only: " + onlyOne);
+		for (final boolean hessian : new boolean[] { true, false }) {
+			final double[][] jg = hessian ? new double[11][11] : null, jp = hessian ? new double[11][11] : null;
+			final double[] rg = new double[11], rp = new double[11], ng = new double[8], nq = new double[8];
+			final double[] mg = new double[px.count()], mp = new double[px.count()];
+			final double rssGroup = NormalEquations.accumulateGroup(px, p, 2, profile, jg, rg, ng, mg);
+			final double rssPair = NormalEquations.accumulatePair(px, p, profile, jp, rp, nq, mp);
+			assertEquals(rssGroup, rssPair, 0);
+			assertArrayEquals(rg, rp, 0);
+			assertArrayEquals(ng, nq, 0);
+			assertArrayEquals(mg, mp, 0);
+			if (hessian) for (int r = 0; r < 11; r++)
+				assertArrayEquals(jg[r], jp[r], 0, "row " + r);
 		}
 	}
 }
