@@ -42,30 +42,47 @@ class NormalEquationsTest {
 		return new EmpiricalProfile(1, c, 40, 1000);
 	}
 
-	/** Same J^T J, J^T r, residuals, noise weights and model values, bit for bit, with and without J^T J. */
+	/** A fast path's signature: {@link NormalEquations#accumulate} for a fixed group size. */
+	@FunctionalInterface
+	private interface Pass {
+		double run(FitPixels px, double[] p, EmpiricalProfile profile, double[][] jtj, double[] jtr, double[] noise,
+			double[] models);
+	}
+
+	/**
+	 * Same J^T J, J^T r, residuals, noise weights and model values from {@code fast} as from the general pass, bit for
+	 * bit, with and without J^T J.
+	 */
+	private static void assertSameAsGeneral(final FitPixels px, final double[] p, final int n,
+		final EmpiricalProfile profile, final Pass fast)
+	{
+		final int np = p.length;
+		for (final boolean hessian : new boolean[] { true, false }) {
+			final double[][] jg = hessian ? new double[np][np] : null, jf = hessian ? new double[np][np] : null;
+			final double[] rg = new double[np], rf = new double[np], ng = new double[4 * n], nf = new double[4 * n];
+			final double[] mg = new double[px.count()], mf = new double[px.count()];
+			final double rssGroup = NormalEquations.accumulateGroup(px, p, n, profile, jg, rg, ng, mg);
+			final double rssFast = fast.run(px, p, profile, jf, rf, nf, mf);
+			assertEquals(rssGroup, rssFast, 0);
+			assertArrayEquals(rg, rf, 0);
+			assertArrayEquals(ng, nf, 0);
+			assertArrayEquals(mg, mf, 0);
+			if (hessian) for (int r = 0; r < np; r++)
+				assertArrayEquals(jg[r], jf[r], 0, "row " + r);
+		}
+	}
+
 	@Test
 	void singleMemberFastPathIsIdentical() {
 		final EmpiricalProfile profile = ringed();
 		final FitPixels px = pixels(profile, 34.3, 31.8);
-		final double[] p = { 34.1, 32.0, 1.05, 0.98, 39, 0.4, -0.2 };
-		for (final boolean hessian : new boolean[] { true, false }) {
-			final double[][] jg = hessian ? new double[7][7] : null, js = hessian ? new double[7][7] : null;
-			final double[] rg = new double[7], rs = new double[7], ng = new double[4], ns = new double[4];
-			final double[] mg = new double[px.count()], ms = new double[px.count()];
-			final double rssGroup = NormalEquations.accumulateGroup(px, p, 1, profile, jg, rg, ng, mg);
-			final double rssSingle = NormalEquations.accumulateSingle(px, p, profile, js, rs, ns, ms);
-			assertEquals(rssGroup, rssSingle, 0);
-			assertArrayEquals(rg, rs, 0);
-			assertArrayEquals(ng, ns, 0);
-			assertArrayEquals(mg, ms, 0);
-			if (hessian) for (int r = 0; r < 7; r++)
-				assertArrayEquals(jg[r], js[r], 0, "row " + r);
-		}
+		assertSameAsGeneral(px, new double[] { 34.1, 32.0, 1.05, 0.98, 39, 0.4, -0.2 }, 1, profile,
+			NormalEquations::accumulateSingle);
 	}
 
 	/**
-	 * The pair's path against the general one, bit for bit, members near enough for shared pixels and far enough
-	 * for pixels out of one member's reach (the profile reaches 30 px).
+	 * The pair's path against the general one, members near enough for shared pixels and far enough for pixels out
+	 * of one member's reach (the profile reaches 30 px).
 	 */
 	@Test
 	void pairFastPathIsIdentical() {
@@ -77,18 +94,6 @@ class NormalEquationsTest {
 			if ((Math.hypot(px.x()[i] - p[0], px.y()[i] - p[1]) < 30 * p[3]) != (Math.hypot(px.x()[i] - p[4], px.y()[i] -
 				p[5]) < 30 * p[7])) onlyOne++;
 		assertTrue(onlyOne > 500, "pixels within reach of one member only: " + onlyOne);
-		for (final boolean hessian : new boolean[] { true, false }) {
-			final double[][] jg = hessian ? new double[11][11] : null, jp = hessian ? new double[11][11] : null;
-			final double[] rg = new double[11], rp = new double[11], ng = new double[8], nq = new double[8];
-			final double[] mg = new double[px.count()], mp = new double[px.count()];
-			final double rssGroup = NormalEquations.accumulateGroup(px, p, 2, profile, jg, rg, ng, mg);
-			final double rssPair = NormalEquations.accumulatePair(px, p, profile, jp, rp, nq, mp);
-			assertEquals(rssGroup, rssPair, 0);
-			assertArrayEquals(rg, rp, 0);
-			assertArrayEquals(ng, nq, 0);
-			assertArrayEquals(mg, mp, 0);
-			if (hessian) for (int r = 0; r < 11; r++)
-				assertArrayEquals(jg[r], jp[r], 0, "row " + r);
-		}
+		assertSameAsGeneral(px, p, 2, profile, NormalEquations::accumulatePair);
 	}
 }
