@@ -130,6 +130,7 @@ final class BenchCommand implements ContactTrackerCli.Subcommand {
 				"new process/s", launcher == null ? "" : "ms/frame");
 			final ByteArrayOutputStream sink = new ByteArrayOutputStream();
 			final PrintStream quiet = new PrintStream(sink, true, StandardCharsets.UTF_8);
+			final java.util.Map<Method, Double> newProcess = new java.util.EnumMap<>(Method.class); // new process, all cores
 			for (final Method m : Method.values())
 				for (final int threads : new int[] { 1, cores }) {
 					final String[] args = { "track", tif.toString(), "--threshold", fmt(type.threshold()), "--r-out", fmt(type
@@ -149,9 +150,11 @@ final class BenchCommand implements ContactTrackerCli.Subcommand {
 					command[0] = launcher.toString();
 					System.arraycopy(args, 0, command, 1, args.length - 1);
 					final double f = best(Math.min(rounds, 2), () -> runProcess(command));
+					if (threads == cores) newProcess.put(m, f);
 					out.printf(Locale.ROOT, "%-28s %10.0f %10.2f %14.0f %12.2f%n", name, frames / s, 1000 * s / frames,
 						frames / f, 1000 * f / frames);
 				}
+			if (launcher != null) startUp(stack, type, cores, rounds, dir, launcher, newProcess);
 		}
 		finally {
 			try (var files = Files.list(dir)) {
@@ -159,6 +162,31 @@ final class BenchCommand implements ContactTrackerCli.Subcommand {
 					Files.deleteIfExists(p);
 			}
 			Files.deleteIfExists(dir);
+		}
+	}
+
+	/**
+	 * What every new process pays whatever the movie's length: {@code track} on the stack's first frame alone
+	 * (JVM start-up, class loading, the file's header, one frame, the CSV), so that a movie's time is about this
+	 * plus its frames at the rate beyond it.
+	 */
+	private void startUp(final SimulatedStack<UnsignedByteType> stack, final ParticleType type, final int cores,
+		final int rounds, final Path dir, final Path launcher, final java.util.Map<Method, Double> movie)
+		throws IOException
+	{
+		final Path one = dir.resolve("one.tif");
+		ImageFiles.saveTiff(ImageFiles.timeSeries("one", stack.frames().subList(0, 1), Calibration.ofPixelSize(type
+			.pixelSizeMicrons(), "micron")), one);
+		final int frames = stack.frames().size();
+		out.printf(Locale.ROOT, "%nStart-up of a new process (track on 1 frame, best of %d), and the rate beyond it on " +
+			"the %d frames above (new process, all cores):%n", Math.min(rounds, 2), frames);
+		for (final Method m : new Method[] { Method.PAPER, Method.FIT }) {
+			final String[] command = { launcher.toString(), "track", one.toString(), "--threshold", fmt(type.threshold()),
+				"--r-out", fmt(type.rOut()), "--method", m.key(), "--threads", Integer.toString(cores), "--csv", dir
+					.resolve("one.csv").toString(), "--no-progress" };
+			final double s = best(Math.min(rounds, 2), () -> runProcess(command));
+			out.printf(Locale.ROOT, "%-28s %8.3f s%s%n", m.key() + " (" + cores + " threads)", s, frames > 1 ? String
+				.format(Locale.ROOT, ", then %.2f ms/frame", 1000 * (movie.get(m) - s) / (frames - 1)) : "");
 		}
 	}
 

@@ -170,12 +170,14 @@ public final class ProfileEstimator {
 			aloneUsable[k] = previous.censoring().usableBetween(b + previous.profile().leastLight(a), b + previous
 				.profile().greatestLight(a));
 		}
+		final double[] values = new double[w]; // each row read once (Plane.read), not pixel by pixel
 		for (int y = 0; y < h; y++) {
+			plane.read(0, w - 1, y, y, values, 0);
 			int nn = 0;
 			for (int k = 0; k < n; k++)
 				if (Math.abs(y - cy[k]) < radius * maxScale) near[nn++] = k;
 			for (int x = 0; x < w; x++) {
-				final double v = plane.get(x, y);
+				final double v = values[x];
 				if (v >= saturation || v <= floor) continue;
 				int len = 0, reached = 0;
 				boolean skip = false;
