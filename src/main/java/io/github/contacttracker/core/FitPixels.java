@@ -148,7 +148,8 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 				count = keep(censoring, y, a, b, px, py, pv, count);
 			}
 		}
-		if (rowStart.length > 0) rowStart[rowStart.length - 1] = count;
+		if (count == 0) return new FitPixels(px, py, pv, new double[0], 0, mx, my, unit); // (none: not fitted)
+		rowStart[rowStart.length - 1] = count;
 		// The light of reliable particles outside the group, at their current centres, amplitudes and scales: on
 		// the rows within their reach only.
 		final double[] fixed = new double[count];
@@ -157,8 +158,9 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 			final double kx = e[k].x(), ky = e[k].y(), ks = GroupFit.scaleOf(e[k]), ka = GroupFit.amplitudeOf(e[k]);
 			final double reach = R * ks;
 			if (kx < x0 - reach || kx > x1 + reach || ky < y0 - reach || ky > y1 + reach) continue;
-			final int from = rowStart[Math.max(0, (int) Math.floor(ky - reach) - y0)];
-			final int to = rowStart[Math.min(y1 - y0 + 1, (int) Math.ceil(ky + reach) - y0 + 1)];
+			final int rows = rowStart.length - 1;
+			final int from = rowStart[Math.max(0, Math.min(rows, (int) Math.floor(ky - reach) - y0))];
+			final int to = rowStart[Math.max(0, Math.min(rows, (int) Math.ceil(ky + reach) - y0 + 1))];
 			addLight(px, py, fixed, from, to, kx, ky, ks, ka, reach, profile);
 		}
 		return new FitPixels(px, py, pv, fixed, count, mx, my, unit);
