@@ -276,9 +276,9 @@ final class CommandOptions {
 	/** @return e.g. {@code [-h] [--[no-]progress] [--csv=OUT.csv] --r-out=R MOVIE}: flags, options, parameters */
 	private String synopsis() {
 		final List<String> items = new ArrayList<>();
-		final String letters = all().stream().filter(o -> o.isFlag() && o.shortName() != null).map(o -> o.shortName()
-			.substring(1)).collect(Collectors.joining());
-		if (!letters.isEmpty()) items.add("[-" + letters + "]");
+		// each short flag on its own ([-h] [-V]): the parser does not read them combined
+		for (final Option<?> option : all())
+			if (option.isFlag() && option.shortName() != null) items.add("[" + option.shortName() + "]");
 		final List<Option<?>> sorted = sorted(all().stream().filter(o -> !o.positional()));
 		for (final boolean flags : new boolean[] { true, false })
 			for (final Option<?> option : sorted)

@@ -42,7 +42,6 @@ public final class ContactTrackerCli {
 		System.exit(run(args, stdout, System.err));
 	}
 
-	/** @return every subcommand, writing to {@code out} and {@code err}, in the order the help lists them */
 	/** The subcommands' names, in the order the help lists them. */
 	private static final List<String> COMMANDS = List.of("demo", "track", "simulate", "bench", "accuracy", "potential",
 		"demo-potential", "profile");

@@ -27,9 +27,9 @@ import net.imglib2.type.numeric.RealType;
  * stores signed 16-bit data with an offset of 32768 and such a function), each frame is converted to those values,
  * so that a threshold means what the user sees.
  * <p>
- * <b>Threads.</b> {@link #frame(int)} may be called from several threads. Reads from a virtual stack are serialised
- * (ImageJ's virtual stacks are not all thread-safe; the AVI reader shares one file handle) and the last few frames
- * read are kept, so that a frame asked for twice in a row (the profile methods' passes) is read once; no more than
+ * <b>Threads.</b> {@link #frame(int)} may be called from several threads. The planes of our own TIFF reader are
+ * read in parallel (each read opens the file); reads from other virtual stacks are serialised (ImageJ's virtual
+ * stacks are not all thread-safe; the AVI reader shares one file handle). The last few frames read are kept, so that a frame asked for twice in a row (the profile methods' passes) is read once; no more than
  * {@link #CACHED_FRAMES} frames are held.
  */
 public final class ImagePlusFrames {
@@ -122,7 +122,10 @@ public final class ImagePlusFrames {
 		if (!(stack instanceof FileStack files && files.readsConcurrently())) {
 			synchronized (cache) {
 				final RandomAccessibleInterval<? extends RealType<?>> cached = cache.get(t);
-				return cached != null ? cached : remember(t, read(t));
+				if (cached != null) return cached;
+				final ImageProcessor ip = read(t);
+				reads++;
+				return remember(t, ip);
 			}
 		}
 		synchronized (cache) {
@@ -131,6 +134,7 @@ public final class ImagePlusFrames {
 		}
 		final ImageProcessor ip = read(t);
 		synchronized (cache) {
+			reads++;
 			final RandomAccessibleInterval<? extends RealType<?>> cached = cache.get(t); // read meanwhile by another
 			return cached != null ? cached : remember(t, ip);
 		}
@@ -150,7 +154,6 @@ public final class ImagePlusFrames {
 
 	/** Caches frame {@code t} read as {@code ip}; called holding the cache's lock. */
 	private RandomAccessibleInterval<? extends RealType<?>> remember(final int t, final ImageProcessor ip) {
-		reads++;
 		final RandomAccessibleInterval<? extends RealType<?>> frame = wrap(ip);
 		cache.put(t, frame);
 		return frame;

@@ -174,7 +174,7 @@ class CommandOptionsTest {
 			options, new CommandOptions("contact-tracker longer-name", "Another."))).withFooter("The end.");
 		root.parse(new String[] { "-V" }, 0);
 		assertTrue(root.versionRequested());
-		assertEquals(List.of("Usage: contact-tracker [-hV] [COMMAND]", "Top.", //
+		assertEquals(List.of("Usage: contact-tracker [-h] [-V] [COMMAND]", "Top.", //
 			"  -h, --help      Show this help and exit.", //
 			"  -V, --version   Print version information and exit.", //
 			"Commands:", //
