@@ -2,8 +2,8 @@ package io.github.contacttracker.cli;
 
 import java.util.ArrayList;
 import java.util.Comparator;
-import java.util.HashMap;
-import java.util.HashSet;
+import java.util.Collections;
+import java.util.IdentityHashMap;
 import java.util.Iterator;
 import java.util.List;
 import java.util.Locale;
@@ -48,8 +48,10 @@ final class CommandOptions {
 	private final List<CommandOptions> subcommands = new ArrayList<>();
 	private String footer;
 
-	private final Map<Option<?>, Object> values = new HashMap<>();
-	private final Set<Option<?>> given = new HashSet<>();
+	// by identity: each declared option is its own key (and a record's generated hashCode links method handles,
+	// a millisecond or more of start-up)
+	private final Map<Option<?>, Object> values = new IdentityHashMap<>();
+	private final Set<Option<?>> given = Collections.newSetFromMap(new IdentityHashMap<>());
 
 	/**
 	 * @param commandLine how the command is called, e.g. {@code contact-tracker demo}
@@ -238,8 +240,9 @@ final class CommandOptions {
 	}
 
 	private void checkDeclared(final Option<?> option) {
-		if (!all().contains(option)) throw new IllegalArgumentException(option.mainName() + " is not an option of " +
-			commandLine);
+		for (final Option<?> o : all())
+			if (o == option) return; // by identity, as the values are kept
+		throw new IllegalArgumentException(option.mainName() + " is not an option of " + commandLine);
 	}
 
 	private static Object convert(final Option<?> option, final String text) throws BadOptionException {
