@@ -51,6 +51,9 @@ final class CommandOptions {
 	// by identity: each declared option is its own key (and a record's generated hashCode links method handles,
 	// a millisecond or more of start-up)
 	private final Map<Option<?>, Object> values = new IdentityHashMap<>();
+	/** The last positional parameter's further values, when it repeats ({@link #withRepeatedLastParameter()}). */
+	private final List<Object> repeated = new ArrayList<>();
+	private boolean repeatLast;
 	private final Set<Option<?>> given = Collections.newSetFromMap(new IdentityHashMap<>());
 
 	/**
@@ -72,6 +75,14 @@ final class CommandOptions {
 			if (named(name) != null) throw new IllegalArgumentException(commandLine + ": " + name + " declared twice");
 		declared.add(option);
 		return option;
+	}
+
+	/**
+	 * Lets the last positional parameter be given more than once ({@code MOVIE...}); {@link #values} reads them all.
+	 */
+	CommandOptions withRepeatedLastParameter() {
+		repeatLast = true;
+		return this;
 	}
 
 	/** Adds {@code -V}/{@code --version}; see {@link #versionRequested()}. */
@@ -119,6 +130,8 @@ final class CommandOptions {
 	void parse(final String[] args, final int first) throws BadOptionException {
 		values.clear();
 		given.clear();
+		repeated.clear();
+		final Option<?> last = lastParameter();
 		final List<Integer> unmatched = new ArrayList<>();
 		final Iterator<Option<?>> positionals = declared.stream().filter(Option::positional).iterator();
 		boolean optionsEnded = false;
@@ -152,6 +165,7 @@ final class CommandOptions {
 				given.add(positional);
 				values.put(positional, convert(positional, arg));
 			}
+			else if (repeatLast && last != null && given.contains(last)) repeated.add(convert(last, arg));
 			else unmatched.add(i);
 		}
 		if (helpRequested() || versionRequested()) return;
@@ -183,6 +197,20 @@ final class CommandOptions {
 	<T> T value(final Option<T> option) {
 		checkDeclared(option);
 		return (T) values.get(option);
+	}
+
+	/**
+	 * @return every value given to a positional parameter that repeats (see {@link #withRepeatedLastParameter()}), in
+	 *         order; one value (or none) for any other option
+	 */
+	@SuppressWarnings("unchecked")
+	<T> List<T> values(final Option<T> option) {
+		final List<T> all = new ArrayList<>();
+		final T first = value(option);
+		if (first != null) all.add(first);
+		if (option == lastParameter()) for (final Object more : repeated)
+			all.add((T) more);
+		return all;
 	}
 
 	/** @return the help: usage line, description, options (and subcommands), wrapped to {@value #WIDTH} columns */
@@ -218,6 +246,14 @@ final class CommandOptions {
 		BadOptionException(final String message) {
 			super(message);
 		}
+	}
+
+	/** @return the last positional parameter declared, or null */
+	private Option<?> lastParameter() {
+		Option<?> last = null;
+		for (final Option<?> option : declared)
+			if (option.positional()) last = option;
+		return last;
 	}
 
 	private List<Option<?>> all() {
@@ -288,7 +324,7 @@ final class CommandOptions {
 				if (option.isFlag() == flags && (!flags || option.shortName() == null)) items.add(item(option));
 		if (!subcommands.isEmpty()) items.add("[COMMAND]");
 		for (final Option<?> option : declared)
-			if (option.positional()) items.add(item(option));
+			if (option.positional()) items.add(item(option) + (repeatLast && option == lastParameter() ? "..." : ""));
 		return String.join(" ", items);
 	}
 

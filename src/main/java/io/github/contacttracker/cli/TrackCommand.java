@@ -1,12 +1,17 @@
 package io.github.contacttracker.cli;
 
 import java.io.IOException;
+import java.io.UncheckedIOException;
 import java.io.OutputStreamWriter;
 import java.io.PrintStream;
 import java.io.Writer;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Map;
 
 import ij.ImagePlus;
@@ -24,7 +29,7 @@ import io.github.contacttracker.settings.SettingValues;
 import io.github.contacttracker.settings.TrackingSettings;
 
 /**
- * {@code contact-tracker track MOVIE --threshold T --r-out R [options]}: localizes every frame with
+ * {@code contact-tracker track MOVIE... --threshold T --r-out R [options]}: localizes every frame with
  * {@link TrackingPipeline}, frames read from disk as the threads need them, and writes the spots as CSV (stdout
  * without {@code --csv}) and optionally as a TrackMate file. The tracking options and their help are
  * {@link TrackingSettings#ALL}, each as {@link Setting#cliOption()}, generated from the descriptor so they cannot
@@ -41,13 +46,15 @@ final class TrackCommand implements ContactTrackerCli.Subcommand {
 	private final CommandOptions options = new CommandOptions("contact-tracker track", "Localize the particles of " +
 		"every frame of a movie; the spots go to stdout as CSV without --csv.", "MOVIE: a TIFF (multi-page, BigTIFF, " +
 			"OME-TIFF, 8/16/32-bit integer or 32/64-bit float), an AVI (uncompressed, MJPEG, PNG), a folder of " +
-			"TIFF/PNG/JPEG frames, or another image ImageJ opens.");
+			"TIFF/PNG/JPEG frames, or another image ImageJ opens. Several movies, with --out-dir, run one after the " +
+			"other in one process: the JVM starts and warms up once.").withRepeatedLastParameter();
 	private final Option<Path> movieOption;
 	/** Each tracking setting's option, its text read by the setting itself. */
 	private final Map<Setting<?>, Option<String>> settingOptions = new LinkedHashMap<>();
 	private final Option<Integer> threadsOption;
 	private final Option<Path> csvOption;
 	private final Option<Path> trackMateXmlOption;
+	private final Option<Path> outDirOption;
 	private final Option<Boolean> progressOption;
 
 	/** The {@code track} command: its tracking options generated from the settings descriptor. */
@@ -64,6 +71,8 @@ final class TrackCommand implements ContactTrackerCli.Subcommand {
 		csvOption = options.add(Option.path("--csv", "OUT.csv", "Write the spots here."));
 		trackMateXmlOption = options.add(Option.path("--trackmate-xml", "OUT.xml", "Also write a TrackMate file (with " +
 			"--csv: both or neither)."));
+		outDirOption = options.add(Option.path("--out-dir", "DIR", "Write each movie's spots to DIR/NAME.csv (NAME: " +
+			"its file or folder name without extension); needed for several movies, instead of --csv."));
 		progressOption = options.add(Option.negatableFlag("--progress", "Show progress (frames/s, time left) on " +
 			"stderr; by default only when stderr is a terminal."));
 	}
@@ -81,14 +90,57 @@ final class TrackCommand implements ContactTrackerCli.Subcommand {
 
 	@Override
 	public Integer call() throws IOException {
-		final Path input = options.value(movieOption);
+		final List<Path> movies = options.values(movieOption);
 		final SettingValues settings = settings();
-		final Outputs outputs = new Outputs(options.value(csvOption), options.value(trackMateXmlOption), null);
-		outputs.check();
+		final Path outDir = options.value(outDirOption);
+		final Path csv = options.value(csvOption), xml = options.value(trackMateXmlOption);
+		if (outDir != null && (csv != null || xml != null)) throw new InvalidInputException("--out-dir writes each " +
+			"movie's CSV itself: give it without --csv and --trackmate-xml");
+		if (movies.size() > 1 && outDir == null) throw new InvalidInputException(movies.size() + " movies need " +
+			"--out-dir DIR (each movie's spots go to DIR/NAME.csv)");
+		final List<Outputs> outputs = new ArrayList<>();
+		if (outDir == null) outputs.add(new Outputs(csv, xml, null));
+		else {
+			if (!Files.isDirectory(outDir)) throw new InvalidInputException("--out-dir " + outDir + " is not a folder");
+			final Map<Path, Path> movieOf = new HashMap<>();
+			for (final Path movie : movies) {
+				final Path file = outDir.resolve(name(movie) + ".csv");
+				final Path other = movieOf.put(file.toAbsolutePath().normalize(), movie);
+				if (other != null) throw new InvalidInputException(other + " and " + movie + " would both be written to " +
+					file + ": rename one, or run them with different --out-dir");
+				outputs.add(new Outputs(file, null, null));
+			}
+		}
+		for (final Outputs o : outputs)
+			o.check();
 		final int threads = options.value(threadsOption);
 		final boolean showProgress = options.given(progressOption) ? options.value(progressOption) : Boolean.getBoolean(
 			STDERR_TTY);
+		if (movies.size() == 1) {
+			track(movies.get(0), outputs.get(0), settings, threads, showProgress);
+			return 0;
+		}
+		// several movies: a movie that cannot be tracked is reported, and the others are still done
+		int failed = 0;
+		for (int m = 0; m < movies.size(); m++) {
+			try {
+				track(movies.get(m), outputs.get(m), settings, threads, showProgress);
+			}
+			catch (final InvalidInputException | IOException | UncheckedIOException e) {
+				err.println("contact-tracker: error: " + movies.get(m) + ": " + ContactTrackerCli.oneLine(e.getMessage()));
+				failed++;
+			}
+		}
+		if (failed == 0) return 0;
+		err.println("contact-tracker: " + failed + " of " + movies.size() + " movies failed (see above); the others " +
+			"were written");
+		return ContactTrackerCli.EXIT_BAD_INPUT;
+	}
 
+	/** Tracks one movie into {@code outputs} (the spots to stdout without a CSV file), its summary on stdout. */
+	private void track(final Path input, final Outputs outputs, final SettingValues settings, final int threads,
+		final boolean showProgress) throws IOException
+	{
 		final ImagePlus imp = ImageFiles.open(input);
 		// without --channel, a multi-channel image is refused rather than silently reduced to its first channel
 		final ImagePlusFrames frames = ImagePlusFrames.of(imp, options.given(settingOptions.get(TrackingSettings.CHANNEL))
@@ -110,7 +162,14 @@ final class TrackCommand implements ContactTrackerCli.Subcommand {
 			w.flush();
 		}
 		(files.csv() != null ? out : err).println(input + ": " + result.summary(input.getFileName().toString()));
-		return 0;
+	}
+
+	/** @return a movie's name for its CSV: the file name without its extension (a folder's name as it is) */
+	static String name(final Path movie) {
+		final Path fileName = movie.toAbsolutePath().normalize().getFileName();
+		final String name = fileName == null ? "movie" : fileName.toString();
+		final int dot = name.lastIndexOf('.');
+		return dot > 0 && !Files.isDirectory(movie) ? name.substring(0, dot) : name;
 	}
 
 	/** @return the tracking settings given on the command line, the others at their defaults */

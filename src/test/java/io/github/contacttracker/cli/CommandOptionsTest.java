@@ -181,4 +181,20 @@ class CommandOptionsTest {
 			"  test         A command for the tests.", //
 			"  longer-name  Another.", "", "The end."), root.usage().lines().toList());
 	}
+
+	/** A last parameter that repeats takes every further argument, in order; without that they are left over. */
+	@Test
+	void lastParameterThatRepeats() throws Exception {
+		assertEquals("Unmatched arguments from index 1: 'b.tif', 'c.tif'", error("a.tif", "b.tif", "--threshold", "1",
+			"c.tif"));
+		options.withRepeatedLastParameter();
+		parse("a.tif", "b.tif", "--threshold", "1", "c.tif");
+		assertEquals(List.of(Path.of("a.tif"), Path.of("b.tif"), Path.of("c.tif")), options.values(input));
+		assertEquals(Path.of("a.tif"), options.value(input));
+		assertEquals(List.of(1.0), options.values(threshold), "one value for an option");
+		parse("a.tif", "--threshold", "1");
+		assertEquals(List.of(Path.of("a.tif")), options.values(input), "nothing left from the previous parse");
+		assertTrue(options.usage().contains(" INPUT...\n") || options.usage().contains(" INPUT..." + System.lineSeparator()),
+			options.usage());
+	}
 }

@@ -114,7 +114,8 @@ class ContactTrackerCliTest {
 		Files.writeString(notImage, "not an image");
 		assertBadInput("as an image", csv, "track", notImage.toString(), "--threshold", "1", "--r-out", "5", "--csv",
 			csv.toString());
-		assertBadInput("Unknown options: '--bogus'", null, "track", tif.toString(), "--threshold",
+		// (the 1 after it reads as a second movie: track takes several)
+		assertBadInput("Unknown option: '--bogus'", null, "track", tif.toString(), "--threshold",
 			"85", "--r-out", "61", "--bogus", "1");
 		assertBadInput("Missing required options: '--threshold=T', '--r-out=R'", null, "track", tif.toString());
 		assertBadInput("Invalid value for option '--threads': 'two' is not an int", csv, "track", tif.toString(),
@@ -122,6 +123,58 @@ class ContactTrackerCliTest {
 		assertBadInput("unknown command", null, "frobnicate");
 		try (var files = Files.list(dir)) {
 			assertTrue(files.noneMatch(p -> p.getFileName().toString().endsWith(".part")), "no temporary files left");
+		}
+	}
+
+	/**
+	 * Several movies in one run: each movie's CSV in the output folder, byte for byte what a run of that movie alone
+	 * writes; a movie that cannot be tracked is named, the others are still written, and the status says so.
+	 */
+	@Test
+	void severalMoviesGoToOneCsvEachInTheOutputFolder() throws IOException {
+		final Path a = simulated(), b = dir.resolve("pair15.tif");
+		assertEquals(0, run("simulate", "--scenario", "pair", "--separation", "1.5", "--frames", "3", "--out", b
+			.toString(), "--truth", dir.resolve("truth15.csv").toString())[0]);
+		final Path outDir = Files.createDirectory(dir.resolve("out"));
+		final Object[] r = run("track", a.toString(), b.toString(), "--threshold", "85", "--r-out", "61", "--out-dir",
+			outDir.toString());
+		assertEquals(0, r[0], (String) r[2]);
+		assertTrue(((String) r[1]).contains("8 spots in 4 frames of 'pair.tif'") && ((String) r[1]).contains(
+			"6 spots in 3 frames of 'pair15.tif'"), (String) r[1]);
+		for (final Path movie : List.of(a, b)) {
+			final Path alone = dir.resolve("alone.csv");
+			assertEquals(0, run("track", movie.toString(), "--threshold", "85", "--r-out", "61", "--csv", alone
+				.toString())[0]);
+			final String name = movie.getFileName().toString().replace(".tif", ".csv");
+			assertEquals(Files.readString(alone), Files.readString(outDir.resolve(name)), name);
+		}
+
+		final Path bad = dir.resolve("bad.tif");
+		Files.writeString(bad, "not an image");
+		final Path again = Files.createDirectory(dir.resolve("again"));
+		final Object[] partly = run("track", a.toString(), bad.toString(), b.toString(), "--threshold", "85", "--r-out",
+			"61", "--out-dir", again.toString());
+		assertEquals(ContactTrackerCli.EXIT_BAD_INPUT, partly[0]);
+		final List<String> err = ((String) partly[2]).lines().toList();
+		assertEquals(2, err.size(), String.join("\n", err));
+		assertTrue(err.get(0).startsWith("contact-tracker: error: " + bad) && err.get(0).contains("as an image"), err
+			.get(0));
+		assertTrue(err.get(1).contains("1 of 3 movies failed"), err.get(1));
+		assertTrue(Files.exists(again.resolve("pair.csv")) && Files.exists(again.resolve("pair15.csv")));
+		assertFalse(Files.exists(again.resolve("bad.csv")));
+
+		// refused before any work: several movies without a folder, --out-dir with --csv, two movies of one name
+		assertBadInput("2 movies need --out-dir", null, "track", a.toString(), b.toString(), "--threshold", "85",
+			"--r-out", "61");
+		assertBadInput("without --csv", null, "track", a.toString(), "--threshold", "85", "--r-out", "61", "--out-dir",
+			outDir.toString(), "--csv", dir.resolve("x.csv").toString());
+		final Path twin = Files.createDirectory(dir.resolve("twin")).resolve("pair.tif");
+		Files.copy(a, twin);
+		final Path fresh = Files.createDirectory(dir.resolve("fresh"));
+		assertBadInput("would both be written to", null, "track", a.toString(), twin.toString(), "--threshold", "85",
+			"--r-out", "61", "--out-dir", fresh.toString());
+		try (var files = Files.list(fresh)) {
+			assertEquals(0, files.count(), "nothing written");
 		}
 	}
 }
