@@ -70,18 +70,31 @@ public final class GradientOperator {
 		final double[] gy, final int off, final double[] scratch)
 	{
 		final int n = x1 - x0 + 1, m = n + 4;
-		// rows y-2 .. y+2 over x0-2 .. x1+2: row j at scratch[rows + (j + 2) * m]
-		final int rows = 2 * n + 6;
-		p.read(x0 - 2, x1 + 2, y - 2, y + 2, scratch, rows);
-		final int up2 = rows, up1 = rows + m, mid = rows + 2 * m, down1 = rows + 3 * m, down2 = rows + 4 * m;
 		// col[k] = I(x, y-1) + I(x, y) + I(x, y+1) for x = x0-2+k, k in 0..n+3
 		// dv[k]  = I(x, y+1) + I(x, y+2) - I(x, y-1) - I(x, y-2) for x = x0-1+k, k in 0..n+1
 		final double[] col = scratch;
 		final int dvOff = n + 4;
-		for (int k = 0; k < n + 4; k++)
-			col[k] = scratch[up1 + k] + scratch[mid + k] + scratch[down1 + k];
-		for (int k = 0; k < n + 2; k++)
-			col[dvOff + k] = scratch[down1 + k + 1] + scratch[down2 + k + 1] - scratch[up1 + k + 1] - scratch[up2 + k + 1];
+		final byte[] bytes = p.unsignedBytes();
+		if (bytes != null) {
+			// 8-bit pixels straight from the array, in integers: these sums are exact either way, so identical
+			final int w = p.width(), mid = y * w + x0 - 2, up1 = mid - w, up2 = up1 - w, down1 = mid + w, down2 = down1 + w;
+			for (int k = 0; k < n + 4; k++)
+				col[k] = (bytes[up1 + k] & 0xff) + (bytes[mid + k] & 0xff) + (bytes[down1 + k] & 0xff);
+			for (int k = 0; k < n + 2; k++)
+				col[dvOff + k] = (bytes[down1 + k + 1] & 0xff) + (bytes[down2 + k + 1] & 0xff) - (bytes[up1 + k + 1] & 0xff) -
+					(bytes[up2 + k + 1] & 0xff);
+		}
+		else {
+			// rows y-2 .. y+2 over x0-2 .. x1+2, read in one call: row j at scratch[rows + (j + 2) * m]
+			final int rows = 2 * n + 6;
+			p.read(x0 - 2, x1 + 2, y - 2, y + 2, scratch, rows);
+			final int up2 = rows, up1 = rows + m, mid = rows + 2 * m, down1 = rows + 3 * m, down2 = rows + 4 * m;
+			for (int k = 0; k < n + 4; k++)
+				col[k] = scratch[up1 + k] + scratch[mid + k] + scratch[down1 + k];
+			for (int k = 0; k < n + 2; k++)
+				col[dvOff + k] = scratch[down1 + k + 1] + scratch[down2 + k + 1] - scratch[up1 + k + 1] - scratch[up2 + k +
+					1];
+		}
 		for (int k = 0; k < n; k++) {
 			gx[off + k] = col[k + 3] + col[k + 4] - col[k + 1] - col[k];
 			gy[off + k] = col[dvOff + k] + col[dvOff + k + 1] + col[dvOff + k + 2];

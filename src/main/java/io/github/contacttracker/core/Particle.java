@@ -41,10 +41,11 @@ final class Particle {
 		final GradientField field = GradientField.compute(plane, region);
 		double q = 0, qx = 0, qy = 0;
 		double sx = 0, sy = 0;
+		final byte[] bytes = plane.unsignedBytes(); // 8-bit pixels straight from the array (the same values)
 		for (int r = 0; r < region.runCount(); r++) {
-			final int yy = region.runY(r);
+			final int yy = region.runY(r), row = yy * plane.width();
 			for (int xx = region.runStart(r); xx <= region.runEnd(r); xx++) {
-				final double v = plane.get(xx, yy) - threshold;
+				final double v = (bytes != null ? bytes[row + xx] & 0xff : plane.get(xx, yy)) - threshold;
 				q += v;
 				qx += v * xx;
 				qy += v * yy;

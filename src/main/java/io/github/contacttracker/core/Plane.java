@@ -47,6 +47,11 @@ public abstract class Plane {
 	/** @return the grey value at local (x, y) */
 	public abstract double get(int x, int y);
 
+	/** @return the pixels of an 8-bit unsigned plane (row-major, {@code width} per row), else null */
+	byte[] unsignedBytes() {
+		return null;
+	}
+
 	/**
 	 * Copies the grey values of the rectangle {@code x0..x1} by {@code y0..y1} (inclusive) to {@code out}, row after
 	 * row from index {@code at}: what {@link #get} gives, in one call and tight loops (row spans of the fit's pixels,
@@ -277,6 +282,11 @@ public abstract class Plane {
 		@Override
 		int at(final int i) {
 			return data[i] & 0xff;
+		}
+
+		@Override
+		byte[] unsignedBytes() {
+			return data;
 		}
 
 		@Override

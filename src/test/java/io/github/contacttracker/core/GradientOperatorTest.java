@@ -54,6 +54,12 @@ class GradientOperatorTest {
 				assertEquals(convolve(img, w, KX, x, y), GradientOperator.gx(plane, x, y), 0.0);
 				assertEquals(convolve(img, w, KY, x, y), GradientOperator.gy(plane, x, y), 0.0);
 			}
+			// a run inside the row, written at an offset (the 8-bit path reads the array itself)
+			GradientOperator.alongRun(plane, y, 7, w - 5, gx, gy, 2, scratch);
+			for (int x = 7; x <= w - 5; x++) {
+				assertEquals(convolve(img, w, KX, x, y), gx[2 + x - 7], 0.0, "gx at " + x + "," + y);
+				assertEquals(convolve(img, w, KY, x, y), gy[2 + x - 7], 0.0, "gy at " + x + "," + y);
+			}
 		}
 	}
 
