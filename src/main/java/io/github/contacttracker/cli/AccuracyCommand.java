@@ -26,10 +26,8 @@ import io.github.contacttracker.sim.SimulatedStack;
  * 2.06 um-like profiles, from 2 D down to contact, many noisy images per separation; prints per separation
  * and method the bias and spread of the measured distance against the Cramer-Rao bound.
  */
-final class AccuracyCommand implements ContactTrackerCli.Subcommand {
+final class AccuracyCommand extends ContactTrackerCli.Subcommand {
 
-	private final CommandOptions options = new CommandOptions("contact-tracker accuracy", "The paper's protocol for " +
-		"every method, against the Cramer-Rao bound.");
 	private final Option<Integer> repsOption = options.add(Option.integer("--reps", "N", "Noisy images per " +
 		"separation (at least 2).").withDefault("200"));
 	private final Option<Integer> threadsOption = ContactTrackerCli.threads(options);
@@ -46,15 +44,9 @@ final class AccuracyCommand implements ContactTrackerCli.Subcommand {
 	private final Option<String> separationsOption = options.add(Option.text("--separations", "R,...", "Separations " +
 		"over the diameter (1 = contact). Default: 2 down to 1."));
 
-	private final PrintStream out;
-
 	AccuracyCommand(final PrintStream out) {
-		this.out = out;
-	}
-
-	@Override
-	public CommandOptions options() {
-		return options;
+		super(new CommandOptions("contact-tracker accuracy", "The paper's protocol for every method, against the " +
+			"Cramer-Rao bound."), out);
 	}
 
 	@Override

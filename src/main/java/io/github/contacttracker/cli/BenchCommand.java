@@ -27,10 +27,8 @@ import net.imglib2.type.numeric.integer.UnsignedByteType;
  * {@code bench}: speed of each method on a simulated 512x512 8-bit stack with 12 particles (4 touching pairs),
  * on one thread and on all, against the time of one plain read pass over the same frames (the memory limit).
  */
-final class BenchCommand implements ContactTrackerCli.Subcommand {
+final class BenchCommand extends ContactTrackerCli.Subcommand {
 
-	private final CommandOptions options = new CommandOptions("contact-tracker bench", "Speed of each method on a " +
-		"simulated 512x512 8-bit stack with 12 particles, on one thread and on all.");
 	private final Option<Integer> framesOption = options.add(Option.integer("--frames", "N", "Frames.").withDefault(
 		"400"));
 	private final Option<Integer> roundsOption = options.add(Option.integer("--rounds", "N", "Timed rounds (the best " +
@@ -43,15 +41,9 @@ final class BenchCommand implements ContactTrackerCli.Subcommand {
 	private final Option<Path> saveStackOption = options.add(Option.path("--save-stack", "FILE.tif", "Also save the " +
 		"simulated stack here (e.g. to time another tracker on the same frames: scripts/compare-trackpy-speed.py)."));
 
-	private final PrintStream out;
-
 	BenchCommand(final PrintStream out) {
-		this.out = out;
-	}
-
-	@Override
-	public CommandOptions options() {
-		return options;
+		super(new CommandOptions("contact-tracker bench", "Speed of each method on a simulated 512x512 8-bit stack " +
+			"with 12 particles, on one thread and on all."), out);
 	}
 
 	@Override

@@ -25,11 +25,26 @@ public final class ContactTrackerCli {
 	/** What {@code --version} prints. */
 	static final String VERSION = "Contact Tracker";
 
-	/** A subcommand: its options, and its work (run once they are parsed), which returns the exit status. */
-	interface Subcommand extends Callable<Integer> {
+	/**
+	 * A subcommand: its options, declared by the subclass, and its work (run once they are parsed), which writes to
+	 * {@link #out} and returns the exit status.
+	 */
+	abstract static class Subcommand implements Callable<Integer> {
 
-		/** @return the command's options, which {@link #call()} reads once they are parsed */
-		CommandOptions options();
+		/** The command's options, which {@link #call()} reads once they are parsed. */
+		final CommandOptions options;
+		/** Where the command's results go. */
+		final PrintStream out;
+
+		Subcommand(final CommandOptions options, final PrintStream out) {
+			this.options = options;
+			this.out = out;
+		}
+
+		/** @return the command's options */
+		final CommandOptions options() {
+			return options;
+		}
 	}
 
 	private ContactTrackerCli() {}

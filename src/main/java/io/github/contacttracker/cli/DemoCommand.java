@@ -25,25 +25,17 @@ import io.github.contacttracker.sim.SimulatedStack;
  * first pass, the paper's method and the default method; prints the distance errors and writes an overlay PNG
  * at contact.
  */
-final class DemoCommand implements ContactTrackerCli.Subcommand {
+final class DemoCommand extends ContactTrackerCli.Subcommand {
 
-	private final CommandOptions options = new CommandOptions("contact-tracker demo", "Simulate pairs and triples of " +
-		"5.53 um particles from apart to contact, track them, print the distance errors, write an overlay PNG.");
 	private final Option<Integer> repsOption = options.add(Option.integer("--reps", "N", "Noisy images per " +
 		"separation (at least 2).").withDefault("50"));
 	private final Option<Path> dirOption = options.add(Option.path("--out-dir", "DIR", "Where the overlay PNG goes.")
 		.withDefault("demo-output"));
 	private final Option<Integer> threadsOption = ContactTrackerCli.threads(options);
 
-	private final PrintStream out;
-
 	DemoCommand(final PrintStream out) {
-		this.out = out;
-	}
-
-	@Override
-	public CommandOptions options() {
-		return options;
+		super(new CommandOptions("contact-tracker demo", "Simulate pairs and triples of 5.53 um particles from apart " +
+			"to contact, track them, print the distance errors, write an overlay PNG."), out);
 	}
 
 	@Override

@@ -24,10 +24,8 @@ import io.github.contacttracker.sim.ParticleType;
  * rendered as a movie, tracked with the default method and with the first pass, and U(r) measured from both
  * against the truth; writes the comparison plot and the default method's spots (to rerun {@code potential} on).
  */
-final class DemoPotentialCommand implements ContactTrackerCli.Subcommand {
+final class DemoPotentialCommand extends ContactTrackerCli.Subcommand {
 
-	private final CommandOptions options = new CommandOptions("contact-tracker demo-potential", "A simulated fluid " +
-		"with a known U(r): U(r) by the default method and the first pass against the truth.");
 	private final Option<Integer> framesOption = options.add(Option.integer("--frames", "N", "Frames to simulate (at " +
 		"least 10).").withDefault("300"));
 	private final Option<String> particleOption = options.add(Option.text("--particle", "2.06|5.53", "Particle type " +
@@ -36,15 +34,9 @@ final class DemoPotentialCommand implements ContactTrackerCli.Subcommand {
 		.withDefault("demo-output"));
 	private final Option<Integer> threadsOption = ContactTrackerCli.threads(options);
 
-	private final PrintStream out;
-
 	DemoPotentialCommand(final PrintStream out) {
-		this.out = out;
-	}
-
-	@Override
-	public CommandOptions options() {
-		return options;
+		super(new CommandOptions("contact-tracker demo-potential", "A simulated fluid with a known U(r): U(r) by the " +
+			"default method and the first pass against the truth."), out);
 	}
 
 	@Override

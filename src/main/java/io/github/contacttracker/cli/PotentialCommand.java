@@ -22,10 +22,8 @@ import io.github.contacttracker.potential.SpotSet;
  * {@code potential SPOTS.csv --bin W --r-max R [--csv OUT.csv] [--png OUT.png]}: g(r) and U(r)/kT from a spots
  * table (ours or TrackMate's export). CSV to stdout without {@code --csv}; the summary then goes to stderr.
  */
-final class PotentialCommand implements ContactTrackerCli.Subcommand {
+final class PotentialCommand extends ContactTrackerCli.Subcommand {
 
-	private final CommandOptions options = new CommandOptions("contact-tracker potential", "Pair distribution g(r) " +
-		"and pair potential U(r)/kT from a spots table (ours or TrackMate's export); CSV to stdout without --csv.");
 	private final Option<Path> inputOption = options.add(Option.positionalPath("SPOTS.csv", "The spots table."));
 	private final Option<Double> binOption = options.add(Option.decimal("--bin", "W", "Bin width of r, in the " +
 		"spots' units.").asRequired());
@@ -45,17 +43,12 @@ final class PotentialCommand implements ContactTrackerCli.Subcommand {
 	private final Option<String> zeroOption = options.add(Option.text("--zero", "FROM,TO", "Set U(r) to 0 on " +
 		"average over this range of r."));
 
-	private final PrintStream out;
 	private final PrintStream err;
 
 	PotentialCommand(final PrintStream out, final PrintStream err) {
-		this.out = out;
+		super(new CommandOptions("contact-tracker potential", "Pair distribution g(r) and pair potential U(r)/kT from " +
+			"a spots table (ours or TrackMate's export); CSV to stdout without --csv."), out);
 		this.err = err;
-	}
-
-	@Override
-	public CommandOptions options() {
-		return options;
 	}
 
 	@Override

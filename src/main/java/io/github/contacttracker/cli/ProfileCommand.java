@@ -23,15 +23,11 @@ import net.imglib2.RandomAccessibleInterval;
  * and read off into the tracking settings to copy. The same analysis as Fiji's Contact Tracker Profile
  * ({@link ProfileAnalysis}).
  */
-public final class ProfileCommand implements ContactTrackerCli.Subcommand {
+public final class ProfileCommand extends ContactTrackerCli.Subcommand {
 
 	/** The line the command ends with, followed by the suggested options. */
 	public static final String SUGGESTION = "suggested:";
 
-	private final CommandOptions options = new CommandOptions("contact-tracker profile", "Radial profile of isolated " +
-		"particles and suggested --threshold, --r-out and --diameter.", "Finds the frame's most isolated particles " +
-			"itself (or takes --at X,Y), pools their profiles (ring medians above a local background plane), estimates " +
-			"the noise robustly, and prints a line to copy.").inDeclarationOrder();
 	private final Option<Path> movieOption = options.add(Option.positionalPath("MOVIE", "the image or movie (as " +
 		"'track' reads it)"));
 	private final Option<double[]> atOption = options.add(Option.valued("--at", "X,Y", "a point on the particle to " +
@@ -48,15 +44,11 @@ public final class ProfileCommand implements ContactTrackerCli.Subcommand {
 	private final Option<Path> pngOption = options.add(Option.path("--png", "OUT.png", "write the profile plot"));
 	private final Option<Path> csvOption = options.add(Option.path("--csv", "OUT.csv", "write the profile table"));
 
-	private final PrintStream out;
-
 	ProfileCommand(final PrintStream out) {
-		this.out = out;
-	}
-
-	@Override
-	public CommandOptions options() {
-		return options;
+		super(new CommandOptions("contact-tracker profile", "Radial profile of isolated particles and suggested " +
+			"--threshold, --r-out and --diameter.", "Finds the frame's most isolated particles itself (or takes --at " +
+				"X,Y), pools their profiles (ring medians above a local background plane), estimates the noise " +
+				"robustly, and prints a line to copy.").inDeclarationOrder(), out);
 	}
 
 	@Override

@@ -19,10 +19,8 @@ import io.github.contacttracker.sim.Scenario;
 import io.github.contacttracker.sim.SimulatedStack;
 
 /** {@code simulate --scenario pair|triple --separation R --out stack.tif --truth truth.csv}. */
-final class SimulateCommand implements ContactTrackerCli.Subcommand {
+final class SimulateCommand extends ContactTrackerCli.Subcommand {
 
-	private final CommandOptions options = new CommandOptions("contact-tracker simulate", "Write a simulated TIFF " +
-		"time series of a pair or triple and its truth CSV; print the suggested --threshold and --r-out.");
 	private final Option<String> scenarioOption = options.add(Option.text("--scenario", "pair|triple", "Two " +
 		"particles, or three starting as a touching triangle.").asRequired());
 	private final Option<Double> separationOption = options.add(Option.decimal("--separation", "R_OVER_D", "Centre " +
@@ -40,15 +38,9 @@ final class SimulateCommand implements ContactTrackerCli.Subcommand {
 	private final Option<Integer> bitsOption = options.add(Option.integer("--bit-depth", "8|16", "Bits per pixel.")
 		.withDefault("8"));
 
-	private final PrintStream out;
-
 	SimulateCommand(final PrintStream out) {
-		this.out = out;
-	}
-
-	@Override
-	public CommandOptions options() {
-		return options;
+		super(new CommandOptions("contact-tracker simulate", "Write a simulated TIFF time series of a pair or triple " +
+			"and its truth CSV; print the suggested --threshold and --r-out."), out);
 	}
 
 	@Override

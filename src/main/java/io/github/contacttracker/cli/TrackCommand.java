@@ -36,18 +36,12 @@ import io.github.contacttracker.settings.TrackingSettings;
  * drift from it; their values are read by the settings themselves (the same checks and messages as in Fiji and
  * TrackMate).
  */
-final class TrackCommand implements ContactTrackerCli.Subcommand {
+final class TrackCommand extends ContactTrackerCli.Subcommand {
 
 	/** The system property the launcher sets to {@code true} when standard error is a terminal. */
 	static final String STDERR_TTY = "contact.tracker.stderr.tty";
 
-	private final PrintStream out;
 	private final PrintStream err;
-	private final CommandOptions options = new CommandOptions("contact-tracker track", "Localize the particles of " +
-		"every frame of a movie; the spots go to stdout as CSV without --csv.", "MOVIE: a TIFF (multi-page, BigTIFF, " +
-			"OME-TIFF, 8/16/32-bit integer or 32/64-bit float), an AVI (uncompressed, MJPEG, PNG), a folder of " +
-			"TIFF/PNG/JPEG frames, or another image ImageJ opens. Several movies, with --out-dir, run one after the " +
-			"other in one process: the JVM starts and warms up once.").withRepeatedLastParameter();
 	private final Option<Path> movieOption;
 	/** Each tracking setting's option, its text read by the setting itself. */
 	private final Map<Setting<?>, Option<String>> settingOptions = new LinkedHashMap<>();
@@ -59,7 +53,11 @@ final class TrackCommand implements ContactTrackerCli.Subcommand {
 
 	/** The {@code track} command: its tracking options generated from the settings descriptor. */
 	TrackCommand(final PrintStream out, final PrintStream err) {
-		this.out = out;
+		super(new CommandOptions("contact-tracker track", "Localize the particles of every frame of a movie; the " +
+			"spots go to stdout as CSV without --csv.", "MOVIE: a TIFF (multi-page, BigTIFF, OME-TIFF, 8/16/32-bit " +
+				"integer or 32/64-bit float), an AVI (uncompressed, MJPEG, PNG), a folder of TIFF/PNG/JPEG frames, or " +
+				"another image ImageJ opens. Several movies, with --out-dir, run one after the other in one process: " +
+				"the JVM starts and warms up once.").withRepeatedLastParameter(), out);
 		this.err = err;
 		movieOption = options.add(Option.positionalPath("MOVIE", "The movie, image or folder of frames."));
 		for (final Setting<?> s : TrackingSettings.ALL) {
@@ -75,11 +73,6 @@ final class TrackCommand implements ContactTrackerCli.Subcommand {
 			"its file or folder name without extension); needed for several movies, instead of --csv."));
 		progressOption = options.add(Option.negatableFlag("--progress", "Show progress (frames/s, time left) on " +
 			"stderr; by default only when stderr is a terminal."));
-	}
-
-	@Override
-	public CommandOptions options() {
-		return options;
 	}
 
 	private static String metavar(final Setting<?> s) {
