@@ -97,8 +97,8 @@ public final class ProfileCommand extends ContactTrackerCli.Subcommand {
 		}
 		for (final Path t : targets)
 			out.println("  wrote " + t);
-		out.println(SUGGESTION + " --threshold " + fmt(threshold) + " --r-out " + fmt(rOut) + " --diameter " + new java.math
-			.BigDecimal(String.format(Locale.ROOT, "%.2f", r.diameter())).stripTrailingZeros().toPlainString());
+		out.println(SUGGESTION + " --threshold " + ContactTrackerCli.fmt(threshold) + " --r-out " + ContactTrackerCli.fmt(
+			rOut) + " --diameter " + ContactTrackerCli.fmt(r.suggestedDiameter()));
 		return 0;
 	}
 
@@ -125,7 +125,4 @@ public final class ProfileCommand extends ContactTrackerCli.Subcommand {
 		return b.toString();
 	}
 
-	private static String fmt(final double v) {
-		return v == Math.rint(v) && Math.abs(v) < 1e15 ? Long.toString((long) v) : String.format(Locale.ROOT, "%.4g", v);
-	}
 }

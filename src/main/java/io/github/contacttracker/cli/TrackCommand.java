@@ -15,7 +15,9 @@ import java.util.List;
 import java.util.Map;
 
 import ij.ImagePlus;
+import net.imglib2.RandomAccessibleInterval;
 import io.github.contacttracker.core.InvalidInputException;
+import io.github.contacttracker.core.ProfileAnalysis;
 import io.github.contacttracker.io.ImageFiles;
 import io.github.contacttracker.io.ImagePlusFrames;
 import io.github.contacttracker.io.ImageSource;
@@ -62,8 +64,9 @@ final class TrackCommand extends ContactTrackerCli.Subcommand {
 		movieOption = options.add(Option.positionalPath("MOVIE", "The movie, image or folder of frames."));
 		for (final Setting<?> s : TrackingSettings.ALL) {
 			final Option<String> option = Option.text(s.cliOption(), metavar(s), s.help());
-			settingOptions.put(s, options.add(s.isImageSpecific() ? option.asRequired() : option.withDefault(String
-				.valueOf(s.defaultValue()))));
+			// the image-specific ones (threshold, r_out) have no default: measured from the movie when not given
+			settingOptions.put(s, options.add(s.isImageSpecific() ? option : option.withDefault(String.valueOf(s
+				.defaultValue()))));
 		}
 		threadsOption = ContactTrackerCli.threads(options);
 		csvOption = options.add(Option.path("--csv", "OUT.csv", "Write the spots here."));
@@ -138,12 +141,14 @@ final class TrackCommand extends ContactTrackerCli.Subcommand {
 		// without --channel, a multi-channel image is refused rather than silently reduced to its first channel
 		final ImagePlusFrames frames = ImagePlusFrames.of(imp, options.given(settingOptions.get(TrackingSettings.CHANNEL))
 			? settings.channel() : 0);
+		final StringBuilder notice = new StringBuilder();
+		final SettingValues used = measured(input, imp, frames, settings, notice);
 		final Outputs files = new Outputs(outputs.csv(), outputs.trackMateXml(), outputs.trackMateXml() == null ? null
 			: ImageSource.of(input, frames.width(), frames.height(), frames.frameCount()));
 		final ProgressLine progress = showProgress ? new ProgressLine(err) : null;
 		final TrackingResult result;
 		try {
-			result = new TrackingPipeline(settings).run(FrameSource.of(frames, input.toString()), files, threads, false,
+			result = new TrackingPipeline(used).run(FrameSource.of(frames, input.toString()), files, threads, false,
 				progress == null ? null : progress::progress, () -> false);
 		}
 		finally {
@@ -154,7 +159,62 @@ final class TrackCommand extends ContactTrackerCli.Subcommand {
 			SpotCsvWriter.write(w, result.spots(), frames.calibration());
 			w.flush();
 		}
+		// said after the tracking, so that a run refused for a given value still ends with one line
+		if (notice.length() > 0) err.println(notice);
 		(files.csv() != null ? out : err).println(input + ": " + result.summary(input.getFileName().toString()));
+	}
+
+	/**
+	 * The settings with what was not given measured from the movie's first frame by the profile helper, as
+	 * {@code profile} suggests it: {@code --threshold} and {@code --r-out} (an error if they cannot be measured), and
+	 * {@code --diameter} (merge detection and RADIUS use it; without it the movie is still tracked). What was
+	 * measured goes into {@code notice}, with the options that override it.
+	 */
+	private SettingValues measured(final Path input, final ImagePlus imp, final ImagePlusFrames frames,
+		final SettingValues settings, final StringBuilder notice)
+	{
+		final boolean threshold = options.given(settingOptions.get(TrackingSettings.THRESHOLD));
+		final boolean rOut = options.given(settingOptions.get(TrackingSettings.R_OUT));
+		final boolean diameter = settings.diameter() > 0;
+		if (threshold && rOut && diameter) return settings;
+		final ProfileAnalysis.Result r;
+		try {
+			r = profile(frames.frames().get(0), settings.diameter());
+		}
+		catch (final InvalidInputException e) {
+			if (threshold && rOut) {
+				notice.append("contact-tracker: ").append(input.getFileName()).append(": the diameter could not be " +
+					"measured (").append(ContactTrackerCli.oneLine(e.getMessage())).append("); tracked without it (give " +
+						"--diameter)");
+				return settings;
+			}
+			throw new InvalidInputException("cannot measure " + (threshold ? "" : "--threshold ") + (threshold || rOut
+				? "" : "and ") + (rOut ? "" : "--r-out ") + "on the first frame of " + input.getFileName() + ": " + e
+					.getMessage() + "; give them (contact-tracker profile MOVIE --at X,Y measures one particle)", e);
+		}
+		SettingValues v = settings;
+		final StringBuilder said = new StringBuilder();
+		if (!threshold) {
+			v = v.with(TrackingSettings.THRESHOLD, r.suggestedThreshold(imp.getBitDepth() != 32));
+			said.append(" --threshold ").append(ContactTrackerCli.fmt(v.get(TrackingSettings.THRESHOLD)));
+		}
+		if (!rOut) {
+			v = v.with(TrackingSettings.R_OUT, r.suggestedROut());
+			said.append(" --r-out ").append(ContactTrackerCli.fmt(v.get(TrackingSettings.R_OUT)));
+		}
+		if (!diameter) {
+			v = v.with(TrackingSettings.DIAMETER, r.suggestedDiameter());
+			said.append(" --diameter ").append(ContactTrackerCli.fmt(v.diameter()));
+		}
+		notice.append("contact-tracker: ").append(input.getFileName()).append(": measured on frame 1 by the profile " +
+			"helper:").append(said).append(" (given values win; 'contact-tracker profile ").append(input.getFileName())
+			.append("' shows how)");
+		return v;
+	}
+
+	@SuppressWarnings({ "unchecked", "rawtypes" })
+	private static ProfileAnalysis.Result profile(final RandomAccessibleInterval frame, final double diameter) {
+		return ProfileAnalysis.analyse(frame, diameter, 0);
 	}
 
 	/** @return a movie's name for its CSV: the file name without its extension (a folder's name as it is) */

@@ -76,7 +76,8 @@ public final class ContactTracker {
 
 	/** The first pass with shape flags: the particles every refinement starts from (package-private for tests). */
 	static Particle[] particles(final Plane plane, final TrackerParameters params) {
-		return withShapeFlags(firstPasses(plane, params, new int[1]), NoiseEstimate.sigma(plane), params.rOut());
+		final int[] discarded = new int[1];
+		return withShapeFlags(firstPasses(plane, params, discarded), NoiseEstimate.sigma(plane), params, discarded);
 	}
 
 	/**
@@ -101,7 +102,7 @@ public final class ContactTracker {
 		final int[] discarded = new int[1];
 		final List<Particle> found = firstPasses(plane, params, discarded);
 		final double noise = NoiseEstimate.sigma(plane);
-		final Particle[] ps = withShapeFlags(found, noise, params.rOut());
+		final Particle[] ps = withShapeFlags(found, noise, params, discarded);
 		final Refinement.Outcome outcome = params.method().refinement().refine(plane, ps, params, profile,
 			noise);
 		final Estimate[] est = outcome.estimates();
@@ -136,19 +137,44 @@ public final class ContactTracker {
 	/** The iterative method stops when no centre moves more than this between passes (px). */
 	public static final double TOLERANCE = SecondPass.TOLERANCE;
 
+	/** Fewest round active areas in a frame for their sizes to tell what a merge must hold. */
+	static final int MIN_ROUND_FOR_SIZES = 5;
+
 	/**
 	 * Flags particles at the border and components whose shape is that of several particles merged
-	 * ({@link ComponentShape}: elongated, or with a bay as deep as a waist between two lobes). Size plays no part:
-	 * particles in and out of focus differ in size, not in shape.
+	 * ({@link ComponentShape}: elongated, or with a bay as deep as a waist between two lobes). Size does not make a
+	 * merge: particles in and out of focus differ in size, not in shape. But a merge holds two particles' active
+	 * areas: a component of the wrong shape smaller than twice the frame's small round ones (their 10th percentile,
+	 * given {@value #MIN_ROUND_FOR_SIZES} or more) is no particle at all. In bright field such components are the
+	 * bright fringes between touching particles; they are dropped and counted in {@code discarded[0]}, as the
+	 * noise blobs below {@code min_area} are.
 	 */
-	private static Particle[] withShapeFlags(final List<Particle> particles, final double noise, final double rOut) {
+	private static Particle[] withShapeFlags(final List<Particle> particles, final double noise,
+		final TrackerParameters params, final int[] discarded)
+	{
 		final Particle[] ps = new Particle[particles.size()];
+		final boolean[] merged = new boolean[ps.length];
+		final List<Integer> roundAreas = new ArrayList<>();
 		for (int k = 0; k < ps.length; k++) {
 			final Particle p = particles.get(k);
-			final boolean merged = p.shape.merged(p.atBorder, noise, alone(particles, k, rOut));
-			ps[k] = p.withShapeFlags((p.atBorder ? Flag.AT_BORDER.bit() : 0) | (merged ? Flag.MERGED.bit() : 0));
+			merged[k] = p.shape.merged(p.atBorder, noise, alone(particles, k, params.rOut()), params.diameter());
+			if (!merged[k] && !p.atBorder) roundAreas.add(p.region.area());
 		}
-		return ps;
+		int smallestMerge = 0;
+		if (roundAreas.size() >= MIN_ROUND_FOR_SIZES) {
+			roundAreas.sort(null);
+			smallestMerge = 2 * roundAreas.get(roundAreas.size() / 10);
+		}
+		int n = 0;
+		for (int k = 0; k < ps.length; k++) {
+			final Particle p = particles.get(k);
+			if (merged[k] && p.region.area() < smallestMerge) {
+				discarded[0]++;
+				continue;
+			}
+			ps[n++] = p.withShapeFlags((p.atBorder ? Flag.AT_BORDER.bit() : 0) | (merged[k] ? Flag.MERGED.bit() : 0));
+		}
+		return java.util.Arrays.copyOf(ps, n);
 	}
 
 	/**

@@ -62,6 +62,10 @@ public final class ProfileAnalysis {
 	static final double MAD_TO_SIGMA = 1.4826;
 	/** Values further than this many sigmas from the mean do not count in the noise. */
 	static final double CLIP_SIGMAS = 3.5;
+	/** Smallest ratio of peak heights that separates the background's texture from the particles' cores. */
+	static final double TEXTURE_GAP_RATIO = 2;
+	/** At most this share (percent) of the active areas may fail the outline tests at the suggested threshold. */
+	static final int MAX_NOT_ROUND_PERCENT = 1;
 	/** Grid step (px) of the bridge search. */
 	static final double BRIDGE_STEP_PX = 0.5;
 
@@ -86,7 +90,9 @@ public final class ProfileAnalysis {
 	 * @param reach radius beyond which {@code |I(r) - I0| <= s} (px)
 	 * @param rOut suggested {@code r_out}: {@code reach + 2} (px, not rounded)
 	 * @param bridge brightest grey level between two or three such particles at contact
-	 * @param threshold suggested threshold: {@code bridge + 3 s} (not rounded)
+	 * @param atContact {@code bridge + 3 s}: the threshold that keeps two or three particles at contact apart
+	 * @param threshold suggested threshold (not rounded): {@code atContact}, raised clear of the background's texture
+	 *        and until every active area is round, when it must be
 	 * @param activeRadius radius of the particle's active area at the suggested threshold (px; 0 when even the
 	 *        centre is below it)
 	 * @param centres the profiled particles' centres {@code {x, y}} (px)
@@ -94,7 +100,8 @@ public final class ProfileAnalysis {
 	 */
 	public record Result(double x, double y, boolean refined, double diameter, boolean diameterEstimated,
 		int particles, double maxRadius, double[] radius, double[] level, int[] count, double background,
-		double noise, double peak, double reach, double rOut, double bridge, double threshold, double activeRadius,
+		double noise, double peak, double reach, double rOut, double bridge, double atContact, double threshold,
+		double activeRadius,
 		List<double[]> centres, List<String> warnings)
 	{
 		public Result {
@@ -105,6 +112,11 @@ public final class ProfileAnalysis {
 		/** @return {@link #threshold} rounded up to a whole grey level when the data are integers */
 		public double suggestedThreshold(final boolean integerData) {
 			return integerData ? Math.ceil(threshold - 1e-9) : threshold;
+		}
+
+		/** @return {@link #diameter} rounded to 0.01 px, as the helper prints it */
+		public double suggestedDiameter() {
+			return round2(diameter);
 		}
 
 		/** @return {@link #rOut} rounded up to whole pixels */
@@ -118,13 +130,14 @@ public final class ProfileAnalysis {
 			lines.add(String.format(Locale.ROOT, "  background %.2f, noise sigma %.2f (robust, around the particles), " +
 				"peak %.2f (grey levels)", background, noise, peak));
 			lines.add(String.format(Locale.ROOT, "  diameter %.2f px%s; profile of %d particle%s", diameter,
-				diameterEstimated ? " (estimated from the closest spots)" : "", particles, particles == 1 ? "" : "s"));
+				diameterEstimated ? " (estimated)" : "", particles, particles == 1 ? "" : "s"));
 			lines.add(String.format(Locale.ROOT,
 				"  profile within the noise of the background beyond %.2f px; + %.0f px = %.2f -> r_out = %.0f px", reach,
 				R_OUT_MARGIN_PX, rOut, suggestedROut()));
 			lines.add(String.format(Locale.ROOT, "  brightest point between two or three particles at contact " +
-				"(D = %.2f px): %.2f; + %.0f sigma = %.2f -> threshold = %s", diameter, bridge,
-				THRESHOLD_MARGIN_SIGMAS, threshold, fmt(suggestedThreshold(integerData))));
+				"(D = %.2f px): %.2f; + %.0f sigma = %.2f%s -> threshold = %s", diameter, bridge,
+				THRESHOLD_MARGIN_SIGMAS, atContact, threshold > atContact ? String.format(Locale.ROOT, ", raised to %.2f " +
+					"(see the warnings)", threshold) : "", fmt(suggestedThreshold(integerData))));
 			lines.add(String.format(Locale.ROOT, "  active area radius at this threshold: %.2f px (D/2 = %.2f px)",
 				activeRadius, diameter / 2));
 			return lines;
@@ -206,80 +219,70 @@ public final class ProfileAnalysis {
 			xy[k] = new double[] { spots.get(k).x() - plane.minX(), spots.get(k).y() - plane.minY() };
 		final double[] nn = nearestNeighbourDistances(xy);
 
-		// 2. the diameter
+		// 2. the diameter: given; or where the particles' own image ends, unless the spots sit closer than that
 		double diameter = diameterGiven;
 		final boolean estimated = diameter == 0;
 		if (estimated) {
-			if (xy.length < 4) throw new InvalidInputException("too few particles (" + xy.length + ") to estimate the " +
-				"diameter: give it (the centre distance of two particles at contact, in pixels)");
-			diameter = quantile(nn, DIAMETER_PERCENTILE / 100);
-			warnings.add(String.format(Locale.ROOT, "the diameter (%s px) is estimated as the %s-th percentile of the " +
-				"%d spots' nearest-neighbour distances: if no particles touch in this frame, give the diameter",
-				fmt(round2(diameter)), fmt(DIAMETER_PERCENTILE), xy.length));
+			// (a single particle: the image edge decides; the frame's size is a bound to start from)
+			final double fromSpots = xy.length >= 2 ? quantile(nn.clone(), DIAMETER_PERCENTILE / 100) : Double.NaN;
+			diameter = Double.isFinite(fromSpots) ? fromSpots : Math.min(w, h) / 2.0;
 		}
-		final double wanted = maxRadiusGiven > 0 ? maxRadiusGiven : AUTO_RADIUS_DIAMETERS * diameter;
-
-		// 3. the particles to profile
-		final List<Integer> chosen = new ArrayList<>();
-		boolean refined = true;
-		double[] own = null;
-		if (point != null) {
-			int best = -1;
-			for (int k = 0; k < xy.length; k++) {
-				final double d = Math.hypot(xy[k][0] - lx, xy[k][1] - ly);
-				if (d <= Math.max(near, diameter / 2) && (best < 0 || d < Math.hypot(xy[best][0] - lx, xy[best][1] - ly)))
-					best = k;
-			}
-			if (best >= 0) {
-				chosen.add(best);
-				if (spots.get(best).has(Flag.MERGED))
-					warnings.add("the particle's active area looks merged with a neighbour's: pick an isolated particle");
+		// 3-6. the particles, their local backgrounds, the noise and the pooled profile
+		Measured m = measure(plane, spots, xy, nn, point == null ? null : new double[] { lx, ly }, near, diameter,
+			maxRadiusGiven);
+		String diameterSource = null;
+		if (estimated) {
+			final double own = 2 * m.imageEdge();
+			if (own < diameter) {
+				diameter = own;
+				m = measure(plane, spots, xy, nn, point == null ? null : new double[] { lx, ly }, near, diameter,
+					maxRadiusGiven);
+				diameterSource = String.format(Locale.ROOT, "twice the radius where the particles' image returns to " +
+					"the background (%s px)", fmt(round2(m.imageEdge())));
 			}
 			else {
-				refined = false;
-				own = new double[] { lx, ly };
-				warnings.add("could not refine the centre; the profile is taken around the point given");
+				diameterSource = String.format(Locale.ROOT, "the %s-th percentile of the %d spots' nearest-neighbour " +
+					"distances, closer than the particles' image reaches (%s px across)", fmt(DIAMETER_PERCENTILE),
+					xy.length, fmt(round2(own)));
 			}
+			warnings.add(String.format(Locale.ROOT, "the diameter (%s px) is estimated as %s: give it if you know it",
+				fmt(round2(diameter)), diameterSource));
 		}
-		else {
-			final Integer[] order = new Integer[xy.length];
-			for (int k = 0; k < order.length; k++)
-				order[k] = k;
-			Arrays.sort(order, Comparator.comparingDouble(k -> -nn[k]));
-			for (final int k : order) {
-				final Localization s = spots.get(k);
-				if (s.has(Flag.MERGED) || s.has(Flag.AT_BORDER) || s.has(Flag.DEGENERATE)) continue;
-				if (xy[k][0] < diameter / 2 || xy[k][1] < diameter / 2 || xy[k][0] > w - 1 - diameter / 2 || xy[k][1] > h -
-					1 - diameter / 2) continue;
-				if (!chosen.isEmpty() && nn[k] < Math.min(wanted, 0.5 * nn[chosen.get(0)])) break;
-				chosen.add(k);
-				if (chosen.size() == MAX_PARTICLES) break;
-			}
-			if (chosen.isEmpty()) throw new InvalidInputException("no single particle away from the border found in " +
-				"the frame: give a point on one");
-			if (nn.length > 1 && nn[chosen.get(0)] < 2 * diameter)
-				warnings.add(String.format(Locale.ROOT, "no particle is isolated: the most isolated has a neighbour at %s " +
-					"px (%s diameters); the profile's outer part may show neighbours", fmt(round2(nn[chosen.get(0)])), fmt(
-						round2(nn[chosen.get(0)] / diameter))));
-		}
-		final List<double[]> centres = new ArrayList<>();
-		if (own != null) centres.add(own);
-		for (final int k : chosen)
-			centres.add(xy[k]);
+		warnings.addAll(m.warnings());
+		final List<double[]> centres = m.centres();
+		final boolean refined = m.refined();
 		final double cx = centres.get(0)[0], cy = centres.get(0)[1];
-		final double radiusCap = Math.min(wanted, farthestCorner(cx, cy, w, h));
-
-		// 4-6. masks, local backgrounds, noise and the pooled profile: twice, the masks widened to the reach
-		Pooled pooled = pool(plane, centres, xy, diameter, radiusCap);
-		double reach = reach(pooled, radiusCap, null);
-		pooled = pool(plane, centres, xy, Math.max(diameter, reach + R_OUT_MARGIN_PX), radiusCap);
-		reach = reach(pooled, radiusCap, warnings);
+		final double radiusCap = m.radiusCap();
+		final Pooled pooled = m.pooled();
+		final double reach = m.reach();
 		final double rOut = reach + R_OUT_MARGIN_PX;
 		final double noise = pooled.noise;
 
 		// 7. the bridge between particles at contact
 		final double bridge = pooled.background + Math.max(0, brightestBetween(pooled, diameter, reach));
-		final double threshold = bridge + THRESHOLD_MARGIN_SIGMAS * noise;
+		final double atContact = bridge + THRESHOLD_MARGIN_SIGMAS * noise;
+		// 8. clear of the background's texture (halos, rings, their sums between particles)
+		final double[] gap = textureGap(plane, atContact, pooled.background);
+		final double clear = Math.max(atContact, Double.isNaN(gap[0]) ? atContact : pooled.background + (gap[0] +
+			gap[1]) / 2);
+		if (clear > atContact)
+			warnings.add(String.format(Locale.ROOT, "at %s, %d bright spots of the background (halos, rings; up to %s " +
+				"above it) would be taken for particles, whose cores rise at least %s above it: the threshold is raised to " +
+				"the middle of that gap", fmt(round2(atContact)), (int) gap[2], fmt(round2(gap[0])), fmt(round2(gap[1]))));
+		// 9. and where every active area has the shape of one particle (bright fringes between touching particles
+		// in bright field are brighter than the sum of two profiles), up to half the cores' height
+		final double ceiling = pooled.background + 0.5 * (peak(plane, cx, cy, Math.max(2, diameter / 4)) -
+			pooled.background);
+		final double[] shaped = roundFrom(plane, clear, ceiling, Math.max(0.5, noise / 2));
+		final double threshold = shaped[0];
+		if (threshold > clear)
+			warnings.add(String.format(Locale.ROOT, "at %s, %d of the frame's %d active areas have the shape of no " +
+				"single particle (bright fringes between touching particles, or particles merged): the threshold is raised " +
+				"until they are round", fmt(round2(clear)), (int) shaped[1], (int) shaped[2]));
+		else if (shaped[1] > 0)
+			warnings.add(String.format(Locale.ROOT, "%d of the frame's %d active areas have the shape of no single " +
+				"particle up to %s (half the cores' height): they will be flagged MERGED", (int) shaped[1], (int) shaped[2],
+				fmt(round2(ceiling))));
 		final int used = pooled.radius.length;
 		final double[] level = new double[used];
 		for (int k = 0; k < used; k++)
@@ -308,11 +311,169 @@ public final class ProfileAnalysis {
 			inFrame.add(new double[] { c[0] + plane.minX(), c[1] + plane.minY() });
 		return new Result(cx + plane.minX(), cy + plane.minY(), refined, diameter, estimated, centres.size(), radiusCap,
 			pooled.radius, level, pooled.count, pooled.background, noise, peak(plane, cx, cy, Math.max(2, diameter / 4)),
-			reach, rOut, bridge, threshold, activeRadius, inFrame, warnings);
+			reach, rOut, bridge, atContact, threshold, activeRadius, inFrame, warnings);
+	}
+
+	/**
+	 * The profile of the particles chosen for a diameter: their centres, how far out it is measured, the pooled
+	 * profile, its reach and where the particles' own image ends ({@link #imageEdge(Pooled, double)}).
+	 */
+	private record Measured(List<double[]> centres, boolean refined, double radiusCap, Pooled pooled, double reach,
+		double imageEdge, List<String> warnings) {}
+
+	/**
+	 * Steps 3-6: picks the particles (the one at {@code point}, else the most isolated), masks their neighbours and
+	 * pools their profile, twice (the masks widened to the measured reach the second time).
+	 */
+	private static Measured measure(final Plane plane, final List<Localization> spots, final double[][] xy,
+		final double[] nn, final double[] point, final double near, final double diameter, final double maxRadiusGiven)
+	{
+		final int w = plane.width(), h = plane.height();
+		final List<String> warnings = new ArrayList<>();
+		final double wanted = maxRadiusGiven > 0 ? maxRadiusGiven : AUTO_RADIUS_DIAMETERS * diameter;
+		final List<Integer> chosen = new ArrayList<>();
+		boolean refined = true;
+		double[] own = null;
+		if (point != null) {
+			int best = -1;
+			for (int k = 0; k < xy.length; k++) {
+				final double d = Math.hypot(xy[k][0] - point[0], xy[k][1] - point[1]);
+				if (d <= Math.max(near, diameter / 2) && (best < 0 || d < Math.hypot(xy[best][0] - point[0], xy[best][1] -
+					point[1]))) best = k;
+			}
+			if (best >= 0) {
+				chosen.add(best);
+				if (spots.get(best).has(Flag.MERGED))
+					warnings.add("the particle's active area looks merged with a neighbour's: pick an isolated particle");
+			}
+			else {
+				refined = false;
+				own = point;
+				warnings.add("could not refine the centre; the profile is taken around the point given");
+			}
+		}
+		else {
+			final Integer[] order = new Integer[xy.length];
+			for (int k = 0; k < order.length; k++)
+				order[k] = k;
+			Arrays.sort(order, Comparator.comparingDouble(k -> -nn[k]));
+			for (final int k : order) {
+				final Localization s = spots.get(k);
+				if (s.has(Flag.MERGED) || s.has(Flag.AT_BORDER) || s.has(Flag.DEGENERATE)) continue;
+				if (xy[k][0] < diameter / 2 || xy[k][1] < diameter / 2 || xy[k][0] > w - 1 - diameter / 2 || xy[k][1] > h -
+					1 - diameter / 2) continue;
+				if (!chosen.isEmpty() && nn[k] < Math.min(wanted, 0.5 * nn[chosen.get(0)])) break;
+				chosen.add(k);
+				if (chosen.size() == MAX_PARTICLES) break;
+			}
+			if (chosen.isEmpty()) throw new InvalidInputException("no single particle away from the border found in " +
+				"the frame: give a point on one");
+			if (nn.length > 1 && nn[chosen.get(0)] < 2 * diameter)
+				warnings.add(String.format(Locale.ROOT, "no particle is isolated: the most isolated has a neighbour at %s " +
+					"px (%s diameters); the profile's outer part may show neighbours", fmt(round2(nn[chosen.get(0)])), fmt(
+						round2(nn[chosen.get(0)] / diameter))));
+		}
+		final List<double[]> centres = new ArrayList<>();
+		if (own != null) centres.add(own);
+		for (final int k : chosen)
+			centres.add(xy[k]);
+		final double radiusCap = Math.min(wanted, farthestCorner(centres.get(0)[0], centres.get(0)[1], w, h));
+		Pooled pooled = pool(plane, centres, xy, diameter, radiusCap);
+		double reach = reach(pooled, radiusCap, null);
+		pooled = pool(plane, centres, xy, Math.max(diameter, reach + R_OUT_MARGIN_PX), radiusCap);
+		reach = reach(pooled, radiusCap, warnings);
+		return new Measured(pooled.centres(), refined, radiusCap, pooled, reach, imageEdge(pooled, reach), warnings);
+	}
+
+	/**
+	 * Where the particle's own image ends: the outer edge of its dark ring (where the profile, past its minimum,
+	 * comes back within the noise of the background) when it has one deeper than {@value #THRESHOLD_MARGIN_SIGMAS}
+	 * noise sigmas, as bright-field particles do; otherwise the reach. A faint halo beyond the ring is light the
+	 * particle scatters, not the particle: on the paper authors' bright-field movie the ring ends at 21.4 px and the
+	 * halo at 32 px, for particles 32 px apart at contact.
+	 */
+	private static double imageEdge(final Pooled p, final double reach) {
+		int deepest = -1;
+		for (int k = 0; k < p.radius.length && p.radius[k] < reach; k++)
+			if (p.count[k] > 0 && (deepest < 0 || p.height[k] < p.height[deepest])) deepest = k;
+		if (deepest < 0 || !(p.height[deepest] < -THRESHOLD_MARGIN_SIGMAS * p.noise)) return reach;
+		int previous = deepest;
+		for (int k = deepest + 1; k < p.radius.length; k++) {
+			if (p.count[k] == 0) continue;
+			if (p.height[k] >= -p.noise) return p.radius[previous] + (p.radius[k] - p.radius[previous]) * (-p.noise -
+				p.height[previous]) / (p.height[k] - p.height[previous]);
+			previous = k;
+		}
+		return reach;
+	}
+
+	/**
+	 * Components of the frame at a threshold, split by their peak height above the background at the largest gap
+	 * (a ratio of at least {@value #TEXTURE_GAP_RATIO}) below half the highest peak: below it the background's
+	 * texture (bright-field halos and rings, their sums between particles, an uneven background), above it the
+	 * particles' cores. On the authors' movies such texture rises 10-14 grey levels above the background and the
+	 * cores 120-140; a threshold just above the sum of two profiles at contact picks up dozens of texture spots.
+	 *
+	 * @return {@code {highest texture peak, lowest core peak, texture components}} above the background, or NaNs
+	 *         when there is no such gap
+	 */
+	static double[] textureGap(final Plane plane, final double threshold, final double background) {
+		final List<Region> regions = ComponentLabeling.label(plane, threshold, Connectivity.EIGHT);
+		final DoubleList heights = new DoubleList();
+		for (final Region r : regions) {
+			if (r.area() < TrackerParameters.DEFAULT_MIN_AREA) continue;
+			double peak = Double.NEGATIVE_INFINITY;
+			for (int k = 0; k < r.runCount(); k++)
+				for (int x = r.runStart(k); x <= r.runEnd(k); x++)
+					peak = Math.max(peak, plane.get(x, r.runY(k)));
+			heights.add(peak - background);
+		}
+		final double[] hs = heights.toArray();
+		Arrays.sort(hs);
+		int cut = -1;
+		double best = TEXTURE_GAP_RATIO;
+		for (int i = 0; i + 1 < hs.length && hs[i] < hs[hs.length - 1] / 2; i++) {
+			final double ratio = hs[i + 1] / Math.max(hs[i], 1e-9);
+			if (ratio >= best) {
+				best = ratio;
+				cut = i;
+			}
+		}
+		return cut < 0 ? new double[] { Double.NaN, Double.NaN, 0 } : new double[] { hs[cut], hs[cut + 1], cut + 1 };
+	}
+
+	/**
+	 * The lowest threshold from {@code from} up to {@code ceiling} (in steps of {@code step}) at which at most
+	 * {@value #MAX_NOT_ROUND_PERCENT}% of the frame's active areas (of at least the default {@code min_area}, away from
+	 * the border) fail the outline tests of merge detection ({@link ComponentShape}: elongated, or with a bay).
+	 *
+	 * @return {@code {threshold, active areas that fail at the threshold from, active areas there}}; the threshold
+	 *         is {@code from} when no step up to the ceiling does better
+	 */
+	static double[] roundFrom(final Plane plane, final double from, final double ceiling, final double step) {
+		final int[] first = notRound(plane, from);
+		for (double t = from; t <= ceiling; t += step) {
+			final int[] n = t == from ? first : notRound(plane, t);
+			if (n[0] * 100 <= MAX_NOT_ROUND_PERCENT * n[1]) return new double[] { t, first[0], first[1] };
+		}
+		return new double[] { from, first[0], first[1] };
+	}
+
+	/** @return {@code {active areas that fail the outline tests, active areas}} at a threshold */
+	private static int[] notRound(final Plane plane, final double threshold) {
+		int bad = 0, all = 0;
+		for (final Region r : ComponentLabeling.label(plane, threshold, Connectivity.EIGHT)) {
+			if (r.area() < TrackerParameters.DEFAULT_MIN_AREA || r.minX() == 0 || r.minY() == 0 || r.maxX() == plane
+				.width() - 1 || r.maxY() == plane.height() - 1) continue;
+			all++;
+			if (ComponentShape.of(r).merged(false, 0, false, 0)) bad++;
+		}
+		return new int[] { bad, all };
 	}
 
 	/** The profile pooled over particles: ring heights above the local background, and the noise. */
-	private record Pooled(double[] radius, double[] height, int[] count, double background, double noise) {}
+	private record Pooled(double[] radius, double[] height, int[] count, double background, double noise,
+		List<double[]> centres) {}
 
 	/**
 	 * Pools the pixels around {@code centres} within {@code radiusCap}, masking pixels within {@code mask} of every
@@ -330,6 +491,8 @@ public final class ProfileAnalysis {
 		final double inner = innerBackgroundRadius(radiusCap);
 		final int w = plane.width(), h = plane.height();
 		double backgroundSum = 0;
+		String failure = null;
+		final List<double[]> used = new ArrayList<>();
 		for (final double[] c : centres) {
 			final int x0 = (int) Math.max(0, Math.floor(c[0] - radiusCap)), x1 = (int) Math.min(w - 1, Math.ceil(c[0] +
 				radiusCap));
@@ -349,11 +512,15 @@ public final class ProfileAnalysis {
 					ay.add(y - c[1]);
 					av.add(plane.get(x, y));
 				}
-			if (ax.size < MIN_BACKGROUND_PIXELS)
-				throw new InvalidInputException(String.format(Locale.ROOT, "only %d background pixels lie between %s and " +
+			if (ax.size < MIN_BACKGROUND_PIXELS) {
+				// neighbours all round (a dense monolayer) or the border: the next particle may do
+				if (failure == null) failure = String.format(Locale.ROOT, "only %d background pixels lie between %s and " +
 					"%s px from the particle at (%s, %s) inside the image and away from its neighbours: too few to " +
 					"measure the background; use a larger max_radius or another particle", ax.size, fmt(round2(inner)),
-					fmt(round2(radiusCap)), fmt(round2(c[0] + plane.minX())), fmt(round2(c[1] + plane.minY()))));
+					fmt(round2(radiusCap)), fmt(round2(c[0] + plane.minX())), fmt(round2(c[1] + plane.minY())));
+				continue;
+			}
+			used.add(c);
 			final double[] plane3 = robustPlane(ax, ay, av);
 			backgroundSum += plane3[0];
 			for (int i = 0; i < ax.size; i++)
@@ -367,18 +534,19 @@ public final class ProfileAnalysis {
 					sumR[k] += r;
 				}
 		}
+		if (used.isEmpty()) throw new InvalidInputException(failure);
 		final double noise = clippedSigma(residuals.toArray());
-		int used = bins;
-		while (used > 0 && rings[used - 1].size == 0)
-			used--;
-		final double[] radius = new double[used], height = new double[used];
-		final int[] count = new int[used];
-		for (int k = 0; k < used; k++) {
+		int filled = bins;
+		while (filled > 0 && rings[filled - 1].size == 0)
+			filled--;
+		final double[] radius = new double[filled], height = new double[filled];
+		final int[] count = new int[filled];
+		for (int k = 0; k < filled; k++) {
 			count[k] = rings[k].size;
 			radius[k] = count[k] > 0 ? sumR[k] / count[k] : k;
 			height[k] = count[k] > 0 ? interquartileMean(rings[k].toArray()) : Double.NaN;
 		}
-		return new Pooled(radius, height, count, backgroundSum / centres.size(), noise);
+		return new Pooled(radius, height, count, backgroundSum / used.size(), noise, used);
 	}
 
 	/**

@@ -10,9 +10,12 @@ package io.github.contacttracker.core;
  * @param minSecondArea below this many pixels in the second active area the spot keeps its first-pass centre
  *        and is flagged {@link Flag#FELL_BACK}
  * @param method how centres are computed
+ * @param diameter the particles' diameter (px): the smallest centre distance of two particles at contact; 0 when
+ *        not known. Merge detection uses it: a component too small to hold two particles that far apart is one
+ *        particle, whatever its gradient lines do ({@link ComponentShape})
  */
 public record TrackerParameters(double threshold, double rOut, int minArea, Connectivity connectivity,
-	int minSecondArea, Method method)
+	int minSecondArea, Method method, double diameter)
 {
 	/** Default {@code min_area} (px). */
 	public static final int DEFAULT_MIN_AREA = 20;
@@ -31,6 +34,15 @@ public record TrackerParameters(double threshold, double rOut, int minArea, Conn
 			throw new InvalidInputException("min_second_area must be at least 3 pixels, not " + minSecondArea);
 		if (connectivity == null) throw new InvalidInputException("connectivity must be given (4 or 8)");
 		if (method == null) throw new InvalidInputException("method must be given");
+		if (!(diameter >= 0) || !Double.isFinite(diameter))
+			throw new InvalidInputException("diameter must be >= 0 pixels (0 = not given), not " + diameter);
+	}
+
+	/** Parameters without a diameter (not known). */
+	public TrackerParameters(final double threshold, final double rOut, final int minArea,
+		final Connectivity connectivity, final int minSecondArea, final Method method)
+	{
+		this(threshold, rOut, minArea, connectivity, minSecondArea, method, 0);
 	}
 
 	/** @return parameters with the given threshold and r_out and defaults for the rest */
@@ -40,26 +52,30 @@ public record TrackerParameters(double threshold, double rOut, int minArea, Conn
 	}
 
 	public TrackerParameters withThreshold(final double t) {
-		return new TrackerParameters(t, rOut, minArea, connectivity, minSecondArea, method);
+		return new TrackerParameters(t, rOut, minArea, connectivity, minSecondArea, method, diameter);
 	}
 
 	public TrackerParameters withROut(final double r) {
-		return new TrackerParameters(threshold, r, minArea, connectivity, minSecondArea, method);
+		return new TrackerParameters(threshold, r, minArea, connectivity, minSecondArea, method, diameter);
 	}
 
 	public TrackerParameters withMinArea(final int a) {
-		return new TrackerParameters(threshold, rOut, a, connectivity, minSecondArea, method);
+		return new TrackerParameters(threshold, rOut, a, connectivity, minSecondArea, method, diameter);
 	}
 
 	public TrackerParameters withConnectivity(final Connectivity c) {
-		return new TrackerParameters(threshold, rOut, minArea, c, minSecondArea, method);
+		return new TrackerParameters(threshold, rOut, minArea, c, minSecondArea, method, diameter);
 	}
 
 	public TrackerParameters withMinSecondArea(final int a) {
-		return new TrackerParameters(threshold, rOut, minArea, connectivity, a, method);
+		return new TrackerParameters(threshold, rOut, minArea, connectivity, a, method, diameter);
+	}
+
+	public TrackerParameters withDiameter(final double d) {
+		return new TrackerParameters(threshold, rOut, minArea, connectivity, minSecondArea, method, d);
 	}
 
 	public TrackerParameters withMethod(final Method m) {
-		return new TrackerParameters(threshold, rOut, minArea, connectivity, minSecondArea, m);
+		return new TrackerParameters(threshold, rOut, minArea, connectivity, minSecondArea, m, diameter);
 	}
 }

@@ -69,7 +69,7 @@ public final class SettingValues {
 	public TrackerParameters parameters() {
 		return new TrackerParameters(get(TrackingSettings.THRESHOLD), get(TrackingSettings.R_OUT), get(
 			TrackingSettings.MIN_AREA), Connectivity.parse(String.valueOf(get(TrackingSettings.CONNECTIVITY))), get(
-				TrackingSettings.MIN_SECOND_AREA), Method.parse(get(TrackingSettings.METHOD)));
+				TrackingSettings.MIN_SECOND_AREA), Method.parse(get(TrackingSettings.METHOD)), get(TrackingSettings.DIAMETER));
 	}
 
 	/** @return the 1-based channel */

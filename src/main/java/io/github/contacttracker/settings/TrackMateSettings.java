@@ -77,10 +77,10 @@ public final class TrackMateSettings {
 	/**
 	 * @param params the localizer parameters
 	 * @param targetChannel the 1-based channel
-	 * @return a new, modifiable settings map, in {@link #keys()} order, without a particle diameter
+	 * @return a new, modifiable settings map, in {@link #keys()} order, with the parameters' diameter
 	 */
 	public static Map<String, Object> toMap(final TrackerParameters params, final int targetChannel) {
-		return toMap(SettingValues.of(params, targetChannel, 0));
+		return toMap(SettingValues.of(params, targetChannel, params.diameter()));
 	}
 
 	/**

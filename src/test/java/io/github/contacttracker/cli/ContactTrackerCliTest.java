@@ -80,6 +80,35 @@ class ContactTrackerCliTest {
 		assertTrue(((String) r[2]).contains("8 spots"));
 	}
 
+	/**
+	 * One command: {@code track MOVIE} with no values measures them as {@code profile} suggests, says so on stderr,
+	 * and tracks exactly as a run given those values; a value given wins over the measured one.
+	 */
+	@Test
+	void trackWithoutValuesMeasuresThemAsProfileSuggests() throws IOException {
+		final Path tif = simulated();
+		final Object[] p = run("profile", tif.toString());
+		assertEquals(0, p[0], (String) p[2]);
+		final String suggested = ((String) p[1]).lines().filter(l -> l.startsWith("suggested:")).findFirst().orElseThrow()
+			.substring("suggested:".length()).trim();
+		final Path measured = dir.resolve("measured.csv"), given = dir.resolve("given.csv");
+		final Object[] r = run("track", tif.toString(), "--csv", measured.toString());
+		assertEquals(0, r[0], (String) r[2]);
+		assertTrue(((String) r[2]).contains("measured on frame 1 by the profile helper: " + suggested), r[2] + " vs " +
+			suggested);
+		final List<String> args = new java.util.ArrayList<>(List.of("track", tif.toString(), "--csv", given.toString()));
+		args.addAll(List.of(suggested.split(" ")));
+		final Object[] g = run(args.toArray(String[]::new));
+		assertEquals(0, g[0], (String) g[2]);
+		assertEquals("", g[2], "nothing measured when everything is given");
+		assertEquals(Files.readString(given), Files.readString(measured));
+		// a given threshold wins; the rest is still measured
+		final Object[] t = run("track", tif.toString(), "--threshold", "90", "--csv", given.toString());
+		assertEquals(0, t[0], (String) t[2]);
+		assertFalse(((String) t[2]).contains("--threshold"), (String) t[2]);
+		assertTrue(((String) t[2]).contains("--r-out "), (String) t[2]);
+	}
+
 	private void assertBadInput(final String expected, final Path mustNotExist, final String... args) {
 		final Object[] r = run(args);
 		assertEquals(ContactTrackerCli.EXIT_BAD_INPUT, r[0]);
@@ -117,7 +146,6 @@ class ContactTrackerCliTest {
 		// (the 1 after it reads as a second movie: track takes several)
 		assertBadInput("Unknown option: '--bogus'", null, "track", tif.toString(), "--threshold",
 			"85", "--r-out", "61", "--bogus", "1");
-		assertBadInput("Missing required options: '--threshold=T', '--r-out=R'", null, "track", tif.toString());
 		assertBadInput("Invalid value for option '--threads': 'two' is not an int", csv, "track", tif.toString(),
 			"--threshold", "85", "--r-out", "61", "--threads", "two", "--csv", csv.toString());
 		assertBadInput("unknown command", null, "frobnicate");
@@ -153,7 +181,7 @@ class ContactTrackerCliTest {
 		Files.writeString(bad, "not an image");
 		final Path again = Files.createDirectory(dir.resolve("again"));
 		final Object[] partly = run("track", a.toString(), bad.toString(), b.toString(), "--threshold", "85", "--r-out",
-			"61", "--out-dir", again.toString());
+			"61", "--diameter", "65.3", "--out-dir", again.toString());
 		assertEquals(ContactTrackerCli.EXIT_BAD_INPUT, partly[0]);
 		final List<String> err = ((String) partly[2]).lines().toList();
 		assertEquals(2, err.size(), String.join("\n", err));

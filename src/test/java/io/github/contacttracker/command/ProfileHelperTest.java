@@ -128,14 +128,36 @@ class ProfileHelperTest {
 		assertTrue(s.activeRadius() > 0.25 * SHORT.diameterPx(), "a usable active area: " + s.activeRadius());
 	}
 
+	/**
+	 * A particle alone (no neighbour to measure a distance to): the diameter is where its own image ends (here the
+	 * reach of its true profile: a dark ring shallower than 3 noise sigmas does not count), not an error.
+	 */
+	@Test
+	void aLoneParticlesDiameterIsWhereItsImageEnds() {
+		final Scene s = scene(SHORT, 5L);
+		final ProfileAnalysis.Result r = ProfileAnalysis.analyse(rai(s), s.cx(), s.cy(), 0, 0);
+		final double sigma = trueSigma(SHORT);
+		double deepest = 0, atDeepest = 0;
+		for (double x = 0; x < 3 * SHORT.diameterPx(); x += 0.01)
+			if (SHORT.profile().value(x) < deepest) {
+				deepest = SHORT.profile().value(x);
+				atDeepest = x;
+			}
+		// its dark ring (-8 grey levels) is shallower than 3 noise sigmas: the image ends at the reach, where the
+		// profile stays within the noise
+		assertTrue(deepest > -3 * sigma && deepest < -sigma, "a shallow dark ring: " + deepest);
+		final double edge = SHORT.profile().reach(sigma);
+		assertEquals(2 * edge, r.diameter(), 2.0, "twice the reach of the true profile " + edge);
+		assertTrue(r.diameterEstimated());
+		assertTrue(r.warnings().stream().anyMatch(w -> w.contains("where the particles' image returns to the " +
+			"background")), r.warnings().toString());
+	}
+
 	@Test
 	void badInputsAreRefused() {
 		final Scene s = scene(SHORT, 5L);
 		assertEquals("diameter must be the particle diameter in pixels (> 0; 0 = estimate it), not -1", assertThrows(
 			IllegalArgumentException.class, () -> ProfileAnalysis.analyse(rai(s), s.cx(), s.cy(), -1, 0)).getMessage());
-		// 0 estimates the diameter from the spots' distances: one particle is not enough
-		assertTrue(assertThrows(IllegalArgumentException.class, () -> ProfileAnalysis.analyse(rai(s), s.cx(), s.cy(), 0,
-			0)).getMessage().startsWith("too few particles (1) to estimate the diameter"));
 		assertTrue(assertThrows(IllegalArgumentException.class, () -> ProfileAnalysis.analyse(rai(s), -5, 3, 65, 0))
 			.getMessage().contains("is outside the image"));
 		// a point on the background

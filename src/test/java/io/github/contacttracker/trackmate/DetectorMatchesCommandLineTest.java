@@ -79,10 +79,11 @@ class DetectorMatchesCommandLineTest {
 	@ParameterizedTest
 	@EnumSource(Method.class)
 	void spotsEqualTheCommandLinesCsv(final Method method) throws Exception {
-		final TrackerParameters params = new TrackerParameters(85, 61, 20, Connectivity.EIGHT, 50, method);
+		// the diameter given to both (the command line measures it when it is not given; TrackMate reads its field)
+		final TrackerParameters params = new TrackerParameters(85, 61, 20, Connectivity.EIGHT, 50, method, 65.3);
 		final Path csv = dir.resolve(method.key() + ".csv");
-		cli("track", movie.toString(), "--threshold", "85", "--r-out", "61", "--method", method.key(), "--csv", csv
-			.toString());
+		cli("track", movie.toString(), "--threshold", "85", "--r-out", "61", "--diameter", "65.3", "--method", method
+			.key(), "--csv", csv.toString());
 		final List<Map<String, String>> rows = readCsv(csv);
 		assertEquals(3 * FRAMES, rows.size(), "three particles in every frame");
 
