@@ -256,7 +256,7 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 		try {
 			final SettingValues settings = settings();
 			final ImagePlusFrames frames = ImagePlusFrames.of(imp, channel);
-			final int t = currentFrame(frames.frameCount());
+			final int t = ImagePlusFrames.shownFrame(imp);
 			// the shown frame alone, through the same pipeline as a run (no file, no data-range pass over the stack)
 			final FrameResult r = new TrackingPipeline(settings).run(FrameSource.of(frames, imp.getTitle()).only(t), true)
 				.frames().get(0);
@@ -289,12 +289,6 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 		else if (beforePreview == null) SpotOverlay.clear(imp);
 		else imp.setOverlay(beforePreview);
 		beforePreview = null;
-	}
-
-	/** @return the frame shown, as {@link ImagePlusFrames} counts frames (time points, or a plain stack's slices) */
-	private int currentFrame(final int count) {
-		final int t = imp.getNFrames() > 1 ? imp.getT() - 1 : imp.getNSlices() > 1 ? imp.getZ() - 1 : 0;
-		return Math.max(0, Math.min(count - 1, t));
 	}
 
 	private void progress(final int done, final int count) {
