@@ -23,6 +23,7 @@ import org.scijava.command.Previewable;
 import org.scijava.log.LogService;
 import org.scijava.plugin.Parameter;
 import org.scijava.plugin.Plugin;
+import org.scijava.widget.Button;
 import org.scijava.widget.FileWidget;
 
 import ij.IJ;
@@ -39,6 +40,7 @@ import io.github.contacttracker.core.Method;
 import io.github.contacttracker.core.TrackerParameters;
 import io.github.contacttracker.io.ImagePlusFrames;
 import io.github.contacttracker.io.ImageSource;
+import io.github.contacttracker.io.ShownFrameProfile;
 
 /**
  * <i>Plugins &gt; Tracking &gt; Contact Tracker</i>: localizes the particles of every frame of the image with the
@@ -51,7 +53,8 @@ import io.github.contacttracker.io.ImageSource;
  * a one-line reason ({@link #getCancelReason()}), which is also logged as an error and stops a calling macro
  * ({@link MacroFailure}). It is a plain {@link ContextCommand}, so
  * {@code commandService.run(ContactTrackerCommand.class, true, ...)} returns its module and outputs. In Fiji's
- * dialog it previews the current frame ({@link #preview()}).
+ * dialog it previews the current frame ({@link #preview()}), and its "Measure from the image" button fills in
+ * {@code threshold}, {@code r_out} and {@code diameter} from the profile helper.
  * <p>
  * Outputs {@code spots} (and {@code pairs} when {@code pair_cutoff > 0}) are ImageJ results tables, returned to
  * scripts also when they are not shown. The command shows them itself ({@code table=true}, not headless), so
@@ -104,6 +107,13 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 
 	@Parameter(label = "Channel", min = "1", description = TrackingSettings.HELP_CHANNEL)
 	private int channel = TrackingSettings.CHANNEL.defaultValue();
+
+	// A button, not a setting: optional (a Button), never remembered, not recorded (it holds no value), and Fiji's
+	// macro preprocessor resolves it: it is no macro option, and headless nobody presses it.
+	@Parameter(label = "Measure from the image", callback = "measureFromImage", persist = false,
+		description = "Runs the profile helper on the frame on display (in the channel above) and fills in " +
+			"threshold, r_out and the diameter; a diameter above 0 is kept and used")
+	private Button measure;
 
 	@Parameter(label = "Pair cutoff (calibrated units, 0 = none)", min = "0",
 		description = "List the distances of spot pairs of the same frame closer than this in a second table")
@@ -256,7 +266,7 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 		try {
 			final SettingValues settings = settings();
 			final ImagePlusFrames frames = ImagePlusFrames.of(imp, channel);
-			final int t = currentFrame(frames.frameCount());
+			final int t = ImagePlusFrames.shownFrame(imp);
 			// the shown frame alone, through the same pipeline as a run (no file, no data-range pass over the stack)
 			final FrameResult r = new TrackingPipeline(settings).run(FrameSource.of(frames, imp.getTitle()).only(t), true)
 				.frames().get(0);
@@ -275,6 +285,32 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 		}
 	}
 
+	/**
+	 * The dialog's "Measure from the image" button: runs the profile helper on the most isolated particles of the
+	 * frame on display, in the channel to be tracked, and fills {@code threshold}, {@code r_out} and {@code diameter}
+	 * with its suggestions; a diameter already given (above 0) is kept and used. What was measured, with the helper's
+	 * warnings, goes to the Log window and the status bar. When the helper finds nothing to measure, the fields stay
+	 * as they were and the status bar and the Log say why in one line.
+	 */
+	private void measureFromImage() {
+		final ShownFrameProfile p;
+		try {
+			p = ShownFrameProfile.measure(imp, channel, diameter);
+		}
+		catch (final InvalidInputException e) {
+			final String message = TITLE + ": cannot measure from the image: " + e.getMessage();
+			IJ.log(message);
+			if (status != null) status.showStatus(message);
+			return;
+		}
+		threshold = p.threshold();
+		r_out = p.rOut();
+		diameter = p.diameter();
+		IJ.log(p.logText(TITLE + ": measured"));
+		if (status != null) status.showStatus(TITLE + ": measured " + p.status());
+		preview(); // the dialog previews its values as they change; these changed without an edit
+	}
+
 	/** Takes the preview off the image: the dialog was cancelled. */
 	@Override
 	public void cancel() {
@@ -289,12 +325,6 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 		else if (beforePreview == null) SpotOverlay.clear(imp);
 		else imp.setOverlay(beforePreview);
 		beforePreview = null;
-	}
-
-	/** @return the frame shown, as {@link ImagePlusFrames} counts frames (time points, or a plain stack's slices) */
-	private int currentFrame(final int count) {
-		final int t = imp.getNFrames() > 1 ? imp.getT() - 1 : imp.getNSlices() > 1 ? imp.getZ() - 1 : 0;
-		return Math.max(0, Math.min(count - 1, t));
 	}
 
 	private void progress(final int done, final int count) {

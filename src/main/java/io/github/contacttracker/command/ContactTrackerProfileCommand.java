@@ -18,8 +18,8 @@ import ij.gui.Plot;
 import ij.gui.PointRoi;
 import ij.gui.Roi;
 import io.github.contacttracker.core.ProfileAnalysis;
-import io.github.contacttracker.io.ImagePlusFrames;
 import io.github.contacttracker.io.ProfilePlots;
+import io.github.contacttracker.io.ShownFrameProfile;
 
 /**
  * <i>Plugins &gt; Tracking &gt; Contact Tracker Profile</i>: the parameter helper. The user marks an isolated
@@ -38,9 +38,6 @@ public class ContactTrackerProfileCommand extends ContextCommand {
 
 	/** Title of the plot window (followed by the image title). */
 	public static final String PLOT_TITLE = "Contact Tracker Profile";
-	/** Longest line written to the Log window: it does not wrap, and a default Log window is about this wide. */
-	static final int LOG_WIDTH = 90;
-
 	@Parameter
 	private LogService log;
 
@@ -95,27 +92,18 @@ public class ContactTrackerProfileCommand extends ContextCommand {
 	private void analyse() {
 		if (imp == null) throw new InvalidInputException("no image");
 		final double[] point = point(imp.getRoi());
-		final int[] position = imp.convertIndexToPosition(imp.getCurrentSlice());
-		final int frame = (imp.getNFrames() > 1 ? position[2] : position[1]) - 1;
-		final ImagePlusFrames frames = ImagePlusFrames.of(imp, position[0]);
-		final ProfileAnalysis.Result r = analyse(frames, frame, point);
+		final ShownFrameProfile p = ShownFrameProfile.at(imp, point, diameter, max_radius);
+		final ProfileAnalysis.Result r = p.result();
 
-		final boolean integerData = imp.getBitDepth() != 32;
-		suggested_threshold = r.suggestedThreshold(integerData);
-		suggested_r_out = r.suggestedROut();
+		suggested_threshold = p.threshold();
+		suggested_r_out = p.rOut();
 		background = r.background();
 		noise = r.noise();
 		centre_x = r.x();
 		centre_y = r.y();
 		profile = ProfilePlots.plot(r, PLOT_TITLE + ": " + imp.getTitle(), suggested_threshold, suggested_r_out);
-		report(r, point, frame, frames.frameCount(), integerData);
+		report(p, point);
 		if (plot && !GraphicsEnvironment.isHeadless()) profile.show();
-	}
-
-	@SuppressWarnings({ "unchecked", "rawtypes" })
-	private ProfileAnalysis.Result analyse(final ImagePlusFrames frames, final int frame, final double[] point) {
-		return ProfileAnalysis.analyse((net.imglib2.RandomAccessibleInterval) frames.frames().get(frame), point[0],
-			point[1], diameter, max_radius);
 	}
 
 	/** @return the marked point in pixel units, TrackMate's convention (pixel (0,0)'s centre at 0,0) */
@@ -135,44 +123,19 @@ public class ContactTrackerProfileCommand extends ContextCommand {
 		return new double[] { c[0] - 0.5, c[1] - 0.5 };
 	}
 
-	private void report(final ProfileAnalysis.Result r, final double[] point, final int frame, final int frames,
-		final boolean integerData)
-	{
+	private void report(final ShownFrameProfile p, final double[] point) {
+		final ProfileAnalysis.Result r = p.result();
 		final StringBuilder b = new StringBuilder();
 		b.append(String.format(Locale.ROOT, "%s: '%s'%s, particle at (%.2f, %.2f) px%s%n", PLOT_TITLE, imp.getTitle(),
-			frames > 1 ? ", frame " + (frame + 1) : "", r.x(), r.y(), r.refined() ? String.format(Locale.ROOT,
-				" (point given: %.0f, %.0f)", point[0], point[1]) : " (not refined)"));
-		for (final String line : r.report(integerData))
-			b.append(wrap(line, LOG_WIDTH, "    ")).append('\n');
+			p.frameCount() > 1 ? ", frame " + (p.frame() + 1) : "", r.x(), r.y(), r.refined() ? String.format(
+				Locale.ROOT, " (point given: %.0f, %.0f)", point[0], point[1]) : " (not refined)"));
+		for (final String line : r.report(p.integerData()))
+			b.append(ShownFrameProfile.wrap(line, ShownFrameProfile.LOG_WIDTH, "    ")).append('\n');
 		for (final String w : r.warnings())
-			b.append(wrap("  warning: " + w, LOG_WIDTH, "    ")).append('\n');
+			b.append(ShownFrameProfile.wrap("  warning: " + w, ShownFrameProfile.LOG_WIDTH, "    ")).append('\n');
 		b.append(String.format(Locale.ROOT, "  macro: run(\"Contact Tracker\", \"threshold=%s r_out=%.0f diameter=%s\");",
-			fmt(suggested_threshold), suggested_r_out, fmt(Math.round(r.diameter() * 100) / 100.0)));
+			fmt(suggested_threshold), suggested_r_out, fmt(p.diameter())));
 		IJ.log(b.toString());
-	}
-
-	/**
-	 * Breaks a line at spaces so that no part is longer than {@code width} characters (ImageJ's Log window does
-	 * not wrap: long warnings ran off its edge); continuation lines start with {@code indent}.
-	 */
-	static String wrap(final String text, final int width, final String indent) {
-		int lead = 0;
-		while (lead < text.length() && text.charAt(lead) == ' ')
-			lead++;
-		final StringBuilder out = new StringBuilder(text.substring(0, lead));
-		int lineStart = 0, lineWords = 0;
-		for (final String word : text.substring(lead).split(" +")) {
-			if (lineWords > 0 && out.length() - lineStart + 1 + word.length() > width) {
-				out.append('\n');
-				lineStart = out.length();
-				out.append(indent);
-				lineWords = 0;
-			}
-			if (lineWords > 0) out.append(' ');
-			out.append(word);
-			lineWords++;
-		}
-		return out.toString();
 	}
 
 	private static String fmt(final double v) {

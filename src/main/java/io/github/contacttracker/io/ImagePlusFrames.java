@@ -208,6 +208,18 @@ public final class ImagePlusFrames {
 		};
 	}
 
+	/**
+	 * The frame on display, as these frames count them: the time point shown, or the slice shown of a plain stack
+	 * (whose slices are frames). What Fiji's preview and the profile helper's buttons work on.
+	 *
+	 * @param imp the image
+	 * @return the 0-based index of the frame shown
+	 */
+	public static int shownFrame(final ImagePlus imp) {
+		final int[] czt = imp.convertIndexToPosition(imp.getCurrentSlice());
+		return (imp.getNFrames() > 1 ? czt[2] : czt[1]) - 1;
+	}
+
 	/** @return the number of frames */
 	public int frameCount() {
 		return stackIndex.length;

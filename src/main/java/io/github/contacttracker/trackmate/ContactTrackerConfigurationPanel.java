@@ -18,8 +18,10 @@ import java.text.DecimalFormatSymbols;
 import java.util.Locale;
 import java.util.LinkedHashMap;
 import java.util.Map;
+import java.util.function.Supplier;
 
 import javax.swing.BorderFactory;
+import javax.swing.JButton;
 import javax.swing.ImageIcon;
 import javax.swing.JComboBox;
 import javax.swing.JComponent;
@@ -30,12 +32,16 @@ import javax.swing.JSpinner;
 import javax.swing.ScrollPaneConstants;
 import javax.swing.SpinnerNumberModel;
 import javax.swing.SwingConstants;
+import javax.swing.SwingUtilities;
 
 import fiji.plugin.trackmate.Model;
 import fiji.plugin.trackmate.Settings;
 import fiji.plugin.trackmate.detection.SpotDetectorFactoryBase;
 import fiji.plugin.trackmate.gui.components.ConfigurationPanel;
 import fiji.plugin.trackmate.util.DetectionPreview;
+import ij.ImagePlus;
+import io.github.contacttracker.core.InvalidInputException;
+import io.github.contacttracker.io.ShownFrameProfile;
 
 /**
  * TrackMate's configuration panel for {@link ContactTrackerDetectorFactory}, laid out like TrackMate's own
@@ -46,6 +52,9 @@ import fiji.plugin.trackmate.util.DetectionPreview;
  * {@code r_out} is a size, so it is asked in the image's physical units (with its value in pixels beside it); the
  * setting {@code R_OUT} itself stays in pixels, as on the command line. {@link #getSettings()} always returns a
  * complete map of correctly typed values.
+ * <p>
+ * A "Measure from the image" button fills in the threshold, {@code r_out} and the diameter from the profile helper,
+ * run on the frame on display of TrackMate's image, as the same button of Fiji's Contact Tracker dialog does.
  */
 public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 
@@ -66,10 +75,20 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 		+ "<a href='" + ContactTrackerDetectorFactory.URL + "'>doi:10.1088/1361-648X/aa908e</a>. "
 		+ "2D images and time-lapses only.</body></html>";
 
+	/** The label of the button that fills in threshold, r_out and the diameter from the profile helper. */
+	static final String MEASURE = "Measure from the image";
+	/** Width the measurement's message wraps at (CSS px, which Swing draws about 4/3 wider): the wizard's width. */
+	private static final int MESSAGE_WIDTH = 200;
+
 	/** One field per setting of {@link TrackingSettings#ALL}, in that order. */
 	private final Map<Setting<?>, Field> fields = new LinkedHashMap<>();
 	private final double pixelWidth;
 	private final String unit;
+	/** TrackMate's image, which the button measures on; null without one. */
+	private final transient ImagePlus imp;
+	private final JButton measureButton = new JButton(MEASURE);
+	/** What the last measurement filled in, or why it did not. */
+	private final JLabel measured = new JLabel();
 
 	/**
 	 * One setting's control. Lengths in pixels ({@link Setting.Unit#PIXELS}) are shown in the image's physical
@@ -134,6 +153,7 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 		final int nChannels = hasImage ? Math.max(1, settings.imp.getNChannels()) : 1;
 		pixelWidth = hasImage && settings.dx > 0 && Double.isFinite(settings.dx) ? settings.dx : 1;
 		unit = hasImage && settings.imp.getCalibration().scaled() ? settings.imp.getCalibration().getUnit() : "pixel";
+		imp = hasImage ? settings.imp : null;
 
 		setLayout(new GridBagLayout());
 		setBorder(BorderFactory.createEmptyBorder(5, 5, 5, 5));
@@ -157,6 +177,8 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 			row = addRow(row, s.label(), f.control, f.unitLabel, s.help());
 		}
 
+		row = addMeasureRows(row);
+
 		final GridBagConstraints fc = at(0, row++, 3);
 		fc.weighty = 1;
 		fc.fill = GridBagConstraints.BOTH;
@@ -169,6 +191,102 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 		}
 		else add(new JLabel(), fc);
 		setSettings(TrackMateSettings.defaults());
+	}
+
+	/** The "Measure from the image" button and, under it, its message. */
+	private int addMeasureRows(final int row) {
+		measureButton.setFont(FONT);
+		measureButton.setMargin(new Insets(1, 6, 1, 6));
+		measureButton.setToolTipText("<html>Runs the profile helper on the most isolated particles of the frame on " +
+			"display (in the target channel)<br>and fills in threshold, r_out and the particle diameter; a diameter " +
+			"above 0 is kept and used.</html>");
+		measureButton.setEnabled(imp != null);
+		measureButton.addActionListener(e -> measureInBackground());
+		final GridBagConstraints bc = at(1, row, 2);
+		bc.fill = GridBagConstraints.NONE;
+		add(measureButton, bc);
+		measured.setFont(FONT);
+		final GridBagConstraints mc = at(0, row + 1, 3);
+		mc.insets = new Insets(0, 3, 0, 3); // no height at all until there is a message: the wizard is short
+		add(measured, mc);
+		return row + 2;
+	}
+
+	/**
+	 * Measures on the image, off the event thread (the helper can take a moment on a large frame), then shows the
+	 * outcome on the event thread; the button waits meanwhile.
+	 */
+	private void measureInBackground() {
+		measureButton.setEnabled(false);
+		final int channel = (Integer) fields.get(TrackingSettings.CHANNEL).value();
+		final double diameter = (Double) fields.get(TrackingSettings.DIAMETER).value();
+		final Thread worker = new Thread(() -> {
+			Supplier<String> outcome;
+			try {
+				outcome = measure(channel, diameter);
+			}
+			catch (final RuntimeException e) {
+				// a bug, not a frame without particles: in full to ImageJ, and the button stays usable
+				ij.IJ.handleException(e);
+				outcome = () -> showMessage("Not measured: " + e);
+			}
+			final Supplier<String> shown = outcome;
+			SwingUtilities.invokeLater(() -> {
+				shown.get();
+				measureButton.setEnabled(true);
+			});
+		}, "Contact Tracker: " + MEASURE);
+		worker.setDaemon(true);
+		worker.start();
+	}
+
+	/**
+	 * What the button does, at once on the calling thread (for tests): runs the profile helper on the most isolated
+	 * particles of the frame on display, in the target channel, and fills in the threshold, {@code r_out} and the
+	 * diameter with its suggestions; a diameter already given (above 0) is kept and used. {@code r_out} and the
+	 * diameter are shown in the image's units like every length here. When the helper finds nothing to measure the
+	 * fields stay as they were. The outcome is shown under the button and written to ImageJ's Log window, with the
+	 * helper's warnings.
+	 *
+	 * @return the message shown under the button
+	 */
+	String measureFromImage() {
+		return measure((Integer) fields.get(TrackingSettings.CHANNEL).value(), (Double) fields.get(
+			TrackingSettings.DIAMETER).value()).get();
+	}
+
+	/**
+	 * Runs the helper (on any thread).
+	 *
+	 * @return what shows its outcome (on the event thread): fills the fields, or not, and returns the message
+	 */
+	private Supplier<String> measure(final int channel, final double diameter) {
+		final ShownFrameProfile p;
+		try {
+			p = ShownFrameProfile.measure(imp, channel, diameter);
+		}
+		catch (final InvalidInputException e) {
+			return () -> {
+				ij.IJ.log(ContactTrackerDetectorFactory.SHORT_NAME + ": cannot measure from the image: " + e.getMessage());
+				return showMessage("Not measured: " + e.getMessage());
+			};
+		}
+		return () -> {
+			fields.get(TrackingSettings.THRESHOLD).show(p.threshold());
+			fields.get(TrackingSettings.R_OUT).show(p.rOut());
+			fields.get(TrackingSettings.DIAMETER).show(p.diameter());
+			ij.IJ.log(p.logText(ContactTrackerDetectorFactory.SHORT_NAME + ": measured"));
+			return showMessage("Measured " + p.status());
+		};
+	}
+
+	/** Shows a message under the button, wrapped to the panel's width. */
+	private String showMessage(final String message) {
+		final String html = message.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;");
+		measured.setText("<html><body style='width:" + MESSAGE_WIDTH + "px'>" + html + "</body></html>");
+		measured.setToolTipText(message);
+		revalidate();
+		return message;
 	}
 
 	private static JComponent infoPane() {

@@ -483,8 +483,9 @@ class ContactTrackerCommandTest {
 
 		final Module m = context.service(ModuleService.class).createModule(commands.getCommand(
 			ContactTrackerCommand.class));
-		// the dialog remembers its values like Fiji's, except the image and the output files
-		final List<String> notRemembered = List.of("imp", "csv", "trackmate_xml");
+		// the dialog remembers its values like Fiji's, except the image and the output files (and the measure
+		// button, which has no value)
+		final List<String> notRemembered = List.of("imp", "csv", "trackmate_xml", "measure");
 		m.getInfo().inputs().forEach(item -> {
 			if (!org.scijava.service.Service.class.isAssignableFrom(item.getType()) && item.getType() != Context.class)
 				assertEquals(!notRemembered.contains(item.getName()), item.isPersisted(), item.getName());

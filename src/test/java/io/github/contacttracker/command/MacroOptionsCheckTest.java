@@ -47,6 +47,8 @@ class MacroOptionsCheckTest {
 		assertNull(MacroOptionsCheck.problem(tracker, "threshold=1.5e2 r_out=55.5 method=first connectivity=4 " +
 			"overlay=false table=TRUE csv=[/data/my images/a.csv] channel=2"));
 		assertNull(MacroOptionsCheck.problem(tracker, ""));
+		// the dialog's button is no macro option (Fiji resolves buttons itself); a recorded key for it is ignored
+		assertNull(MacroOptionsCheck.problem(tracker, "threshold=110 measure=[Measure from the image]"));
 	}
 
 	@Test

@@ -205,12 +205,12 @@ class ProfileHelperTest {
 	void logLinesAreWrappedToTheLogWindowsWidth() {
 		final String warning = "  warning: the profile has not returned to background within max_radius = 80 px; " +
 			"give a larger max_radius or check that the particle is isolated";
-		final String wrapped = ContactTrackerProfileCommand.wrap(warning, 50, "    ");
+		final String wrapped = io.github.contacttracker.io.ShownFrameProfile.wrap(warning, 50, "    ");
 		assertEquals(warning.trim().replaceAll(" +", " "), wrapped.trim().replaceAll("\\s+", " "), "no word lost");
 		assertTrue(wrapped.startsWith("  warning: the"), wrapped);
 		for (final String line : wrapped.split("\n"))
 			assertTrue(line.length() <= 50, line);
 		assertTrue(wrapped.split("\n")[1].startsWith("    "), "continuation lines are indented");
-		assertEquals("short", ContactTrackerProfileCommand.wrap("short", 50, "  "));
+		assertEquals("short", io.github.contacttracker.io.ShownFrameProfile.wrap("short", 50, "  "));
 	}
 }

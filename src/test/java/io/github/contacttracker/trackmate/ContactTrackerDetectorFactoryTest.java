@@ -274,7 +274,7 @@ class ContactTrackerDetectorFactoryTest {
 			"TrackMate's Preview must be on the panel");
 	}
 
-	private static List<Component> allComponents(final Container root) {
+	static List<Component> allComponents(final Container root) {
 		final List<Component> all = new ArrayList<>();
 		for (final Component c : root.getComponents()) {
 			all.add(c);

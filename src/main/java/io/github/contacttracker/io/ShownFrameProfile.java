@@ -1,0 +1,151 @@
+package io.github.contacttracker.io;
+
+import java.math.BigDecimal;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+
+import ij.ImagePlus;
+import io.github.contacttracker.core.InvalidInputException;
+import io.github.contacttracker.core.ProfileAnalysis;
+import net.imglib2.RandomAccessibleInterval;
+
+/**
+ * The profile helper ({@link ProfileAnalysis}) run on the frame of an ImageJ image that is on display: what Fiji's
+ * <i>Contact Tracker Profile</i> measures around a clicked particle, and what the "Measure from the image" buttons
+ * of Fiji's Contact Tracker dialog and of TrackMate's panel measure on the frame's most isolated particles. One
+ * place for the frame taken, the rounding of the suggestions and the lines reported, so that the front ends agree.
+ * <p>
+ * Suggestions: the threshold rounded up to a whole grey level for 8- and 16-bit images, {@code r_out} up to whole
+ * pixels, an estimated diameter to 0.01 px (a given diameter is kept as given).
+ *
+ * @param result what the helper found
+ * @param title the image's title
+ * @param frame the 0-based frame measured (as {@link ImagePlusFrames} counts frames)
+ * @param frameCount the image's frames
+ * @param channel the 1-based channel measured
+ * @param integerData whether the image holds whole grey levels (8- or 16-bit)
+ */
+public record ShownFrameProfile(ProfileAnalysis.Result result, String title, int frame, int frameCount, int channel,
+	boolean integerData)
+{
+
+	/** Longest line written to ImageJ's Log window: it does not wrap, and a default Log window is about this wide. */
+	public static final int LOG_WIDTH = 90;
+
+	/**
+	 * The profile of the most isolated particles of the frame on display (the "Measure from the image" buttons).
+	 *
+	 * @param imp the image
+	 * @param channel the 1-based channel to measure (the one that will be tracked)
+	 * @param diameter the particle diameter in pixels, or 0 to estimate it from the frame
+	 * @return the profile and the suggestions
+	 * @throws InvalidInputException with a one-line message: an image that cannot be tracked, or a frame the helper
+	 *         finds no usable particle in
+	 */
+	public static ShownFrameProfile measure(final ImagePlus imp, final int channel, final double diameter) {
+		return run(imp, channel, null, diameter, 0);
+	}
+
+	/**
+	 * The profile of the particle at a point of the frame and channel on display (<i>Contact Tracker Profile</i>).
+	 *
+	 * @param imp the image
+	 * @param point {x, y} on the particle (px, TrackMate's convention)
+	 * @param diameter the particle diameter in pixels, or 0 to estimate it from the frame
+	 * @param maxRadius how far out to measure (px), 0 for the helper's default
+	 * @return the profile and the suggestions
+	 * @throws InvalidInputException with a one-line message
+	 */
+	public static ShownFrameProfile at(final ImagePlus imp, final double[] point, final double diameter,
+		final double maxRadius)
+	{
+		if (imp == null) throw new InvalidInputException("no image");
+		return run(imp, imp.convertIndexToPosition(imp.getCurrentSlice())[0], point, diameter, maxRadius);
+	}
+
+	@SuppressWarnings({ "unchecked", "rawtypes" })
+	private static ShownFrameProfile run(final ImagePlus imp, final int channel, final double[] point,
+		final double diameter, final double maxRadius)
+	{
+		final ImagePlusFrames frames = ImagePlusFrames.of(imp, channel);
+		final int t = ImagePlusFrames.shownFrame(imp);
+		// the frames' pixel type is known only at run time: the helper takes any real type
+		final RandomAccessibleInterval frame = frames.frame(t);
+		final ProfileAnalysis.Result r = point == null ? ProfileAnalysis.analyse(frame, diameter, maxRadius)
+			: ProfileAnalysis.analyse(frame, point[0], point[1], diameter, maxRadius);
+		return new ShownFrameProfile(r, imp.getTitle(), t, frames.frameCount(), frames.channel(), imp
+			.getBitDepth() != 32);
+	}
+
+	/** @return the suggested threshold, rounded up to a whole grey level for 8- and 16-bit images */
+	public double threshold() {
+		return result.suggestedThreshold(integerData);
+	}
+
+	/** @return the suggested {@code r_out} (px), rounded up to whole pixels */
+	public double rOut() {
+		return result.suggestedROut();
+	}
+
+	/** @return the particle diameter (px): as given, or the estimate rounded to 0.01 px */
+	public double diameter() {
+		return result.diameterEstimated() ? Math.round(result.diameter() * 100) / 100.0 : result.diameter();
+	}
+
+	/**
+	 * @return one line, e.g. {@code 'movie.tif', frame 3: threshold 131, r_out 36 px, diameter 64.87 px (estimated)}
+	 */
+	public String summary() {
+		return String.format(Locale.ROOT, "'%s'%s%s: threshold %s, r_out %s px, diameter %s px (%s)", title,
+			frameCount > 1 ? ", frame " + (frame + 1) : "", channel > 1 ? ", channel " + channel : "", fmt(threshold()),
+			fmt(rOut()), fmt(diameter()), result.diameterEstimated() ? "estimated" : "given");
+	}
+
+	/** @return {@link #summary()} and, if the helper warns, how many warnings the Log window holds */
+	public String status() {
+		final int n = result.warnings().size();
+		return summary() + (n == 0 ? "" : "; " + n + " warning" + (n == 1 ? "" : "s") + " in the Log window");
+	}
+
+	/**
+	 * @param who what measured, at the start of the first line (e.g. {@code Contact Tracker: measured})
+	 * @return the summary and the helper's warnings, for ImageJ's Log window, wrapped to {@link #LOG_WIDTH}
+	 */
+	public String logText(final String who) {
+		final List<String> lines = new ArrayList<>();
+		lines.add(wrap(who + " " + summary(), LOG_WIDTH, "    "));
+		for (final String w : result.warnings())
+			lines.add(wrap("  warning: " + w, LOG_WIDTH, "    "));
+		return String.join("\n", lines);
+	}
+
+	/**
+	 * Breaks a line at spaces so that no part is longer than {@code width} characters (ImageJ's Log window does
+	 * not wrap: long warnings ran off its edge); continuation lines start with {@code indent}.
+	 */
+	public static String wrap(final String text, final int width, final String indent) {
+		int lead = 0;
+		while (lead < text.length() && text.charAt(lead) == ' ')
+			lead++;
+		final StringBuilder out = new StringBuilder(text.substring(0, lead));
+		int lineStart = 0, lineWords = 0;
+		for (final String word : text.substring(lead).split(" +")) {
+			if (lineWords > 0 && out.length() - lineStart + 1 + word.length() > width) {
+				out.append('\n');
+				lineStart = out.length();
+				out.append(indent);
+				lineWords = 0;
+			}
+			if (lineWords > 0) out.append(' ');
+			out.append(word);
+			lineWords++;
+		}
+		return out.toString();
+	}
+
+	/** @return {@code v} with up to three decimals, no trailing zeros */
+	private static String fmt(final double v) {
+		return new BigDecimal(String.format(Locale.ROOT, "%.3f", v)).stripTrailingZeros().toPlainString();
+	}
+}

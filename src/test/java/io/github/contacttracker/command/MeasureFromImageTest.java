@@ -1,0 +1,165 @@
+package io.github.contacttracker.command;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.scijava.Cancelable;
+import org.scijava.Context;
+import org.scijava.command.CommandService;
+import org.scijava.module.Module;
+import org.scijava.module.ModuleItem;
+import org.scijava.module.ModuleService;
+import org.scijava.widget.Button;
+
+import ij.ImagePlus;
+import io.github.contacttracker.core.ProfileAnalysis;
+import io.github.contacttracker.io.Calibration;
+import io.github.contacttracker.io.ImagePlusFrames;
+import io.github.contacttracker.io.ProfileScenes;
+import io.github.contacttracker.settings.TrackingSettings;
+import net.imglib2.RandomAccessibleInterval;
+
+/**
+ * The dialog's "Measure from the image" button, pressed the way Fiji's dialog presses it (the input's callback on
+ * the module): it fills {@code threshold}, {@code r_out} and {@code diameter} with exactly what the profile helper
+ * suggests for the frame on display, keeps a diameter that was given, and leaves the fields alone with a one-line
+ * message when the frame has nothing to measure. The button is not a setting, not remembered and not a macro
+ * option: a headless run ignores it.
+ */
+class MeasureFromImageTest {
+
+	private static Context context;
+
+	@BeforeAll
+	static void start() {
+		context = new Context();
+	}
+
+	@AfterAll
+	static void stop() {
+		context.dispose();
+	}
+
+	/** The command's module as the dialog holds it, on {@code imp}. */
+	private static Module dialog(final ImagePlus imp) {
+		final Module m = context.service(ModuleService.class).createModule(context.service(CommandService.class)
+			.getCommand(ContactTrackerCommand.class));
+		m.setInput("imp", imp);
+		return m;
+	}
+
+	/** Presses the button: what SciJava's button widget does. @return what was written to the Log window */
+	private static String press(final Module m) throws Exception {
+		final ModuleItem<?> button = m.getInfo().getInput("measure");
+		assertEquals(Button.class, button.getType());
+		final PrintStream out = System.out;
+		final ByteArrayOutputStream printed = new ByteArrayOutputStream();
+		System.setOut(new PrintStream(printed, true, StandardCharsets.UTF_8));
+		try {
+			button.callback(m);
+		}
+		finally {
+			System.setOut(out);
+		}
+		return printed.toString(StandardCharsets.UTF_8);
+	}
+
+	@SuppressWarnings({ "unchecked", "rawtypes" })
+	private static ProfileAnalysis.Result helper(final ImagePlus imp, final int t, final double diameter) {
+		return ProfileAnalysis.analyse((RandomAccessibleInterval) ImagePlusFrames.of(imp, 1).frame(t), diameter, 0);
+	}
+
+	private static double value(final Module m, final String name) {
+		return ((Number) m.getInput(name)).doubleValue();
+	}
+
+	@Test
+	void fillsTheFieldsWithTheHelpersSuggestionsForTheFrameShown() throws Exception {
+		final ImagePlus imp = ProfileScenes.particles("particles", 4, Calibration.PIXELS);
+		imp.setPosition(1, 1, 3);
+		final Module m = dialog(imp);
+		m.setInput("min_area", 7);
+		final String log = press(m);
+
+		final ProfileAnalysis.Result r = helper(imp, 2, 0);
+		assertTrue(r.diameterEstimated());
+		assertEquals(r.suggestedThreshold(true), value(m, "threshold"), 0, "threshold, rounded up to a grey level");
+		assertEquals(r.suggestedROut(), value(m, "r_out"), 0, "r_out, rounded up to whole pixels");
+		assertEquals(Math.round(r.diameter() * 100) / 100.0, value(m, "diameter"), 0, "the estimate, to 0.01 px");
+		assertEquals(ProfileScenes.SMALL.diameterPx(), value(m, "diameter"), 0.1 * ProfileScenes.SMALL.diameterPx());
+		assertEquals(7, value(m, "min_area"), 0, "the other fields are left alone");
+		// another frame measures otherwise: the one on display was taken
+		assertFalse(r.threshold() == helper(imp, 0, 0).threshold() && r.rOut() == helper(imp, 0, 0).rOut());
+		assertTrue(log.startsWith("Contact Tracker: measured 'particles', frame 3: threshold " + fmt(r
+			.suggestedThreshold(true)) + ", r_out " + fmt(r.suggestedROut()) + " px, diameter "), log);
+		assertTrue(log.contains(" px (estimated)"), log);
+		assertTrue(log.contains("  warning: the diameter"), "the helper's warnings follow: " + log);
+		assertFalse(((Cancelable) m).isCanceled());
+	}
+
+	@Test
+	void aGivenDiameterIsKeptAndUsed() throws Exception {
+		final ImagePlus imp = ProfileScenes.particles("particles", 1, Calibration.PIXELS);
+		final Module m = dialog(imp);
+		m.setInput("diameter", 21.5);
+		final String log = press(m);
+		final ProfileAnalysis.Result r = helper(imp, 0, 21.5);
+		assertEquals(21.5, value(m, "diameter"), 0);
+		assertEquals(r.suggestedThreshold(true), value(m, "threshold"), 0);
+		assertEquals(r.suggestedROut(), value(m, "r_out"), 0);
+		// with the diameter given the helper does not estimate it, and the threshold depends on it
+		assertFalse(r.diameterEstimated());
+		assertTrue(r.threshold() != helper(imp, 0, 0).threshold());
+		assertTrue(log.startsWith("Contact Tracker: measured 'particles': threshold"), log);
+		assertTrue(log.contains("diameter 21.5 px (given)"), log);
+	}
+
+	@Test
+	void aFrameWithNothingToMeasureLeavesTheFieldsAndSaysWhy() throws Exception {
+		final Module m = dialog(ProfileScenes.empty("background only"));
+		m.setInput("threshold", 123.0);
+		m.setInput("r_out", 17.0);
+		m.setInput("diameter", 0.0);
+		final String log = press(m);
+		assertEquals(123, value(m, "threshold"), 0);
+		assertEquals(17, value(m, "r_out"), 0);
+		assertEquals(0, value(m, "diameter"), 0);
+		assertEquals("Contact Tracker: cannot measure from the image: no particle brighter than the noise in the " +
+			"frame", log.trim(), "one line, no stack trace");
+		assertFalse(((Cancelable) m).isCanceled(), "the dialog stays open");
+
+		// an image the command refuses says so the same way
+		final Module rgb = dialog(new ImagePlus("rgb", new ij.process.ColorProcessor(32, 32)));
+		assertTrue(press(rgb).trim().startsWith("Contact Tracker: cannot measure from the image: 'rgb' is an RGB " +
+			"image"));
+		assertEquals(TrackingSettings.THRESHOLD.defaultValue(), value(rgb, "threshold"), 0);
+	}
+
+	/** Headless and from scripts the button is an optional input nobody sets: the run ignores it. */
+	@Test
+	void theButtonIsNoSettingAndARunIgnoresIt() throws Exception {
+		final ModuleItem<?> button = context.service(CommandService.class).getCommand(ContactTrackerCommand.class)
+			.getInput("measure");
+		assertFalse(button.isRequired());
+		assertFalse(button.isPersisted());
+		assertNull(TrackingSettings.named("measure"));
+		final ImagePlus imp = ProfileScenes.particles("particles", 1, Calibration.PIXELS);
+		final Module run = Simulated.run(context, ContactTrackerCommand.class, "imp", imp, "threshold", 100.0, "r_out",
+			16.0, "overlay", false, "table", false);
+		assertFalse(((Cancelable) run).isCanceled(), () -> ((Cancelable) run).getCancelReason());
+		assertEquals(100, value(run, "threshold"), 0, "nothing was measured");
+	}
+
+	private static String fmt(final double v) {
+		return v == Math.rint(v) ? Long.toString((long) v) : Double.toString(v);
+	}
+}

@@ -1,0 +1,147 @@
+package io.github.contacttracker.trackmate;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.awt.Component;
+import java.awt.Container;
+import java.util.List;
+import java.util.Map;
+
+import javax.swing.JButton;
+import javax.swing.JLabel;
+import javax.swing.JSpinner;
+import javax.swing.SwingUtilities;
+
+import org.junit.jupiter.api.Test;
+
+import fiji.plugin.trackmate.Model;
+import fiji.plugin.trackmate.Settings;
+import ij.ImagePlus;
+import io.github.contacttracker.core.ProfileAnalysis;
+import io.github.contacttracker.io.Calibration;
+import io.github.contacttracker.io.ImagePlusFrames;
+import io.github.contacttracker.io.ProfileScenes;
+import net.imglib2.RandomAccessibleInterval;
+import net.imglib2.type.NativeType;
+import net.imglib2.type.numeric.RealType;
+
+/**
+ * The panel's "Measure from the image" button: it fills the threshold, {@code r_out} and the diameter with exactly
+ * what the profile helper suggests for the frame on display of TrackMate's image (lengths shown in the image's
+ * units, returned in pixels), keeps a diameter that was given, and leaves the fields alone with a one-line message
+ * when there is nothing to measure.
+ */
+class MeasurePanelTest {
+
+	/** 0.1 um pixels, so that lengths on the panel differ from pixels. */
+	private static final Calibration MICRONS = new Calibration(0.1, 0.1, "micron", 1, "s");
+
+	private static <T extends RealType<T> & NativeType<T>> ContactTrackerConfigurationPanel panel(final ImagePlus imp) {
+		return (ContactTrackerConfigurationPanel) new ContactTrackerDetectorFactory<T>().getDetectorConfigurationPanel(
+			new Settings(imp), new Model());
+	}
+
+	@SuppressWarnings({ "unchecked", "rawtypes" })
+	private static ProfileAnalysis.Result helper(final ImagePlus imp, final int t, final double diameter) {
+		return ProfileAnalysis.analyse((RandomAccessibleInterval) ImagePlusFrames.of(imp, 1).frame(t), diameter, 0);
+	}
+
+	private static double number(final Map<String, Object> settings, final String key) {
+		return ((Number) settings.get(key)).doubleValue();
+	}
+
+	@Test
+	void fillsTheFieldsWithTheHelpersSuggestionsForTheFrameShown() {
+		final ImagePlus imp = ProfileScenes.particles("particles", 3, MICRONS);
+		imp.setPosition(1, 1, 2);
+		final ContactTrackerConfigurationPanel panel = panel(imp);
+		final Map<String, Object> before = panel.getSettings();
+		final String message = panel.measureFromImage();
+
+		final ProfileAnalysis.Result r = helper(imp, 1, 0);
+		final Map<String, Object> after = panel.getSettings();
+		assertEquals(r.suggestedThreshold(true), number(after, "THRESHOLD"), 0);
+		assertEquals(r.suggestedROut(), number(after, "R_OUT"), 0, "in pixels, whatever the panel shows");
+		assertEquals(Math.round(r.diameter() * 100) / 100.0, number(after, "DIAMETER"), 0);
+		for (final String key : List.of("MIN_AREA", "MIN_SECOND_AREA", "CONNECTIVITY", "METHOD", "TARGET_CHANNEL"))
+			assertEquals(before.get(key), after.get(key), key);
+		// r_out is shown in microns, its pixels beside it
+		assertTrue(all(panel).stream().anyMatch(c -> c instanceof JSpinner && Math.abs(((Number) ((JSpinner) c)
+			.getValue()).doubleValue() - 0.1 * r.suggestedROut()) < 1e-9), "r_out in microns");
+		assertTrue(all(panel).stream().anyMatch(c -> c instanceof JLabel && ("micron (" + (long) r.suggestedROut() +
+			" px)").equals(((JLabel) c).getText())));
+		assertTrue(message.startsWith("Measured 'particles', frame 2: threshold " + (long) r.suggestedThreshold(true) +
+			", r_out " + (long) r.suggestedROut() + " px, diameter "), message);
+		final int warnings = r.warnings().size();
+		assertTrue(warnings > 0, "the diameter was estimated: a warning says so");
+		assertTrue(message.endsWith("(estimated); " + warnings + " warning" + (warnings == 1 ? "" : "s") +
+			" in the Log window"), message);
+		assertTrue(shown(panel).contains(message.substring(0, 20)), "the message is on the panel");
+	}
+
+	@Test
+	void aGivenDiameterIsKeptAndUsed() {
+		final ImagePlus imp = ProfileScenes.particles("particles", 1, MICRONS);
+		final ContactTrackerConfigurationPanel panel = panel(imp);
+		final Map<String, Object> s = panel.getSettings();
+		s.put("DIAMETER", 21.5);
+		panel.setSettings(s);
+		panel.measureFromImage();
+		final ProfileAnalysis.Result r = helper(imp, 0, 21.5);
+		assertFalse(r.diameterEstimated());
+		assertEquals(21.5, number(panel.getSettings(), "DIAMETER"), 0);
+		assertEquals(r.suggestedThreshold(true), number(panel.getSettings(), "THRESHOLD"), 0);
+		assertEquals(r.suggestedROut(), number(panel.getSettings(), "R_OUT"), 0);
+	}
+
+	@Test
+	void nothingToMeasureLeavesTheFieldsAndSaysWhy() {
+		final ContactTrackerConfigurationPanel panel = panel(ProfileScenes.empty("background only"));
+		final Map<String, Object> s = panel.getSettings();
+		s.put("THRESHOLD", 123.0);
+		s.put("R_OUT", 17.0);
+		panel.setSettings(s);
+		final String message = panel.measureFromImage();
+		assertEquals("Not measured: no particle brighter than the noise in the frame", message);
+		assertEquals(s, panel.getSettings());
+		assertTrue(shown(panel).contains(message));
+	}
+
+	/** The button itself: on the event thread it measures in the background and fills the fields when done. */
+	@Test
+	void theButtonMeasuresOffTheEventThread() throws Exception {
+		final ImagePlus imp = ProfileScenes.particles("particles", 1, Calibration.PIXELS);
+		final ContactTrackerConfigurationPanel panel = panel(imp);
+		final JButton button = all(panel).stream().filter(c -> c instanceof JButton && ContactTrackerConfigurationPanel.MEASURE
+			.equals(((JButton) c).getText())).map(c -> (JButton) c).findFirst().orElse(null);
+		assertNotNull(button);
+		assertTrue(button.isEnabled());
+		SwingUtilities.invokeAndWait(button::doClick);
+		final long deadline = System.currentTimeMillis() + 20_000;
+		while (!shown(panel).contains("Measured") && System.currentTimeMillis() < deadline)
+			Thread.sleep(20);
+		SwingUtilities.invokeAndWait(() -> {}); // the fields are filled in the same event as the message
+		assertEquals(helper(imp, 0, 0).suggestedThreshold(true), number(panel.getSettings(), "THRESHOLD"), 0);
+		assertTrue(button.isEnabled(), "ready for another measurement");
+
+		// without an image there is nothing to measure on
+		final JButton none = all(panel(null)).stream().filter(c -> c instanceof JButton && ContactTrackerConfigurationPanel.MEASURE
+			.equals(((JButton) c).getText())).map(c -> (JButton) c).findFirst().orElseThrow();
+		assertFalse(none.isEnabled());
+	}
+
+	/** @return the texts of the panel's labels */
+	private static String shown(final Container panel) {
+		final StringBuilder b = new StringBuilder();
+		for (final Component c : all(panel))
+			if (c instanceof JLabel && ((JLabel) c).getText() != null) b.append(((JLabel) c).getText()).append('\n');
+		return b.toString();
+	}
+
+	private static List<Component> all(final Container root) {
+		return ContactTrackerDetectorFactoryTest.allComponents(root);
+	}
+}
