@@ -34,7 +34,8 @@ public final class SpotTables {
 	public static final List<SpotColumn> DISPLAY_ORDER = List.of(SpotColumn.ID, SpotColumn.FRAME,
 		SpotColumn.POSITION_X, SpotColumn.POSITION_Y, SpotColumn.SIGMA_X, SpotColumn.SIGMA_Y,
 		SpotColumn.FLAG_FELL_BACK, SpotColumn.FLAG_DEGENERATE, SpotColumn.FLAG_AT_BORDER, SpotColumn.FLAG_MERGED,
-		SpotColumn.FLAG_NOT_CONVERGED, SpotColumn.FLAG_SECOND_PASS, SpotColumn.POSITION_T, SpotColumn.RADIUS,
+		SpotColumn.FLAG_NOT_CONVERGED, SpotColumn.FLAG_UNMODELLED_NEIGHBOUR, SpotColumn.FLAG_SECOND_PASS,
+		SpotColumn.POSITION_T, SpotColumn.RADIUS,
 		SpotColumn.ACTIVE_RADIUS, SpotColumn.QUALITY, SpotColumn.FIRST_PASS_X, SpotColumn.FIRST_PASS_Y,
 		SpotColumn.ACTIVE_AREA, SpotColumn.SECOND_AREA, SpotColumn.ITERATIONS, SpotColumn.POSITION_Z,
 		SpotColumn.VISIBILITY);

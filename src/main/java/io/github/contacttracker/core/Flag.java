@@ -30,7 +30,12 @@ public enum Flag {
 	 * when the alternation of profile and centres found no fixed point within its rounds (every spot that rests
 	 * on that profile).
 	 */
-	NOT_CONVERGED("not converged");
+	NOT_CONVERGED("not converged"),
+	/**
+	 * The profile methods: a particle whose light reaches this spot's pixels was not modelled (a suspected merge, or
+	 * a first pass without a centre), so its light tilts this centre by an unknown amount.
+	 */
+	UNMODELLED_NEIGHBOUR("neighbour not modelled");
 
 	private final String description;
 

@@ -30,7 +30,8 @@ public enum SpotColumn {
 	FLAG_DEGENERATE("FLAG_DEGENERATE", "Degenerate system", "Degen", Dimension.NONE, true),
 	FLAG_AT_BORDER("FLAG_AT_BORDER", "Touches border", "Border", Dimension.NONE, true),
 	FLAG_MERGED("FLAG_MERGED", "Suspected merge", "Merged", Dimension.NONE, true),
-	FLAG_NOT_CONVERGED("FLAG_NOT_CONVERGED", "Not converged", "NoConv", Dimension.NONE, true);
+	FLAG_NOT_CONVERGED("FLAG_NOT_CONVERGED", "Not converged", "NoConv", Dimension.NONE, true),
+	FLAG_UNMODELLED_NEIGHBOUR("FLAG_UNMODELLED_NEIGHBOUR", "Neighbour not modelled", "Unmod", Dimension.NONE, true);
 
 	/** TrackMate's feature dimensions, as written in its XML declarations. */
 	public enum Dimension {
@@ -124,6 +125,7 @@ public enum SpotColumn {
 			case FLAG_AT_BORDER: return flag(spot, Flag.AT_BORDER);
 			case FLAG_MERGED: return flag(spot, Flag.MERGED);
 			case FLAG_NOT_CONVERGED: return flag(spot, Flag.NOT_CONVERGED);
+			case FLAG_UNMODELLED_NEIGHBOUR: return flag(spot, Flag.UNMODELLED_NEIGHBOUR);
 			default: throw new AssertionError(this);
 		}
 	}

@@ -223,4 +223,35 @@ class MergeDetectionTest {
 		assertEquals(1, merged.size(), "one component");
 		assertTrue(merged.get(0).has(Flag.MERGED), "a merge is still flagged with its particles' diameter");
 	}
+
+	/**
+	 * Never a silently wrong neighbour: a suspected merge is left out of the fit, so its light would be fitted as its
+	 * neighbour's. The single particle next to it is flagged {@code UNMODELLED_NEIGHBOUR}; one far away is not.
+	 */
+	@Test
+	void theNeighbourOfAnUnmodelledMergeIsFlagged() {
+		final List<Item> items = List.of(new Item(IN_FOCUS, 60.2, 60.4), new Item(IN_FOCUS, 78.3, 55.6), new Item(
+			IN_FOCUS, 78.3, 64.6), new Item(IN_FOCUS, 170.7, 160.1));
+		final Plane plane = render(220, 220, items, 21);
+		final List<Localization> spots = new ContactTracker(TrackerParameters.of(THRESHOLD, 20).withMethod(Method.FIT))
+			.analyse(plane, 0, false).spots();
+		assertEquals(3, spots.size(), "the single, the merged pair, the far single");
+		int merged = 0, near = 0, far = 0;
+		for (final Localization s : spots) {
+			if (s.has(Flag.MERGED)) merged++;
+			else if (s.x() < 100) {
+				near++;
+				assertTrue(s.has(Flag.UNMODELLED_NEIGHBOUR), "the merge's neighbour is flagged: " + s.flags());
+			}
+			else {
+				far++;
+				assertFalse(s.has(Flag.UNMODELLED_NEIGHBOUR), "the far particle is not");
+				assertEquals(170.7, s.x(), 0.1);
+			}
+		}
+		assertEquals(List.of(1, 1, 1), List.of(merged, near, far));
+		// the paper's method does not model light: nothing to flag
+		assertTrue(new ContactTracker(TrackerParameters.of(THRESHOLD, 20).withMethod(Method.PAPER)).analyse(plane, 0,
+			false).spots().stream().noneMatch(s -> s.has(Flag.UNMODELLED_NEIGHBOUR)));
+	}
 }
