@@ -62,6 +62,12 @@ public final class ProfileAnalysis {
 	static final double MAD_TO_SIGMA = 1.4826;
 	/** Values further than this many sigmas from the mean do not count in the noise. */
 	static final double CLIP_SIGMAS = 3.5;
+	/**
+	 * The provisional diameter (to measure the profile on) is at most this many times the spots' median radius at
+	 * half height: the cores of the authors' bright-field particles have radii of 4.7-8.3 px at half height and
+	 * their images end 21 px out; a Gaussian particle's image ends about 2.5 half-height radii out.
+	 */
+	static final double PROVISIONAL_CORE_RADII = 6;
 	/** Smallest ratio of peak heights that separates the background's texture from the particles' cores. */
 	static final double TEXTURE_GAP_RATIO = 2;
 	/** At most this share (percent) of the active areas may fail the outline tests at the suggested threshold. */
@@ -219,34 +225,34 @@ public final class ProfileAnalysis {
 			xy[k] = new double[] { spots.get(k).x() - plane.minX(), spots.get(k).y() - plane.minY() };
 		final double[] nn = nearestNeighbourDistances(xy);
 
-		// 2. the diameter: given; or where the particles' own image ends, unless the spots sit closer than that
+		// 2. the diameter: given; or where the particles' own image ends, unless the spots sit closer than that. It is
+		// measured on a profile taken out to a provisional diameter: the spots' spacing, but no more than
+		// PROVISIONAL_CORE_RADII times their half-height radius (isolated particles sit far apart: their spacing would
+		// take the profile far out, over the background's texture and every neighbour)
 		double diameter = diameterGiven;
 		final boolean estimated = diameter == 0;
+		final double fromSpots = xy.length >= 2 ? quantile(nn.clone(), DIAMETER_PERCENTILE / 100) : Double.NaN;
 		if (estimated) {
-			// (a single particle: the image edge decides; the frame's size is a bound to start from)
-			final double fromSpots = xy.length >= 2 ? quantile(nn.clone(), DIAMETER_PERCENTILE / 100) : Double.NaN;
-			diameter = Double.isFinite(fromSpots) ? fromSpots : Math.min(w, h) / 2.0;
+			final double[] radii = new double[spots.size()];
+			for (int k = 0; k < radii.length; k++)
+				radii[k] = Math.sqrt(spots.get(k).activeArea() / Math.PI);
+			final double fromCores = PROVISIONAL_CORE_RADII * quantile(radii, 0.5);
+			diameter = Double.isFinite(fromSpots) ? Math.min(fromSpots, fromCores) : fromCores;
 		}
-		// 3-6. the particles, their local backgrounds, the noise and the pooled profile
-		Measured m = measure(plane, spots, xy, nn, point == null ? null : new double[] { lx, ly }, near, diameter,
-			maxRadiusGiven);
-		String diameterSource = null;
+		final double[] at = point == null ? null : new double[] { lx, ly };
+		Measured m = measure(plane, spots, xy, nn, at, near, diameter, maxRadiusGiven);
 		if (estimated) {
 			final double own = 2 * m.imageEdge();
-			if (own < diameter) {
-				diameter = own;
-				m = measure(plane, spots, xy, nn, point == null ? null : new double[] { lx, ly }, near, diameter,
-					maxRadiusGiven);
-				diameterSource = String.format(Locale.ROOT, "twice the radius where the particles' image returns to " +
-					"the background (%s px)", fmt(round2(m.imageEdge())));
-			}
-			else {
-				diameterSource = String.format(Locale.ROOT, "the %s-th percentile of the %d spots' nearest-neighbour " +
-					"distances, closer than the particles' image reaches (%s px across)", fmt(DIAMETER_PERCENTILE),
-					xy.length, fmt(round2(own)));
-			}
+			final boolean fromImage = !(fromSpots < own);
+			final double provisional = diameter;
+			diameter = fromImage ? own : fromSpots;
+			if (Math.abs(diameter - provisional) > 0.01 * provisional)
+				m = measure(plane, spots, xy, nn, at, near, diameter, maxRadiusGiven);
 			warnings.add(String.format(Locale.ROOT, "the diameter (%s px) is estimated as %s: give it if you know it",
-				fmt(round2(diameter)), diameterSource));
+				fmt(round2(diameter)), fromImage ? String.format(Locale.ROOT, "twice the radius where the particles' " +
+					"image returns to the background (%s px)", fmt(round2(own / 2))) : String.format(Locale.ROOT, "the " +
+						"%s-th percentile of the %d spots' nearest-neighbour distances, closer than the particles' image " +
+						"reaches (%s px across)", fmt(DIAMETER_PERCENTILE), xy.length, fmt(round2(own)))));
 		}
 		warnings.addAll(m.warnings());
 		final List<double[]> centres = m.centres();
