@@ -138,14 +138,7 @@ class ProfileSuggestionTest {
 	void realMovieConditionsGiveTheTrueROut() throws IOException {
 		final int w = 480, h = 480;
 		final SplittableRandom rnd = new SplittableRandom(3);
-		final List<double[]> centres = new ArrayList<>();
-		while (centres.size() < 40) {
-			final double[] c = { 20 + rnd.nextDouble() * (w - 40), 20 + rnd.nextDouble() * (h - 40) };
-			boolean free = true;
-			for (final double[] o : centres)
-				free &= Math.hypot(c[0] - o[0], c[1] - o[1]) > 40;
-			if (free) centres.add(c);
-		}
+		final List<double[]> centres = scattered(40, w, h, 20, 40, rnd);
 		final NoiseFreeImage exact = new ImageSimulator(BRIGHT_FIELD, 3).render(centres, w, h, 0);
 		for (int y = 0; y < h; y++)
 			for (int x = 0; x < w; x++)
@@ -201,6 +194,22 @@ class ProfileSuggestionTest {
 		assertEquals(trueROut, one.rOut(), 2, "r_out at a point within 2 px of the truth " + trueROut);
 		assertEquals(c[0], one.x(), 0.2);
 		assertEquals(c[1], one.y(), 0.2);
+	}
+
+	/** {@code count} random centres at least {@code margin} inside a w x h frame and more than {@code apart} apart. */
+	static List<double[]> scattered(final int count, final int w, final int h, final double margin,
+		final double apart, final SplittableRandom rnd)
+	{
+		final List<double[]> centres = new ArrayList<>();
+		while (centres.size() < count) {
+			final double[] c = { margin + rnd.nextDouble() * (w - 2 * margin), margin + rnd.nextDouble() * (h - 2 *
+				margin) };
+			boolean free = true;
+			for (final double[] o : centres)
+				free &= Math.hypot(c[0] - o[0], c[1] - o[1]) > apart;
+			if (free) centres.add(c);
+		}
+		return centres;
 	}
 
 	/** Stores a grey frame as a JPEG of the given quality and reads it back. */

@@ -65,14 +65,7 @@ class RealFootageFailuresTest {
 		final int w = 320, h = 320;
 		final SplittableRandom rnd = new SplittableRandom(4);
 		for (int t = 0; t < 3; t++) {
-			final List<double[]> centres = new ArrayList<>();
-			while (centres.size() < 5) {
-				final double[] c = { 40 + rnd.nextDouble() * (w - 80), 40 + rnd.nextDouble() * (h - 80) };
-				boolean free = true;
-				for (final double[] o : centres)
-					free &= Math.hypot(c[0] - o[0], c[1] - o[1]) > 90;
-				if (free) centres.add(c);
-			}
+			final List<double[]> centres = ProfileSuggestionTest.scattered(5, w, h, 40, 90, rnd);
 			final ArrayImg<UnsignedByteType, ByteArray> image = frame(w, h, SMALL, centres, (x, y) -> 100 + 6 * Math.sin(x / 23.0) * Math.cos(y / 31.0) +
 				4 * Math.sin((x + 2 * y) / 9.0), 2, 10 + t);
 			final Plane plane = Plane.of(image);
