@@ -1,0 +1,60 @@
+package io.github.contacttracker.io;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Map;
+import java.util.TreeMap;
+import java.util.stream.Stream;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+import com.code_intelligence.jazzer.junit.FuzzTest;
+
+/**
+ * Coverage-guided fuzzing of the readers with Jazzer: any bytes, as a file, are read or refused in one line naming
+ * the file ({@link ReaderContract}); an out-of-memory, a stray exception, ImageJ printing or a hang is a finding.
+ * <p>
+ * In the suite this runs in Jazzer's regression mode: once on each file of the seed corpus,
+ * {@code src/test/resources/io/github/contacttracker/io/ReaderFuzzTestInputs/readers/} (valid files of every
+ * format, {@link SeedFiles}; a finding's reproducer is added there too), in well under a second. To fuzz:
+ * <pre>
+ * JAZZER_FUZZ=1 mvn -B test -Dtest=ReaderFuzzTest -Djazzer.max_duration=10m
+ * </pre>
+ * (see README, Broken files).
+ */
+class ReaderFuzzTest {
+
+	/** Where a fuzzed input is written, one file reused. */
+	private static Path scratch;
+
+	@FuzzTest(maxDuration = "2m")
+	void readers(final byte[] data) throws IOException {
+		if (scratch == null) scratch = Files.createTempDirectory("reader-fuzz");
+		final Path file = scratch.resolve("fuzzed.tif");
+		Files.write(file, data);
+		ReaderContract.check(file, 4);
+	}
+
+	/** The corpus is the seed files, every one read; rewrite it with {@code -Dcontact.tracker.writeSeeds=true}. */
+	@Test
+	void theSeedCorpusHoldsAValidFileOfEveryFormat(@TempDir final Path dir) throws IOException {
+		final Path corpus = Path.of(System.getProperty("basedir", ".")).resolve(
+			"src/test/resources/io/github/contacttracker/io/ReaderFuzzTestInputs/readers");
+		final Map<String, byte[]> seeds = SeedFiles.all(dir);
+		if (Boolean.getBoolean("contact.tracker.writeSeeds")) for (final Map.Entry<String, byte[]> s : seeds.entrySet())
+			Files.write(corpus.resolve(s.getKey()), s.getValue());
+		final Map<String, ReaderContract.Outcome> read = new TreeMap<>();
+		try (Stream<Path> files = Files.list(corpus)) {
+			for (final Path f : files.toList())
+				read.put(f.getFileName().toString(), ReaderContract.check(f, 4));
+		}
+		final Map<String, ReaderContract.Outcome> expected = new TreeMap<>();
+		for (final String name : seeds.keySet())
+			expected.put(name, ReaderContract.Outcome.READ);
+		assertEquals(expected, read);
+	}
+}
