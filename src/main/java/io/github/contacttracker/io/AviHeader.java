@@ -34,7 +34,6 @@ final class AviHeader {
 			// RIFF size "AVI " then, first, LIST size "hdrl"
 			if (list.limit() < 24 || !fourcc(list, 12).equals("LIST") || !fourcc(list, 20).equals("hdrl")) return;
 			final long end = Math.min(list.limit(), 20 + (list.getInt(16) & 0xffffffffL));
-			long width = -1, height = -1;
 			boolean video = false;
 			for (int at = 24; at + 8 <= end;) {
 				final String id = fourcc(list, at);
@@ -45,10 +44,9 @@ final class AviHeader {
 				}
 				if (at + 8 + length > end) throw new IOException("cannot read " + file + ": damaged AVI: its '" + id +
 					"' header of " + length + " bytes runs past its header list");
-				if (id.equals("avih") && length >= 40) {
-					width = list.getInt(at + 8 + 32) & 0xffffffffL;
-					height = list.getInt(at + 8 + 36) & 0xffffffffL;
-				}
+				// the reader sizes its frames by the main header's width and the bitmap's height: both checked
+				if (id.equals("avih") && length >= 40) FrameBudget.check(file, list.getInt(at + 8 + 32) & 0xffffffffL, list
+					.getInt(at + 8 + 36) & 0xffffffffL, 4);
 				if (id.equals("strh") && length >= 4) video = fourcc(list, at + 8).equals("vids");
 				if (id.equals("strf") && video && length >= 40) {
 					final long w = list.getInt(at + 8 + 4), h = Math.abs((long) list.getInt(at + 8 + 8));
@@ -63,7 +61,6 @@ final class AviHeader {
 				}
 				at += 8 + length + (length & 1);
 			}
-			if (width >= 0) FrameBudget.check(file, width, height, 4);
 		}
 	}
 

@@ -72,7 +72,7 @@ final class TiffDirectories {
 						ifd) + ", outside the file (" + size + " bytes)");
 				// a chain that comes back to a directory would never end
 				if (!seen.add(ifd)) throw damaged(file, "its chain of image directories loops back to byte " + ifd +
-					" after " + directories.size() + " directories");
+					" after " + directories.size() + (directories.size() == 1 ? " directory" : " directories"));
 				final ByteBuffer n = read(ch, ifd, countSize, head.order(), size, file, "directory");
 				final long entries = big ? n.getLong(0) : n.getShort(0) & 0xffff;
 				if (entries <= 0 || entries > (size - ifd - countSize - nextSize) / entrySize)

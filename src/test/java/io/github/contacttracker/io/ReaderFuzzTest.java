@@ -39,7 +39,10 @@ class ReaderFuzzTest {
 		ReaderContract.check(file, 4);
 	}
 
-	/** The corpus is the seed files, every one read; rewrite it with {@code -Dcontact.tracker.writeSeeds=true}. */
+	/**
+	 * The corpus holds the seed files, every one read, and the reproducers of the fuzzer's findings
+	 * ({@code finding-*}), each now read or refused; rewrite the seeds with {@code -Dcontact.tracker.writeSeeds=true}.
+	 */
 	@Test
 	void theSeedCorpusHoldsAValidFileOfEveryFormat(@TempDir final Path dir) throws IOException {
 		final Path corpus = Path.of(System.getProperty("basedir", ".")).resolve(
@@ -49,8 +52,10 @@ class ReaderFuzzTest {
 			Files.write(corpus.resolve(s.getKey()), s.getValue());
 		final Map<String, ReaderContract.Outcome> read = new TreeMap<>();
 		try (Stream<Path> files = Files.list(corpus)) {
-			for (final Path f : files.toList())
-				read.put(f.getFileName().toString(), ReaderContract.check(f, 4));
+			for (final Path f : files.toList()) {
+				final ReaderContract.Outcome outcome = ReaderContract.check(f, 4);
+				if (!f.getFileName().toString().startsWith("finding-")) read.put(f.getFileName().toString(), outcome);
+			}
 		}
 		final Map<String, ReaderContract.Outcome> expected = new TreeMap<>();
 		for (final String name : seeds.keySet())
