@@ -95,7 +95,7 @@ public final class ImageFiles {
 			.toAbsolutePath().toString(), 1, 0, true, true, false));
 		final ImageStack avi = made.value();
 		if (avi == null || avi.size() == 0 || reader.getErrorText() != null) throw new IOException("cannot read " +
-			file + " as an AVI movie: " + ImageJMessages.oneLine(reader.getErrorText() != null ? reader
+			file + " as an AVI movie: " + InvalidInputException.oneLine(reader.getErrorText() != null ? reader
 				.getErrorText() : made.messages().isEmpty() ? "no frames" : made.messages()));
 		final FileStack stack = new FileStack(file, avi.size(), avi.getWidth(), avi.getHeight(), false, t -> {
 			// AVI_Reader reports a bad frame as null (and a message): name the file and frame instead

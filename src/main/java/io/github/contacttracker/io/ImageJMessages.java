@@ -7,6 +7,7 @@ import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 
 import ij.IJ;
+import io.github.contacttracker.core.InvalidInputException;
 
 /**
  * ImageJ 1's own messages while our readers call its decoders: caught, not printed. Without a window (the command
@@ -51,7 +52,7 @@ final class ImageJMessages {
 		BUFFER.set(buffer);
 		install();
 		try {
-			return new Result<>(read.run(), oneLine(buffer.toString(StandardCharsets.UTF_8)));
+			return new Result<>(read.run(), InvalidInputException.oneLine(buffer.toString(StandardCharsets.UTF_8)));
 		}
 		finally {
 			if (previous == null) BUFFER.remove();
@@ -82,11 +83,6 @@ final class ImageJMessages {
 			IJ.redirectErrorMessages(redirected);
 			out = err = routerOut = routerErr = null;
 		}
-	}
-
-	/** @return {@code text} on one line, runs of white space as one space */
-	static String oneLine(final String text) {
-		return text.replaceAll("\\s+", " ").strip();
 	}
 
 	/** Sends a reading thread's output to its buffer, any other thread's to the stream it replaced. */
