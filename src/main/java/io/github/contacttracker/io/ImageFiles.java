@@ -68,7 +68,8 @@ public final class ImageFiles {
 	 * messages caught and turned into the one line.
 	 */
 	private static ImagePlus single(final Path file) throws IOException {
-		final ImageJMessages.Result<ImagePlus> imp = ImageJMessages.call(() -> new Opener().openImage(file
+		PictureHeader.check(file);
+		final ImageJMessages.Result<ImagePlus> imp = ImageJMessages.call(file, () -> new Opener().openImage(file
 			.toAbsolutePath().toString()));
 		if (imp.value() == null) throw new IOException("cannot read " + file + " as an image: " + (imp.messages()
 			.isEmpty() || imp.messages().startsWith("Unsupported format") ? "not a format ImageJ reads (TIFF, AVI, " +
@@ -91,7 +92,7 @@ public final class ImageFiles {
 		AviHeader.check(file);
 		final AVI_Reader reader = new AVI_Reader();
 		// virtual, colour converted to grey, not flipped; its messages caught (its error text is our line)
-		final ImageJMessages.Result<ImageStack> made = ImageJMessages.call(() -> reader.makeStack(file
+		final ImageJMessages.Result<ImageStack> made = ImageJMessages.call(file, () -> reader.makeStack(file
 			.toAbsolutePath().toString(), 1, 0, true, true, false));
 		final ImageStack avi = made.value();
 		if (avi == null || avi.size() == 0 || reader.getErrorText() != null) throw new IOException("cannot read " +
@@ -99,7 +100,7 @@ public final class ImageFiles {
 				.getErrorText() : made.messages().isEmpty() ? "no frames" : made.messages()));
 		final FileStack stack = new FileStack(file, avi.size(), avi.getWidth(), avi.getHeight(), false, t -> {
 			// AVI_Reader reports a bad frame as null (and a message): name the file and frame instead
-			final ImageJMessages.Result<ImageProcessor> ip = ImageJMessages.call(() -> avi.getProcessor(t + 1));
+			final ImageJMessages.Result<ImageProcessor> ip = ImageJMessages.call(file, () -> avi.getProcessor(t + 1));
 			if (ip.value() == null) throw new IOException("cannot read frame " + (t + 1) + " of " + file + " (damaged " +
 				"AVI" + (ip.messages().isEmpty() ? "?)" : ": " + ip.messages() + ")"));
 			return ip.value();

@@ -5,6 +5,7 @@ import java.io.IOException;
 import java.io.OutputStream;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
 
 import ij.IJ;
 import io.github.contacttracker.core.InvalidInputException;
@@ -45,14 +46,26 @@ final class ImageJMessages {
 	private static PrintStream out, err, routerOut, routerErr;
 	private static boolean redirected;
 
-	/** Runs {@code read} with ImageJ's messages caught. */
-	static <T> Result<T> call(final Read<T> read) throws IOException {
+	/**
+	 * Runs {@code read} with ImageJ's messages caught. ImageJ's readers allocate what a file declares without a
+	 * check (DICOM element lengths, a PNG's size, ...); where ours could not check first, running out of memory on
+	 * such a request (one allocation that failed, so the heap is intact) is a refusal naming the file.
+	 *
+	 * @param file the file read, for the message
+	 * @throws IOException also when the read ran out of memory
+	 */
+	static <T> Result<T> call(final Path file, final Read<T> read) throws IOException {
 		final ByteArrayOutputStream previous = BUFFER.get(); // a read inside a read: the outer one's buffer
 		final ByteArrayOutputStream buffer = previous != null ? previous : new ByteArrayOutputStream();
 		BUFFER.set(buffer);
 		install();
 		try {
 			return new Result<>(read.run(), InvalidInputException.oneLine(buffer.toString(StandardCharsets.UTF_8)));
+		}
+		catch (final OutOfMemoryError e) {
+			throw new IOException("cannot read " + file + ": ImageJ's reader ran out of memory on it (" + e.getMessage() +
+				", Java heap " + (Runtime.getRuntime().maxMemory() >> 20) + " MB): the file is damaged, or its images " +
+				"need more memory (CONTACT_TRACKER_JAVA_OPTS=-Xmx8g; in Fiji Edit > Options > Memory & Threads)");
 		}
 		finally {
 			if (previous == null) BUFFER.remove();

@@ -54,7 +54,7 @@ final class TiffMovie {
 		final Path abs = file.toAbsolutePath();
 		final ImageJMessages.Result<FileInfo[]> info;
 		try {
-			info = ImageJMessages.call(() -> new TiffDecoder(abs.getParent().toString() + "/", abs.getFileName()
+			info = ImageJMessages.call(file, () -> new TiffDecoder(abs.getParent().toString() + "/", abs.getFileName()
 				.toString()).getTiffInfo());
 		}
 		catch (final IOException e) {
@@ -95,12 +95,12 @@ final class TiffMovie {
 	private static ImagePlus ij(final Path file, final FileInfo[] planes) throws IOException {
 		final FileInfo first = (FileInfo) planes[0].clone();
 		// plane 1: the calibration (incl. signed 16-bit), the bit depth
-		final ImageJMessages.Result<ImagePlus> opened = ImageJMessages.call(() -> new FileOpener(first).openImage());
+		final ImageJMessages.Result<ImagePlus> opened = ImageJMessages.call(file, () -> new FileOpener(first).openImage());
 		final ImagePlus one = opened.value();
 		if (one == null) throw new IOException("cannot read " + file + ": ImageJ could not decode its first plane (" +
 			describe(first) + (opened.messages().isEmpty() ? "" : "; " + opened.messages()) + ")");
 		final FileStack stack = new FileStack(file, planes.length, one.getWidth(), one.getHeight(), true, t -> {
-			final ImageJMessages.Result<ImageProcessor> ip = ImageJMessages.call(() -> new FileOpener(
+			final ImageJMessages.Result<ImageProcessor> ip = ImageJMessages.call(file, () -> new FileOpener(
 				(FileInfo) planes[t].clone()).openProcessor());
 			if (ip.value() == null) throw new IOException("cannot read plane " + (t + 1) + " of " + file + (ip.messages()
 				.isEmpty() ? "" : ": " + ip.messages()));

@@ -173,6 +173,17 @@ class BrokenFilesTest {
 	}
 
 	@Test
+	void aPictureThatDeclaresAHugeSizeIsRefused() throws IOException {
+		final byte[] png = seeds.get("image.png").clone();
+		ByteBuffer.wrap(png).putInt(16, 0x7fff_ffff).putInt(20, 0x7fff_ffff); // IHDR width and height
+		assertEquals(Outcome.REFUSED, check("huge.png", png));
+		// what the fuzzer found: ImageJ takes it for DICOM and allocates an element's declared length
+		final Path dicom = Path.of(System.getProperty("basedir", ".")).resolve(
+			"src/test/resources/io/github/contacttracker/io/ReaderFuzzTestInputs/readers/finding-dicom-element-length");
+		assertEquals(Outcome.REFUSED, check("dicom-like.dcm", Files.readAllBytes(dicom)));
+	}
+
+	@Test
 	void anImageJStackThatClaimsMoreImagesThanItHoldsIsRefused() throws IOException {
 		final byte[] bytes = seeds.get("imagej.tif").clone();
 		final String text = new String(bytes, StandardCharsets.ISO_8859_1);
