@@ -26,6 +26,9 @@ final class TiffDirectories {
 
 	private TiffDirectories() {}
 
+	/** Bytes read at a directory's start: its entries, unless it has more than 40. */
+	private static final int WINDOW = 512;
+
 	/** An upper bound on how many times LZW, Deflate or PackBits expand their data (Deflate's limit is 1032). */
 	static final long MAX_EXPANSION = 4096;
 
@@ -73,13 +76,16 @@ final class TiffDirectories {
 				// a chain that comes back to a directory would never end
 				if (!seen.add(ifd)) throw damaged(file, "its chain of image directories loops back to byte " + ifd +
 					" after " + directories.size() + (directories.size() == 1 ? " directory" : " directories"));
-				final ByteBuffer n = read(ch, ifd, countSize, head.order(), size, file, "directory");
-				final long entries = big ? n.getLong(0) : n.getShort(0) & 0xffff;
+				// one read for a usual directory (a few dozen entries), a second one for a larger
+				final ByteBuffer window = read(ch, ifd, (int) Math.min(WINDOW, size - ifd), head.order(), size, file,
+					"directory");
+				final long entries = big ? window.getLong(0) : window.getShort(0) & 0xffff;
 				if (entries <= 0 || entries > (size - ifd - countSize - nextSize) / entrySize)
 					throw damaged(file, "image directory " + (directories.size() + 1) + " claims " + Long.toUnsignedString(
 						entries) + " entries, more than the file holds");
-				final ByteBuffer dir = read(ch, ifd + countSize, (int) (entries * entrySize + nextSize), head.order(), size,
-					file, "directory");
+				final int length = (int) (entries * entrySize + nextSize);
+				final ByteBuffer dir = countSize + length <= window.limit() ? window.slice(countSize, length).order(head
+					.order()) : read(ch, ifd + countSize, length, head.order(), size, file, "directory");
 				final Directory d = directory(ch, dir, (int) entries, big, size, file, directories.size() + 1);
 				if (d != null) directories.add(d); // a directory without an image (EXIF, GPS) is passed over
 				final int next = (int) entries * entrySize;
