@@ -39,8 +39,8 @@ class BrokenFilesIT {
 		}
 	}
 
-	/** @return the kinds of broken file, by name */
-	private static Map<String, byte[]> cases(final Map<String, byte[]> seeds) {
+	/** @return the kinds of broken file, by name (also written by scripts/reader-comparison) */
+	static Map<String, byte[]> cases(final Map<String, byte[]> seeds) {
 		final Map<String, byte[]> cases = new LinkedHashMap<>();
 		cases.put("empty.tif", new byte[0]);
 		for (final String seed : List.of("imagej.tif", "pages16.tif", "big.tif", "float64.tif")) {

@@ -161,10 +161,7 @@ class BrokenFilesTest {
 		for (final Map.Entry<String, byte[]> seed : seeds.entrySet()) {
 			final Random random = new Random(seed.getKey().hashCode());
 			for (int k = 0; k < 40; k++) {
-				final byte[] bytes = seed.getValue().clone();
-				final int changes = 1 + random.nextInt(8), span = Math.min(512, bytes.length);
-				for (int i = 0; i < changes; i++)
-					bytes[(i == 0 ? 4 : 0) + random.nextInt(span - 4)] = (byte) random.nextInt(256);
+				final byte[] bytes = SeedFiles.randomHeaderBytes(seed.getValue(), random);
 				final String name = "random" + k + "-" + seed.getKey();
 				tests.add(DynamicTest.dynamicTest(seed.getKey() + " random " + k, () -> check(name, bytes)));
 			}

@@ -7,6 +7,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
 import java.util.Map;
+import java.util.Random;
 
 import ij.ImagePlus;
 import ij.ImageStack;
@@ -64,6 +65,18 @@ final class SeedFiles {
 		final Path file = scratch.resolve("seed-" + big + bits + ".tif");
 		TestMovies.writeTiff(file, big, bits, format, 2, W, H, SeedFiles::frame, null, 0);
 		return Files.readAllBytes(file);
+	}
+
+	/**
+	 * @return {@code seed} with 1 to 8 random bytes changed in its first 512 bytes (its header and directories),
+	 *         the first of them past the format's magic number
+	 */
+	static byte[] randomHeaderBytes(final byte[] seed, final Random random) {
+		final byte[] bytes = seed.clone();
+		final int changes = 1 + random.nextInt(8), span = Math.min(512, bytes.length);
+		for (int i = 0; i < changes; i++)
+			bytes[(i == 0 ? 4 : 0) + random.nextInt(span - 4)] = (byte) random.nextInt(256);
+		return bytes;
 	}
 
 	/** A TIFF's bytes with its first directory's entries found, to be changed in place. */
