@@ -31,7 +31,7 @@ class ReaderFuzzTest {
 	/** Where a fuzzed input is written, one file reused. */
 	private static Path scratch;
 
-	@FuzzTest(maxDuration = "2m")
+	@FuzzTest(maxDuration = "10m")
 	void readers(final byte[] data) throws IOException {
 		if (scratch == null) scratch = Files.createTempDirectory("reader-fuzz");
 		final Path file = scratch.resolve("fuzzed.tif");
