@@ -10,6 +10,7 @@ import java.util.TreeMap;
 import java.util.stream.Stream;
 
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 
 import com.code_intelligence.jazzer.junit.FuzzTest;
@@ -22,15 +23,17 @@ import com.code_intelligence.jazzer.junit.FuzzTest;
  * {@code src/test/resources/io/github/contacttracker/io/ReaderFuzzTestInputs/readers/} (valid files of every
  * format, {@link SeedFiles}; a finding's reproducer is added there too), in well under a second. To fuzz:
  * <pre>
- * JAZZER_FUZZ=1 mvn -B test -Dtest=ReaderFuzzTest -Djazzer.max_duration=10m
+ * JAZZER_FUZZ=1 mvn -B test -Dtest='ReaderFuzzTest#readers' -Djazzer.instrument='io.github.contacttracker.**,ij.**'
  * </pre>
- * (see README, Broken files).
+ * for 10 minutes or to the first finding (see README, Broken files).
  */
 class ReaderFuzzTest {
 
 	/** Where a fuzzed input is written, one file reused. */
 	private static Path scratch;
 
+	/** Any input taking over 10 s is a finding: a hang (Jazzer passes JUnit's timeout to the fuzzer per input). */
+	@Timeout(10)
 	@FuzzTest(maxDuration = "10m")
 	void readers(final byte[] data) throws IOException {
 		if (scratch == null) scratch = Files.createTempDirectory("reader-fuzz");
