@@ -181,6 +181,21 @@ class BrokenFilesTest {
 	}
 
 	@Test
+	void aBrokenFrameInAFolderIsRefusedNamingTheFolder() throws IOException {
+		for (final String broken : List.of("loop", "cut", "empty")) {
+			final Path folder = Files.createDirectories(dir.resolve("frames-" + broken));
+			Files.write(folder.resolve("frame1.png"), seeds.get("image.png"));
+			final byte[] png = seeds.get("image.png");
+			Files.write(folder.resolve("frame2.png"), png);
+			final SeedFiles.Tiff loop = new SeedFiles.Tiff(seeds.get("pages16.tif"));
+			Files.write(folder.resolve("frame3.tif"), broken.equals("loop") ? loop.next(0, loop.ifd).bytes : broken
+				.equals("cut") ? Arrays.copyOf(png, png.length / 2) : new byte[0]);
+			assertEquals(Outcome.REFUSED, assertTimeoutPreemptively(BOUND, () -> ReaderContract.check(folder, 8)),
+				broken);
+		}
+	}
+
+	@Test
 	void anImageJStackThatClaimsMoreImagesThanItHoldsIsRefused() throws IOException {
 		final byte[] bytes = seeds.get("imagej.tif").clone();
 		final String text = new String(bytes, StandardCharsets.ISO_8859_1);
