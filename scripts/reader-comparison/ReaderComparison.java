@@ -19,6 +19,8 @@ import io.github.contacttracker.io.ImagePlusFrames;
  * line), OTHER (any other exception) or OOM and exits 0.</li>
  * <li>{@code speed tm|ours|open FILE}: reads every frame on one thread (open: only opens the file), best of 5 rounds
  * after 2 rounds of warm-up.</li>
+ * <li>{@code repeat ours FOLDER}: reads every file of the folder with our readers, 15 times over in one JVM (a
+ * cluster job meeting thousands of files), and prints the heap in use after each round.</li>
  * </ul>
  */
 public class ReaderComparison {
@@ -37,6 +39,24 @@ public class ReaderComparison {
 			}
 			catch (final RuntimeException e) {
 				System.out.println("OTHER " + InvalidInputException.oneLine(e.toString()));
+			}
+			return;
+		}
+		if (a[0].equals("repeat")) {
+			final File[] files = file.listFiles();
+			final long start = System.nanoTime();
+			for (int round = 1; round <= 15; round++) {
+				for (final File f : files)
+					try {
+						read(a[1], f, 4, true);
+					}
+					catch (final IOException | RuntimeException e) {
+						// refused: what the other modes count; here only time and memory matter
+					}
+				System.gc();
+				final Runtime rt = Runtime.getRuntime();
+				System.out.printf("%d files read, heap in use %.1f MB, %.1f s%n", round * files.length, (rt.totalMemory() -
+					rt.freeMemory()) / 1e6, (System.nanoTime() - start) / 1e9);
 			}
 			return;
 		}

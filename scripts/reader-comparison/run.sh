@@ -4,6 +4,7 @@
 #   scripts/reader-comparison/run.sh hostile          every case file through both readers, -Xmx256m, 15 s limit
 #   scripts/reader-comparison/run.sh speed            every frame of the 400-frame bench stack, one thread
 #   scripts/reader-comparison/run.sh track [CLI.jar]  the issue's 44 cases through `track`, -Xmx256m, 30 s limit
+#   scripts/reader-comparison/run.sh repeat           all case files 15 times over in one JVM, -Xmx256m: time, heap
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/../.."
 W=target/reader-comparison
@@ -29,6 +30,8 @@ hostile)
 speed)
 	[ -f "$W/bench.tif" ] || java -jar target/*-cli.jar bench --frames 400 --rounds 1 --save-stack "$W/bench.tif" >/dev/null
 	for m in ours tm open; do java -Xmx1g -Djava.awt.headless=true -cp "$CP" ReaderComparison speed $m "$W/bench.tif"; done ;;
+repeat)
+	java -Xmx256m -Djava.awt.headless=true -cp "$CP" ReaderComparison repeat ours "$W/cases" ;;
 track)
 	jar=${2:-$(ls target/*-cli.jar)}
 	for f in "$W"/cases/issue-*; do
