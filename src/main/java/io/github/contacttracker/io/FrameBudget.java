@@ -47,6 +47,23 @@ final class FrameBudget {
 			"(CONTACT_TRACKER_JAVA_OPTS=-Xmx8g; in Fiji Edit > Options > Memory & Threads)");
 	}
 
+	/**
+	 * Checks the memory a file's description takes as it is read (a TIFF's directories: a hostile file can chain
+	 * millions of them), against the same share of the heap as a frame.
+	 *
+	 * @param file the file, for the message
+	 * @param what what takes the memory, e.g. "its 500000 image directories"
+	 * @param bytes the bytes it takes so far
+	 * @throws IOException naming the file when that is more than the share
+	 */
+	static void checkDescription(final Path file, final String what, final long bytes) throws IOException {
+		final long heap = Runtime.getRuntime().maxMemory();
+		if (bytes > heap * HEAP_SHARE) throw new IOException("cannot read " + file + ": " + what + " take more than " +
+			mb((long) (heap * HEAP_SHARE)) + " MB to describe, an eighth of the Java heap (" + mb(heap) + " MB); if " +
+			"the file is real, give Java more memory (CONTACT_TRACKER_JAVA_OPTS=-Xmx8g; in Fiji Edit > Options > " +
+			"Memory & Threads)");
+	}
+
 	private static long mb(final long bytes) {
 		return (bytes + (1 << 20) - 1) >> 20;
 	}

@@ -26,6 +26,9 @@ final class TiffDirectories {
 
 	private TiffDirectories() {}
 
+	/** What a directory's offset in the set of those seen and its layout take, without its strip tables. */
+	private static final long BYTES_PER_DIRECTORY = 200;
+
 	/** Bytes read at a directory's start: its entries, unless it has more than 40. */
 	private static final int WINDOW = 512;
 
@@ -69,6 +72,7 @@ final class TiffDirectories {
 			final Set<Long> seen = new HashSet<>();
 			long ifd = big ? head.getLong(8) : head.getInt(4) & 0xffffffffL;
 			if (ifd == 0) throw damaged(file, "no image directory");
+			long held = 0; // bytes of what we keep per directory (its offset seen, its layout): bounded by the heap
 			while (ifd != 0) {
 				if (ifd < (big ? 16 : 8) || ifd > size - countSize)
 					throw damaged(file, "image directory " + (directories.size() + 1) + " at byte " + Long.toUnsignedString(
@@ -88,6 +92,9 @@ final class TiffDirectories {
 					.order()) : read(ch, ifd + countSize, length, head.order(), size, file, "directory");
 				final Directory d = directory(ch, dir, (int) entries, big, size, file, directories.size() + 1);
 				if (d != null) directories.add(d); // a directory without an image (EXIF, GPS) is passed over
+				held += BYTES_PER_DIRECTORY + (d == null ? 0 : 16L * d.offsets().length);
+				if (seen.size() % 1024 == 0) FrameBudget.checkDescription(file, "its " + seen.size() + " image directories " +
+					"(and more)", held);
 				final int next = (int) entries * entrySize;
 				ifd = big ? dir.getLong(next) : dir.getInt(next) & 0xffffffffL;
 			}

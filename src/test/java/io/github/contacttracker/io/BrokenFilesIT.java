@@ -20,9 +20,9 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
- * Integration test on the PACKAGED command-line jar (failsafe): the broken and hostile files of issue 24 through
- * {@code track} in a 256 MB heap, each in a process of its own as a user runs it: exit status 2, exactly one line on
- * standard error naming the file, within a few seconds. (Before: ImageJ's messages on 2-4 lines, out of memory for
+ * Integration test on the PACKAGED command-line jar (failsafe): the broken and hostile files of issue 24, and a TIFF
+ * of two million chained directories, through {@code track} in a 256 MB heap, each in a process of its own as a user
+ * runs it: exit status 2, exactly one line on standard error naming the file, within a few seconds. (Before: ImageJ's messages on 2-4 lines, out of memory for
  * a looping directory chain or a huge declared size, runs past 30 s.)
  */
 class BrokenFilesIT {
@@ -58,6 +58,7 @@ class BrokenFilesIT {
 			cases.put(base + "entries-huge.tif", new SeedFiles.Tiff(valid).entries(65535).bytes);
 			cases.put(base + "truncated.tif", Arrays.copyOf(valid, valid.length / 2));
 		}
+		cases.put("many-directories.tif", chain(2_000_000));
 		final byte[] avi = seeds.get("movie.avi");
 		final byte[] list = avi.clone();
 		ByteBuffer.wrap(list).order(ByteOrder.LITTLE_ENDIAN).putInt(16, 0x7fff_ff00);
@@ -65,6 +66,19 @@ class BrokenFilesIT {
 		cases.put("avi-truncated-header.avi", Arrays.copyOf(avi, 300));
 		cases.put("avi-truncated.avi", Arrays.copyOf(avi, avi.length / 2));
 		return cases;
+	}
+
+	/**
+	 * @return a classic TIFF of {@code n} chained directories of one entry each and no image: describing them all
+	 *         would take more than the heap's share
+	 */
+	private static byte[] chain(final int n) {
+		final ByteBuffer b = ByteBuffer.allocate(8 + 18 * n).order(ByteOrder.LITTLE_ENDIAN);
+		b.put((byte) 'I').put((byte) 'I').putShort((short) 42).putInt(8);
+		for (int i = 0; i < n; i++)
+			b.putShort((short) 1).putShort((short) 305).putShort((short) 2).putInt(1).putInt(0).putInt(i + 1 < n ? 8 +
+				18 * (i + 1) : 0);
+		return b.array();
 	}
 
 	@Test
