@@ -58,7 +58,6 @@ class BrokenFilesIT {
 			cases.put(base + "entries-huge.tif", new SeedFiles.Tiff(valid).entries(65535).bytes);
 			cases.put(base + "truncated.tif", Arrays.copyOf(valid, valid.length / 2));
 		}
-		cases.put("many-directories.tif", chain(2_000_000));
 		final byte[] avi = seeds.get("movie.avi");
 		final byte[] list = avi.clone();
 		ByteBuffer.wrap(list).order(ByteOrder.LITTLE_ENDIAN).putInt(16, 0x7fff_ff00);
@@ -84,6 +83,7 @@ class BrokenFilesIT {
 	@Test
 	void everyBrokenFileIsOneLineAndExitTwoInA256MegabyteHeap() throws Exception {
 		final Map<String, byte[]> cases = cases(SeedFiles.all(Files.createDirectories(dir.resolve("seeds"))));
+		cases.put("many-directories.tif", chain(2_000_000));
 		final List<String> report = new ArrayList<>();
 		for (final Map.Entry<String, byte[]> c : cases.entrySet()) {
 			final Path file = dir.resolve(c.getKey());
