@@ -32,6 +32,10 @@ import ij.process.ShortProcessor;
  * That reader takes uncompressed, one-sample-per-pixel data, the way tifffile and numpy write them; it reads no
  * calibration. OME-TIFF is read as ImageJ 1 reads it (its planes, in file order); its OME-XML sizes and order are
  * checked so that channels or Z planes are not taken for time points.
+ * <p>
+ * Either way the file's directories are first read and checked by {@link TiffDirectories}, so that neither reader
+ * believes a number the file has not backed (a looping chain, a size or a strip beyond the file), and ImageJ's
+ * messages are caught ({@link ImageJMessages}).
  */
 final class TiffMovie {
 
