@@ -19,7 +19,7 @@
 //   ImageJ-linux64 --headless --console --run contact-tracker-batch.groovy \
 //     'input="/data/movies",output="/data/spots",threshold=110,r_out=55,min_area=20,method="paper",channel=1,diameter=0,trackmate=false'
 
-import ij.IJ
+import io.github.contacttracker.io.ImageFiles
 import io.github.contacttracker.command.ContactTrackerCommand
 import io.github.contacttracker.core.TrackerParameters
 
@@ -29,9 +29,13 @@ def tiffs = (input.listFiles() ?: new File[0]).findAll { it.isFile() && it.name.
 	.sort { it.name }
 if (tiffs.isEmpty()) log.warn("Contact Tracker batch: no TIFF in " + input)
 for (f in tiffs) {
-	def imp = IJ.openImage(f.path)
-	if (imp == null) {
-		log.error("Contact Tracker batch: " + f.name + ": cannot open it")
+	// Contact Tracker's checked readers: a broken or hostile file is one line naming it, and the batch goes on
+	def imp
+	try {
+		imp = ImageFiles.open(f.toPath())
+	}
+	catch (IOException e) {
+		log.error("Contact Tracker batch: " + f.name + ": " + e.message)
 		failed++
 		continue
 	}

@@ -6,8 +6,8 @@
 //     "input=[/data/movies] output=[/data/spots] threshold=110 r_out=55 min_area=20 method=paper channel=1 diameter=0"
 // In Fiji: Plugins > Macros > Run... and pick this file; without an argument it asks for the values.
 //
-// Keys not given take the defaults below. An image that fails (RGB, Z and T both > 1, a bad value, ...) is
-// reported with its name and reason and the batch goes on with the next one; no image is left open.
+// Keys not given take the defaults below. An image that fails (a broken file, RGB, Z and T both > 1, a bad
+// value, ...) is reported with its name and reason and the batch goes on with the next one; no image is left open.
 
 args = getArgument();
 if (args == "") {
@@ -55,7 +55,14 @@ for (i = 0; i < list.length; i++) {
 	if (!matches(toLowerCase(name), ".*\\.tiff?")) continue;
 	csv = output + File.getNameWithoutExtension(name) + ".csv";
 	if (File.exists(csv)) deleted = File.delete(csv); // so that a failure cannot leave an old CSV looking new
-	open(input + name);
+	// opened by Contact Tracker's checked readers: a broken or hostile file is one line here, and the batch goes on
+	// (ImageJ's open() may stop the macro, print several lines, run out of memory or not end on such a file)
+	error = call("io.github.contacttracker.command.MovieOpener.open", input + name);
+	if (error != "") {
+		failed++;
+		print(name + ": FAILED: " + error);
+		continue;
+	}
 	// a failing image is reported in the Log ("Contact Tracker ('name'): reason") instead of stopping the batch
 	IJ.redirectErrorMessages();
 	run("Contact Tracker", options + " csv=[" + csv + "]");

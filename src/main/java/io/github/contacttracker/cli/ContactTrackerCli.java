@@ -118,7 +118,7 @@ public final class ContactTrackerCli {
 			options.parse(args, command == null ? 0 : 1);
 		}
 		catch (final CommandOptions.BadOptionException e) {
-			err.println("contact-tracker: error: " + oneLine(e.getMessage()) + " (see " + options.commandLine() +
+			err.println("contact-tracker: error: " + InvalidInputException.oneLine(e.getMessage()) + " (see " + options.commandLine() +
 				" --help)");
 			return EXIT_BAD_INPUT;
 		}
@@ -138,7 +138,7 @@ public final class ContactTrackerCli {
 			return command.call();
 		}
 		catch (final InvalidInputException | IOException | UncheckedIOException e) {
-			err.println("contact-tracker: error: " + oneLine(e.getMessage()));
+			err.println("contact-tracker: error: " + InvalidInputException.oneLine(e.getMessage()));
 			return EXIT_BAD_INPUT;
 		}
 		catch (final CancellationException e) {
@@ -146,7 +146,7 @@ public final class ContactTrackerCli {
 			return 130;
 		}
 		catch (final OutOfMemoryError e) {
-			err.println("contact-tracker: error: out of memory (" + oneLine(e.getMessage()) + "): give Java more with " +
+			err.println("contact-tracker: error: out of memory (" + InvalidInputException.oneLine(e.getMessage()) + "): give Java more with " +
 				"CONTACT_TRACKER_JAVA_OPTS=-Xmx8g, or use fewer --threads");
 			return 1;
 		}
@@ -177,9 +177,5 @@ public final class ContactTrackerCli {
 	/** @return {@code text} split at commas, each part trimmed */
 	static List<String> list(final String text) {
 		return List.of(text.split(",")).stream().map(String::trim).toList();
-	}
-
-	static String oneLine(final String message) {
-		return message == null ? "(no message)" : message.replace('\n', ' ').replace('\r', ' ').strip();
 	}
 }

@@ -123,7 +123,7 @@ final class TrackCommand extends ContactTrackerCli.Subcommand {
 				track(movies.get(m), outputs.get(m), settings, threads, showProgress);
 			}
 			catch (final InvalidInputException | IOException | UncheckedIOException e) {
-				err.println("contact-tracker: error: " + movies.get(m) + ": " + ContactTrackerCli.oneLine(e.getMessage()));
+				err.println("contact-tracker: error: " + movies.get(m) + ": " + InvalidInputException.oneLine(e.getMessage()));
 				failed++;
 			}
 		}

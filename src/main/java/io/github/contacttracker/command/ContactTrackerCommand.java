@@ -162,6 +162,11 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 		catch (final InvalidInputException | IOException e) {
 			fail(e.getMessage());
 		}
+		catch (final OutOfMemoryError e) {
+			// frames too large for the heap, or a virtual stack's reader that believed its file: a reason, no trace
+			fail("out of memory (" + InvalidInputException.oneLine(e.getMessage()) + "): give Fiji more with Edit > " +
+				"Options > Memory & Threads, or use fewer threads");
+		}
 		catch (final CancellationException e) {
 			final String m = e.getMessage();
 			final String reason = m != null && m.startsWith("cancelled") ? m : "cancelled" + (m == null ? "" : " (" + m +

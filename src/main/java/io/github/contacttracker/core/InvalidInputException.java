@@ -22,4 +22,12 @@ public class InvalidInputException extends IllegalArgumentException {
 	public InvalidInputException(final String message, final Throwable cause) {
 		super(message, cause);
 	}
+
+	/**
+	 * @param message a message, perhaps of several lines (another library's)
+	 * @return it on one line, each run of white space one space; "(no message)" for null
+	 */
+	public static String oneLine(final String message) {
+		return message == null ? "(no message)" : message.replaceAll("\\s+", " ").strip();
+	}
 }

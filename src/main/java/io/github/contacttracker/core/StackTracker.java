@@ -242,9 +242,9 @@ public final class StackTracker {
 	}
 
 	/**
-	 * Localizes frames {@code indices} on the caller's task executor; results in that order. A frame's failure is
-	 * caught in its task and the first failure in frame order rethrown as it was, so the error a user sees does
-	 * not depend on the threads.
+	 * Localizes frames {@code indices} on the caller's task executor; results in that order. A frame's failure
+	 * (an exception or running out of memory) is caught in its task and the first failure in frame order rethrown
+	 * as it was, so the error a user sees does not depend on the threads.
 	 */
 	private static <T extends RealType<T>> List<FrameResult> pass(final ContactTracker tracker,
 		final EmpiricalProfile profile, final int[] indices,
@@ -252,7 +252,7 @@ public final class StackTracker {
 		final Progress progress, final BooleanSupplier cancelled)
 	{
 		final TaskExecutor executor = Parallelization.getTaskExecutor();
-		final RuntimeException[] failures = new RuntimeException[indices.length];
+		final Throwable[] failures = new Throwable[indices.length];
 		final List<FrameResult> results = executor.forEachApply(positions(indices.length), i -> {
 			try {
 				if (cancelled.getAsBoolean()) throw new CancellationException("cancelled after " + progress.done.get() +
@@ -261,13 +261,15 @@ public final class StackTracker {
 				progress.frameDone();
 				return r;
 			}
-			catch (final RuntimeException e) {
+			catch (final RuntimeException | OutOfMemoryError e) {
+				// out of memory too: the executor would wrap it in a RuntimeException, hiding it from the front ends
 				failures[i] = e;
 				return null;
 			}
 		});
-		for (final RuntimeException e : failures)
-			if (e != null) throw e;
+		for (final Throwable e : failures)
+			if (e instanceof OutOfMemoryError oom) throw oom;
+			else if (e != null) throw (RuntimeException) e;
 		return results;
 	}
 

@@ -53,10 +53,18 @@ final class FileStack extends VirtualStack {
 	public ImageProcessor getProcessor(final int n) {
 		if (n < 1 || n > size) throw new IllegalArgumentException("plane " + n + " of " + size);
 		try {
-			return reader.read(n - 1);
+			final ImageProcessor ip = reader.read(n - 1);
+			// a plane unlike the first is a damaged file, not a frame to track
+			if (ip != null && (ip.getWidth() != getWidth() || ip.getHeight() != getHeight())) throw new IOException(
+				"cannot read plane " + n + " of " + path + ": it is " + ip.getWidth() + " x " + ip.getHeight() +
+					" pixels, not " + getWidth() + " x " + getHeight() + " like the first (damaged file?)");
+			return ip;
 		}
 		catch (final IOException e) {
 			throw new UncheckedIOException(e);
+		}
+		catch (final UncheckedIOException e) {
+			throw e; // a reader's own message, naming the file
 		}
 		catch (final RuntimeException e) {
 			throw new UncheckedIOException(new IOException("cannot read plane " + n + " of " + path + ": " + e, e));

@@ -9,7 +9,6 @@ import java.util.Locale;
 import java.util.stream.Stream;
 
 import ij.ImagePlus;
-import ij.io.Opener;
 import ij.process.ImageProcessor;
 
 /**
@@ -51,11 +50,17 @@ final class FolderMovie {
 
 	/** Reads one frame file; {@code w = 0} for the first (which sets the size and bit depth). */
 	private static ImageProcessor read(final Path file, final int w, final int h, final int bits) throws IOException {
-		final ImagePlus imp = new Opener().openImage(file.toAbsolutePath().toString());
-		if (imp == null) throw new IOException("cannot read frame " + file + ": not an image ImageJ reads");
+		// each frame file through the checked readers: a folder may hold a broken or hostile file too
+		final ImagePlus imp = ImageFiles.openFile(file);
 		if (imp.getStackSize() > 1) throw new IOException("frame " + file + " has " + imp.getStackSize() + " planes: a " +
 			"folder must hold one 2D image per frame");
-		ImageProcessor ip = imp.getProcessor();
+		ImageProcessor ip;
+		try {
+			ip = imp.getProcessor();
+		}
+		catch (final java.io.UncheckedIOException e) {
+			throw e.getCause();
+		}
 		final String name = file.getFileName().toString().toLowerCase(Locale.ROOT);
 		if (ip.getBitDepth() == 24 && (name.endsWith(".jpg") || name.endsWith(".jpeg"))) ip = ip.convertToByte(false);
 		if (w > 0 && (ip.getWidth() != w || ip.getHeight() != h || ip.getBitDepth() != bits))

@@ -44,14 +44,7 @@ public final class ImageFiles {
 		if (!Files.exists(file)) throw new IOException("file not found: " + file);
 		if (!Files.isReadable(file)) throw new IOException("cannot read " + file + ": permission denied");
 		try {
-			if (Files.isDirectory(file)) return FolderMovie.open(file);
-			final byte[] head = head(file);
-			if (TiffMovie.isTiff(head)) return TiffMovie.open(file, head);
-			if (isAvi(head)) return avi(file);
-			final ImagePlus imp = new Opener().openImage(file.toAbsolutePath().toString());
-			if (imp == null) throw new IOException("cannot read " + file + " as an image: not a format ImageJ reads (" +
-				"TIFF, AVI, PNG, JPEG, a folder of frames, ...)");
-			return imp;
+			return Files.isDirectory(file) ? FolderMovie.open(file) : openFile(file);
 		}
 		catch (final UncheckedIOException e) {
 			throw e.getCause();
@@ -59,6 +52,29 @@ public final class ImageFiles {
 		catch (final RuntimeException e) {
 			throw new IOException("cannot read " + file + " as an image: " + e, e);
 		}
+	}
+
+	/** Opens a file (not a folder): what its first bytes say it is, each reader checking what the file declares. */
+	static ImagePlus openFile(final Path file) throws IOException {
+		if (Files.size(file) == 0) throw new IOException("cannot read " + file + ": it is empty (0 bytes)");
+		final byte[] head = head(file);
+		if (TiffMovie.isTiff(head)) return TiffMovie.open(file);
+		if (isAvi(head)) return avi(file);
+		return single(file);
+	}
+
+	/**
+	 * Opens one image of a format other than TIFF and AVI (PNG, JPEG, GIF, BMP, ...) with ImageJ's opener, its
+	 * messages caught and turned into the one line.
+	 */
+	private static ImagePlus single(final Path file) throws IOException {
+		PictureHeader.check(file);
+		final ImageJMessages.Result<ImagePlus> imp = ImageJMessages.call(file, () -> new Opener().openImage(file
+			.toAbsolutePath().toString()));
+		if (imp.value() == null) throw new IOException("cannot read " + file + " as an image: " + (imp.messages()
+			.isEmpty() || imp.messages().startsWith("Unsupported format") ? "not a format ImageJ reads (TIFF, AVI, " +
+				"PNG, JPEG, a folder of frames, ...)" : imp.messages()));
+		return imp.value();
 	}
 
 	private static byte[] head(final Path file) throws IOException {
@@ -73,16 +89,21 @@ public final class ImageFiles {
 	}
 
 	private static ImagePlus avi(final Path file) throws IOException {
+		AviHeader.check(file);
 		final AVI_Reader reader = new AVI_Reader();
-		// virtual, colour converted to grey, not flipped
-		final ImageStack avi = reader.makeStack(file.toAbsolutePath().toString(), 1, 0, true, true, false);
+		// virtual, colour converted to grey, not flipped; its messages caught (its error text is our line)
+		final ImageJMessages.Result<ImageStack> made = ImageJMessages.call(file, () -> reader.makeStack(file
+			.toAbsolutePath().toString(), 1, 0, true, true, false));
+		final ImageStack avi = made.value();
 		if (avi == null || avi.size() == 0 || reader.getErrorText() != null) throw new IOException("cannot read " +
-			file + " as an AVI movie: " + (reader.getErrorText() != null ? reader.getErrorText() : "no frames"));
+			file + " as an AVI movie: " + InvalidInputException.oneLine(reader.getErrorText() != null ? reader
+				.getErrorText() : made.messages().isEmpty() ? "no frames" : made.messages()));
 		final FileStack stack = new FileStack(file, avi.size(), avi.getWidth(), avi.getHeight(), false, t -> {
-			// AVI_Reader reports a bad frame as null (and a message box): name the file and frame instead
-			final ImageProcessor ip = avi.getProcessor(t + 1);
-			if (ip == null) throw new IOException("cannot read frame " + (t + 1) + " of " + file + " (damaged AVI?)");
-			return ip;
+			// AVI_Reader reports a bad frame as null (and a message): name the file and frame instead
+			final ImageJMessages.Result<ImageProcessor> ip = ImageJMessages.call(file, () -> avi.getProcessor(t + 1));
+			if (ip.value() == null) throw new IOException("cannot read frame " + (t + 1) + " of " + file + " (damaged " +
+				"AVI" + (ip.messages().isEmpty() ? "?)" : ": " + ip.messages() + ")"));
+			return ip.value();
 		});
 		final ImageProcessor first = stack.getProcessor(1);
 		stack.setBitDepth(first.getBitDepth());

@@ -77,6 +77,8 @@ public final class ImagePlusFrames {
 		if (imp == null) throw new InvalidInputException("no image");
 		final String name = "'" + imp.getTitle() + "'";
 		final int bits = imp.getBitDepth();
+		if (imp.getWidth() < 1 || imp.getHeight() < 1) throw new InvalidInputException(name + " has no pixels (" + imp
+			.getWidth() + " x " + imp.getHeight() + ")");
 		if (bits == 24)
 			throw new InvalidInputException(name + " is an RGB image: convert it to 8-bit, 16-bit or 32-bit grey " +
 				"(Image > Type) or split the channels first");

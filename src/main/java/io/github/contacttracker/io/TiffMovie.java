@@ -6,7 +6,6 @@ import java.nio.ByteOrder;
 import java.nio.channels.FileChannel;
 import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Properties;
 import java.util.regex.Matcher;
@@ -33,6 +32,10 @@ import ij.process.ShortProcessor;
  * That reader takes uncompressed, one-sample-per-pixel data, the way tifffile and numpy write them; it reads no
  * calibration. OME-TIFF is read as ImageJ 1 reads it (its planes, in file order); its OME-XML sizes and order are
  * checked so that channels or Z planes are not taken for time points.
+ * <p>
+ * Either way the file's directories are first read and checked by {@link TiffDirectories}, so that neither reader
+ * believes a number the file has not backed (a looping chain, a size or a strip beyond the file), and ImageJ's
+ * messages are caught ({@link ImageJMessages}).
  */
 final class TiffMovie {
 
@@ -48,20 +51,23 @@ final class TiffMovie {
 	 * @return the file as an image backed by a virtual stack
 	 * @throws IOException naming the file and what is wrong
 	 */
-	static ImagePlus open(final Path file, final byte[] head) throws IOException {
-		final boolean big = head[2] == 43 || head[3] == 43;
-		if (big) return own(file);
+	static ImagePlus open(final Path file) throws IOException {
+		// every directory checked before ImageJ's decoder or ours reads one: the file's numbers size nothing unchecked
+		final TiffDirectories.Layout layout = TiffDirectories.read(file);
+		if (layout.big()) return own(file, layout);
 		final Path abs = file.toAbsolutePath();
-		final FileInfo[] info;
+		final ImageJMessages.Result<FileInfo[]> info;
 		try {
-			info = new TiffDecoder(abs.getParent().toString() + "/", abs.getFileName().toString()).getTiffInfo();
+			info = ImageJMessages.call(file, () -> new TiffDecoder(abs.getParent().toString() + "/", abs.getFileName()
+				.toString()).getTiffInfo());
 		}
 		catch (final IOException e) {
 			// what ImageJ 1 cannot decode, ours may (64-bit float); if not, ours says why
-			return own(file);
+			return own(file, layout);
 		}
-		if (info == null || info.length == 0) throw new IOException("cannot read " + file + ": no image in this TIFF");
-		return ij(file, planes(file, info));
+		if (info.value() == null || info.value().length == 0) throw new IOException("cannot read " + file + ": no " +
+			"image in this TIFF" + (info.messages().isEmpty() ? "" : " (ImageJ: " + info.messages() + ")"));
+		return ij(file, planes(file, info.value()));
 	}
 
 	/** One FileInfo per plane: ImageJ describes the planes of its own contiguous stacks by one FileInfo. */
@@ -74,28 +80,35 @@ final class TiffMovie {
 		}
 		final long bytes = (long) fi.width * fi.height * fi.getBytesPerPixel();
 		final long length = file.toFile().length();
+		// the description's image count is checked against the file before a FileInfo is made for each
+		final long end = fi.getOffset() + (fi.nImages - 1) * (bytes + fi.getGap()) + bytes;
+		if (bytes <= 0 || end > length) {
+			final long whole = bytes <= 0 ? 0 : (length - fi.getOffset()) / (bytes + fi.getGap());
+			throw new IOException("cannot read " + file + ": truncated, it ends in plane " + (whole + 1) + " of " +
+				fi.nImages);
+		}
 		final FileInfo[] planes = new FileInfo[fi.nImages];
 		for (int i = 0; i < planes.length; i++) {
 			planes[i] = (FileInfo) fi.clone();
 			planes[i].nImages = 1;
 			planes[i].longOffset = fi.getOffset() + i * (bytes + fi.getGap());
-			if (planes[i].getOffset() + bytes > length)
-				throw new IOException("cannot read " + file + ": truncated, it ends in plane " + (i + 1) + " of " +
-					planes.length);
 		}
 		return planes;
 	}
 
 	private static ImagePlus ij(final Path file, final FileInfo[] planes) throws IOException {
 		final FileInfo first = (FileInfo) planes[0].clone();
-		final FileOpener opener = new FileOpener(first);
-		final ImagePlus one = opener.openImage(); // plane 1: the calibration (incl. signed 16-bit), the bit depth
+		// plane 1: the calibration (incl. signed 16-bit), the bit depth
+		final ImageJMessages.Result<ImagePlus> opened = ImageJMessages.call(file, () -> new FileOpener(first).openImage());
+		final ImagePlus one = opened.value();
 		if (one == null) throw new IOException("cannot read " + file + ": ImageJ could not decode its first plane (" +
-			describe(first) + ")");
+			describe(first) + (opened.messages().isEmpty() ? "" : "; " + opened.messages()) + ")");
 		final FileStack stack = new FileStack(file, planes.length, one.getWidth(), one.getHeight(), true, t -> {
-			final ImageProcessor ip = new FileOpener((FileInfo) planes[t].clone()).openProcessor();
-			if (ip == null) throw new IOException("cannot read plane " + (t + 1) + " of " + file);
-			return ip;
+			final ImageJMessages.Result<ImageProcessor> ip = ImageJMessages.call(file, () -> new FileOpener(
+				(FileInfo) planes[t].clone()).openProcessor());
+			if (ip.value() == null) throw new IOException("cannot read plane " + (t + 1) + " of " + file + (ip.messages()
+				.isEmpty() ? "" : ": " + ip.messages()));
+			return ip.value();
 		});
 		stack.setBitDepth(one.getBitDepth());
 		final ImagePlus imp = new ImagePlus(file.getFileName().toString(), stack);
@@ -105,7 +118,7 @@ final class TiffMovie {
 		final Properties props = new FileOpener(fi).decodeDescriptionString(fi);
 		if (props != null) {
 			final int c = integer(props, "channels"), z = integer(props, "slices"), t = integer(props, "frames");
-			if (c * z * t == planes.length) imp.setDimensions(c, z, t);
+			if ((long) c * z * t == planes.length) imp.setDimensions(c, z, t);
 		}
 		else if (first.description != null && first.description.contains("<OME")) ome(file, imp, first.description);
 		return imp;
@@ -138,14 +151,15 @@ final class TiffMovie {
 		int c = 1, z = 1, t = 1;
 		final Matcher m = OME_SIZE.matcher(xml);
 		while (m.find()) {
-			final int n = Integer.parseInt(m.group(2));
+			final int n = (int) Math.min(Integer.MAX_VALUE, Long.parseLong(m.group(2).substring(Math.max(0, m.group(2)
+				.length() - 12))));
 			switch (m.group(1)) {
 				case "C" -> c = n;
 				case "Z" -> z = n;
 				default -> t = n;
 			}
 		}
-		if (c * z * t != imp.getStackSize()) return; // several series, or sizes we cannot trust: planes as they are
+		if ((long) c * z * t != imp.getStackSize()) return; // several series, or sizes we cannot trust: planes as they are
 		final Matcher order = OME_ORDER.matcher(xml);
 		final String dims = order.find() ? order.group(1) : "XYCZT";
 		final long multi = List.of(c, z, t).stream().filter(n -> n > 1).count();
@@ -166,158 +180,79 @@ final class TiffMovie {
 
 	// ---- our own reader: BigTIFF and 64-bit float ----
 
-	/** One plane's layout, from its image file directory. */
-	private record Plane(int width, int height, int bits, int format, long[] offsets, long[] counts) {}
-
-	private static ImagePlus own(final Path file) throws IOException {
-		final List<Plane> planes = new ArrayList<>();
-		final boolean little;
-		try (FileChannel ch = FileChannel.open(file, StandardOpenOption.READ)) {
-			final ByteBuffer head = read(ch, 0, 16, ByteOrder.BIG_ENDIAN, file);
-			little = head.get(0) == 'I';
-			head.order(little ? ByteOrder.LITTLE_ENDIAN : ByteOrder.BIG_ENDIAN);
-			final boolean big = head.getShort(2) == 43;
-			long ifd = big ? head.getLong(8) : head.getInt(4) & 0xffffffffL;
-			final long size = ch.size();
-			while (ifd != 0) {
-				if (ifd < 8 || ifd >= size || planes.size() > 10_000_000)
-					throw new IOException("cannot read " + file + ": damaged TIFF (directory offset " + ifd + ")");
-				final ByteBuffer n = read(ch, ifd, big ? 8 : 2, head.order(), file);
-				final long entries = big ? n.getLong(0) : n.getShort(0) & 0xffff;
-				final int entrySize = big ? 20 : 12;
-				final ByteBuffer dir = read(ch, ifd + (big ? 8 : 2), (int) (entries * entrySize + (big ? 8 : 4)), head
-					.order(), file);
-				planes.add(plane(ch, dir, (int) entries, big, file));
-				final int next = (int) entries * entrySize;
-				ifd = big ? dir.getLong(next) : dir.getInt(next) & 0xffffffffL;
-			}
+	private static ImagePlus own(final Path file, final TiffDirectories.Layout layout) throws IOException {
+		final List<TiffDirectories.Directory> planes = layout.directories();
+		final TiffDirectories.Directory p0 = planes.get(0);
+		for (final TiffDirectories.Directory p : planes) {
+			if (p.compression() != 1) throw new IOException("cannot read " + file + ": compressed BigTIFF or 64-bit " +
+				"TIFF (compression " + p.compression() + ") is not supported; save it uncompressed");
+			if (p.samples() != 1) throw new IOException("cannot read " + file + ": " + p.samples() + " samples per pixel " +
+				"(colour?); save one grey channel");
+			final int bits = p.bits(), format = p.format();
+			final boolean ok = (bits == 8 || bits == 16 || bits == 32) && (format == 1 || format == 2 || format == 3 &&
+				bits == 32) || bits == 64 && format == 3;
+			if (!ok) throw new IOException("cannot read " + file + ": " + bits + "-bit samples of format " + format +
+				" are not supported (8/16/32-bit integer, 32/64-bit float)");
+			if (p.width() != p0.width() || p.height() != p0.height() || p.bits() != p0.bits() || p.format() != p0
+				.format()) throw new IOException("cannot read " + file + ": its pages differ in size or pixel type (a " +
+					"pyramid or thumbnails?)");
 		}
-		if (planes.isEmpty()) throw new IOException("cannot read " + file + ": no image in this TIFF");
-		final Plane p0 = planes.get(0);
-		for (final Plane p : planes)
-			if (p.width != p0.width || p.height != p0.height || p.bits != p0.bits || p.format != p0.format)
-				throw new IOException("cannot read " + file + ": its pages differ in size or pixel type (a pyramid or " +
-					"thumbnails?)");
-		final ByteOrder order = little ? ByteOrder.LITTLE_ENDIAN : ByteOrder.BIG_ENDIAN;
-		final FileStack stack = new FileStack(file, planes.size(), p0.width, p0.height, true, t -> decode(file, planes.get(
-			t), order));
-		stack.setBitDepth(p0.bits == 8 ? 8 : p0.bits == 16 ? 16 : 32);
+		final ByteOrder order = layout.order();
+		final FileStack stack = new FileStack(file, planes.size(), p0.width(), p0.height(), true, t -> decode(file,
+			planes.get(t), order));
+		final int bits = p0.bits(), format = p0.format();
+		stack.setBitDepth(bits == 8 ? 8 : bits == 16 ? 16 : 32);
 		final ImagePlus imp = new ImagePlus(file.getFileName().toString(), stack);
 		// signed integers are stored with an offset (ImageJ's way); the calibration gives back the file's values
-		if (p0.bits == 16 && p0.format == 2) imp.getCalibration().setSigned16BitCalibration();
-		if (p0.bits == 8 && p0.format == 2) imp.getCalibration().setFunction(ij.measure.Calibration.STRAIGHT_LINE,
+		if (bits == 16 && format == 2) imp.getCalibration().setSigned16BitCalibration();
+		if (bits == 8 && format == 2) imp.getCalibration().setFunction(ij.measure.Calibration.STRAIGHT_LINE,
 			new double[] { -128, 1 }, "Gray Value");
 		return imp;
 	}
 
-	private static Plane plane(final FileChannel ch, final ByteBuffer dir, final int entries, final boolean big,
-		final Path file) throws IOException
-	{
-		int width = 0, height = 0, bits = 1, format = 1, compression = 1, samples = 1;
-		long[] offsets = null, counts = null;
-		for (int i = 0; i < entries; i++) {
-			final int at = i * (big ? 20 : 12);
-			final int tag = dir.getShort(at) & 0xffff, type = dir.getShort(at + 2) & 0xffff;
-			final long count = big ? dir.getLong(at + 4) : dir.getInt(at + 4) & 0xffffffffL;
-			switch (tag) {
-				case 256 -> width = (int) value(dir, at, type, big);
-				case 257 -> height = (int) value(dir, at, type, big);
-				case 258 -> bits = (int) value(dir, at, type, big);
-				case 259 -> compression = (int) value(dir, at, type, big);
-				case 277 -> samples = (int) value(dir, at, type, big);
-				case 339 -> format = (int) value(dir, at, type, big);
-				case 273, 324 -> offsets = values(ch, dir, at, type, count, big, file);
-				case 279, 325 -> counts = values(ch, dir, at, type, count, big, file);
-				default -> { /* other tags do not change the pixels */ }
-			}
-		}
-		if (compression != 1) throw new IOException("cannot read " + file + ": compressed BigTIFF or 64-bit TIFF " +
-			"(compression " + compression + ") is not supported; save it uncompressed");
-		if (samples != 1) throw new IOException("cannot read " + file + ": " + samples + " samples per pixel (colour?); " +
-			"save one grey channel");
-		final boolean ok = (bits == 8 || bits == 16 || bits == 32) && (format == 1 || format == 2 || format == 3 && bits ==
-			32) || bits == 64 && format == 3;
-		if (!ok) throw new IOException("cannot read " + file + ": " + bits + "-bit samples of format " + format +
-			" are not supported (8/16/32-bit integer, 32/64-bit float)");
-		if (width <= 0 || height <= 0 || offsets == null || counts == null || offsets.length != counts.length)
-			throw new IOException("cannot read " + file + ": damaged TIFF directory (size or strips missing)");
-		return new Plane(width, height, bits, format, offsets, counts);
-	}
-
-	/** The single value of an entry (SHORT, LONG or LONG8), stored in the entry itself. */
-	private static long value(final ByteBuffer dir, final int at, final int type, final boolean big) {
-		final int v = at + (big ? 12 : 8);
-		return switch (type) {
-			case 3 -> dir.getShort(v) & 0xffff;
-			case 16 -> dir.getLong(v);
-			default -> dir.getInt(v) & 0xffffffffL;
-		};
-	}
-
-	private static long[] values(final FileChannel ch, final ByteBuffer dir, final int at, final int type,
-		final long count, final boolean big, final Path file) throws IOException
-	{
-		final int size = type == 3 ? 2 : type == 16 ? 8 : 4;
-		if (count > 100_000_000) throw new IOException("cannot read " + file + ": damaged TIFF (" + count + " strips)");
-		final int v = at + (big ? 12 : 8);
-		final ByteBuffer b = size * count <= (big ? 8 : 4) ? dir.slice(v, (int) (size * count)).order(dir.order()) : read(
-			ch, big ? dir.getLong(v) : dir.getInt(v) & 0xffffffffL, (int) (size * count), dir.order(), file);
-		final long[] out = new long[(int) count];
-		for (int i = 0; i < count; i++)
-			out[i] = size == 2 ? b.getShort(i * 2) & 0xffff : size == 8 ? b.getLong(i * 8) : b.getInt(i * 4) & 0xffffffffL;
-		return out;
-	}
-
-	private static ByteBuffer read(final FileChannel ch, final long at, final int length, final ByteOrder order,
-		final Path file) throws IOException
-	{
-		final ByteBuffer b = ByteBuffer.allocate(length);
-		while (b.hasRemaining())
-			if (ch.read(b, at + b.position()) < 0)
-				throw new IOException("cannot read " + file + ": truncated (ends before byte " + (at + length) + ")");
-		b.flip();
-		return b.order(order);
-	}
-
 	/** Reads one plane's strips (positional reads: threads may read planes at once) and converts the samples. */
-	private static ImageProcessor decode(final Path file, final Plane p, final ByteOrder order) throws IOException {
-		final int n = p.width * p.height, bytes = p.bits / 8;
-		final ByteBuffer data = ByteBuffer.allocate(n * bytes).order(order);
+	private static ImageProcessor decode(final Path file, final TiffDirectories.Directory p, final ByteOrder order)
+		throws IOException
+	{
+		final int n = p.width() * p.height(), bytes = p.bits() / 8;
+		// the directory was checked: the plane's bytes fit the frame budget, its strips lie inside the file
+		final ByteBuffer data = ByteBuffer.allocate(Math.multiplyExact(n, bytes)).order(order);
 		try (FileChannel ch = FileChannel.open(file, StandardOpenOption.READ)) {
-			for (int s = 0; s < p.offsets.length && data.hasRemaining(); s++) {
-				final int len = (int) Math.min(p.counts[s], data.remaining());
-				data.put(read(ch, p.offsets[s], len, order, file));
+			final long size = ch.size();
+			for (int s = 0; s < p.offsets().length && data.hasRemaining(); s++) {
+				final int len = (int) Math.min(p.counts()[s], data.remaining());
+				data.put(TiffDirectories.read(ch, p.offsets()[s], len, order, size, file, "strip " + (s + 1)));
 			}
 		}
 		if (data.hasRemaining()) throw new IOException("cannot read " + file + ": a plane's strips hold fewer pixels " +
-			"than " + p.width + " x " + p.height);
+			"than " + p.width() + " x " + p.height());
 		data.flip();
-		switch (p.bits) {
+		switch (p.bits()) {
 			case 8: {
 				final byte[] px = new byte[n];
 				data.get(px);
-				if (p.format == 2) for (int i = 0; i < n; i++)
+				if (p.format() == 2) for (int i = 0; i < n; i++)
 					px[i] ^= (byte) 0x80; // signed bytes as unsigned with an offset, as ImageJ stores signed data
-				return new ByteProcessor(p.width, p.height, px);
+				return new ByteProcessor(p.width(), p.height(), px);
 			}
 			case 16: {
 				final short[] px = new short[n];
 				data.asShortBuffer().get(px);
-				if (p.format == 2) for (int i = 0; i < n; i++)
+				if (p.format() == 2) for (int i = 0; i < n; i++)
 					px[i] ^= (short) 0x8000; // ImageJ's signed 16-bit: value + 32768, undone by the calibration
-				return new ShortProcessor(p.width, p.height, px, null);
+				return new ShortProcessor(p.width(), p.height(), px, null);
 			}
 			case 32: {
 				final float[] px = new float[n];
 				for (int i = 0; i < n; i++)
-					px[i] = p.format == 3 ? data.getFloat() : p.format == 2 ? data.getInt() : data.getInt() & 0xffffffffL;
-				return new FloatProcessor(p.width, p.height, px);
+					px[i] = p.format() == 3 ? data.getFloat() : p.format() == 2 ? data.getInt() : data.getInt() & 0xffffffffL;
+				return new FloatProcessor(p.width(), p.height(), px);
 			}
 			default: {
 				final float[] px = new float[n];
 				for (int i = 0; i < n; i++)
 					px[i] = (float) data.getDouble(); // 32-bit float keeps 7 digits, far below any image's noise
-				return new FloatProcessor(p.width, p.height, px);
+				return new FloatProcessor(p.width(), p.height(), px);
 			}
 		}
 	}

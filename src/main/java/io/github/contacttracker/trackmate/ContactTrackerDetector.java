@@ -9,6 +9,7 @@ import io.github.contacttracker.pipeline.FrameSource;
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.settings.TrackMateSettings;
 import java.io.IOException;
+import java.io.UncheckedIOException;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
@@ -178,6 +179,14 @@ public final class ContactTrackerDetector<T extends RealType<T> & NativeType<T>>
 			// the core counts frames from 1 within what it was given; say where that starts in the movie
 			return fail("Contact Tracker failed: " + e.getMessage() + (firstFrame == 0 ? "" : " (frames counted from " +
 				"frame " + (firstFrame + 1) + " of the movie, the first one analysed)"));
+		}
+		catch (final UncheckedIOException e) {
+			// a frame of a movie on disk (a virtual stack) that cannot be read: its reader's one line, no stack trace
+			return fail("Contact Tracker failed: " + InvalidInputException.oneLine(e.getCause().getMessage()));
+		}
+		catch (final OutOfMemoryError e) {
+			return fail("Contact Tracker: out of memory (" + InvalidInputException.oneLine(e.getMessage()) + "): give " +
+				"Fiji more with Edit > Options > Memory & Threads, or use fewer threads");
 		}
 		catch (final IOException e) {
 			throw new AssertionError("no file is written", e);

@@ -87,12 +87,14 @@ class BatchScriptsTest {
 		ImageFiles.saveTiff(movie, in.resolve("movie.tif"));
 		ImageFiles.saveTiff(new ImagePlus("colour", new ColorProcessor(40, 30)), in.resolve("colour.tiff"));
 		Files.writeString(in.resolve("notes.txt"), "not an image");
+		Files.write(in.resolve("truncated.tif"), java.util.Arrays.copyOf(Files.readAllBytes(in.resolve("movie.tif")),
+			600)); // a broken file: named in the log, the others done
 
 		final double threshold = Simulated.TYPE.threshold(), rOut = Simulated.TYPE.rOut();
 		final Module m = scripts.run(script.toFile(), true, "input", in.toFile(), "output", out.toFile(), "threshold",
 			threshold, "r_out", rOut, "min_area", 20, "method", "paper", "channel", 1, "trackmate", true).get();
 		assertEquals(1, m.getOutput("done"));
-		assertEquals(1, m.getOutput("failed"), "the RGB image is refused");
+		assertEquals(2, m.getOutput("failed"), "the RGB image and the truncated file are refused");
 
 		// the CSV is the command line's for the same image and parameters
 		final ImagePlus reopened = ImageFiles.open(in.resolve("movie.tif"));

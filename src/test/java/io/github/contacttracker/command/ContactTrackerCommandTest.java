@@ -9,6 +9,8 @@ import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.awt.Color;
+import java.io.IOException;
+import java.io.UncheckedIOException;
 import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -44,12 +46,14 @@ import org.scijava.prefs.PrefService;
 
 import ij.ImagePlus;
 import ij.ImageStack;
+import ij.VirtualStack;
 import ij.gui.OvalRoi;
 import ij.gui.Overlay;
 import ij.gui.Roi;
 import ij.measure.ResultsTable;
 import ij.process.ByteProcessor;
 import ij.process.ColorProcessor;
+import ij.process.ImageProcessor;
 import io.github.contacttracker.core.Connectivity;
 import io.github.contacttracker.core.FrameResult;
 import io.github.contacttracker.core.Localization;
@@ -351,7 +355,37 @@ class ContactTrackerCommandTest {
 			Arguments.of(Simulated.image(), new Object[] { "min_area", 0 }, "min_area must be at least 1 pixel, not 0"),
 			Arguments.of(Simulated.image(), new Object[] { "csv", new java.io.File("/no/such/folder/x.csv") },
 				"cannot write csv /no/such/folder/x.csv: folder /no/such/folder does not exist"),
-			Arguments.of(null, new Object[0], "'imp' is required but unset"));
+			Arguments.of(null, new Object[0], "'imp' is required but unset"),
+			// a movie on disk whose second frame cannot be read, or does not fit: named, no stack trace
+			Arguments.of(failingOnFrame2(new UncheckedIOException(new IOException("cannot read plane 2 of " +
+				"/data/broken.tif: truncated TIFF"))), new Object[0], "frame 2: cannot read plane 2 of " +
+					"/data/broken.tif: truncated TIFF"),
+			Arguments.of(failingOnFrame2(new OutOfMemoryError("Java heap space")), new Object[0],
+				"out of memory (Java heap space): give Fiji more with Edit > Options > Memory & Threads"));
+	}
+
+	/** @return the simulated movie as a virtual stack whose frame 2 fails with {@code failure} when it is read */
+	private static ImagePlus failingOnFrame2(final Throwable failure) {
+		final ImagePlus movie = Simulated.image();
+		final ImageStack frames = movie.getStack();
+		final VirtualStack disk = new VirtualStack(frames.getWidth(), frames.getHeight(), null, "/data") {
+
+			@Override
+			public ImageProcessor getProcessor(final int n) {
+				if (n == 2 && failure instanceof Error error) throw error;
+				if (n == 2) throw (RuntimeException) failure;
+				return frames.getProcessor(n);
+			}
+
+			@Override
+			public int getSize() {
+				return frames.getSize();
+			}
+		};
+		final ImagePlus imp = new ImagePlus("broken.tif", disk);
+		imp.setCalibration(movie.getCalibration());
+		imp.setDimensions(1, 1, frames.getSize());
+		return imp;
 	}
 
 	/** @return every method's key, as Method.parse lists them */

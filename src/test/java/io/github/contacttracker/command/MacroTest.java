@@ -219,6 +219,14 @@ class MacroTest {
 		final Path in = Files.createDirectories(dir.resolve("in")), out = Files.createDirectories(dir.resolve("out"));
 		ImageFiles.saveTiff(Simulated.image(), in.resolve("movie.tif"));
 		ImageFiles.saveTiff(new ImagePlus("colour", new ColorProcessor(40, 30)), in.resolve("colour.tif"));
+		// hostile: the directory chain loops back to the first directory (ImageJ's open() never ends on it)
+		final byte[] loop = Files.readAllBytes(in.resolve("movie.tif"));
+		final java.nio.ByteBuffer b = java.nio.ByteBuffer.wrap(loop).order(loop[0] == 'I' ? java.nio.ByteOrder.LITTLE_ENDIAN
+			: java.nio.ByteOrder.BIG_ENDIAN);
+		final int ifd = b.getInt(4);
+		b.putInt(ifd + 2 + 12 * (b.getShort(ifd) & 0xffff), ifd);
+		Files.write(in.resolve("loop.tif"), loop);
+		Files.write(in.resolve("empty.tif"), new byte[0]);
 		final String code = Files.readString(Path.of(System.getProperty("basedir", ".")).resolve(
 			"scripts/contact-tracker-batch.ijm"));
 		final String printed = macro(code, String.format(Locale.ROOT,
@@ -226,7 +234,11 @@ class MacroTest {
 		assertTrue(printed.contains("movie.tif: 10 spots -> "), printed);
 		assertTrue(printed.contains("Contact Tracker ('colour.tif'): 'colour.tif' is an RGB image"), printed);
 		assertTrue(printed.contains("colour.tif: FAILED"), printed);
-		assertTrue(printed.contains("Contact Tracker batch: 1 image(s) done, 1 failed"), printed);
+		assertTrue(printed.contains("loop.tif: FAILED: cannot read " + in.resolve("loop.tif") + ": damaged TIFF: its " +
+			"chain of image directories loops back"), printed);
+		assertTrue(printed.contains("empty.tif: FAILED: cannot read " + in.resolve("empty.tif") + ": it is empty"),
+			printed);
+		assertTrue(printed.contains("Contact Tracker batch: 1 image(s) done, 3 failed"), printed);
 		assertTrue(printed.contains("open images: 0"), printed);
 		assertEquals(cliCsv(ImageFiles.open(in.resolve("movie.tif"))), Files.readString(out.resolve("movie.csv")));
 		assertFalse(Files.exists(out.resolve("colour.csv")));

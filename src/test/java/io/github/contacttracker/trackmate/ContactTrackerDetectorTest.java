@@ -8,6 +8,8 @@ import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.awt.Color;
+import java.io.IOException;
+import java.io.UncheckedIOException;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
@@ -31,6 +33,8 @@ import net.imglib2.FinalInterval;
 import net.imglib2.Interval;
 import net.imglib2.RandomAccessibleInterval;
 import net.imglib2.algorithm.MultiThreaded;
+import net.imglib2.img.ImgView;
+import net.imglib2.position.FunctionRandomAccessible;
 import net.imglib2.img.array.ArrayImg;
 import net.imglib2.img.basictypeaccess.array.FloatArray;
 import net.imglib2.type.numeric.real.FloatType;
@@ -301,5 +305,39 @@ class ContactTrackerDetectorTest {
 		assertTrue(cancelled.isCanceled());
 		assertFalse(cancelled.checkInput() && cancelled.process());
 		assertTrue(cancelled.getErrorMessage().contains("cancelled: user pressed cancel"), cancelled.getErrorMessage());
+	}
+
+	/**
+	 * A movie on disk whose frame cannot be read (a broken file in Fiji's virtual stack) or that does not fit in
+	 * memory: TrackMate shows the detector's one-line error message, not a stack trace.
+	 */
+	@Test
+	void aFrameThatCannotBeReadOrDoesNotFitIsAnErrorMessageNotAStackTrace() {
+		final ArrayImg<FloatType, FloatArray> frames = TestImages.image(TestImages.WIDTH, TestImages.HEIGHT, 3);
+		for (final Throwable failure : new Throwable[] { new UncheckedIOException(new IOException(
+			"cannot read plane 2 of /data/broken.tif: truncated TIFF: strip 1 of 1 lies beyond the end of the file")),
+			new OutOfMemoryError("Java heap space") })
+		{
+			// frame 2 fails as it is read, the way a FileStack plane or an over-large frame does
+			final RandomAccessibleInterval<FloatType> failing = Views.interval(new FunctionRandomAccessible<>(3, (pos,
+				out) -> {
+				if (pos.getLongPosition(2) == 1) {
+					if (failure instanceof Error) throw (Error) failure;
+					throw (RuntimeException) failure;
+				}
+				out.set(frames.getAt(pos));
+			}, FloatType::new), frames);
+			final ImgPlus<FloatType> img = new ImgPlus<>(ImgView.wrap(failing), "broken.tif", new AxisType[] { Axes.X,
+				Axes.Y, Axes.TIME }, new double[] { DX, DY, DT });
+			final SpotGlobalDetector<FloatType> detector = factory.getDetector(img, TestImages.settings(1), wholeMovie(
+				img));
+			((MultiThreaded) detector).setNumThreads(2);
+			assertTrue(detector.checkInput(), detector.getErrorMessage());
+			assertFalse(detector.process(), "refused");
+			final String message = detector.getErrorMessage();
+			assertEquals(1, message.lines().count(), message);
+			assertTrue(failure instanceof Error ? message.contains("out of memory") && message.contains(
+				"Memory & Threads") : message.contains("/data/broken.tif: truncated TIFF"), message);
+		}
 	}
 }
