@@ -184,7 +184,7 @@ final class TrackCommand extends ContactTrackerCli.Subcommand {
 		catch (final InvalidInputException e) {
 			if (threshold && rOut) {
 				notice.append("contact-tracker: ").append(input.getFileName()).append(": the diameter could not be " +
-					"measured (").append(ContactTrackerCli.oneLine(e.getMessage())).append("); tracked without it (give " +
+					"measured (").append(InvalidInputException.oneLine(e.getMessage())).append("); tracked without it (give " +
 						"--diameter)");
 				return settings;
 			}
