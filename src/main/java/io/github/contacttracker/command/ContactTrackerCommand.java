@@ -13,6 +13,11 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.CancellationException;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.BooleanSupplier;
 
 import org.scijava.ItemIO;
@@ -53,7 +58,7 @@ import io.github.contacttracker.io.ShownFrameProfile;
  * a one-line reason ({@link #getCancelReason()}), which is also logged as an error and stops a calling macro
  * ({@link MacroFailure}). It is a plain {@link ContextCommand}, so
  * {@code commandService.run(ContactTrackerCommand.class, true, ...)} returns its module and outputs. In Fiji's
- * dialog it previews the current frame ({@link #preview()}), and its "Measure from the image" button fills in
+ * dialog it previews the frame on display when its Preview box is ticked ({@link #preview()}), and its "Measure from the image" button fills in
  * {@code threshold}, {@code r_out} and {@code diameter} from the profile helper.
  * <p>
  * Outputs {@code spots} (and {@code pairs} when {@code pair_cutoff > 0}) are ImageJ results tables, returned to
@@ -115,6 +120,13 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 			"threshold, r_out and the diameter; a diameter above 0 is kept and used")
 	private Button measure;
 
+	// Off by default, as in ImageJ's own dialogs: the dialog opens at once and nothing is tracked before the user
+	// asks. Not remembered, so that a slow method chosen last time does not run when the dialog opens.
+	@Parameter(label = "Preview (frame on display)", persist = false, required = false,
+		description = "Tracks the frame on display in the background and shows its spots while you edit; " +
+			"typing is never held up, and a newer value replaces a preview still running")
+	private boolean preview = false;
+
 	@Parameter(label = "Pair cutoff (calibrated units, 0 = none)", min = "0",
 		description = "List the distances of spot pairs of the same frame closer than this in a second table")
 	private double pair_cutoff = 0;
@@ -151,10 +163,16 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 	/** The image's overlay before the first preview, put back when the dialog is cancelled. */
 	private Overlay beforePreview;
 	private boolean previewShown;
+	/** The latest preview asked for; an older one still computing is abandoned and never shown. */
+	private final AtomicInteger previewGeneration = new AtomicInteger();
+	/** One thread computes previews, off the dialog's event thread: typing is never held up. */
+	private ExecutorService previewer;
+	private Future<?> pendingPreview;
 
 	@Override
 	public void run() {
 		IJ.resetEscape();
+		stopPreviews();
 		clearPreview(false); // a real run replaces the preview's ROIs (or leaves the image alone)
 		try {
 			analyse();
@@ -257,31 +275,90 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 	}
 
 	/**
-	 * Shows the spots and {@code r_out} discs of the current frame as the dialog's values change (called by
-	 * Fiji's dialog). Invalid values show nothing new; {@link #cancel()} puts the overlay back as it was.
+	 * Shows the spots and {@code r_out} discs of the frame on display as the dialog's values change (called by
+	 * Fiji's dialog, also once when it opens), when the Preview box is ticked; unticking it takes the preview
+	 * off. The frame is tracked on a background thread and this returns at once: the dialog never waits for it. A
+	 * newer call abandons a preview still computing (its spots are never shown). Invalid values show nothing new;
+	 * {@link #cancel()} puts the overlay back as it was.
 	 */
 	@Override
 	public void preview() {
+		final int generation = previewGeneration.incrementAndGet();
 		if (imp == null) return;
+		if (!preview) {
+			synchronized (this) {
+				clearPreview(true);
+			}
+			return;
+		}
+		final SettingValues settings;
+		final ImagePlusFrames frames;
 		try {
-			final SettingValues settings = settings();
-			final ImagePlusFrames frames = ImagePlusFrames.of(imp, channel);
-			final int t = ImagePlusFrames.shownFrame(imp);
-			// the shown frame alone, through the same pipeline as a run (no file, no data-range pass over the stack)
-			final FrameResult r = new TrackingPipeline(settings).run(FrameSource.of(frames, imp.getTitle()).only(t), true)
-				.frames().get(0);
-			final TrackerParameters params = settings.parameters();
+			// the values are read here, on the dialog's thread, as they are now
+			settings = settings();
+			frames = ImagePlusFrames.of(imp, channel);
+		}
+		catch (final RuntimeException e) {
+			// while values are being typed they are often invalid: say why, keep the last preview
+			if (status != null) status.showStatus(TITLE + " preview: " + e.getMessage());
+			return;
+		}
+		final int t = ImagePlusFrames.shownFrame(imp);
+		if (status != null) status.showStatus(TITLE + " preview: tracking frame " + (t + 1) + "...");
+		synchronized (this) {
+			if (previewer == null) previewer = Executors.newSingleThreadExecutor(r -> {
+				final Thread thread = new Thread(r, TITLE + " preview");
+				thread.setDaemon(true);
+				return thread;
+			});
+			pendingPreview = previewer.submit(() -> previewFrame(generation, settings, frames, t));
+		}
+	}
+
+	/** Tracks frame {@code t} and shows it, unless a newer preview (or the run, or Cancel) came meanwhile. */
+	private void previewFrame(final int generation, final SettingValues settings, final ImagePlusFrames frames,
+		final int t)
+	{
+		if (generation != previewGeneration.get()) return; // superseded before it started
+		final FrameResult r;
+		try {
+			// the frame alone, through the same pipeline as a run (no file, no data-range pass over the stack)
+			r = new TrackingPipeline(settings).run(FrameSource.of(frames, imp.getTitle()).only(t), Outputs.NONE, 1, true,
+				null, () -> generation != previewGeneration.get()).frames().get(0);
+		}
+		catch (final RuntimeException | IOException e) {
+			if (generation == previewGeneration.get() && status != null) status.showStatus(TITLE + " preview: " + e
+				.getMessage());
+			return;
+		}
+		synchronized (this) {
+			if (generation != previewGeneration.get()) return;
 			if (!previewShown) {
 				beforePreview = imp.getOverlay() == null ? null : imp.getOverlay().duplicate();
 				previewShown = true;
 			}
 			final SpotOverlay.FramePlacer placer = SpotOverlay.placer(imp);
-			SpotOverlay.show(imp, SpotOverlay.rois(List.of(r), params.rOut(), (roi, frame) -> placer.place(roi, t)));
-			if (status != null) status.showStatus(TITLE + " preview: " + r.spots().size() + " spots on this frame");
+			SpotOverlay.show(imp, SpotOverlay.rois(List.of(r), settings.parameters().rOut(), (roi, frame) -> placer
+				.place(roi, t)));
 		}
-		catch (final RuntimeException e) {
-			// while values are being typed they are often invalid: say why, keep the last preview
-			if (status != null) status.showStatus(TITLE + " preview: " + e.getMessage());
+		if (status != null) status.showStatus(TITLE + " preview: " + r.spots().size() + " spots on frame " + (t + 1));
+	}
+
+	/** Waits for the preview asked for last (for tests and scripts); returns at once when none is pending. */
+	void awaitPreview() throws InterruptedException, ExecutionException {
+		final Future<?> f;
+		synchronized (this) {
+			f = pendingPreview;
+		}
+		if (f != null) f.get();
+	}
+
+	/** Abandons any preview still computing and ends the preview thread. */
+	private void stopPreviews() {
+		previewGeneration.incrementAndGet();
+		synchronized (this) {
+			if (previewer != null) previewer.shutdown();
+			previewer = null;
 		}
 	}
 
@@ -314,11 +391,14 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 	/** Takes the preview off the image: the dialog was cancelled. */
 	@Override
 	public void cancel() {
-		clearPreview(true);
+		stopPreviews();
+		synchronized (this) {
+			clearPreview(true);
+		}
 	}
 
 	/** @param restore whether to put back the overlay as it was before the preview (else it is left to the run) */
-	private void clearPreview(final boolean restore) {
+	private synchronized void clearPreview(final boolean restore) {
 		if (!previewShown) return;
 		previewShown = false;
 		if (restore) imp.setOverlay(beforePreview);

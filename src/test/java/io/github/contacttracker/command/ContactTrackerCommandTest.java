@@ -484,8 +484,8 @@ class ContactTrackerCommandTest {
 		final Module m = context.service(ModuleService.class).createModule(commands.getCommand(
 			ContactTrackerCommand.class));
 		// the dialog remembers its values like Fiji's, except the image and the output files (and the measure
-		// button, which has no value)
-		final List<String> notRemembered = List.of("imp", "csv", "trackmate_xml", "measure");
+		// button, which has no value, and the Preview box, so that opening the dialog never starts tracking)
+		final List<String> notRemembered = List.of("imp", "csv", "trackmate_xml", "measure", "preview");
 		m.getInfo().inputs().forEach(item -> {
 			if (!org.scijava.service.Service.class.isAssignableFrom(item.getType()) && item.getType() != Context.class)
 				assertEquals(!notRemembered.contains(item.getName()), item.isPersisted(), item.getName());
@@ -589,7 +589,15 @@ class ContactTrackerCommandTest {
 		m.setInput("imp", imp);
 		m.setInput("threshold", THRESHOLD);
 		m.setInput("r_out", R_OUT);
+		final ContactTrackerCommand command = (ContactTrackerCommand) m.getDelegateObject();
+		// the dialog calls preview() when it opens: with the box off by default, nothing is tracked
+		assertEquals(false, m.getInput("preview"));
 		m.preview();
+		command.awaitPreview();
+		assertEquals(1, imp.getOverlay().size(), "no preview before the box is ticked");
+		m.setInput("preview", true);
+		m.preview();
+		command.awaitPreview();
 		final List<Roi> ours = new ArrayList<>();
 		for (final Roi roi : imp.getOverlay().toArray())
 			if (SpotOverlay.kind(roi) != null) ours.add(roi);
@@ -607,11 +615,29 @@ class ContactTrackerCommandTest {
 		// r_out edited: the discs follow; an invalid value keeps the last preview
 		m.setInput("r_out", R_OUT + 5);
 		m.preview();
+		command.awaitPreview();
 		final Roi disc = Arrays.stream(imp.getOverlay().toArray()).filter(r -> SpotOverlay.kind(r) == SpotOverlay.Kind.DISC)
 			.findFirst().get();
 		assertEquals(2 * (R_OUT + 5), disc.getFloatBounds().width, 1e-9);
 		m.setInput("r_out", -1.0);
 		m.preview();
+		command.awaitPreview();
+		assertEquals(1 + 8, imp.getOverlay().size());
+		// a newer value abandons a preview still computing: only the latest values are ever shown
+		m.setInput("r_out", R_OUT + 9);
+		m.preview();
+		m.setInput("r_out", R_OUT + 2);
+		m.preview();
+		command.awaitPreview();
+		assertEquals(2 * (R_OUT + 2), Arrays.stream(imp.getOverlay().toArray()).filter(r -> SpotOverlay.kind(
+			r) == SpotOverlay.Kind.DISC).findFirst().get().getFloatBounds().width, 1e-9);
+		// unticking the box takes the preview off
+		m.setInput("preview", false);
+		m.preview();
+		assertEquals(1, imp.getOverlay().size());
+		m.setInput("preview", true);
+		m.preview();
+		command.awaitPreview();
 		assertEquals(1 + 8, imp.getOverlay().size());
 
 		m.cancel(); // the dialog's Cancel
