@@ -7,6 +7,9 @@ import io.github.contacttracker.pipeline.Outputs;
 import io.github.contacttracker.pipeline.FrameSource;
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.settings.TrackingSettings;
+import io.github.contacttracker.settings.Setting;
+import java.util.LinkedHashMap;
+import java.util.Map;
 import java.awt.GraphicsEnvironment;
 import java.io.File;
 import java.io.IOException;
@@ -24,8 +27,11 @@ import org.scijava.ItemIO;
 import org.scijava.app.StatusService;
 import org.scijava.command.Command;
 import org.scijava.command.ContextCommand;
+import org.scijava.event.EventService;
+import org.scijava.module.ModuleService;
 import org.scijava.command.Previewable;
 import org.scijava.log.LogService;
+import org.scijava.module.ModuleItem;
 import org.scijava.plugin.Parameter;
 import org.scijava.plugin.Plugin;
 import org.scijava.widget.Button;
@@ -57,18 +63,20 @@ import io.github.contacttracker.io.ShownFrameProfile;
  * values (an RGB image, Z and T both above 1, {@code r_out <= 0}, an unknown method, ...) cancel the command with
  * a one-line reason ({@link #getCancelReason()}), which is also logged as an error and stops a calling macro
  * ({@link MacroFailure}). It is a plain {@link ContextCommand}, so
- * {@code commandService.run(ContactTrackerCommand.class, true, ...)} returns its module and outputs. In Fiji's
+ * {@code commandService.run(ContactTrackerCommand.class, true, ...)} returns its module and outputs. It checks
+ * its inputs itself, with no global preprocessor: each value as SciJava resolves it ({@code validater=}), and a
+ * macro's values and left-out keys from its initializer on ({@link OwnInputs}). In Fiji's
  * dialog it previews the frame on display when its Preview box is ticked ({@link #preview()}), and its "Measure from the image" button fills in
  * {@code threshold}, {@code r_out} and {@code diameter} from the profile helper.
  * <p>
  * Outputs {@code spots} (and {@code pairs} when {@code pair_cutoff > 0}) are ImageJ results tables, returned to
  * scripts also when they are not shown. The command shows them itself ({@code table=true}, not headless), so
- * {@link ShownOutputs} keeps SciJava from displaying them a second time.
+ * the command marks them resolved so that SciJava does not display them a second time.
  */
 @Plugin(type = Command.class, menuPath = "Plugins>Tracking>Contact Tracker", headless = true,
 	label = "Contact Tracker", description = "Sub-pixel centres of colloidal particles close to contact " +
-		"(Yucel & Okumusoglu 2017)")
-public class ContactTrackerCommand extends ContextCommand implements Previewable, InputCheck.Checked {
+		"(Yucel & Okumusoglu 2017)", initializer = "macroInputs")
+public class ContactTrackerCommand extends ContextCommand implements Previewable {
 
 	/** Values of {@code results}: what ImageJ's system Results table gets. */
 	public static final String RESULTS_SPOTS = "spots", RESULTS_PAIRS = "pairs", RESULTS_NONE = "none";
@@ -86,31 +94,31 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 
 	// The tracking settings: names, help and defaults from the settings descriptor (TrackingSettings); a test pins
 	// every one of these inputs to it.
-	@Parameter(label = "Threshold (grey level)", description = TrackingSettings.HELP_THRESHOLD)
+	@Parameter(validater = "validateInputs", label = "Threshold (grey level)", description = TrackingSettings.HELP_THRESHOLD)
 	private double threshold = TrackingSettings.THRESHOLD.defaultValue();
 
-	@Parameter(label = "r_out (px)", min = "0", stepSize = "0.5", description = TrackingSettings.HELP_R_OUT)
+	@Parameter(validater = "validateInputs", label = "r_out (px)", min = "0", stepSize = "0.5", description = TrackingSettings.HELP_R_OUT)
 	private double r_out = TrackingSettings.R_OUT.defaultValue();
 
-	@Parameter(label = "Min area (px)", min = "1", description = TrackingSettings.HELP_MIN_AREA)
+	@Parameter(validater = "validateInputs", label = "Min area (px)", min = "1", description = TrackingSettings.HELP_MIN_AREA)
 	private int min_area = TrackingSettings.MIN_AREA.defaultValue();
 
-	@Parameter(label = "Min second area (px)", min = "3", description = TrackingSettings.HELP_MIN_SECOND_AREA)
+	@Parameter(validater = "validateInputs", label = "Min second area (px)", min = "3", description = TrackingSettings.HELP_MIN_SECOND_AREA)
 	private int min_second_area = TrackingSettings.MIN_SECOND_AREA.defaultValue();
 
-	@Parameter(label = "Connectivity", choices = { "8", "4" }, description = TrackingSettings.HELP_CONNECTIVITY)
+	@Parameter(validater = "validateInputs", label = "Connectivity", choices = { "8", "4" }, description = TrackingSettings.HELP_CONNECTIVITY)
 	private String connectivity = String.valueOf(TrackingSettings.CONNECTIVITY.defaultValue());
 
 	// a macro may still pass any text, which is refused with the valid ones when unknown
-	@Parameter(label = "Method", choices = { "first", "paper", "iterative", "deblend", "fit" },
+	@Parameter(validater = "validateInputs", label = "Method", choices = { "first", "paper", "iterative", "deblend", "fit" },
 		description = TrackingSettings.HELP_METHOD)
 	private String method = TrackingSettings.METHOD.defaultValue();
 
-	@Parameter(label = "Particle diameter (px, 0 = not given)", min = "0", stepSize = "0.5",
+	@Parameter(validater = "validateInputs", label = "Particle diameter (px, 0 = not given)", min = "0", stepSize = "0.5",
 		description = TrackingSettings.HELP_DIAMETER)
 	private double diameter = TrackingSettings.DIAMETER.defaultValue();
 
-	@Parameter(label = "Channel", min = "1", description = TrackingSettings.HELP_CHANNEL)
+	@Parameter(validater = "validateInputs", label = "Channel", min = "1", description = TrackingSettings.HELP_CHANNEL)
 	private int channel = TrackingSettings.CHANNEL.defaultValue();
 
 	// A button, not a setting: optional (a Button), never remembered, not recorded (it holds no value), and Fiji's
@@ -127,7 +135,7 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 			"typing is never held up, and a newer value replaces a preview still running")
 	private boolean preview = false;
 
-	@Parameter(label = "Pair cutoff (calibrated units, 0 = none)", min = "0",
+	@Parameter(validater = "validateInputs", label = "Pair cutoff (calibrated units, 0 = none)", min = "0",
 		description = "List the distances of spot pairs of the same frame closer than this in a second table")
 	private double pair_cutoff = 0;
 
@@ -137,7 +145,7 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 	@Parameter(label = "Show table")
 	private boolean table = true;
 
-	@Parameter(label = "Results table gets", choices = { RESULTS_SPOTS, RESULTS_PAIRS, RESULTS_NONE },
+	@Parameter(validater = "validateInputs", label = "Results table gets", choices = { RESULTS_SPOTS, RESULTS_PAIRS, RESULTS_NONE },
 		description = "What goes into ImageJ's Results table, which macros read with nResults and getResult: the " +
 			"spots, the pairs (with pair_cutoff > 0) or nothing (the Results table is left alone)")
 	private String results = RESULTS_SPOTS;
@@ -150,7 +158,7 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 		description = "Optional: a TrackMate file with the spots (File > Load a TrackMate file)")
 	private File trackmate_xml;
 
-	@Parameter(label = "Threads (0 = ImageJ's setting)", min = "0",
+	@Parameter(validater = "validateInputs", label = "Threads (0 = ImageJ's setting)", min = "0",
 		description = "Frames are localized in parallel on this many threads")
 	private int threads = 0;
 
@@ -159,6 +167,15 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 
 	@Parameter(label = "Pairs", type = ItemIO.OUTPUT, required = false)
 	private ResultsTable pairs;
+
+	/** This run's checks: refused values, a macro's values and left-out keys ({@link OwnInputs}). */
+	private final OwnInputs own = new OwnInputs(this);
+
+	@Parameter(required = false)
+	private EventService events;
+
+	@Parameter(required = false)
+	private ModuleService modules;
 
 	/** The image's overlay before the first preview, put back when the dialog is cancelled. */
 	private Overlay beforePreview;
@@ -175,6 +192,7 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 		stopPreviews();
 		clearPreview(false); // a real run replaces the preview's ROIs (or leaves the image alone)
 		try {
+			if (own.problem() != null) throw new InvalidInputException(own.problem());
 			analyse();
 		}
 		catch (final InvalidInputException | IOException e) {
@@ -186,6 +204,9 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 				")");
 			log.warn(TITLE + ": " + reason);
 			stop(reason);
+		}
+		finally {
+			own.finish();
 		}
 	}
 
@@ -202,15 +223,59 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 		return settings().parameters();
 	}
 
-	/** Checks every input that does not depend on the image (before SciJava remembers the values). */
-	@Override
-	public void checkInputs() {
-		settings();
-		checkOwnInputs();
+	/**
+	 * The initializer: from here on the run's own checks follow the module ({@link OwnInputs}): in an ImageJ macro
+	 * the keys it leaves out keep their defaults and a value that does not convert is refused by {@link #run()}.
+	 */
+	private void macroInputs() {
+		own.start(events, modules);
 	}
 
-	/** Checks what the core does not: the command's own inputs. */
-	private void checkOwnInputs() {
+	/**
+	 * The validater of every checked input, called by SciJava as each is resolved (after the dialog, or as a macro
+	 * or script gives it) and before the values are remembered: a refused value is noted for {@link #run()} to
+	 * report, and the input is set back to its remembered value (else its default) before SciJava remembers the
+	 * values, so that the next dialog does not open with it.
+	 */
+	private void validateInputs() {
+		for (final Setting<?> s : TrackingSettings.ALL) {
+			try {
+				SettingValues.defaults().withText(s, String.valueOf(input(s)));
+			}
+			catch (final IllegalArgumentException e) {
+				own.refuse(s.name(), e.getMessage(), s.defaultValue());
+			}
+		}
+		try {
+			checkOwnInputs(false);
+		}
+		catch (final InvalidInputException e) {
+			final String name = e.getMessage().substring(0, e.getMessage().indexOf(' '));
+			own.refuse(name, e.getMessage(), name.equals("results") ? RESULTS_SPOTS : 0);
+		}
+	}
+
+	/** @return the value of the input of a tracking setting */
+	private Object input(final Setting<?> s) {
+		return switch (s.name()) {
+			case "threshold" -> threshold;
+			case "r_out" -> r_out;
+			case "min_area" -> min_area;
+			case "min_second_area" -> min_second_area;
+			case "connectivity" -> connectivity;
+			case "method" -> method;
+			case "diameter" -> diameter;
+			case "channel" -> channel;
+			default -> throw new IllegalStateException("no input for the setting " + s.name());
+		};
+	}
+
+	/**
+	 * Checks what the core does not: the command's own inputs.
+	 *
+	 * @param together whether to check also how inputs go together (not only each one alone)
+	 */
+	private void checkOwnInputs(final boolean together) {
 		if (pair_cutoff < 0 || !Double.isFinite(pair_cutoff))
 			throw new InvalidInputException("pair_cutoff must be a distance >= 0 (0 = no pair table), not " +
 				pair_cutoff);
@@ -220,7 +285,7 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 		if (!r.equals(RESULTS_SPOTS) && !r.equals(RESULTS_PAIRS) && !r.equals(RESULTS_NONE))
 			throw new InvalidInputException("results must be one of " + RESULTS_SPOTS + ", " + RESULTS_PAIRS + ", " +
 				RESULTS_NONE + ", not '" + results + "'");
-		if (r.equals(RESULTS_PAIRS) && pair_cutoff == 0)
+		if (together && r.equals(RESULTS_PAIRS) && pair_cutoff == 0)
 			throw new InvalidInputException("results=pairs needs pair_cutoff > 0 (the distance up to which pairs are " +
 				"listed)");
 	}
@@ -228,7 +293,7 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 	private void analyse() throws IOException {
 		final SettingValues settings = settings();
 		final TrackerParameters params = settings.parameters();
-		checkOwnInputs();
+		checkOwnInputs(true);
 		final ImagePlusFrames frames = ImagePlusFrames.of(imp, channel);
 		final File csvFile = given(csv), xmlFile = given(trackmate_xml);
 		final Outputs outputs = new Outputs(csvFile == null ? null : csvFile.toPath(), xmlFile == null ? null : xmlFile
@@ -249,7 +314,7 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 		final TitledResultsTable pairTable = pairList == null ? null : SpotTables.pairs(pairList);
 		if (overlay) SpotOverlay.show(imp, SpotOverlay.rois(found, params.rOut(), SpotOverlay.placer(imp)));
 
-		// We show the tables ourselves (or not); ShownOutputs keeps SciJava from displaying them again.
+		// We show the tables ourselves (or not); the run marks them resolved so that SciJava does not display them again.
 		spots = spotTable;
 		pairs = pairTable;
 		final ResultsTable system = switch (results.trim()) {
