@@ -129,8 +129,9 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 			if (control instanceof JComboBox) return ((JComboBox<?>) control).getSelectedItem();
 			final Number n = (Number) ((JSpinner) control).getValue();
 			if (setting.type() == Integer.class) return n.intValue();
-			// in pixels, rounded to 1e-6 px so that a value typed in pixels survives the round trip through units
-			if (setting.unit() == Setting.Unit.PIXELS) return Math.round(n.doubleValue() / pixelWidth * 1e6) / 1e6;
+			// in pixels, to 0.01 px: a length typed in the image's units (shown to 4 decimals) lands on the pixels shown
+			// beside it (61 px, not 60.999998), and values in pixels (the helper's, to 0.01 px) survive the units
+			if (setting.unit() == Setting.Unit.PIXELS) return pixels(n.doubleValue(), pixelWidth);
 			return n.doubleValue();
 		}
 
@@ -139,6 +140,15 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 			final String px = new DecimalFormat("0.##", DecimalFormatSymbols.getInstance(Locale.ROOT)).format(value());
 			unitLabel.setText("pixel".equals(unit) ? "px" : unit + " (" + px + " px)");
 		}
+	}
+
+	/**
+	 * @param length a length in the image's units
+	 * @param pixelWidth the pixel width, in the same units
+	 * @return the length in pixels, to 0.01 px
+	 */
+	static double pixels(final double length, final double pixelWidth) {
+		return Math.round(length / pixelWidth * 100) / 100.0;
 	}
 
 	/**
@@ -183,14 +193,14 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 		fc.weighty = 1;
 		fc.fill = GridBagConstraints.BOTH;
 		if (hasImage && factory != null) {
-			// TrackMate's own preview; our THRESHOLD is a grey level, not a quality cut-off, so no threshold key
+			// TrackMate's own preview; our GREY_THRESHOLD is a grey level, not a quality cut-off, so no threshold key
 			final DetectionPreview preview = DetectionPreview.create().model(model).settings(settings)
 				.detectorFactory(factory).detectionSettingsSupplier(this::getSettings).thresholdKey(null)
 				.axisLabel("Quality histogram").get();
 			add(preview.getPanel(), fc);
 		}
 		else add(new JLabel(), fc);
-		setSettings(TrackMateSettings.defaults());
+		setSettings(LastSettings.get());
 	}
 
 	/** The "Measure from the image" button and, under it, its message. */
@@ -308,12 +318,13 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 	}
 
 	/**
-	 * Shows a settings map; a missing, mistyped or invalid value shows the default instead (TrackMate checks the
-	 * map itself with the factory's {@code checkSettings}). A channel beyond the image's is kept, not changed.
+	 * Shows a settings map; a missing, mistyped or invalid value shows the value last used in this session
+	 * instead, else the default (TrackMate checks the map itself with the factory's {@code checkSettings}; its
+	 * wizard hands over null for keys the previous detector did not have). A channel beyond the image's is kept.
 	 */
 	@Override
 	public void setSettings(final Map<String, Object> settings) {
-		final Map<String, Object> d = TrackMateSettings.defaults();
+		final Map<String, Object> d = LastSettings.get();
 		for (final Field f : fields.values()) {
 			final String key = f.setting.trackMateKey();
 			Object v = settings == null ? null : settings.get(key);
@@ -343,6 +354,7 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 		final Map<String, Object> map = new LinkedHashMap<>();
 		for (final Field f : fields.values())
 			map.put(f.setting.trackMateKey(), f.value());
+		LastSettings.remember(map); // TrackMate takes the settings from here when the user moves on
 		return map;
 	}
 
