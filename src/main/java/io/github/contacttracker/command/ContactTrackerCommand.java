@@ -142,6 +142,11 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 	@Parameter(label = "Show overlay")
 	private boolean overlay = true;
 
+	@Parameter(label = "Show r_out circles and second areas",
+		description = "Diagnostics on the overlay: each spot's r_out disc around its first-pass centre and the " +
+			"outline of its second active area (the pixels the final centre comes from)")
+	private boolean r_out_circles = false;
+
 	@Parameter(label = "Show table")
 	private boolean table = true;
 
@@ -308,11 +313,12 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 			outputs, threads > 0 ? threads : Prefs.getThreads(), overlay, this::progress, cancelled);
 		final List<FrameResult> found = result.frames();
 		final List<Localization> all = result.spots();
-		final TitledResultsTable spotTable = SpotTables.spots(all, frames.calibration());
+		final TitledResultsTable spotTable = SpotTables.spots(all, frames.calibration(), imp.getTitle());
 		final List<PairDistances.Pair> pairList = pair_cutoff > 0 ? PairDistances.within(all, frames.calibration(),
 			pair_cutoff) : null;
-		final TitledResultsTable pairTable = pairList == null ? null : SpotTables.pairs(pairList);
-		if (overlay) SpotOverlay.show(imp, SpotOverlay.rois(found, params.rOut(), SpotOverlay.placer(imp)));
+		final TitledResultsTable pairTable = pairList == null ? null : SpotTables.pairs(pairList, imp.getTitle());
+		if (overlay) SpotOverlay.show(imp, SpotOverlay.rois(found, params.rOut(), r_out_circles, SpotOverlay.placer(
+			imp)));
 
 		// We show the tables ourselves (or not); the run marks them resolved so that SciJava does not display them again.
 		spots = spotTable;
@@ -328,13 +334,20 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 			// refresh an open Results window; none is opened, the named tables show the same
 			if (system != null && WindowManager.getWindow("Results") != null) system.show("Results");
 		}
-		final String summary = TITLE + ": " + result.summary(imp.getTitle());
+		// short lines: ImageJ's Log window cuts long ones
+		final List<String> lines = new java.util.ArrayList<>(result.summaryLines(imp.getTitle()));
+		lines.set(0, TITLE + ": " + lines.get(0));
+		final String unit = frames.calibration().unit();
+		lines.add("  positions, RADIUS, SIGMA in " + (unit == null || unit.isEmpty() ? "pixels" : unit) + "; r_out " +
+			"and areas in pixels");
+		if (overlay) lines.addAll(SpotOverlay.legend(r_out_circles));
+		final String summary = String.join("\n", lines);
 		log.info(summary);
 		// the Log window (standard output headless): where ImageJ users and batch macros see results
 		IJ.log(summary);
 		if (status != null) {
 			status.showProgress(count, count);
-			status.showStatus(summary);
+			status.showStatus(lines.get(0));
 		}
 		MacroFailure.succeeded();
 	}
@@ -403,8 +416,8 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 				previewShown = true;
 			}
 			final SpotOverlay.FramePlacer placer = SpotOverlay.placer(imp);
-			SpotOverlay.show(imp, SpotOverlay.rois(List.of(r), settings.parameters().rOut(), (roi, frame) -> placer
-				.place(roi, t)));
+			SpotOverlay.show(imp, SpotOverlay.rois(List.of(r), settings.parameters().rOut(), r_out_circles, (roi,
+				frame) -> placer.place(roi, t)));
 		}
 		if (status != null) status.showStatus(TITLE + " preview: " + r.spots().size() + " spots on frame " + (t + 1));
 	}
