@@ -32,6 +32,8 @@ import org.scijava.module.ModuleService;
 import org.scijava.command.Previewable;
 import org.scijava.log.LogService;
 import org.scijava.module.ModuleItem;
+import org.scijava.ItemVisibility;
+import org.scijava.platform.PlatformService;
 import org.scijava.plugin.Parameter;
 import org.scijava.plugin.Plugin;
 import org.scijava.widget.Button;
@@ -89,61 +91,73 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 	@Parameter(required = false)
 	private StatusService status;
 
+	// The first row of the dialog: what the command does, in one line (a message, no value: not remembered nor a
+	// macro key), and a Help button that opens the manual's page.
+	@Parameter(visibility = ItemVisibility.MESSAGE, persist = false, required = false)
+	private String header = "<html><b>Finds the centres of particles, also where they touch, in every frame</b></html>";
+
+	@Parameter(label = "Help", callback = "openManual", persist = false, required = false,
+		description = DialogHelp.TIP + "Opens the manual's page on this command in the web browser")
+	private Button help;
+
+	@Parameter(required = false)
+	private PlatformService platform;
+
 	@Parameter(label = "Image", persist = false)
 	private ImagePlus imp;
 
 	// The tracking settings: names, help and defaults from the settings descriptor (TrackingSettings); a test pins
 	// every one of these inputs to it.
-	@Parameter(validater = "validateInputs", label = "Threshold (grey level)", description = TrackingSettings.HELP_THRESHOLD)
+	@Parameter(validater = "validateInputs", label = "Threshold (grey level)", description = DialogHelp.TIP + TrackingSettings.HELP_THRESHOLD)
 	private double threshold = TrackingSettings.THRESHOLD.defaultValue();
 
-	@Parameter(validater = "validateInputs", label = "r_out (px)", min = "0", stepSize = "0.5", description = TrackingSettings.HELP_R_OUT)
+	@Parameter(validater = "validateInputs", label = "r_out (px)", min = "0", stepSize = "0.5", description = DialogHelp.TIP + TrackingSettings.HELP_R_OUT)
 	private double r_out = TrackingSettings.R_OUT.defaultValue();
 
-	@Parameter(validater = "validateInputs", label = "Min area (px)", min = "1", description = TrackingSettings.HELP_MIN_AREA)
+	@Parameter(validater = "validateInputs", label = "Min area (px)", min = "1", description = DialogHelp.TIP + TrackingSettings.HELP_MIN_AREA)
 	private int min_area = TrackingSettings.MIN_AREA.defaultValue();
 
-	@Parameter(validater = "validateInputs", label = "Min second area (px)", min = "3", description = TrackingSettings.HELP_MIN_SECOND_AREA)
+	@Parameter(validater = "validateInputs", label = "Min second area (px)", min = "3", description = DialogHelp.TIP + TrackingSettings.HELP_MIN_SECOND_AREA)
 	private int min_second_area = TrackingSettings.MIN_SECOND_AREA.defaultValue();
 
-	@Parameter(validater = "validateInputs", label = "Connectivity", choices = { "8", "4" }, description = TrackingSettings.HELP_CONNECTIVITY)
+	@Parameter(validater = "validateInputs", label = "Connectivity", choices = { "8", "4" }, description = DialogHelp.TIP + TrackingSettings.HELP_CONNECTIVITY)
 	private String connectivity = String.valueOf(TrackingSettings.CONNECTIVITY.defaultValue());
 
 	// a macro may still pass any text, which is refused with the valid ones when unknown
 	@Parameter(validater = "validateInputs", label = "Method", choices = { "first", "paper", "iterative", "deblend", "fit" },
-		description = TrackingSettings.HELP_METHOD)
+		description = DialogHelp.TIP + TrackingSettings.HELP_METHOD)
 	private String method = TrackingSettings.METHOD.defaultValue();
 
 	@Parameter(validater = "validateInputs", label = "Particle diameter (px, 0 = not given)", min = "0", stepSize = "0.5",
-		description = TrackingSettings.HELP_DIAMETER)
+		description = DialogHelp.TIP + TrackingSettings.HELP_DIAMETER)
 	private double diameter = TrackingSettings.DIAMETER.defaultValue();
 
-	@Parameter(validater = "validateInputs", label = "Channel", min = "1", description = TrackingSettings.HELP_CHANNEL)
+	@Parameter(validater = "validateInputs", label = "Channel", min = "1", description = DialogHelp.TIP + TrackingSettings.HELP_CHANNEL)
 	private int channel = TrackingSettings.CHANNEL.defaultValue();
 
 	// A button, not a setting: optional (a Button), never remembered, not recorded (it holds no value), and Fiji's
 	// macro preprocessor resolves it: it is no macro option, and headless nobody presses it.
 	@Parameter(label = "Measure from the image", callback = "measureFromImage", persist = false,
-		description = "Runs the profile helper on the frame on display (in the channel above) and fills in " +
+		description = DialogHelp.TIP + "Runs the profile helper on the frame on display (in the channel above) and fills in " +
 			"threshold, r_out and the diameter; a diameter above 0 is kept and used")
 	private Button measure;
 
 	// Off by default, as in ImageJ's own dialogs: the dialog opens at once and nothing is tracked before the user
 	// asks. Not remembered, so that a slow method chosen last time does not run when the dialog opens.
 	@Parameter(label = "Preview (frame on display)", persist = false, required = false,
-		description = "Tracks the frame on display in the background and shows its spots while you edit; " +
+		description = DialogHelp.TIP + "Tracks the frame on display in the background and shows its spots while you edit; " +
 			"typing is never held up, and a newer value replaces a preview still running")
 	private boolean preview = false;
 
 	@Parameter(validater = "validateInputs", label = "Pair cutoff (calibrated units, 0 = none)", min = "0",
-		description = "List the distances of spot pairs of the same frame closer than this in a second table")
+		description = DialogHelp.TIP + "List the distances of spot pairs of the same frame closer than this in a second table")
 	private double pair_cutoff = 0;
 
 	@Parameter(label = "Show overlay")
 	private boolean overlay = true;
 
 	@Parameter(label = "Show r_out circles and second areas",
-		description = "Diagnostics on the overlay: each spot's r_out disc around its first-pass centre and the " +
+		description = DialogHelp.TIP + "Diagnostics on the overlay: each spot's r_out disc around its first-pass centre and the " +
 			"outline of its second active area (the pixels the final centre comes from)")
 	private boolean r_out_circles = false;
 
@@ -151,20 +165,20 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 	private boolean table = true;
 
 	@Parameter(validater = "validateInputs", label = "Results table gets", choices = { RESULTS_SPOTS, RESULTS_PAIRS, RESULTS_NONE },
-		description = "What goes into ImageJ's Results table, which macros read with nResults and getResult: the " +
+		description = DialogHelp.TIP + "What goes into ImageJ's Results table, which macros read with nResults and getResult: the " +
 			"spots, the pairs (with pair_cutoff > 0) or nothing (the Results table is left alone)")
 	private String results = RESULTS_SPOTS;
 
 	@Parameter(label = "Save spots as CSV", persist = false, required = false, style = FileWidget.SAVE_STYLE,
-		description = "Optional: the spots table as CSV, the same file the command line writes")
+		description = DialogHelp.TIP + "Optional: the spots table as CSV, the same file the command line writes")
 	private File csv;
 
 	@Parameter(label = "Save TrackMate XML", persist = false, required = false, style = FileWidget.SAVE_STYLE,
-		description = "Optional: a TrackMate file with the spots (File > Load a TrackMate file)")
+		description = DialogHelp.TIP + "Optional: a TrackMate file with the spots (File > Load a TrackMate file)")
 	private File trackmate_xml;
 
 	@Parameter(validater = "validateInputs", label = "Threads (0 = ImageJ's setting)", min = "0",
-		description = "Frames are localized in parallel on this many threads")
+		description = DialogHelp.TIP + "Frames are localized in parallel on this many threads")
 	private int threads = 0;
 
 	@Parameter(label = "Spots", type = ItemIO.OUTPUT)
@@ -522,5 +536,10 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 			.isEmpty()) return ImageSource.of(Path.of(fi.directory, fi.fileName), frames.width(), frames.height(), frames
 				.frameCount());
 		return new ImageSource("", "", frames.width(), frames.height(), 1, frames.frameCount());
+	}
+
+	/** The Help button: the manual's page on this command. */
+	private void openManual() {
+		DialogHelp.open(platform, log, DialogHelp.TRACKER_PAGE);
 	}
 }

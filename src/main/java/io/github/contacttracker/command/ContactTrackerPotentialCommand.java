@@ -13,7 +13,10 @@ import org.scijava.command.ContextCommand;
 import org.scijava.event.EventService;
 import org.scijava.module.ModuleService;
 import org.scijava.log.LogService;
+import org.scijava.ItemVisibility;
+import org.scijava.platform.PlatformService;
 import org.scijava.plugin.Parameter;
+import org.scijava.widget.Button;
 import org.scijava.plugin.Plugin;
 import org.scijava.widget.FileWidget;
 
@@ -59,21 +62,33 @@ public class ContactTrackerPotentialCommand extends ContextCommand {
 	@Parameter
 	private LogService log;
 
+	// The first row of the dialog: what the command does, in one line (a message, no value: not remembered nor a
+	// macro key), and a Help button that opens the manual's page.
+	@Parameter(visibility = ItemVisibility.MESSAGE, persist = false, required = false)
+	private String header = "<html><b>g(r) and U(r)/kT from tracked spots: a CSV file, or an open table</b></html>";
+
+	@Parameter(label = "Help", callback = "openManual", persist = false, required = false,
+		description = DialogHelp.TIP + "Opens the manual's page on this command in the web browser")
+	private Button help;
+
+	@Parameter(required = false)
+	private PlatformService platform;
+
 	@Parameter(label = "Spots table (title)", required = false,
-		description = "Title of an open table of spots (columns POSITION_X, POSITION_Y, FRAME, FLAG_...): " +
+		description = DialogHelp.TIP + "Title of an open table of spots (columns POSITION_X, POSITION_Y, FRAME, FLAG_...): " +
 			"'Results' (ImageJ's, filled by Contact Tracker), a Contact Tracker spots table, or a CSV opened in Fiji")
 	private String table = RESULTS;
 
 	@Parameter(label = "Or a spots CSV file", persist = false, required = false, style = FileWidget.OPEN_STYLE,
-		description = "Optional: read the spots from this CSV (ours, or TrackMate's spot export) instead of the table")
+		description = DialogHelp.TIP + "Optional: read the spots from this CSV (ours, or TrackMate's spot export) instead of the table")
 	private File csv;
 
 	@Parameter(validater = "validateInputs", label = "Bin width (spots' units, 0 = r_max / 50)", min = "0",
-		description = "Width of the distance bins, in the units of the spots' positions; 0 gives 50 bins")
+		description = DialogHelp.TIP + "Width of the distance bins, in the units of the spots' positions; 0 gives 50 bins")
 	private double bin = 0;
 
 	@Parameter(validater = "validateInputs", label = "r_max (spots' units, 0 = half the field)", min = "0",
-		description = "Largest distance; at most the smaller side of the field of view; 0 takes half of it")
+		description = DialogHelp.TIP + "Largest distance; at most the smaller side of the field of view; 0 takes half of it")
 	private double r_max = 0;
 
 	@Parameter(validater = "validateInputs", label = "Field width (0 = infer from spots)", min = "0")
@@ -83,15 +98,15 @@ public class ContactTrackerPotentialCommand extends ContextCommand {
 	private double height = 0;
 
 	@Parameter(validater = "validateInputs", label = "Start frame", min = "0",
-		description = "Spots of earlier frames are left out (0-based, as the FRAME column)")
+		description = DialogHelp.TIP + "Spots of earlier frames are left out (0-based, as the FRAME column)")
 	private int start_frame = 0;
 
 	@Parameter(label = "Leave out flagged spots",
-		description = "Spots with a warning flag (every FLAG_ column but FLAG_SECOND_PASS) are left out")
+		description = DialogHelp.TIP + "Spots with a warning flag (every FLAG_ column but FLAG_SECOND_PASS) are left out")
 	private boolean skip_flagged = true;
 
 	@Parameter(validater = "validateInputs", label = "U = 0 from r", min = "0",
-		description = "With 'to r', sets U to 0 on average over this range (both 0: U = -ln g)")
+		description = DialogHelp.TIP + "With 'to r', sets U to 0 on average over this range (both 0: U = -ln g)")
 	private double zero_from = 0;
 
 	@Parameter(validater = "validateInputs", label = "U = 0 to r", min = "0")
@@ -101,7 +116,7 @@ public class ContactTrackerPotentialCommand extends ContextCommand {
 	private boolean show = true;
 
 	@Parameter(label = "Results table gets the values",
-		description = "Puts R, PAIRS, G, U_KT, U_KT_ERR into ImageJ's Results table, which macros read with " +
+		description = DialogHelp.TIP + "Puts R, PAIRS, G, U_KT, U_KT_ERR into ImageJ's Results table, which macros read with " +
 			"nResults and getResult (it replaces the spots there)")
 	private boolean results = true;
 
@@ -234,5 +249,10 @@ public class ContactTrackerPotentialCommand extends ContextCommand {
 			if (c != null) out.put(h, java.util.Arrays.copyOfRange(c, skip, c.length));
 		}
 		return out;
+	}
+
+	/** The Help button: the manual's page on this command. */
+	private void openManual() {
+		DialogHelp.open(platform, log, DialogHelp.POTENTIAL_PAGE);
 	}
 }

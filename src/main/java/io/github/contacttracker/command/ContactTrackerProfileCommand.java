@@ -14,7 +14,10 @@ import org.scijava.command.ContextCommand;
 import org.scijava.event.EventService;
 import org.scijava.module.ModuleService;
 import org.scijava.log.LogService;
+import org.scijava.ItemVisibility;
+import org.scijava.platform.PlatformService;
 import org.scijava.plugin.Parameter;
+import org.scijava.widget.Button;
 import org.scijava.plugin.Plugin;
 
 import ij.IJ;
@@ -53,23 +56,35 @@ public class ContactTrackerProfileCommand extends ContextCommand {
 	@Parameter
 	private LogService log;
 
+	// The first row of the dialog: what the command does, in one line (a message, no value: not remembered nor a
+	// macro key), and a Help button that opens the manual's page.
+	@Parameter(visibility = ItemVisibility.MESSAGE, persist = false, required = false)
+	private String header = "<html><b>First click on an isolated particle with the point tool: its profile suggests threshold and r_out</b></html>";
+
+	@Parameter(label = "Help", callback = "openManual", persist = false, required = false,
+		description = DialogHelp.TIP + "Opens the manual's page on this command in the web browser")
+	private Button help;
+
+	@Parameter(required = false)
+	private PlatformService platform;
+
 	@Parameter(label = "Image", persist = false)
 	private ImagePlus imp;
 
 	@Parameter(validater = "validateInputs", label = "Particle diameter (px, 0 = estimate)", min = "0",
-		description = "The centre distance of two particles at contact, in pixels; 0 estimates it from the " +
+		description = DialogHelp.TIP + "The centre distance of two particles at contact, in pixels; 0 estimates it from the " +
 			"particles' nearest-neighbour distances")
 	private double diameter = 0;
 
 	@Parameter(validater = "validateInputs", label = "Max radius (px, 0 = 2.5 diameters)", min = "0",
-		description = "How far out the profile is measured; its outer 20% give the background")
+		description = DialogHelp.TIP + "How far out the profile is measured; its outer 20% give the background")
 	private double max_radius = 0;
 
 	@Parameter(label = "Show plot")
 	private boolean plot = true;
 
 	@Parameter(label = "Results table gets the suggestion",
-		description = "Puts one row (THRESHOLD, R_OUT, DIAMETER, BACKGROUND, NOISE, X, Y, FRAME) into ImageJ's " +
+		description = DialogHelp.TIP + "Puts one row (THRESHOLD, R_OUT, DIAMETER, BACKGROUND, NOISE, X, Y, FRAME) into ImageJ's " +
 			"Results table, which macros read with getResult (it replaces what the table held)")
 	private boolean results = true;
 
@@ -197,5 +212,10 @@ public class ContactTrackerProfileCommand extends ContextCommand {
 	private static String fmt(final double v) {
 		return v == Math.rint(v) && Math.abs(v) < 1e15 ? Long.toString((long) v) : String.format(Locale.ROOT, "%.3f",
 			v);
+	}
+
+	/** The Help button: the manual's page on this command. */
+	private void openManual() {
+		DialogHelp.open(platform, log, DialogHelp.PROFILE_PAGE);
 	}
 }

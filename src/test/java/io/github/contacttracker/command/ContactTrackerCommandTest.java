@@ -507,7 +507,8 @@ class ContactTrackerCommandTest {
 			ContactTrackerCommand.class));
 		// the dialog remembers its values like Fiji's, except the image and the output files (and the measure
 		// button, which has no value, and the Preview box, so that opening the dialog never starts tracking)
-		final List<String> notRemembered = List.of("imp", "csv", "trackmate_xml", "measure", "preview");
+		final List<String> notRemembered = List.of("imp", "csv", "trackmate_xml", "measure", "preview", "header",
+			"help");
 		m.getInfo().inputs().forEach(item -> {
 			if (!org.scijava.service.Service.class.isAssignableFrom(item.getType()) && item.getType() != Context.class)
 				assertEquals(!notRemembered.contains(item.getName()), item.isPersisted(), item.getName());
