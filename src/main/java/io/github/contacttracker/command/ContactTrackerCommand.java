@@ -26,14 +26,8 @@ import java.util.function.BooleanSupplier;
 import org.scijava.ItemIO;
 import org.scijava.app.StatusService;
 import org.scijava.command.Command;
-import org.scijava.command.ContextCommand;
-import org.scijava.event.EventService;
-import org.scijava.module.ModuleService;
 import org.scijava.command.Previewable;
-import org.scijava.log.LogService;
 import org.scijava.module.ModuleItem;
-import org.scijava.ItemVisibility;
-import org.scijava.platform.PlatformService;
 import org.scijava.plugin.Parameter;
 import org.scijava.plugin.Plugin;
 import org.scijava.widget.Button;
@@ -64,7 +58,7 @@ import io.github.contacttracker.io.ShownFrameProfile;
  * table holds the spots (or the pairs, or is left alone: {@code results}), which is what a macro reads. Invalid
  * values (an RGB image, Z and T both above 1, {@code r_out <= 0}, an unknown method, ...) cancel the command with
  * a one-line reason ({@link #getCancelReason()}), which is also logged as an error and stops a calling macro
- * ({@link MacroFailure}). It is a plain {@link ContextCommand}, so
+ * ({@link MacroFailure}). It is a plain {@code ContextCommand} ({@link OwnCommand}), so
  * {@code commandService.run(ContactTrackerCommand.class, true, ...)} returns its module and outputs. It checks
  * its inputs itself, with no global preprocessor: each value as SciJava resolves it ({@code validater=}), and a
  * macro's values and left-out keys from its initializer on ({@link OwnInputs}). In Fiji's
@@ -78,30 +72,22 @@ import io.github.contacttracker.io.ShownFrameProfile;
 @Plugin(type = Command.class, menuPath = "Plugins>Tracking>Contact Tracker", headless = true,
 	label = "Contact Tracker", description = "Sub-pixel centres of colloidal particles close to contact " +
 		"(Yucel & Okumusoglu 2017)", initializer = "macroInputs")
-public class ContactTrackerCommand extends ContextCommand implements Previewable {
+public class ContactTrackerCommand extends OwnCommand implements Previewable {
+
+	/** A new command (SciJava makes one per run). */
+	public ContactTrackerCommand() {
+		super("Finds the centres of particles, also where they touch, in every frame", DialogHelp.TRACKER_PAGE);
+	}
+
 
 	/** Values of {@code results}: what ImageJ's system Results table gets. */
 	public static final String RESULTS_SPOTS = "spots", RESULTS_PAIRS = "pairs", RESULTS_NONE = "none";
 
 	private static final String TITLE = "Contact Tracker";
 
-	@Parameter
-	private LogService log;
 
 	@Parameter(required = false)
 	private StatusService status;
-
-	// The first row of the dialog: what the command does, in one line (a message, no value: not remembered nor a
-	// macro key), and a Help button that opens the manual's page.
-	@Parameter(visibility = ItemVisibility.MESSAGE, persist = false, required = false)
-	private String header = "<html><b>Finds the centres of particles, also where they touch, in every frame</b></html>";
-
-	@Parameter(label = "Help", callback = "openManual", persist = false, required = false,
-		description = DialogHelp.TIP + "Opens the manual's page on this command in the web browser")
-	private Button help;
-
-	@Parameter(required = false)
-	private PlatformService platform;
 
 	@Parameter(label = "Image", persist = false)
 	private ImagePlus imp;
@@ -187,14 +173,6 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 	@Parameter(label = "Pairs", type = ItemIO.OUTPUT, required = false)
 	private ResultsTable pairs;
 
-	/** This run's checks: refused values, a macro's values and left-out keys ({@link OwnInputs}). */
-	private final OwnInputs own = new OwnInputs(this);
-
-	@Parameter(required = false)
-	private EventService events;
-
-	@Parameter(required = false)
-	private ModuleService modules;
 
 	/** The image's overlay before the first preview, put back when the dialog is cancelled. */
 	private Overlay beforePreview;
@@ -242,13 +220,6 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 		return settings().parameters();
 	}
 
-	/**
-	 * The initializer: from here on the run's own checks follow the module ({@link OwnInputs}): in an ImageJ macro
-	 * the keys it leaves out keep their defaults and a value that does not convert is refused by {@link #run()}.
-	 */
-	private void macroInputs() {
-		own.start(events, modules);
-	}
 
 	/**
 	 * The validater of every checked input, called by SciJava as each is resolved (after the dialog, or as a macro
@@ -538,8 +509,4 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 		return new ImageSource("", "", frames.width(), frames.height(), 1, frames.frameCount());
 	}
 
-	/** The Help button: the manual's page on this command. */
-	private void openManual() {
-		DialogHelp.open(platform, log, DialogHelp.TRACKER_PAGE);
-	}
 }

@@ -9,14 +9,7 @@ import java.util.Map;
 
 import org.scijava.ItemIO;
 import org.scijava.command.Command;
-import org.scijava.command.ContextCommand;
-import org.scijava.event.EventService;
-import org.scijava.module.ModuleService;
-import org.scijava.log.LogService;
-import org.scijava.ItemVisibility;
-import org.scijava.platform.PlatformService;
 import org.scijava.plugin.Parameter;
-import org.scijava.widget.Button;
 import org.scijava.plugin.Plugin;
 import org.scijava.widget.FileWidget;
 
@@ -48,7 +41,13 @@ import io.github.contacttracker.potential.SpotSet;
 @Plugin(type = Command.class, menuPath = "Plugins>Tracking>Contact Tracker Pair Potential", headless = true,
 	label = "Contact Tracker Pair Potential", description = "Pair distribution g(r) and pair potential U(r) from " +
 		"a spots table", initializer = "macroInputs")
-public class ContactTrackerPotentialCommand extends ContextCommand {
+public class ContactTrackerPotentialCommand extends OwnCommand {
+
+	/** A new command (SciJava makes one per run). */
+	public ContactTrackerPotentialCommand() {
+		super("g(r) and U(r)/kT from tracked spots: a CSV file, or an open table", DialogHelp.POTENTIAL_PAGE);
+	}
+
 
 	/** Title of the table of values. */
 	public static final String TABLE_TITLE = "Contact Tracker pair potential";
@@ -59,20 +58,6 @@ public class ContactTrackerPotentialCommand extends ContextCommand {
 	/** Title of the plot. */
 	public static final String PLOT_TITLE = "Contact Tracker Pair Potential";
 
-	@Parameter
-	private LogService log;
-
-	// The first row of the dialog: what the command does, in one line (a message, no value: not remembered nor a
-	// macro key), and a Help button that opens the manual's page.
-	@Parameter(visibility = ItemVisibility.MESSAGE, persist = false, required = false)
-	private String header = "<html><b>g(r) and U(r)/kT from tracked spots: a CSV file, or an open table</b></html>";
-
-	@Parameter(label = "Help", callback = "openManual", persist = false, required = false,
-		description = DialogHelp.TIP + "Opens the manual's page on this command in the web browser")
-	private Button help;
-
-	@Parameter(required = false)
-	private PlatformService platform;
 
 	@Parameter(label = "Spots table (title)", required = false,
 		description = DialogHelp.TIP + "Title of an open table of spots (columns POSITION_X, POSITION_Y, FRAME, FLAG_...): " +
@@ -126,14 +111,6 @@ public class ContactTrackerPotentialCommand extends ContextCommand {
 	@Parameter(label = "Plot", type = ItemIO.OUTPUT)
 	private Plot plot;
 
-	/** This run's checks: refused values, a macro's values and left-out keys ({@link OwnInputs}). */
-	private final OwnInputs own = new OwnInputs(this);
-
-	@Parameter(required = false)
-	private EventService events;
-
-	@Parameter(required = false)
-	private ModuleService modules;
 
 	@Override
 	public void run() {
@@ -152,10 +129,6 @@ public class ContactTrackerPotentialCommand extends ContextCommand {
 		}
 	}
 
-	/** The initializer: a macro's left-out keys keep their defaults, a value that does not convert is noted. */
-	private void macroInputs() {
-		own.start(events, modules);
-	}
 
 	/**
 	 * The validater of the numeric inputs, as SciJava resolves them: a negative or non-finite value is noted for
@@ -251,8 +224,4 @@ public class ContactTrackerPotentialCommand extends ContextCommand {
 		return out;
 	}
 
-	/** The Help button: the manual's page on this command. */
-	private void openManual() {
-		DialogHelp.open(platform, log, DialogHelp.POTENTIAL_PAGE);
-	}
 }

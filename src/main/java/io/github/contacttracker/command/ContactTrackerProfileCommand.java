@@ -10,14 +10,7 @@ import java.util.Map;
 
 import org.scijava.ItemIO;
 import org.scijava.command.Command;
-import org.scijava.command.ContextCommand;
-import org.scijava.event.EventService;
-import org.scijava.module.ModuleService;
-import org.scijava.log.LogService;
-import org.scijava.ItemVisibility;
-import org.scijava.platform.PlatformService;
 import org.scijava.plugin.Parameter;
-import org.scijava.widget.Button;
 import org.scijava.plugin.Plugin;
 
 import ij.IJ;
@@ -45,7 +38,13 @@ import io.github.contacttracker.io.ShownFrameProfile;
 @Plugin(type = Command.class, menuPath = "Plugins>Tracking>Contact Tracker Profile", headless = true,
 	label = "Contact Tracker Profile", description = "Radial profile of one particle and suggested threshold and " +
 		"r_out for Contact Tracker", initializer = "macroInputs")
-public class ContactTrackerProfileCommand extends ContextCommand {
+public class ContactTrackerProfileCommand extends OwnCommand {
+
+	/** A new command (SciJava makes one per run). */
+	public ContactTrackerProfileCommand() {
+		super("First click on an isolated particle with the point tool: its profile suggests threshold and r_out", DialogHelp.PROFILE_PAGE);
+	}
+
 
 	/** The columns of the row the command puts into ImageJ's Results table, for macros. */
 	public static final List<String> RESULT_COLUMNS = List.of("THRESHOLD", "R_OUT", "DIAMETER", "BACKGROUND",
@@ -53,20 +52,6 @@ public class ContactTrackerProfileCommand extends ContextCommand {
 
 	/** Title of the plot window (followed by the image title). */
 	public static final String PLOT_TITLE = "Contact Tracker Profile";
-	@Parameter
-	private LogService log;
-
-	// The first row of the dialog: what the command does, in one line (a message, no value: not remembered nor a
-	// macro key), and a Help button that opens the manual's page.
-	@Parameter(visibility = ItemVisibility.MESSAGE, persist = false, required = false)
-	private String header = "<html><b>First click on an isolated particle with the point tool: its profile suggests threshold and r_out</b></html>";
-
-	@Parameter(label = "Help", callback = "openManual", persist = false, required = false,
-		description = DialogHelp.TIP + "Opens the manual's page on this command in the web browser")
-	private Button help;
-
-	@Parameter(required = false)
-	private PlatformService platform;
 
 	@Parameter(label = "Image", persist = false)
 	private ImagePlus imp;
@@ -88,14 +73,6 @@ public class ContactTrackerProfileCommand extends ContextCommand {
 			"Results table, which macros read with getResult (it replaces what the table held)")
 	private boolean results = true;
 
-	/** This run's checks: refused values, a macro's values and left-out keys ({@link OwnInputs}). */
-	private final OwnInputs own = new OwnInputs(this);
-
-	@Parameter(required = false)
-	private EventService events;
-
-	@Parameter(required = false)
-	private ModuleService modules;
 
 	@Parameter(label = "Suggested threshold", type = ItemIO.OUTPUT)
 	private double suggested_threshold;
@@ -135,10 +112,6 @@ public class ContactTrackerProfileCommand extends ContextCommand {
 		}
 	}
 
-	/** The initializer: a macro's left-out keys keep their defaults, a value that does not convert is noted. */
-	private void macroInputs() {
-		own.start(events, modules);
-	}
 
 	/** The validater of the lengths: a negative or non-finite one is noted for {@link #run()}, not remembered. */
 	private void validateInputs() {
@@ -214,8 +187,4 @@ public class ContactTrackerProfileCommand extends ContextCommand {
 			v);
 	}
 
-	/** The Help button: the manual's page on this command. */
-	private void openManual() {
-		DialogHelp.open(platform, log, DialogHelp.PROFILE_PAGE);
-	}
 }

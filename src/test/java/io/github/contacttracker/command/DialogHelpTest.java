@@ -90,7 +90,7 @@ class DialogHelpTest {
 
 	private static String header(final Object command) {
 		try {
-			final java.lang.reflect.Field f = command.getClass().getDeclaredField("header");
+			final java.lang.reflect.Field f = OwnCommand.class.getDeclaredField("header");
 			f.setAccessible(true);
 			final String h = (String) f.get(command);
 			assertTrue(h.replaceAll("<[^>]+>", "").length() <= 100, h);
