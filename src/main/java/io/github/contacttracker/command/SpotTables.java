@@ -144,7 +144,7 @@ public final class SpotTables {
 
 	/**
 	 * Integer columns without decimals; the others in ImageJ's automatic format: {@link #DECIMALS} places, none
-	 * for whole values (a QUALITY that counts pixels reads 25135, not 25135.0000).
+	 * for whole values (a QUALITY of 1 reads 1, not 1.0000).
 	 */
 	private static void format(final ResultsTable rt, final List<String> keys, final List<String> integers,
 		final boolean empty)
