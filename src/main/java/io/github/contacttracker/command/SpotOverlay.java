@@ -21,6 +21,7 @@ import io.github.contacttracker.core.FrameResult;
 import io.github.contacttracker.core.Localization;
 import io.github.contacttracker.core.Region;
 import io.github.contacttracker.io.OverlayPng;
+import io.github.contacttracker.io.ShownFrameProfile;
 
 /**
  * The ROIs Contact Tracker draws on an image: per spot, the particle's outline (a circle of the spot's
@@ -113,21 +114,18 @@ public final class SpotOverlay {
 	 * @return short lines for the Log: what each colour means
 	 */
 	public static List<String> legend(final boolean diagnostics) {
+		final List<String> items = new ArrayList<>();
+		items.add("  overlay: cyan circle = particle (RADIUS), red cross = centre, yellow dot = first-pass centre");
+		final StringJoiner flags = new StringJoiner(", ", "  flagged (thicker circle): ", "");
+		for (final Flag f : FLAG_ORDER)
+			flags.add(COLOR_NAMES.get(f) + " = " + f.description());
+		items.add(flags.toString());
+		if (diagnostics) items.add("  grey-blue circle = r_out around the first-pass centre, green = second active " +
+			"area");
+		// ImageJ's Log window cuts (or, narrower, wraps word by word) long lines
 		final List<String> lines = new ArrayList<>();
-		lines.add("  overlay: cyan circle = particle (RADIUS), red cross = centre, yellow dot = first-pass centre");
-		// one line per few flags: ImageJ's Log window cuts long lines
-		StringBuilder line = new StringBuilder("  flagged (thicker circle):");
-		for (final Flag f : FLAG_ORDER) {
-			final String item = " " + COLOR_NAMES.get(f) + " = " + f.description() + (f == FLAG_ORDER.get(FLAG_ORDER
-				.size() - 1) ? "" : ",");
-			if (line.length() + item.length() > 80) {
-				lines.add(line.toString());
-				line = new StringBuilder("   ");
-			}
-			line.append(item);
-		}
-		lines.add(line.toString());
-		if (diagnostics) lines.add("  grey-blue circle = r_out around the first-pass centre, green = second active area");
+		for (final String item : items)
+			lines.addAll(List.of(ShownFrameProfile.wrap(item, ShownFrameProfile.LOG_WIDTH, "    ").split("\n")));
 		return lines;
 	}
 

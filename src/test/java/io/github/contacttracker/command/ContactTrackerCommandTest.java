@@ -60,6 +60,7 @@ import io.github.contacttracker.core.TrackerParameters;
 import io.github.contacttracker.io.Calibration;
 import io.github.contacttracker.io.ImagePlusFrames;
 import io.github.contacttracker.io.OverlayPng;
+import io.github.contacttracker.io.ShownFrameProfile;
 import io.github.contacttracker.io.SpotColumn;
 import io.github.contacttracker.io.SpotCsvWriter;
 
@@ -544,10 +545,11 @@ class ContactTrackerCommandTest {
 			"touches border, suspected merge"), mergedCircle.getName());
 		// the legend names each flag's colour, in short lines
 		final List<String> legend = SpotOverlay.legend(false);
-		assertTrue(String.join("\n", legend).contains("magenta = suspected merge"), legend.toString());
-		assertTrue(String.join("\n", legend).contains("white = fell back to first pass"), legend.toString());
+		final String words = String.join(" ", legend).replaceAll(" +", " ");
+		assertTrue(words.contains("magenta = suspected merge"), legend.toString());
+		assertTrue(words.contains("white = fell back to first pass"), legend.toString());
 		for (final String line : legend)
-			assertTrue(line.length() <= 100, line);
+			assertTrue(line.length() <= ShownFrameProfile.LOG_WIDTH, line);
 	}
 
 	@Test
@@ -698,8 +700,10 @@ class ContactTrackerCommandTest {
 		assertTrue(log.contains("\n  0 components discarded, "), log);
 		assertTrue(log.contains("\n  positions, RADIUS, SIGMA in micron; r_out and areas in pixels\n"), log);
 		assertTrue(log.contains("\n  overlay: cyan circle = particle (RADIUS), red cross = centre"), "the legend:\n" + log);
-		// short lines: ImageJ's Log window cuts long ones (the old one-line summary had 113 characters)
+		// short lines: ImageJ's Log window cuts long ones (the old one-line summary had 113 characters, and 90
+		// characters wrapped word by word); the first line holds the image's title, however long
 		for (final String line : log.split("\n"))
-			if (!line.startsWith("[")) assertTrue(line.length() <= 100, line.length() + ": " + line);
+			if (!line.startsWith("[") && !line.startsWith("Contact Tracker: 10 spots")) assertTrue(line.length() <=
+				ShownFrameProfile.LOG_WIDTH, line.length() + ": " + line);
 	}
 }
