@@ -72,7 +72,7 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 		+ "active area per particle; each centre is found by radial symmetry and refined away from the neighbours "
 		+ "(within <b>r_out</b>, where a particle's image ends). <b>fit</b> (default) is unbiased at contact.<br>"
 		+ "Y&uuml;cel &amp; Okumu&#351;o&#287;lu, J. Phys.: Condens. Matter 29, 465101 (2017), "
-		+ "<a href='" + ContactTrackerDetectorFactory.URL + "'>doi:10.1088/1361-648X/aa908e</a>. "
+		+ "<a href='" + ContactTrackerDetectorFactory.URL + "'>" + DOI_TEXT + "</a>. "
 		+ "2D images and time-lapses only.</body></html>";
 
 	/** The label of the button that fills in threshold, r_out and the diameter from the profile helper. */
@@ -299,7 +299,11 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 		return message;
 	}
 
-	private static JComponent infoPane() {
+	/** The DOI as the info text shows it. */
+	static final String DOI_TEXT = "doi:10.1088/1361-648X/aa908e";
+
+	/** @return the info text in its scroll pane, at the wizard's width */
+	static JComponent infoPane() {
 		final JEditorPane info = new JEditorPane("text/html", SHORT_INFO);
 		info.setEditable(false);
 		info.setOpaque(false);

@@ -305,6 +305,29 @@ class ContactTrackerDetectorFactoryTest {
 		assertEquals(34.0, back.getSettings().get("R_OUT"));
 	}
 
+	/** The DOI link is not broken across lines at the panel's width (it wrapped mid-string in the real wizard). */
+	@Test
+	void theDoiLinkStaysOnOneLine() throws Exception {
+		final javax.swing.JScrollPane scroll = (javax.swing.JScrollPane) ContactTrackerConfigurationPanel.infoPane();
+		final javax.swing.JEditorPane pane = (javax.swing.JEditorPane) scroll.getViewport().getView();
+		final javax.swing.text.Document doc = pane.getDocument();
+		final String text = doc.getText(0, doc.getLength());
+		final int start = text.indexOf(ContactTrackerConfigurationPanel.DOI_TEXT);
+		assertTrue(start >= 0, text);
+		final int end = start + ContactTrackerConfigurationPanel.DOI_TEXT.length() - 1;
+		// every width the wizard may give (fonts differ between machines: the break moves with them)
+		final java.util.Set<Double> lines = new java.util.HashSet<>();
+		for (int width = 200; width <= 420; width += 4) {
+			pane.setSize(width, Short.MAX_VALUE);
+			pane.setSize(width, pane.getPreferredSize().height);
+			final java.awt.geom.Rectangle2D first = pane.modelToView2D(start), last = pane.modelToView2D(end);
+			assertEquals(first.getY(), last.getY(), 0.5, "at " + width + " px the DOI runs from x " + first.getX() +
+				" to " + last.getX());
+			lines.add(first.getY());
+		}
+		assertTrue(lines.size() > 1, "the text is laid out (the DOI's line moves with the width): " + lines);
+	}
+
 	/** The panel's fields are the settings descriptor's: one per setting, with its label, help and every choice. */
 	@Test
 	void panelHasOneFieldPerSettingOfTheDescriptor() {
