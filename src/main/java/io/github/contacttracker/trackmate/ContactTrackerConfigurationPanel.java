@@ -67,11 +67,15 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 	/** The wizard's panel size, which this panel must fit (TrackMate's own detector panels use it). */
 	public static final Dimension WIZARD_SIZE = new Dimension(300, 511);
 
+	/** The DOI as the info text shows it. */
+	static final String DOI_TEXT = "doi:10.1088/1361-648X/aa908e";
+
 	private static final String SHORT_INFO = "<html><body style='font-family:Arial; font-size:8pt'>"
 		+ "Centres of bright particles, also when they touch: pixels at or above the <b>threshold</b> form one "
 		+ "active area per particle; each centre is found by radial symmetry and refined away from the neighbours "
 		+ "(within <b>r_out</b>, where a particle's image ends). <b>fit</b> (default) is unbiased at contact.<br>"
-		+ "Y&uuml;cel &amp; Okumu&#351;o&#287;lu, J. Phys.: Condens. Matter 29, 465101 (2017), "
+		+ "Y&uuml;cel &amp; Okumu&#351;o&#287;lu, J. Phys.: Condens. Matter 29, 465101 (2017),<br>"
+		// the DOI starts a line: Swing breaks lines at its slashes, which cut it in two in the real wizard
 		+ "<a href='" + ContactTrackerDetectorFactory.URL + "'>" + DOI_TEXT + "</a>. "
 		+ "2D images and time-lapses only.</body></html>";
 
@@ -298,9 +302,6 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 		revalidate();
 		return message;
 	}
-
-	/** The DOI as the info text shows it. */
-	static final String DOI_TEXT = "doi:10.1088/1361-648X/aa908e";
 
 	/** @return the info text in its scroll pane, at the wizard's width */
 	static JComponent infoPane() {

@@ -308,23 +308,33 @@ class ContactTrackerDetectorFactoryTest {
 	/** The DOI link is not broken across lines at the panel's width (it wrapped mid-string in the real wizard). */
 	@Test
 	void theDoiLinkStaysOnOneLine() throws Exception {
-		final javax.swing.JScrollPane scroll = (javax.swing.JScrollPane) ContactTrackerConfigurationPanel.infoPane();
-		final javax.swing.JEditorPane pane = (javax.swing.JEditorPane) scroll.getViewport().getView();
-		final javax.swing.text.Document doc = pane.getDocument();
-		final String text = doc.getText(0, doc.getLength());
-		final int start = text.indexOf(ContactTrackerConfigurationPanel.DOI_TEXT);
-		assertTrue(start >= 0, text);
-		final int end = start + ContactTrackerConfigurationPanel.DOI_TEXT.length() - 1;
-		// every width the wizard may give (fonts differ between machines: the break moves with them)
+		final List<String> problems = new java.util.ArrayList<>();
 		final java.util.Set<Double> lines = new java.util.HashSet<>();
-		for (int width = 200; width <= 420; width += 4) {
-			pane.setSize(width, Short.MAX_VALUE);
-			pane.setSize(width, pane.getPreferredSize().height);
-			final java.awt.geom.Rectangle2D first = pane.modelToView2D(start), last = pane.modelToView2D(end);
-			assertEquals(first.getY(), last.getY(), 0.5, "at " + width + " px the DOI runs from x " + first.getX() +
-				" to " + last.getX());
-			lines.add(first.getY());
-		}
+		// Swing lays text out on its event thread only
+		javax.swing.SwingUtilities.invokeAndWait(() -> {
+			final javax.swing.JScrollPane scroll = (javax.swing.JScrollPane) ContactTrackerConfigurationPanel.infoPane();
+			final javax.swing.JEditorPane pane = (javax.swing.JEditorPane) scroll.getViewport().getView();
+			try {
+				final javax.swing.text.Document doc = pane.getDocument();
+				final String text = doc.getText(0, doc.getLength());
+				final int start = text.indexOf(ContactTrackerConfigurationPanel.DOI_TEXT);
+				if (start < 0) throw new AssertionError(text);
+				final int end = start + ContactTrackerConfigurationPanel.DOI_TEXT.length() - 1;
+				// every width the wizard may give (fonts differ between machines: the break moves with them)
+				for (int width = 200; width <= 420; width += 4) {
+					pane.setSize(width, Short.MAX_VALUE);
+					pane.setSize(width, pane.getPreferredSize().height);
+					final java.awt.geom.Rectangle2D first = pane.modelToView2D(start), last = pane.modelToView2D(end);
+					if (Math.abs(first.getY() - last.getY()) > 0.5) problems.add("at " + width + " px the DOI runs from (" +
+						first.getX() + ", " + first.getY() + ") to (" + last.getX() + ", " + last.getY() + ")");
+					lines.add(first.getY());
+				}
+			}
+			catch (final javax.swing.text.BadLocationException e) {
+				throw new AssertionError(e);
+			}
+		});
+		assertTrue(problems.isEmpty(), String.join("\n", problems));
 		assertTrue(lines.size() > 1, "the text is laid out (the DOI's line moves with the width): " + lines);
 	}
 
