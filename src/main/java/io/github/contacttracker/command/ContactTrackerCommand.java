@@ -7,20 +7,27 @@ import io.github.contacttracker.pipeline.Outputs;
 import io.github.contacttracker.pipeline.FrameSource;
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.settings.TrackingSettings;
+import io.github.contacttracker.settings.Setting;
+import java.util.LinkedHashMap;
+import java.util.Map;
 import java.awt.GraphicsEnvironment;
 import java.io.File;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.CancellationException;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.BooleanSupplier;
 
 import org.scijava.ItemIO;
 import org.scijava.app.StatusService;
 import org.scijava.command.Command;
-import org.scijava.command.ContextCommand;
 import org.scijava.command.Previewable;
-import org.scijava.log.LogService;
+import org.scijava.module.ModuleItem;
 import org.scijava.plugin.Parameter;
 import org.scijava.plugin.Plugin;
 import org.scijava.widget.Button;
@@ -51,27 +58,33 @@ import io.github.contacttracker.io.ShownFrameProfile;
  * table holds the spots (or the pairs, or is left alone: {@code results}), which is what a macro reads. Invalid
  * values (an RGB image, Z and T both above 1, {@code r_out <= 0}, an unknown method, ...) cancel the command with
  * a one-line reason ({@link #getCancelReason()}), which is also logged as an error and stops a calling macro
- * ({@link MacroFailure}). It is a plain {@link ContextCommand}, so
- * {@code commandService.run(ContactTrackerCommand.class, true, ...)} returns its module and outputs. In Fiji's
- * dialog it previews the current frame ({@link #preview()}), and its "Measure from the image" button fills in
+ * ({@link MacroFailure}). It is a plain {@code ContextCommand} ({@link OwnCommand}), so
+ * {@code commandService.run(ContactTrackerCommand.class, true, ...)} returns its module and outputs. It checks
+ * its inputs itself, with no global preprocessor: each value as SciJava resolves it ({@code validater=}), and a
+ * macro's values and left-out keys from its initializer on ({@link OwnInputs}). In Fiji's
+ * dialog it previews the frame on display when its Preview box is ticked ({@link #preview()}), and its "Measure from the image" button fills in
  * {@code threshold}, {@code r_out} and {@code diameter} from the profile helper.
  * <p>
  * Outputs {@code spots} (and {@code pairs} when {@code pair_cutoff > 0}) are ImageJ results tables, returned to
  * scripts also when they are not shown. The command shows them itself ({@code table=true}, not headless), so
- * {@link ShownOutputs} keeps SciJava from displaying them a second time.
+ * the command marks them resolved so that SciJava does not display them a second time.
  */
 @Plugin(type = Command.class, menuPath = "Plugins>Tracking>Contact Tracker", headless = true,
 	label = "Contact Tracker", description = "Sub-pixel centres of colloidal particles close to contact " +
-		"(Yucel & Okumusoglu 2017)")
-public class ContactTrackerCommand extends ContextCommand implements Previewable, InputCheck.Checked {
+		"(Yucel & Okumusoglu 2017)", initializer = "macroInputs")
+public class ContactTrackerCommand extends OwnCommand implements Previewable {
+
+	/** A new command (SciJava makes one per run). */
+	public ContactTrackerCommand() {
+		super("Finds the centres of particles, also where they touch, in every frame", DialogHelp.TRACKER_PAGE);
+	}
+
 
 	/** Values of {@code results}: what ImageJ's system Results table gets. */
 	public static final String RESULTS_SPOTS = "spots", RESULTS_PAIRS = "pairs", RESULTS_NONE = "none";
 
 	private static final String TITLE = "Contact Tracker";
 
-	@Parameter
-	private LogService log;
 
 	@Parameter(required = false)
 	private StatusService status;
@@ -81,65 +94,77 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 
 	// The tracking settings: names, help and defaults from the settings descriptor (TrackingSettings); a test pins
 	// every one of these inputs to it.
-	@Parameter(label = "Threshold (grey level)", description = TrackingSettings.HELP_THRESHOLD)
+	@Parameter(validater = "validateInputs", label = "Threshold (grey level)", description = DialogHelp.TIP + TrackingSettings.HELP_THRESHOLD)
 	private double threshold = TrackingSettings.THRESHOLD.defaultValue();
 
-	@Parameter(label = "r_out (px)", min = "0", stepSize = "0.5", description = TrackingSettings.HELP_R_OUT)
+	@Parameter(validater = "validateInputs", label = "r_out (px)", min = "0", stepSize = "0.5", description = DialogHelp.TIP + TrackingSettings.HELP_R_OUT)
 	private double r_out = TrackingSettings.R_OUT.defaultValue();
 
-	@Parameter(label = "Min area (px)", min = "1", description = TrackingSettings.HELP_MIN_AREA)
+	@Parameter(validater = "validateInputs", label = "Min area (px)", min = "1", description = DialogHelp.TIP + TrackingSettings.HELP_MIN_AREA)
 	private int min_area = TrackingSettings.MIN_AREA.defaultValue();
 
-	@Parameter(label = "Min second area (px)", min = "3", description = TrackingSettings.HELP_MIN_SECOND_AREA)
+	@Parameter(validater = "validateInputs", label = "Min second area (px)", min = "3", description = DialogHelp.TIP + TrackingSettings.HELP_MIN_SECOND_AREA)
 	private int min_second_area = TrackingSettings.MIN_SECOND_AREA.defaultValue();
 
-	@Parameter(label = "Connectivity", choices = { "8", "4" }, description = TrackingSettings.HELP_CONNECTIVITY)
+	@Parameter(validater = "validateInputs", label = "Connectivity", choices = { "8", "4" }, description = DialogHelp.TIP + TrackingSettings.HELP_CONNECTIVITY)
 	private String connectivity = String.valueOf(TrackingSettings.CONNECTIVITY.defaultValue());
 
 	// a macro may still pass any text, which is refused with the valid ones when unknown
-	@Parameter(label = "Method", choices = { "first", "paper", "iterative", "deblend", "fit" },
-		description = TrackingSettings.HELP_METHOD)
+	@Parameter(validater = "validateInputs", label = "Method", choices = { "first", "paper", "iterative", "deblend", "fit" },
+		description = DialogHelp.TIP + TrackingSettings.HELP_METHOD)
 	private String method = TrackingSettings.METHOD.defaultValue();
 
-	@Parameter(label = "Particle diameter (px, 0 = not given)", min = "0", stepSize = "0.5",
-		description = TrackingSettings.HELP_DIAMETER)
+	@Parameter(validater = "validateInputs", label = "Particle diameter (px, 0 = not given)", min = "0", stepSize = "0.5",
+		description = DialogHelp.TIP + TrackingSettings.HELP_DIAMETER)
 	private double diameter = TrackingSettings.DIAMETER.defaultValue();
 
-	@Parameter(label = "Channel", min = "1", description = TrackingSettings.HELP_CHANNEL)
+	@Parameter(validater = "validateInputs", label = "Channel", min = "1", description = DialogHelp.TIP + TrackingSettings.HELP_CHANNEL)
 	private int channel = TrackingSettings.CHANNEL.defaultValue();
 
 	// A button, not a setting: optional (a Button), never remembered, not recorded (it holds no value), and Fiji's
 	// macro preprocessor resolves it: it is no macro option, and headless nobody presses it.
 	@Parameter(label = "Measure from the image", callback = "measureFromImage", persist = false,
-		description = "Runs the profile helper on the frame on display (in the channel above) and fills in " +
+		description = DialogHelp.TIP + "Runs the profile helper on the frame on display (in the channel above) and fills in " +
 			"threshold, r_out and the diameter; a diameter above 0 is kept and used")
 	private Button measure;
 
-	@Parameter(label = "Pair cutoff (calibrated units, 0 = none)", min = "0",
-		description = "List the distances of spot pairs of the same frame closer than this in a second table")
+	// Off by default, as in ImageJ's own dialogs: the dialog opens at once and nothing is tracked before the user
+	// asks. Not remembered, so that a slow method chosen last time does not run when the dialog opens.
+	@Parameter(label = "Preview (frame on display)", persist = false, required = false,
+		description = DialogHelp.TIP + "Tracks the frame on display in the background and shows its spots while you edit; " +
+			"typing is never held up, and a newer value replaces a preview still running")
+	private boolean preview = false;
+
+	@Parameter(validater = "validateInputs", label = "Pair cutoff (calibrated units, 0 = none)", min = "0",
+		description = DialogHelp.TIP + "List the distances of spot pairs of the same frame closer than this in a second table")
 	private double pair_cutoff = 0;
 
 	@Parameter(label = "Show overlay")
 	private boolean overlay = true;
 
+	@Parameter(label = "Show r_out circles and second areas",
+		description = DialogHelp.TIP + "Diagnostics on the overlay: each spot's r_out disc around its first-pass centre and the " +
+			"outline of its second active area (the pixels the final centre comes from)")
+	private boolean r_out_circles = false;
+
 	@Parameter(label = "Show table")
 	private boolean table = true;
 
-	@Parameter(label = "Results table gets", choices = { RESULTS_SPOTS, RESULTS_PAIRS, RESULTS_NONE },
-		description = "What goes into ImageJ's Results table, which macros read with nResults and getResult: the " +
+	@Parameter(validater = "validateInputs", label = "Results table gets", choices = { RESULTS_SPOTS, RESULTS_PAIRS, RESULTS_NONE },
+		description = DialogHelp.TIP + "What goes into ImageJ's Results table, which macros read with nResults and getResult: the " +
 			"spots, the pairs (with pair_cutoff > 0) or nothing (the Results table is left alone)")
 	private String results = RESULTS_SPOTS;
 
 	@Parameter(label = "Save spots as CSV", persist = false, required = false, style = FileWidget.SAVE_STYLE,
-		description = "Optional: the spots table as CSV, the same file the command line writes")
+		description = DialogHelp.TIP + "Optional: the spots table as CSV, the same file the command line writes")
 	private File csv;
 
 	@Parameter(label = "Save TrackMate XML", persist = false, required = false, style = FileWidget.SAVE_STYLE,
-		description = "Optional: a TrackMate file with the spots (File > Load a TrackMate file)")
+		description = DialogHelp.TIP + "Optional: a TrackMate file with the spots (File > Load a TrackMate file)")
 	private File trackmate_xml;
 
-	@Parameter(label = "Threads (0 = ImageJ's setting)", min = "0",
-		description = "Frames are localized in parallel on this many threads")
+	@Parameter(validater = "validateInputs", label = "Threads (0 = ImageJ's setting)", min = "0",
+		description = DialogHelp.TIP + "Frames are localized in parallel on this many threads")
 	private int threads = 0;
 
 	@Parameter(label = "Spots", type = ItemIO.OUTPUT)
@@ -148,15 +173,23 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 	@Parameter(label = "Pairs", type = ItemIO.OUTPUT, required = false)
 	private ResultsTable pairs;
 
+
 	/** The image's overlay before the first preview, put back when the dialog is cancelled. */
 	private Overlay beforePreview;
 	private boolean previewShown;
+	/** The latest preview asked for; an older one still computing is abandoned and never shown. */
+	private final AtomicInteger previewGeneration = new AtomicInteger();
+	/** One thread computes previews, off the dialog's event thread: typing is never held up. */
+	private ExecutorService previewer;
+	private Future<?> pendingPreview;
 
 	@Override
 	public void run() {
 		IJ.resetEscape();
+		stopPreviews();
 		clearPreview(false); // a real run replaces the preview's ROIs (or leaves the image alone)
 		try {
+			if (own.problem() != null) throw new InvalidInputException(own.problem());
 			analyse();
 		}
 		catch (final InvalidInputException | IOException e) {
@@ -174,6 +207,9 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 			log.warn(TITLE + ": " + reason);
 			stop(reason);
 		}
+		finally {
+			own.finish();
+		}
 	}
 
 	/** @return the tracking settings of this run, each checked by its descriptor ({@link TrackingSettings}) */
@@ -189,15 +225,52 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 		return settings().parameters();
 	}
 
-	/** Checks every input that does not depend on the image (before SciJava remembers the values). */
-	@Override
-	public void checkInputs() {
-		settings();
-		checkOwnInputs();
+
+	/**
+	 * The validater of every checked input, called by SciJava as each is resolved (after the dialog, or as a macro
+	 * or script gives it) and before the values are remembered: a refused value is noted for {@link #run()} to
+	 * report, and the input is set back to its remembered value (else its default) before SciJava remembers the
+	 * values, so that the next dialog does not open with it.
+	 */
+	private void validateInputs() {
+		for (final Setting<?> s : TrackingSettings.ALL) {
+			try {
+				SettingValues.defaults().withText(s, String.valueOf(input(s)));
+			}
+			catch (final IllegalArgumentException e) {
+				own.refuse(s.name(), e.getMessage(), s.defaultValue());
+			}
+		}
+		try {
+			checkOwnInputs(false);
+		}
+		catch (final InvalidInputException e) {
+			final String name = e.getMessage().substring(0, e.getMessage().indexOf(' '));
+			own.refuse(name, e.getMessage(), name.equals("results") ? RESULTS_SPOTS : 0);
+		}
 	}
 
-	/** Checks what the core does not: the command's own inputs. */
-	private void checkOwnInputs() {
+	/** @return the value of the input of a tracking setting */
+	private Object input(final Setting<?> s) {
+		return switch (s.name()) {
+			case "threshold" -> threshold;
+			case "r_out" -> r_out;
+			case "min_area" -> min_area;
+			case "min_second_area" -> min_second_area;
+			case "connectivity" -> connectivity;
+			case "method" -> method;
+			case "diameter" -> diameter;
+			case "channel" -> channel;
+			default -> throw new IllegalStateException("no input for the setting " + s.name());
+		};
+	}
+
+	/**
+	 * Checks what the core does not: the command's own inputs.
+	 *
+	 * @param together whether to check also how inputs go together (not only each one alone)
+	 */
+	private void checkOwnInputs(final boolean together) {
 		if (pair_cutoff < 0 || !Double.isFinite(pair_cutoff))
 			throw new InvalidInputException("pair_cutoff must be a distance >= 0 (0 = no pair table), not " +
 				pair_cutoff);
@@ -207,7 +280,7 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 		if (!r.equals(RESULTS_SPOTS) && !r.equals(RESULTS_PAIRS) && !r.equals(RESULTS_NONE))
 			throw new InvalidInputException("results must be one of " + RESULTS_SPOTS + ", " + RESULTS_PAIRS + ", " +
 				RESULTS_NONE + ", not '" + results + "'");
-		if (r.equals(RESULTS_PAIRS) && pair_cutoff == 0)
+		if (together && r.equals(RESULTS_PAIRS) && pair_cutoff == 0)
 			throw new InvalidInputException("results=pairs needs pair_cutoff > 0 (the distance up to which pairs are " +
 				"listed)");
 	}
@@ -215,7 +288,7 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 	private void analyse() throws IOException {
 		final SettingValues settings = settings();
 		final TrackerParameters params = settings.parameters();
-		checkOwnInputs();
+		checkOwnInputs(true);
 		final ImagePlusFrames frames = ImagePlusFrames.of(imp, channel);
 		final File csvFile = given(csv), xmlFile = given(trackmate_xml);
 		final Outputs outputs = new Outputs(csvFile == null ? null : csvFile.toPath(), xmlFile == null ? null : xmlFile
@@ -230,13 +303,14 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 			outputs, threads > 0 ? threads : Prefs.getThreads(), overlay, this::progress, cancelled);
 		final List<FrameResult> found = result.frames();
 		final List<Localization> all = result.spots();
-		final TitledResultsTable spotTable = SpotTables.spots(all, frames.calibration());
+		final TitledResultsTable spotTable = SpotTables.spots(all, frames.calibration(), imp.getTitle());
 		final List<PairDistances.Pair> pairList = pair_cutoff > 0 ? PairDistances.within(all, frames.calibration(),
 			pair_cutoff) : null;
-		final TitledResultsTable pairTable = pairList == null ? null : SpotTables.pairs(pairList);
-		if (overlay) SpotOverlay.show(imp, SpotOverlay.rois(found, params.rOut(), SpotOverlay.placer(imp)));
+		final TitledResultsTable pairTable = pairList == null ? null : SpotTables.pairs(pairList, imp.getTitle());
+		if (overlay) SpotOverlay.show(imp, SpotOverlay.rois(found, params.rOut(), r_out_circles, SpotOverlay.placer(
+			imp)));
 
-		// We show the tables ourselves (or not); ShownOutputs keeps SciJava from displaying them again.
+		// We show the tables ourselves (or not); the run marks them resolved so that SciJava does not display them again.
 		spots = spotTable;
 		pairs = pairTable;
 		final ResultsTable system = switch (results.trim()) {
@@ -250,43 +324,109 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 			// refresh an open Results window; none is opened, the named tables show the same
 			if (system != null && WindowManager.getWindow("Results") != null) system.show("Results");
 		}
-		final String summary = TITLE + ": " + result.summary(imp.getTitle());
+		// short lines: ImageJ's Log window cuts long ones
+		final List<String> lines = new java.util.ArrayList<>(result.summaryLines(imp.getTitle()));
+		lines.set(0, TITLE + ": " + lines.get(0));
+		final String unit = frames.calibration().unit();
+		lines.add("  positions, RADIUS, SIGMA in " + (unit == null || unit.isEmpty() ? "pixels" : unit) + "; r_out " +
+			"and areas in pixels");
+		if (overlay) lines.addAll(SpotOverlay.legend(r_out_circles));
+		final String summary = String.join("\n", lines);
 		log.info(summary);
 		// the Log window (standard output headless): where ImageJ users and batch macros see results
 		IJ.log(summary);
 		if (status != null) {
 			status.showProgress(count, count);
-			status.showStatus(summary);
+			status.showStatus(lines.get(0));
 		}
 		MacroFailure.succeeded();
 	}
 
 	/**
-	 * Shows the spots and {@code r_out} discs of the current frame as the dialog's values change (called by
-	 * Fiji's dialog). Invalid values show nothing new; {@link #cancel()} puts the overlay back as it was.
+	 * Shows the spots and {@code r_out} discs of the frame on display as the dialog's values change (called by
+	 * Fiji's dialog, also once when it opens), when the Preview box is ticked; unticking it takes the preview
+	 * off. The frame is tracked on a background thread and this returns at once: the dialog never waits for it. A
+	 * newer call abandons a preview still computing (its spots are never shown). Invalid values show nothing new;
+	 * {@link #cancel()} puts the overlay back as it was.
 	 */
 	@Override
 	public void preview() {
+		final int generation = previewGeneration.incrementAndGet();
 		if (imp == null) return;
+		if (!preview) {
+			synchronized (this) {
+				clearPreview(true);
+			}
+			return;
+		}
+		final SettingValues settings;
+		final ImagePlusFrames frames;
 		try {
-			final SettingValues settings = settings();
-			final ImagePlusFrames frames = ImagePlusFrames.of(imp, channel);
-			final int t = ImagePlusFrames.shownFrame(imp);
-			// the shown frame alone, through the same pipeline as a run (no file, no data-range pass over the stack)
-			final FrameResult r = new TrackingPipeline(settings).run(FrameSource.of(frames, imp.getTitle()).only(t), true)
-				.frames().get(0);
-			final TrackerParameters params = settings.parameters();
+			// the values are read here, on the dialog's thread, as they are now
+			settings = settings();
+			frames = ImagePlusFrames.of(imp, channel);
+		}
+		catch (final RuntimeException e) {
+			// while values are being typed they are often invalid: say why, keep the last preview
+			if (status != null) status.showStatus(TITLE + " preview: " + e.getMessage());
+			return;
+		}
+		final int t = ImagePlusFrames.shownFrame(imp);
+		if (status != null) status.showStatus(TITLE + " preview: tracking frame " + (t + 1) + "...");
+		synchronized (this) {
+			if (previewer == null) previewer = Executors.newSingleThreadExecutor(r -> {
+				final Thread thread = new Thread(r, TITLE + " preview");
+				thread.setDaemon(true);
+				return thread;
+			});
+			pendingPreview = previewer.submit(() -> previewFrame(generation, settings, frames, t));
+		}
+	}
+
+	/** Tracks frame {@code t} and shows it, unless a newer preview (or the run, or Cancel) came meanwhile. */
+	private void previewFrame(final int generation, final SettingValues settings, final ImagePlusFrames frames,
+		final int t)
+	{
+		if (generation != previewGeneration.get()) return; // superseded before it started
+		final FrameResult r;
+		try {
+			// the frame alone, through the same pipeline as a run (no file, no data-range pass over the stack)
+			r = new TrackingPipeline(settings).run(FrameSource.of(frames, imp.getTitle()).only(t), Outputs.NONE, 1, true,
+				null, () -> generation != previewGeneration.get()).frames().get(0);
+		}
+		catch (final RuntimeException | IOException e) {
+			if (generation == previewGeneration.get() && status != null) status.showStatus(TITLE + " preview: " + e
+				.getMessage());
+			return;
+		}
+		synchronized (this) {
+			if (generation != previewGeneration.get()) return;
 			if (!previewShown) {
 				beforePreview = imp.getOverlay() == null ? null : imp.getOverlay().duplicate();
 				previewShown = true;
 			}
 			final SpotOverlay.FramePlacer placer = SpotOverlay.placer(imp);
-			SpotOverlay.show(imp, SpotOverlay.rois(List.of(r), params.rOut(), (roi, frame) -> placer.place(roi, t)));
-			if (status != null) status.showStatus(TITLE + " preview: " + r.spots().size() + " spots on this frame");
+			SpotOverlay.show(imp, SpotOverlay.rois(List.of(r), settings.parameters().rOut(), r_out_circles, (roi,
+				frame) -> placer.place(roi, t)));
 		}
-		catch (final RuntimeException e) {
-			// while values are being typed they are often invalid: say why, keep the last preview
-			if (status != null) status.showStatus(TITLE + " preview: " + e.getMessage());
+		if (status != null) status.showStatus(TITLE + " preview: " + r.spots().size() + " spots on frame " + (t + 1));
+	}
+
+	/** Waits for the preview asked for last (for tests and scripts); returns at once when none is pending. */
+	void awaitPreview() throws InterruptedException, ExecutionException {
+		final Future<?> f;
+		synchronized (this) {
+			f = pendingPreview;
+		}
+		if (f != null) f.get();
+	}
+
+	/** Abandons any preview still computing and ends the preview thread. */
+	private void stopPreviews() {
+		previewGeneration.incrementAndGet();
+		synchronized (this) {
+			if (previewer != null) previewer.shutdown();
+			previewer = null;
 		}
 	}
 
@@ -319,11 +459,14 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 	/** Takes the preview off the image: the dialog was cancelled. */
 	@Override
 	public void cancel() {
-		clearPreview(true);
+		stopPreviews();
+		synchronized (this) {
+			clearPreview(true);
+		}
 	}
 
 	/** @param restore whether to put back the overlay as it was before the preview (else it is left to the run) */
-	private void clearPreview(final boolean restore) {
+	private synchronized void clearPreview(final boolean restore) {
 		if (!previewShown) return;
 		previewShown = false;
 		if (restore) imp.setOverlay(beforePreview);
@@ -370,4 +513,5 @@ public class ContactTrackerCommand extends ContextCommand implements Previewable
 				.frameCount());
 		return new ImageSource("", "", frames.width(), frames.height(), 1, frames.frameCount());
 	}
+
 }

@@ -9,8 +9,6 @@ import java.util.Map;
 
 import org.scijava.ItemIO;
 import org.scijava.command.Command;
-import org.scijava.command.ContextCommand;
-import org.scijava.log.LogService;
 import org.scijava.plugin.Parameter;
 import org.scijava.plugin.Plugin;
 import org.scijava.widget.FileWidget;
@@ -29,66 +27,83 @@ import io.github.contacttracker.potential.SpotSet;
  * <i>Plugins &gt; Tracking &gt; Contact Tracker Pair Potential</i>: g(r) and U(r)/kT from a spots table, shown as
  * a plot with error bars and a table of values (the command line's {@code potential}, same numbers).
  * <p>
- * The spots come from, in this order: the {@code spots} input (a results table, for scripts), the {@code csv}
- * file (ours or TrackMate's spot export), or the open table titled {@code table} (by default Contact Tracker's
- * spots table; a CSV file opened in Fiji works too). Macro: {@code run("Contact Tracker Pair Potential",
- * "bin=0.05 r_max=10 zero_from=8 zero_to=10");}. Bad input cancels the command with a one-line reason.
+ * The spots come from the {@code csv} file (ours or TrackMate's spot export) when one is given, else from the
+ * open table titled {@code table} (by default ImageJ's Results table, which Contact Tracker fills with the spots;
+ * Contact Tracker's own spots table or a CSV file opened in Fiji work too). The table is named by its title, not
+ * taken as a {@code ResultsTable} input: Fiji fills a command's single {@code ResultsTable} input with the Results
+ * table itself, which would win over {@code csv=} and {@code table=}. Macro:
+ * {@code run("Contact Tracker Pair Potential", "bin=0.05 r_max=10 zero_from=8 zero_to=10");}; {@code bin=0} and
+ * {@code r_max=0} (the defaults) choose both from the field of view. The values go to ImageJ's Results table too
+ * (for {@code nResults} and {@code getResult}) unless {@code results=false}. Bad input cancels the command with a
+ * one-line reason and stops a calling macro ({@link MacroFailure}); the values are remembered for the next dialog,
+ * but a macro's left-out keys take the defaults ({@link MacroInputs}).
  */
 @Plugin(type = Command.class, menuPath = "Plugins>Tracking>Contact Tracker Pair Potential", headless = true,
 	label = "Contact Tracker Pair Potential", description = "Pair distribution g(r) and pair potential U(r) from " +
-		"a spots table")
-public class ContactTrackerPotentialCommand extends ContextCommand {
+		"a spots table", initializer = "macroInputs")
+public class ContactTrackerPotentialCommand extends OwnCommand {
+
+	/** A new command (SciJava makes one per run). */
+	public ContactTrackerPotentialCommand() {
+		super("g(r) and U(r)/kT from tracked spots: a CSV file, or an open table", DialogHelp.POTENTIAL_PAGE);
+	}
+
 
 	/** Title of the table of values. */
 	public static final String TABLE_TITLE = "Contact Tracker pair potential";
+	/** Title of ImageJ's system results table, which macros read and Contact Tracker fills with its spots. */
+	public static final String RESULTS = "Results";
+	/** Bins that {@code bin=0} gives over {@code r_max}. */
+	static final int AUTO_BINS = 50;
 	/** Title of the plot. */
 	public static final String PLOT_TITLE = "Contact Tracker Pair Potential";
 
-	@Parameter
-	private LogService log;
 
-	@Parameter(label = "Spots table (title)", persist = false, required = false,
-		description = "Title of an open table of spots (columns POSITION_X, POSITION_Y, FRAME, FLAG_...)")
-	private String table = SpotTables.SPOTS_TITLE;
+	@Parameter(label = "Spots table (title)", required = false,
+		description = DialogHelp.TIP + "Title of an open table of spots (columns POSITION_X, POSITION_Y, FRAME, FLAG_...): " +
+			"'Results' (ImageJ's, filled by Contact Tracker), a Contact Tracker spots table, or a CSV opened in Fiji")
+	private String table = RESULTS;
 
 	@Parameter(label = "Or a spots CSV file", persist = false, required = false, style = FileWidget.OPEN_STYLE,
-		description = "Optional: read the spots from this CSV (ours, or TrackMate's spot export) instead")
+		description = DialogHelp.TIP + "Optional: read the spots from this CSV (ours, or TrackMate's spot export) instead of the table")
 	private File csv;
 
-	@Parameter(label = "Bin width (spots' units)", persist = false, min = "0",
-		description = "Width of the distance bins, in the units of the spots' positions")
+	@Parameter(validater = "validateInputs", label = "Bin width (spots' units, 0 = r_max / 50)", min = "0",
+		description = DialogHelp.TIP + "Width of the distance bins, in the units of the spots' positions; 0 gives 50 bins")
 	private double bin = 0;
 
-	@Parameter(label = "r_max (spots' units)", persist = false, min = "0",
-		description = "Largest distance; at most the smaller side of the field of view")
+	@Parameter(validater = "validateInputs", label = "r_max (spots' units, 0 = half the field)", min = "0",
+		description = DialogHelp.TIP + "Largest distance; at most the smaller side of the field of view; 0 takes half of it")
 	private double r_max = 0;
 
-	@Parameter(label = "Field width (0 = infer from spots)", persist = false, min = "0")
+	@Parameter(validater = "validateInputs", label = "Field width (0 = infer from spots)", min = "0")
 	private double width = 0;
 
-	@Parameter(label = "Field height (0 = infer from spots)", persist = false, min = "0")
+	@Parameter(validater = "validateInputs", label = "Field height (0 = infer from spots)", min = "0")
 	private double height = 0;
 
-	@Parameter(label = "Start frame", persist = false, min = "0",
-		description = "Spots of earlier frames are left out (0-based, as the FRAME column)")
+	@Parameter(validater = "validateInputs", label = "Start frame", min = "0",
+		description = DialogHelp.TIP + "Spots of earlier frames are left out (0-based, as the FRAME column)")
 	private int start_frame = 0;
 
-	@Parameter(label = "Leave out flagged spots", persist = false,
-		description = "Spots with a warning flag (every FLAG_ column but FLAG_SECOND_PASS) are left out")
+	@Parameter(label = "Leave out flagged spots",
+		description = DialogHelp.TIP + "Spots with a warning flag (every FLAG_ column but FLAG_SECOND_PASS) are left out")
 	private boolean skip_flagged = true;
 
-	@Parameter(label = "U = 0 from r", persist = false, min = "0",
-		description = "With 'to r', sets U to 0 on average over this range (both 0: U = -ln g)")
+	@Parameter(validater = "validateInputs", label = "U = 0 from r", min = "0",
+		description = DialogHelp.TIP + "With 'to r', sets U to 0 on average over this range (both 0: U = -ln g)")
 	private double zero_from = 0;
 
-	@Parameter(label = "U = 0 to r", persist = false, min = "0")
+	@Parameter(validater = "validateInputs", label = "U = 0 to r", min = "0")
 	private double zero_to = 0;
 
-	@Parameter(label = "Show plot and table", persist = false)
+	@Parameter(label = "Show plot and table")
 	private boolean show = true;
 
-	@Parameter(label = "Spots (for scripts)", persist = false, required = false)
-	private ResultsTable spots;
+	@Parameter(label = "Results table gets the values",
+		description = DialogHelp.TIP + "Puts R, PAIRS, G, U_KT, U_KT_ERR into ImageJ's Results table, which macros read with " +
+			"nResults and getResult (it replaces the spots there)")
+	private boolean results = true;
 
 	@Parameter(label = "Pair potential", type = ItemIO.OUTPUT)
 	private ResultsTable potential;
@@ -96,37 +111,56 @@ public class ContactTrackerPotentialCommand extends ContextCommand {
 	@Parameter(label = "Plot", type = ItemIO.OUTPUT)
 	private Plot plot;
 
+
 	@Override
 	public void run() {
 		try {
+			if (own.problem() != null) throw new InvalidInputException(own.problem());
 			analyse();
+			MacroFailure.succeeded();
 		}
 		catch (final InvalidInputException | IOException e) {
 			log.error(PLOT_TITLE + ": " + e.getMessage());
 			cancel(e.getMessage());
+			MacroFailure.report(PLOT_TITLE, null, e.getMessage());
+		}
+		finally {
+			own.finish();
+		}
+	}
+
+
+	/**
+	 * The validater of the numeric inputs, as SciJava resolves them: a negative or non-finite value is noted for
+	 * {@link #run()} and not remembered.
+	 */
+	private void validateInputs() {
+		final Object[][] numbers = { { "bin", bin }, { "r_max", r_max }, { "width", width }, { "height", height }, {
+			"start_frame", (double) start_frame }, { "zero_from", zero_from }, { "zero_to", zero_to } };
+		for (final Object[] n : numbers) {
+			final double v = (Double) n[1];
+			if (!(v >= 0) || !Double.isFinite(v)) own.refuse((String) n[0], n[0] +
+				" must be a number >= 0, not " + v, 0);
 		}
 	}
 
 	private void analyse() throws IOException {
-		if (!(bin > 0)) throw new InvalidInputException("bin must be a positive width");
 		if ((width > 0) != (height > 0))
 			throw new InvalidInputException("give both the field's width and height, or neither (0: inferred)");
 		String unit = "";
 		final Map<String, double[]> columns;
 		final String source;
-		if (spots != null) {
-			columns = columns(spots);
-			source = "spots table";
-		}
-		else if (csv != null) {
+		if (csv != null && !csv.getPath().isBlank()) {
 			final SpotTableCsv.Table t = SpotTableCsv.read(csv.toPath(), SpotSet::reads);
 			columns = t.columns();
 			unit = t.unit();
 			source = csv.getName();
 		}
 		else {
-			final String title = table == null || table.isBlank() ? SpotTables.SPOTS_TITLE : table;
-			final ResultsTable rt = ResultsTable.getResultsTable(title);
+			final String title = table == null || table.isBlank() ? RESULTS : table.trim();
+			// the Results table has no window headless (nor before it is shown): ImageJ keeps it in a static
+			final ResultsTable rt = title.equals(RESULTS) ? ResultsTable.getResultsTable() : ResultsTable
+				.getResultsTable(title);
 			if (rt == null) throw new InvalidInputException("no open table titled '" + title + "': track first, open " +
 				"a spots CSV, or give the csv file");
 			columns = columns(rt);
@@ -142,7 +176,10 @@ public class ContactTrackerPotentialCommand extends ContextCommand {
 		if (set.size() == 0) throw new InvalidInputException(source + ": no spot left");
 		final FieldOfView field = width > 0 ? FieldOfView.of(width, height) : FieldOfView.inferred(set.allX(), set
 			.allY());
-		PairCorrelation.Result r = PairCorrelation.compute(set, field, bin, r_max);
+		// 0 = chosen from the field: half its smaller side (the edge correction holds up to all of it), 50 bins
+		final double rMax = r_max > 0 ? r_max : field.maxDistance() / 2;
+		final double width = bin > 0 ? bin : rMax / AUTO_BINS;
+		PairCorrelation.Result r = PairCorrelation.compute(set, field, width, rMax);
 		if (zero_from > 0 || zero_to > 0) r = r.withZero(zero_from, zero_to);
 		potential = PotentialColumns.table(r, TABLE_TITLE);
 		plot = PotentialPlots.potential(r, PLOT_TITLE + ": " + source, unit.isEmpty() ? "spots' units" : unit);
@@ -151,11 +188,19 @@ public class ContactTrackerPotentialCommand extends ContextCommand {
 			b.append("\n  ").append(line);
 		final String warning = PotentialReport.fieldWarning(set, field);
 		if (warning != null) b.append("\n  warning: ").append(warning);
+		if (bin == 0 || r_max == 0) b.append(String.format(java.util.Locale.ROOT, "%n  bin %s, r_max %s (chosen from " +
+			"the field of view)", num(width), num(rMax)));
 		IJ.log(b.toString());
+		if (results) PotentialColumns.fill(ResultsTable.getResultsTable(), r);
 		if (show && !GraphicsEnvironment.isHeadless()) {
 			((TitledResultsTable) potential).show();
 			plot.show();
 		}
+	}
+
+	private static String num(final double v) {
+		return new java.math.BigDecimal(String.format(java.util.Locale.ROOT, "%.6g", v)).stripTrailingZeros()
+			.toPlainString();
 	}
 
 	/**
@@ -178,4 +223,5 @@ public class ContactTrackerPotentialCommand extends ContextCommand {
 		}
 		return out;
 	}
+
 }

@@ -3,12 +3,13 @@ package io.github.contacttracker.command;
 import io.github.contacttracker.core.InvalidInputException;
 import java.awt.GraphicsEnvironment;
 import java.awt.Point;
+import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 
 import org.scijava.ItemIO;
 import org.scijava.command.Command;
-import org.scijava.command.ContextCommand;
-import org.scijava.log.LogService;
 import org.scijava.plugin.Parameter;
 import org.scijava.plugin.Plugin;
 
@@ -17,6 +18,7 @@ import ij.ImagePlus;
 import ij.gui.Plot;
 import ij.gui.PointRoi;
 import ij.gui.Roi;
+import ij.measure.ResultsTable;
 import io.github.contacttracker.core.ProfileAnalysis;
 import io.github.contacttracker.io.ProfilePlots;
 import io.github.contacttracker.io.ShownFrameProfile;
@@ -29,32 +31,48 @@ import io.github.contacttracker.io.ShownFrameProfile;
  * <p>
  * The profile is taken in the channel and frame on display. Suggestions are rounded up: {@code r_out} to whole
  * pixels, the threshold to a whole grey level for 8- and 16-bit images. They are also outputs, for scripts (the
- * command prints and plots them itself; {@link ShownOutputs} keeps SciJava from displaying them again).
+ * command prints and plots them itself, and keeps SciJava from displaying them again). A macro reads them from
+ * ImageJ's Results table, one row ({@link #RESULT_COLUMNS}), with {@code getResult("THRESHOLD", 0)} and so on;
+ * {@code results=false} leaves the Results table alone.
  */
 @Plugin(type = Command.class, menuPath = "Plugins>Tracking>Contact Tracker Profile", headless = true,
 	label = "Contact Tracker Profile", description = "Radial profile of one particle and suggested threshold and " +
-		"r_out for Contact Tracker")
-public class ContactTrackerProfileCommand extends ContextCommand {
+		"r_out for Contact Tracker", initializer = "macroInputs")
+public class ContactTrackerProfileCommand extends OwnCommand {
+
+	/** A new command (SciJava makes one per run). */
+	public ContactTrackerProfileCommand() {
+		super("First click on an isolated particle with the point tool: its profile suggests threshold and r_out", DialogHelp.PROFILE_PAGE);
+	}
+
+
+	/** The columns of the row the command puts into ImageJ's Results table, for macros. */
+	public static final List<String> RESULT_COLUMNS = List.of("THRESHOLD", "R_OUT", "DIAMETER", "BACKGROUND",
+		"NOISE", "X", "Y", "FRAME");
 
 	/** Title of the plot window (followed by the image title). */
 	public static final String PLOT_TITLE = "Contact Tracker Profile";
-	@Parameter
-	private LogService log;
 
 	@Parameter(label = "Image", persist = false)
 	private ImagePlus imp;
 
-	@Parameter(label = "Particle diameter (px, 0 = estimate)", min = "0",
-		description = "The centre distance of two particles at contact, in pixels; 0 estimates it from the " +
+	@Parameter(validater = "validateInputs", label = "Particle diameter (px, 0 = estimate)", min = "0",
+		description = DialogHelp.TIP + "The centre distance of two particles at contact, in pixels; 0 estimates it from the " +
 			"particles' nearest-neighbour distances")
 	private double diameter = 0;
 
-	@Parameter(label = "Max radius (px, 0 = 2.5 diameters)", min = "0",
-		description = "How far out the profile is measured; its outer 20% give the background")
+	@Parameter(validater = "validateInputs", label = "Max radius (px, 0 = 2.5 diameters)", min = "0",
+		description = DialogHelp.TIP + "How far out the profile is measured; its outer 20% give the background")
 	private double max_radius = 0;
 
 	@Parameter(label = "Show plot")
 	private boolean plot = true;
+
+	@Parameter(label = "Results table gets the suggestion",
+		description = DialogHelp.TIP + "Puts one row (THRESHOLD, R_OUT, DIAMETER, BACKGROUND, NOISE, X, Y, FRAME) into ImageJ's " +
+			"Results table, which macros read with getResult (it replaces what the table held)")
+	private boolean results = true;
+
 
 	@Parameter(label = "Suggested threshold", type = ItemIO.OUTPUT)
 	private double suggested_threshold;
@@ -80,13 +98,25 @@ public class ContactTrackerProfileCommand extends ContextCommand {
 	@Override
 	public void run() {
 		try {
+			if (own.problem() != null) throw new InvalidInputException(own.problem());
 			analyse();
+			MacroFailure.succeeded();
 		}
 		catch (final InvalidInputException e) {
 			log.error(PLOT_TITLE + ": " + e.getMessage());
 			cancel(e.getMessage());
 			MacroFailure.report(PLOT_TITLE, imp == null ? null : imp.getTitle(), e.getMessage());
 		}
+		finally {
+			own.finish();
+		}
+	}
+
+
+	/** The validater of the lengths: a negative or non-finite one is noted for {@link #run()}, not remembered. */
+	private void validateInputs() {
+		if (!(diameter >= 0) || !Double.isFinite(diameter)) own.refuse("diameter", "diameter must be a number of pixels >= 0 (0 = estimate), not " + diameter, 0);
+		if (!(max_radius >= 0) || !Double.isFinite(max_radius)) own.refuse("max_radius", "max_radius must be a number of pixels >= 0 (0 = 2.5 diameters), not " + max_radius, 0);
 	}
 
 	private void analyse() {
@@ -103,6 +133,7 @@ public class ContactTrackerProfileCommand extends ContextCommand {
 		centre_y = r.y();
 		profile = ProfilePlots.plot(r, PLOT_TITLE + ": " + imp.getTitle(), suggested_threshold, suggested_r_out);
 		report(p, point);
+		if (results) toResultsTable(p);
 		if (plot && !GraphicsEnvironment.isHeadless()) profile.show();
 	}
 
@@ -138,8 +169,22 @@ public class ContactTrackerProfileCommand extends ContextCommand {
 		IJ.log(b.toString());
 	}
 
+	/** One row in ImageJ's Results table: what a macro reads with {@code getResult("THRESHOLD", 0)}. */
+	private void toResultsTable(final ShownFrameProfile p) {
+		final ResultsTable rt = ResultsTable.getResultsTable();
+		rt.reset();
+		rt.incrementCounter();
+		final double[] values = { suggested_threshold, suggested_r_out, p.diameter(), background, noise, centre_x,
+			centre_y, p.frame() };
+		for (int i = 0; i < values.length; i++)
+			rt.addValue(RESULT_COLUMNS.get(i), values[i]);
+		rt.setDecimalPlaces(rt.getColumnIndex("FRAME"), 0);
+		if (!GraphicsEnvironment.isHeadless() && ij.WindowManager.getWindow("Results") != null) rt.show("Results");
+	}
+
 	private static String fmt(final double v) {
 		return v == Math.rint(v) && Math.abs(v) < 1e15 ? Long.toString((long) v) : String.format(Locale.ROOT, "%.3f",
 			v);
 	}
+
 }

@@ -1,5 +1,6 @@
 package io.github.contacttracker.command;
 
+import ij.measure.ResultsTable;
 import io.github.contacttracker.potential.PairCorrelation;
 
 /** The table of values the pair-potential command shows. */
@@ -11,6 +12,17 @@ final class PotentialColumns {
 	static TitledResultsTable table(final PairCorrelation.Result r, final String title) {
 		final TitledResultsTable rt = new TitledResultsTable(title);
 		rt.showRowNumbers(false);
+		fill(rt, r);
+		return rt;
+	}
+
+	/**
+	 * Replaces the content of {@code rt} (e.g. ImageJ's Results table, which macros read) with the values.
+	 *
+	 * @return {@code rt}
+	 */
+	static ResultsTable fill(final ResultsTable rt, final PairCorrelation.Result r) {
+		rt.reset();
 		rt.setNaNEmptyCells(true);
 		for (int i = 0; i < r.bins().size(); i++) {
 			final PairCorrelation.Bin b = r.bins().get(i);

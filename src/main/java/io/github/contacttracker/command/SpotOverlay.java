@@ -5,7 +5,9 @@ import java.awt.Rectangle;
 import java.awt.geom.Area;
 import java.awt.geom.Path2D;
 import java.util.ArrayList;
+import java.util.EnumMap;
 import java.util.List;
+import java.util.Map;
 import java.util.StringJoiner;
 
 import ij.ImagePlus;
@@ -19,12 +21,16 @@ import io.github.contacttracker.core.FrameResult;
 import io.github.contacttracker.core.Localization;
 import io.github.contacttracker.core.Region;
 import io.github.contacttracker.io.OverlayPng;
+import io.github.contacttracker.io.ShownFrameProfile;
 
 /**
- * The ROIs Contact Tracker draws on an image, in the colours of {@link OverlayPng} so that one scheme serves
- * both: per spot, the {@code r_out} disc around the first-pass centre (cyan; magenta and thicker when the spot
- * is flagged), the second active area's outline (green, 1.5 px), the final centre (red cross) and, drawn over
- * it, the first-pass centre (yellow dot). Each ROI sits on its frame.
+ * The ROIs Contact Tracker draws on an image: per spot, the particle's outline (a circle of the spot's
+ * {@code RADIUS} around its centre: cyan, or thicker in its flag's colour when the spot is flagged,
+ * {@link #flagColor}), the final centre (red cross) and, drawn over it, the first-pass centre (yellow dot). For
+ * diagnostics, on request, the {@code r_out} disc around the first-pass centre (grey-blue) and the second active
+ * area's outline (green, 1.5 px): they showed how the method works, but a clipped crescent at contact read as a
+ * failed detection and overlapping large discs cluttered the image. The centres' colours are {@link OverlayPng}'s.
+ * Each ROI sits on its frame; {@link #legend} says what the colours mean.
  * <p>
  * Coordinates: spots are in TrackMate's convention (pixel (0,0)'s centre at 0,0); ImageJ puts pixel (0,0)'s
  * centre at 0.5,0.5, so centres and discs are drawn at {@code position + 0.5}. The outline follows pixel edges.
@@ -46,9 +52,11 @@ public final class SpotOverlay {
 
 	/** What a ROI shows. */
 	public enum Kind {
-		/** The {@code r_out} disc around the first-pass centre. */
-		DISC("disc", OverlayPng.DISC),
-		/** The outline of the second active area. */
+		/** The particle: a circle of the spot's {@code RADIUS} around the final centre. */
+		PARTICLE("particle", OverlayPng.DISC),
+		/** The {@code r_out} disc around the first-pass centre (diagnostics). */
+		DISC("r_out disc", new Color(120, 150, 200)),
+		/** The outline of the second active area (diagnostics). */
 		SECOND_AREA("second area", OverlayPng.SECOND_AREA),
 		/** The first-pass centre, a small dot. */
 		FIRST_PASS("first pass", OverlayPng.FIRST_PASS),
@@ -68,7 +76,7 @@ public final class SpotOverlay {
 			return label;
 		}
 
-		/** @return the colour (a flagged spot's disc is {@link OverlayPng#FLAGGED} instead) */
+		/** @return the colour (a flagged spot's particle circle has its flag's colour instead, {@link #flagColor}) */
 		public Color color() {
 			return color;
 		}
@@ -80,7 +88,47 @@ public final class SpotOverlay {
 		void place(Roi roi, int frame);
 	}
 
+	/** The warning flags in the order their colour wins when a spot has several. */
+	private static final List<Flag> FLAG_ORDER = List.of(Flag.MERGED, Flag.NOT_CONVERGED, Flag.FELL_BACK,
+		Flag.DEGENERATE, Flag.UNMODELLED_NEIGHBOUR, Flag.AT_BORDER);
+	private static final Map<Flag, Color> FLAG_COLORS = new EnumMap<>(Map.of(Flag.MERGED, OverlayPng.FLAGGED,
+		Flag.NOT_CONVERGED, new Color(0, 140, 255), Flag.FELL_BACK, Color.WHITE, Flag.DEGENERATE, new Color(255, 130,
+			170), Flag.UNMODELLED_NEIGHBOUR, new Color(160, 90, 255), Flag.AT_BORDER, Color.ORANGE));
+	private static final Map<Flag, String> COLOR_NAMES = Map.of(Flag.MERGED, "magenta", Flag.NOT_CONVERGED, "blue",
+		Flag.FELL_BACK, "white", Flag.DEGENERATE, "pink", Flag.UNMODELLED_NEIGHBOUR, "purple", Flag.AT_BORDER,
+		"orange");
+
 	private SpotOverlay() {}
+
+	/**
+	 * @return the colour of a flagged spot's particle circle: its first warning flag's in the order merged, not
+	 *         converged, fell back, degenerate, neighbour not modelled, at border; {@link OverlayPng#DISC} (cyan) when none
+	 */
+	public static Color flagColor(final Localization s) {
+		for (final Flag f : FLAG_ORDER)
+			if (s.has(f)) return FLAG_COLORS.get(f);
+		return OverlayPng.DISC;
+	}
+
+	/**
+	 * @param diagnostics whether the r_out discs and second areas are drawn
+	 * @return short lines for the Log: what each colour means
+	 */
+	public static List<String> legend(final boolean diagnostics) {
+		final List<String> items = new ArrayList<>();
+		items.add("  overlay: cyan circle = particle (RADIUS), red cross = centre, yellow dot = first-pass centre");
+		final StringJoiner flags = new StringJoiner(", ", "  flagged (thicker circle): ", "");
+		for (final Flag f : FLAG_ORDER)
+			flags.add(COLOR_NAMES.get(f) + " = " + f.description());
+		items.add(flags.toString());
+		if (diagnostics) items.add("  grey-blue circle = r_out around the first-pass centre, green = second active " +
+			"area");
+		// ImageJ's Log window cuts (or, narrower, wraps word by word) long lines
+		final List<String> lines = new ArrayList<>();
+		for (final String item : items)
+			lines.addAll(List.of(ShownFrameProfile.wrap(item, ShownFrameProfile.LOG_WIDTH, "    ").split("\n")));
+		return lines;
+	}
 
 	/**
 	 * How ROIs are put on frames of {@code imp}, frames counted as {@code ImagePlusFrames} counts them (time
@@ -100,10 +148,13 @@ public final class SpotOverlay {
 	/**
 	 * @param results one result per frame, in frame order
 	 * @param rOut the {@code r_out} used (px)
+	 * @param diagnostics whether to draw the r_out discs and the second active areas too
 	 * @param placer puts each ROI on its frame
 	 * @return the ROIs, spot by spot (IDs counted over all frames, as in the spots table)
 	 */
-	public static List<Roi> rois(final List<FrameResult> results, final double rOut, final FramePlacer placer) {
+	public static List<Roi> rois(final List<FrameResult> results, final double rOut, final boolean diagnostics,
+		final FramePlacer placer)
+	{
 		final List<Roi> rois = new ArrayList<>();
 		int id = 0;
 		for (final FrameResult r : results) {
@@ -113,13 +164,18 @@ public final class SpotOverlay {
 				final String name = "spot " + id;
 				final String flags = flagText(s);
 
-				final Roi disc = new OvalRoi(s.firstX() + 0.5 - rOut, s.firstY() + 0.5 - rOut, 2 * rOut, 2 * rOut);
-				add(rois, disc, Kind.DISC, id, name + " " + Kind.DISC.label() + flags, s, placer);
+				final double radius = s.radius();
+				final Roi particle = new OvalRoi(s.x() + 0.5 - radius, s.y() + 0.5 - radius, 2 * radius, 2 * radius);
+				add(rois, particle, Kind.PARTICLE, id, name + " " + Kind.PARTICLE.label() + flags, s, placer);
 				if (s.isFlagged()) {
-					disc.setStrokeColor(OverlayPng.FLAGGED);
-					disc.setStrokeWidth(FLAGGED_STROKE);
+					particle.setStrokeColor(flagColor(s));
+					particle.setStrokeWidth(FLAGGED_STROKE);
 				}
-				if (k < r.secondAreas().size() && r.secondAreas().get(k).area() > 0) {
+				if (diagnostics) {
+					final Roi disc = new OvalRoi(s.firstX() + 0.5 - rOut, s.firstY() + 0.5 - rOut, 2 * rOut, 2 * rOut);
+					add(rois, disc, Kind.DISC, id, name + " " + Kind.DISC.label(), s, placer);
+				}
+				if (diagnostics && k < r.secondAreas().size() && r.secondAreas().get(k).area() > 0) {
 					final Roi outline = outline(r.secondAreas().get(k));
 					// a 1 px line is lost on a saturated core: a wider one stays visible
 					outline.setStrokeWidth(OUTLINE_STROKE);

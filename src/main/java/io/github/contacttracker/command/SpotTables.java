@@ -2,8 +2,10 @@ package io.github.contacttracker.command;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.StringJoiner;
 
 import ij.measure.ResultsTable;
+import io.github.contacttracker.core.Flag;
 import io.github.contacttracker.core.Localization;
 import io.github.contacttracker.io.Calibration;
 import io.github.contacttracker.io.SpotColumn;
@@ -19,8 +21,10 @@ import io.github.contacttracker.io.SpotColumn;
  */
 public final class SpotTables {
 
-	/** Title of the spots table. */
+	/** Title of the spots table, followed by {@code ": "} and the image's title: one table per image. */
 	public static final String SPOTS_TITLE = "Contact Tracker spots";
+	/** The readable flags column: the warning flags' names, "-" for none (the 0/1 columns stay for macros). */
+	public static final String FLAGS = "FLAGS";
 	/** Title of the pair-distance table. */
 	public static final String PAIRS_TITLE = "Contact Tracker pairs";
 
@@ -28,17 +32,19 @@ public final class SpotTables {
 	static final int DECIMALS = 4;
 
 	/**
-	 * The spots table's columns, left to right: what a user reads first (which spot, where, how precisely, whether
-	 * to trust it), then the rest. Every {@link SpotColumn} appears once.
+	 * The spots table's columns, left to right: what a user reads first (which spot, where, how big and bright,
+	 * how precisely), then the readable {@link #FLAGS} column (after {@link #FLAGS_AFTER}), then the 0/1 flags and
+	 * the rest. Every {@link SpotColumn} appears once.
 	 */
 	public static final List<SpotColumn> DISPLAY_ORDER = List.of(SpotColumn.ID, SpotColumn.FRAME,
-		SpotColumn.POSITION_X, SpotColumn.POSITION_Y, SpotColumn.SIGMA_X, SpotColumn.SIGMA_Y,
-		SpotColumn.FLAG_FELL_BACK, SpotColumn.FLAG_DEGENERATE, SpotColumn.FLAG_AT_BORDER, SpotColumn.FLAG_MERGED,
-		SpotColumn.FLAG_NOT_CONVERGED, SpotColumn.FLAG_UNMODELLED_NEIGHBOUR, SpotColumn.FLAG_SECOND_PASS,
-		SpotColumn.POSITION_T, SpotColumn.RADIUS,
-		SpotColumn.ACTIVE_RADIUS, SpotColumn.QUALITY, SpotColumn.FIRST_PASS_X, SpotColumn.FIRST_PASS_Y,
-		SpotColumn.ACTIVE_AREA, SpotColumn.SECOND_AREA, SpotColumn.ITERATIONS, SpotColumn.POSITION_Z,
-		SpotColumn.VISIBILITY);
+		SpotColumn.POSITION_X, SpotColumn.POSITION_Y, SpotColumn.RADIUS, SpotColumn.QUALITY, SpotColumn.SIGMA_X,
+		SpotColumn.SIGMA_Y, SpotColumn.FLAG_FELL_BACK, SpotColumn.FLAG_DEGENERATE, SpotColumn.FLAG_AT_BORDER,
+		SpotColumn.FLAG_MERGED, SpotColumn.FLAG_NOT_CONVERGED, SpotColumn.FLAG_UNMODELLED_NEIGHBOUR,
+		SpotColumn.FLAG_SECOND_PASS, SpotColumn.POSITION_T,
+		SpotColumn.ACTIVE_RADIUS, SpotColumn.FIRST_PASS_X, SpotColumn.FIRST_PASS_Y, SpotColumn.ACTIVE_AREA,
+		SpotColumn.SECOND_AREA, SpotColumn.ITERATIONS, SpotColumn.POSITION_Z, SpotColumn.VISIBILITY);
+	/** The column the readable {@link #FLAGS} column follows. */
+	public static final SpotColumn FLAGS_AFTER = SpotColumn.SIGMA_Y;
 
 	/** Columns of the pair table, in order. */
 	public static final String PAIR_FRAME = "FRAME", PAIR_ID_A = "SPOT_A", PAIR_ID_B = "SPOT_B",
@@ -49,17 +55,36 @@ public final class SpotTables {
 
 	private SpotTables() {}
 
-	/** @return the spots table: one row per spot, IDs 0, 1, ... in list order */
-	public static TitledResultsTable spots(final List<Localization> spots, final Calibration cal) {
-		final TitledResultsTable rt = new TitledResultsTable(SPOTS_TITLE);
+	/**
+	 * @param imageTitle the image's title, in the table's: one table (and window) per image
+	 * @return the spots table: one row per spot, IDs 0, 1, ... in list order
+	 */
+	public static TitledResultsTable spots(final List<Localization> spots, final Calibration cal,
+		final String imageTitle)
+	{
+		final TitledResultsTable rt = new TitledResultsTable(spotsTitle(imageTitle));
 		rt.showRowNumbers(false);
 		fillSpots(rt, spots, cal);
 		return rt;
 	}
 
+	/** @return the title of the spots table of an image */
+	public static String spotsTitle(final String imageTitle) {
+		return imageTitle == null || imageTitle.isEmpty() ? SPOTS_TITLE : SPOTS_TITLE + ": " + imageTitle;
+	}
+
+	/** @return the warning flags of a spot in words, "; "-separated, or "-" */
+	public static String flagWords(final Localization s) {
+		final StringJoiner j = new StringJoiner("; ");
+		for (final Flag f : s.flagSet())
+			if (f.isWarning()) j.add(f.description());
+		return j.length() == 0 ? "-" : j.toString();
+	}
+
 	/** @return the pair table: frame, the two spot IDs, the distances (calibrated units) and a flag column */
-	public static TitledResultsTable pairs(final List<PairDistances.Pair> pairs) {
-		final TitledResultsTable rt = new TitledResultsTable(PAIRS_TITLE);
+	public static TitledResultsTable pairs(final List<PairDistances.Pair> pairs, final String imageTitle) {
+		final TitledResultsTable rt = new TitledResultsTable(imageTitle == null || imageTitle.isEmpty() ? PAIRS_TITLE :
+			PAIRS_TITLE + ": " + imageTitle);
 		rt.showRowNumbers(false);
 		fillPairs(rt, pairs);
 		return rt;
@@ -91,12 +116,15 @@ public final class SpotTables {
 		rt.setNaNEmptyCells(false);
 		for (int id = 0; id < spots.size(); id++) {
 			rt.incrementCounter();
-			for (final SpotColumn c : DISPLAY_ORDER)
+			for (final SpotColumn c : DISPLAY_ORDER) {
 				rt.addValue(c.key(), c.value(spots.get(id), id, cal));
+				if (c == FLAGS_AFTER) rt.addValue(FLAGS, flagWords(spots.get(id)));
+			}
 		}
 		final List<String> keys = new ArrayList<>(), integers = new ArrayList<>();
 		for (final SpotColumn c : DISPLAY_ORDER) {
 			keys.add(c.key());
+			if (c == FLAGS_AFTER) keys.add(FLAGS);
 			if (c.isInteger()) integers.add(c.key());
 		}
 		format(rt, keys, integers, spots.isEmpty());
@@ -117,7 +145,7 @@ public final class SpotTables {
 
 	/**
 	 * Integer columns without decimals; the others in ImageJ's automatic format: {@link #DECIMALS} places, none
-	 * for whole values (a QUALITY that counts pixels reads 25135, not 25135.0000).
+	 * for whole values (a QUALITY of 1 reads 1, not 1.0000).
 	 */
 	private static void format(final ResultsTable rt, final List<String> keys, final List<String> integers,
 		final boolean empty)

@@ -121,7 +121,8 @@ public final class ContactTracker {
 				sy = noise * Math.sqrt(cov[1]);
 			}
 			spots.add(new Localization(frameIndex, e.x() + dx, e.y() + dy, p.first.x() + dx, p.first.y() + dy,
-				p.region.area(), e.secondArea(), p.quality, Math.sqrt(p.region.area() / Math.PI), e.flags(),
+				p.region.area(), e.secondArea(), quality(p.quality, p.region.area(), noise), Math.sqrt(p.region.area() /
+					Math.PI), e.flags(),
 				e.iterations(), sx, sy, e.amplitude(), e.scale()));
 			if (keepRegions) {
 				active.add(p.region.translate(dx, dy));
@@ -130,6 +131,25 @@ public final class ContactTracker {
 		}
 		return new FrameResult(spots, active, second, noise, discarded[0], profile == null && params.method()
 			.needsProfile());
+	}
+
+	/** The significance at and above which a spot's {@code QUALITY} is 1: certainly a particle, not noise. */
+	static final double FULL_SIGNIFICANCE = 50;
+
+	/**
+	 * A spot's {@code QUALITY}: how clearly its active area stands out of the noise, in [0, 1]. The significance is
+	 * the summed intensity above the threshold in units of its noise, {@code z = sum(v - T) / (sigma sqrt(A))};
+	 * the quality is {@code min(1, z / FULL_SIGNIFICANCE)}. Real particles all reach 1, so TrackMate's automatic
+	 * (Otsu) quality threshold, which splits any two groups of values, keeps them all and cuts only weaker
+	 * components; the summed intensity alone split particles of two brightnesses (two focus planes).
+	 *
+	 * @param excess the summed intensity above the threshold over the active area
+	 * @param area the active area (pixels)
+	 * @param noise the frame's noise (grey levels; 0 for a noiseless image: every spot is certain)
+	 */
+	static double quality(final double excess, final int area, final double noise) {
+		if (!(noise > 0)) return 1;
+		return Math.min(1, excess / (noise * Math.sqrt(area)) / FULL_SIGNIFICANCE);
 	}
 
 	/** Upper bound on the passes of the iterative method. */

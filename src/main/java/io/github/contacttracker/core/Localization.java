@@ -16,7 +16,8 @@ import java.util.Set;
  * @param activeArea pixels in the active area {@code L_k}
  * @param secondArea pixels in the second active area {@code L_k_sec} (equals {@code activeArea} when no
  *        neighbour reaches the particle)
- * @param quality integrated intensity above threshold over the active area (grey levels x px; higher is better)
+ * @param quality how clearly the active area stands out of the noise, in [0, 1] (real particles 1;
+ *        {@code ContactTracker.quality})
  * @param radius the spot's radius (px): the equivalent radius of the active area, {@code sqrt(activeArea / pi)},
  *        unless replaced by the particle's radius ({@link #withRadius(double)})
  * @param flags bit mask of {@link Flag}s

@@ -18,8 +18,11 @@ import io.github.contacttracker.core.ProfileAnalysis;
  */
 public final class ProfilePlots {
 
-	/** Colour of the noise band's lines: readable on the white plot and in its legend. */
-	public static final Color NOISE_BAND = new Color(90, 90, 90);
+	/**
+	 * Colours of the noise band's upper and lower lines: readable on the white plot and in its legend, and told
+	 * apart (one grey for both could not be).
+	 */
+	public static final Color NOISE_BAND = new Color(220, 120, 0), NOISE_BAND_LOW = new Color(140, 60, 190);
 
 	private ProfilePlots() {}
 
@@ -54,6 +57,7 @@ public final class ProfilePlots {
 		p.setLineWidth(2);
 		p.add("line", new double[] { 0, right }, new double[] { r.background() + r.noise(), r.background() + r
 			.noise() });
+		p.setColor(NOISE_BAND_LOW);
 		p.add("line", new double[] { 0, right }, new double[] { r.background() - r.noise(), r.background() - r
 			.noise() });
 		p.setLineWidth(1);

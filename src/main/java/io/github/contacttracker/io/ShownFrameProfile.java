@@ -31,7 +31,7 @@ public record ShownFrameProfile(ProfileAnalysis.Result result, String title, int
 {
 
 	/** Longest line written to ImageJ's Log window: it does not wrap, and a default Log window is about this wide. */
-	public static final int LOG_WIDTH = 90;
+	public static final int LOG_WIDTH = 70;
 
 	/**
 	 * The profile of the most isolated particles of the frame on display (the "Measure from the image" buttons).

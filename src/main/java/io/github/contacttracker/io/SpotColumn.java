@@ -19,8 +19,9 @@ public enum SpotColumn {
 	VISIBILITY("VISIBILITY", "Visibility", "Visibility", Dimension.NONE, true),
 	FIRST_PASS_X("FIRST_PASS_X", "First-pass X", "X1", Dimension.POSITION, false),
 	FIRST_PASS_Y("FIRST_PASS_Y", "First-pass Y", "Y1", Dimension.POSITION, false),
-	SIGMA_X("SIGMA_X", "Std. error X", "dX", Dimension.LENGTH, false),
-	SIGMA_Y("SIGMA_Y", "Std. error Y", "dY", Dimension.LENGTH, false),
+	// "SE", not "dX": TrackMate's table shows short names, and dX reads as a displacement
+	SIGMA_X("SIGMA_X", "Std. error X", "SE X", Dimension.LENGTH, false),
+	SIGMA_Y("SIGMA_Y", "Std. error Y", "SE Y", Dimension.LENGTH, false),
 	ACTIVE_AREA("ACTIVE_AREA", "Active area (px)", "A", Dimension.NONE, true),
 	ACTIVE_RADIUS("ACTIVE_RADIUS", "Active-area radius", "Ra", Dimension.LENGTH, false),
 	SECOND_AREA("SECOND_AREA", "Second active area (px)", "A2", Dimension.NONE, true),

@@ -1,6 +1,7 @@
 package io.github.contacttracker.pipeline;
 
 import java.util.List;
+import java.util.ArrayList;
 import java.util.Locale;
 
 import io.github.contacttracker.core.FrameResult;
@@ -19,6 +20,22 @@ import io.github.contacttracker.core.Localization;
 public record TrackingResult(List<FrameResult> frames, List<Localization> spots, int flagged, int discarded,
 	double seconds, List<String> warnings)
 {
+	/**
+	 * The summary in short lines, for windows that cut long ones (ImageJ's Log): the spots and flags, then the
+	 * time, then each warning.
+	 */
+	public List<String> summaryLines(final String name) {
+		final int n = frames.size();
+		final List<String> lines = new ArrayList<>();
+		lines.add(String.format(Locale.ROOT, "%d spots in %d frame%s of '%s', %d flagged", spots.size(), n, n == 1 ?
+			"" : "s", name, flagged));
+		lines.add(String.format(Locale.ROOT, "  %d components discarded, %.2f s (%.1f frames/s)", discarded, seconds,
+			n / Math.max(seconds, 1e-9)));
+		for (final String w : warnings)
+			lines.add("  warning: " + w);
+		return lines;
+	}
+
 	/**
 	 * @return "12 spots in 4 frames of 'movie.tif', 0 flagged, 0 components discarded, 0.31 s (12.9 frames/s)",
 	 *         then "; warning: ..." for each warning

@@ -49,7 +49,7 @@ public final class Setting<V> {
 	private final String allowedText;
 	private final Number min;
 	private final Unit unit;
-	private final String trackMateKey;
+	private String trackMateKey;
 	private boolean imageSpecific;
 
 	private Setting(final String name, final String label, final String help, final Class<V> type,
@@ -106,6 +106,12 @@ public final class Setting<V> {
 	/** Marks a setting whose default fits no real image, so the command line requires it. */
 	Setting<V> imageSpecific() {
 		imageSpecific = true;
+		return this;
+	}
+
+	/** Gives the setting a TrackMate key other than its upper-case name (used while the descriptor is built). */
+	Setting<V> trackMateKey(final String key) {
+		trackMateKey = key;
 		return this;
 	}
 

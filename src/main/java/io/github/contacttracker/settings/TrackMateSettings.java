@@ -26,6 +26,11 @@ public final class TrackMateSettings {
 
 	public static final String KEY_TARGET_CHANNEL = TrackingSettings.CHANNEL.trackMateKey();
 	public static final String KEY_THRESHOLD = TrackingSettings.THRESHOLD.trackMateKey();
+	/**
+	 * The key of the threshold in files saved before it was renamed {@code GREY_THRESHOLD} (TrackMate's LoG and
+	 * DoG detectors use {@code THRESHOLD} for a quality cut-off); still read.
+	 */
+	public static final String OLD_KEY_THRESHOLD = "THRESHOLD";
 	public static final String KEY_R_OUT = TrackingSettings.R_OUT.trackMateKey();
 	public static final String KEY_MIN_AREA = TrackingSettings.MIN_AREA.trackMateKey();
 	public static final String KEY_MIN_SECOND_AREA = TrackingSettings.MIN_SECOND_AREA.trackMateKey();

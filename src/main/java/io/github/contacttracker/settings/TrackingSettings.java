@@ -49,10 +49,14 @@ public final class TrackingSettings {
 	public static final String HELP_CHANNEL = "The channel to track, 1-based; single-channel images have only " +
 		"channel 1.";
 
-	/** Pixels at or above it form the active areas. */
+	/**
+	 * Pixels at or above it form the active areas. Its TrackMate key is {@code GREY_THRESHOLD}, not TrackMate's
+	 * {@code THRESHOLD}: the LoG and DoG detectors use that key for a quality cut-off, and TrackMate's wizard carries
+	 * values from one detector's settings to another's by key.
+	 */
 	public static final Setting<Double> THRESHOLD = Setting.decimal("threshold", "Threshold",
 		HELP_THRESHOLD, 100, Double.NEGATIVE_INFINITY,
-		true, "a finite grey level", Unit.GREY_LEVEL).imageSpecific();
+		true, "a finite grey level", Unit.GREY_LEVEL).imageSpecific().trackMateKey("GREY_THRESHOLD");
 
 	/** How far a particle's image reaches. */
 	public static final Setting<Double> R_OUT = Setting.decimal("r_out", "r_out",

@@ -67,12 +67,16 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 	/** The wizard's panel size, which this panel must fit (TrackMate's own detector panels use it). */
 	public static final Dimension WIZARD_SIZE = new Dimension(300, 511);
 
+	/** The DOI as the info text shows it. */
+	static final String DOI_TEXT = "doi:10.1088/1361-648X/aa908e";
+
 	private static final String SHORT_INFO = "<html><body style='font-family:Arial; font-size:8pt'>"
 		+ "Centres of bright particles, also when they touch: pixels at or above the <b>threshold</b> form one "
 		+ "active area per particle; each centre is found by radial symmetry and refined away from the neighbours "
 		+ "(within <b>r_out</b>, where a particle's image ends). <b>fit</b> (default) is unbiased at contact.<br>"
-		+ "Y&uuml;cel &amp; Okumu&#351;o&#287;lu, J. Phys.: Condens. Matter 29, 465101 (2017), "
-		+ "<a href='" + ContactTrackerDetectorFactory.URL + "'>doi:10.1088/1361-648X/aa908e</a>. "
+		+ "Y&uuml;cel &amp; Okumu&#351;o&#287;lu, J. Phys.: Condens. Matter 29, 465101 (2017),<br>"
+		// the DOI starts a line: Swing breaks lines at its slashes, which cut it in two in the real wizard
+		+ "<a href='" + ContactTrackerDetectorFactory.URL + "'>" + DOI_TEXT + "</a>. "
 		+ "2D images and time-lapses only.</body></html>";
 
 	/** The label of the button that fills in threshold, r_out and the diameter from the profile helper. */
@@ -129,8 +133,9 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 			if (control instanceof JComboBox) return ((JComboBox<?>) control).getSelectedItem();
 			final Number n = (Number) ((JSpinner) control).getValue();
 			if (setting.type() == Integer.class) return n.intValue();
-			// in pixels, rounded to 1e-6 px so that a value typed in pixels survives the round trip through units
-			if (setting.unit() == Setting.Unit.PIXELS) return Math.round(n.doubleValue() / pixelWidth * 1e6) / 1e6;
+			// in pixels, to 0.01 px: a length typed in the image's units (shown to 4 decimals) lands on the pixels shown
+			// beside it (61 px, not 60.999998), and values in pixels (the helper's, to 0.01 px) survive the units
+			if (setting.unit() == Setting.Unit.PIXELS) return pixels(n.doubleValue(), pixelWidth);
 			return n.doubleValue();
 		}
 
@@ -139,6 +144,15 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 			final String px = new DecimalFormat("0.##", DecimalFormatSymbols.getInstance(Locale.ROOT)).format(value());
 			unitLabel.setText("pixel".equals(unit) ? "px" : unit + " (" + px + " px)");
 		}
+	}
+
+	/**
+	 * @param length a length in the image's units
+	 * @param pixelWidth the pixel width, in the same units
+	 * @return the length in pixels, to 0.01 px
+	 */
+	static double pixels(final double length, final double pixelWidth) {
+		return Math.round(length / pixelWidth * 100) / 100.0;
 	}
 
 	/**
@@ -183,14 +197,14 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 		fc.weighty = 1;
 		fc.fill = GridBagConstraints.BOTH;
 		if (hasImage && factory != null) {
-			// TrackMate's own preview; our THRESHOLD is a grey level, not a quality cut-off, so no threshold key
+			// TrackMate's own preview; our GREY_THRESHOLD is a grey level, not a quality cut-off, so no threshold key
 			final DetectionPreview preview = DetectionPreview.create().model(model).settings(settings)
 				.detectorFactory(factory).detectionSettingsSupplier(this::getSettings).thresholdKey(null)
 				.axisLabel("Quality histogram").get();
 			add(preview.getPanel(), fc);
 		}
 		else add(new JLabel(), fc);
-		setSettings(TrackMateSettings.defaults());
+		setSettings(LastSettings.get());
 	}
 
 	/** The "Measure from the image" button and, under it, its message. */
@@ -289,7 +303,8 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 		return message;
 	}
 
-	private static JComponent infoPane() {
+	/** @return the info text in its scroll pane, at the wizard's width */
+	static JComponent infoPane() {
 		final JEditorPane info = new JEditorPane("text/html", SHORT_INFO);
 		info.setEditable(false);
 		info.setOpaque(false);
@@ -308,12 +323,13 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 	}
 
 	/**
-	 * Shows a settings map; a missing, mistyped or invalid value shows the default instead (TrackMate checks the
-	 * map itself with the factory's {@code checkSettings}). A channel beyond the image's is kept, not changed.
+	 * Shows a settings map; a missing, mistyped or invalid value shows the value last used in this session
+	 * instead, else the default (TrackMate checks the map itself with the factory's {@code checkSettings}; its
+	 * wizard hands over null for keys the previous detector did not have). A channel beyond the image's is kept.
 	 */
 	@Override
 	public void setSettings(final Map<String, Object> settings) {
-		final Map<String, Object> d = TrackMateSettings.defaults();
+		final Map<String, Object> d = LastSettings.get();
 		for (final Field f : fields.values()) {
 			final String key = f.setting.trackMateKey();
 			Object v = settings == null ? null : settings.get(key);
@@ -343,6 +359,7 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 		final Map<String, Object> map = new LinkedHashMap<>();
 		for (final Field f : fields.values())
 			map.put(f.setting.trackMateKey(), f.value());
+		LastSettings.remember(map); // TrackMate takes the settings from here when the user moves on
 		return map;
 	}
 

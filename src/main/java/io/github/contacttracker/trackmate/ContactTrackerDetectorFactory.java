@@ -62,13 +62,14 @@ public class ContactTrackerDetectorFactory<T extends RealType<T> & NativeType<T>
 		+ "Sub-pixel centres of bright colloidal particles, also when they touch and their images overlap "
 		+ "(Y&uuml;cel &amp; Okumu&#351;o&#287;lu, J. Phys.: Condens. Matter 29, 465101, 2017)."
 		+ "<p>"
-		+ "Pixels at or above THRESHOLD (a grey level) form one active area per particle. Each centre is found by "
+		+ "Pixels at or above GREY_THRESHOLD (a grey level) form one active area per particle. Each centre is found by "
 		+ "radial symmetry, then refined away from its neighbours, whose images reach R_OUT pixels. The default "
 		+ "method, fit, fits touching particles jointly with their profile measured over the movie: unbiased at "
 		+ "contact.</p>"
 		+ "<p>"
-		+ "Spots: RADIUS is the active area's equivalent radius; QUALITY the intensity above THRESHOLD summed over "
-		+ "it; SIGMA_X/Y the standard errors; FLAG_... what happened. 2D images and time-lapses only.</p>"
+		+ "Spots: RADIUS is the active area's equivalent radius; QUALITY how clearly it stands out of the noise "
+		+ "(0 to 1; particles 1); SIGMA_X/Y the standard errors; FLAG_... what happened. 2D images and "
+		+ "time-lapses only.</p>"
 		+ "</html>";
 
 	/**
@@ -89,9 +90,13 @@ public class ContactTrackerDetectorFactory<T extends RealType<T> & NativeType<T>
 		return new ContactTrackerConfigurationPanel(settings, model, this);
 	}
 
+	/**
+	 * The settings last used in this Fiji session (the documented defaults until then), so that they survive a
+	 * detector switch in TrackMate's wizard ({@link LastSettings}).
+	 */
 	@Override
 	public Map<String, Object> getDefaultSettings() {
-		return TrackMateSettings.defaults();
+		return LastSettings.get();
 	}
 
 	@Override
@@ -115,16 +120,21 @@ public class ContactTrackerDetectorFactory<T extends RealType<T> & NativeType<T>
 
 	/**
 	 * Reads settings written by {@link #marshal}. {@code settings} is cleared and filled with the defaults first,
-	 * so a file from an older version that lacks a newer key still loads; unknown attributes and unreadable
-	 * values are errors.
+	 * so a file from an older version that lacks a newer key still loads, and its {@code THRESHOLD} is read as
+	 * {@code GREY_THRESHOLD}; unknown attributes and unreadable values are errors.
 	 */
 	@Override
 	public String unmarshal(final Element element, final Map<String, Object> settings) {
 		settings.clear();
-		settings.putAll(getDefaultSettings());
+		settings.putAll(TrackMateSettings.defaults()); // a file means what it says: the documented defaults
 		for (final Attribute att : element.getAttributes()) {
-			final String key = att.getName();
+			String key = att.getName();
 			if (TrackMateSettings.XML_ATTRIBUTE_DETECTOR_NAME.equals(key) || "TRACKER_NAME".equals(key)) continue;
+			// files of earlier versions, whose threshold key was TrackMate's THRESHOLD (a new key wins)
+			if (TrackMateSettings.OLD_KEY_THRESHOLD.equals(key)) {
+				if (element.getAttribute(TrackMateSettings.KEY_THRESHOLD) != null) continue;
+				key = TrackMateSettings.KEY_THRESHOLD;
+			}
 			if (!TrackMateSettings.keys().contains(key))
 				return "When unmarshalling " + NAME + " settings: unknown parameter " + key + ".";
 			try {

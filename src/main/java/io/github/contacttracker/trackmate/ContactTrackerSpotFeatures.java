@@ -31,6 +31,13 @@ import net.imglib2.type.numeric.RealType;
 @Plugin(type = SpotAnalyzerFactory.class)
 public class ContactTrackerSpotFeatures<T extends RealType<T> & NativeType<T>> implements SpotAnalyzerFactory<T> {
 
+	/**
+	 * The standard errors in pixels, for TrackMate only: its spot table shows 3 decimals, so the calibrated
+	 * {@code SIGMA_X} of a well-localized particle (a few nm) reads 0.001 um in every row; in pixels it reads
+	 * e.g. 0.012.
+	 */
+	public static final String SIGMA_X_PX = "SIGMA_X_PX", SIGMA_Y_PX = "SIGMA_Y_PX";
+
 	/** The key of this analyzer in TrackMate. */
 	public static final String KEY = "CONTACT_TRACKER_SPOT_FEATURES";
 
@@ -49,6 +56,14 @@ public class ContactTrackerSpotFeatures<T extends RealType<T> & NativeType<T>> i
 			SHORT_NAMES.put(c.key(), c.shortName());
 			DIMENSIONS.put(c.key(), Dimension.valueOf(c.dimension().name()));
 			IS_INT.put(c.key(), c.isInteger());
+			if (c == SpotColumn.SIGMA_Y) for (final String px : List.of(SIGMA_X_PX, SIGMA_Y_PX)) {
+				features.add(px);
+				final String axis = px.equals(SIGMA_X_PX) ? "X" : "Y";
+				NAMES.put(px, "Std. error " + axis + " (px)");
+				SHORT_NAMES.put(px, "SE " + axis + " px");
+				DIMENSIONS.put(px, Dimension.NONE);
+				IS_INT.put(px, false);
+			}
 		}
 		FEATURES = Collections.unmodifiableList(features);
 	}

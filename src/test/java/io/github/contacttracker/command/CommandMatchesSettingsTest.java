@@ -30,7 +30,7 @@ class CommandMatchesSettingsTest {
 			for (final Setting<?> s : TrackingSettings.ALL) {
 				final ModuleItem<?> item = info.getInput(s.name());
 				assertNotNull(item, "no input " + s.name());
-				assertEquals(s.help(), item.getDescription(), s.name());
+				assertEquals(DialogHelp.TIP + s.help(), item.getDescription(), s.name());
 				assertTrue(item.getLabel().startsWith(s.label()), item.getLabel() + " vs " + s.label());
 				final Class<?> type = item.getType();
 				if (!s.choices().isEmpty()) {

@@ -64,6 +64,7 @@ import io.github.contacttracker.core.TrackerParameters;
 import io.github.contacttracker.io.Calibration;
 import io.github.contacttracker.io.ImagePlusFrames;
 import io.github.contacttracker.io.OverlayPng;
+import io.github.contacttracker.io.ShownFrameProfile;
 import io.github.contacttracker.io.SpotColumn;
 import io.github.contacttracker.io.SpotCsvWriter;
 
@@ -156,8 +157,7 @@ class ContactTrackerCommandTest {
 		assertSucceeded(m);
 		final ResultsTable rt = (ResultsTable) m.getOutput("spots");
 		assertNotNull(rt);
-		assertEquals(SpotTables.SPOTS_TITLE, rt.getTitle());
-		assertEquals("Contact Tracker spots", rt.getTitle());
+		assertEquals("Contact Tracker spots: simulated pair", rt.getTitle(), "one table per image, titled by it");
 		assertNull(m.getOutput("pairs"), "no pair table without pair_cutoff");
 		assertTrue(m.isOutputResolved("spots"), "the command shows its table itself: SciJava must not display it");
 
@@ -171,10 +171,15 @@ class ContactTrackerCommandTest {
 		assertEquals(columns.length, SpotTables.DISPLAY_ORDER.size());
 		assertEquals(new java.util.HashSet<>(Arrays.asList(columns)), new java.util.HashSet<>(SpotTables.DISPLAY_ORDER),
 			"every CSV column once");
-		final String[] keys = SpotTables.DISPLAY_ORDER.stream().map(SpotColumn::key).toArray(String[]::new);
-		assertArrayEquals(keys, rt.getHeadings(), "the CSV's columns, ordered for reading");
-		assertEquals(List.of("ID", "FRAME", "POSITION_X", "POSITION_Y", "SIGMA_X", "SIGMA_Y", "FLAG_FELL_BACK"), Arrays
-			.asList(rt.getHeadings()).subList(0, 7), "position, its error and the flags first");
+		final List<String> keys = new ArrayList<>(SpotTables.DISPLAY_ORDER.stream().map(SpotColumn::key).toList());
+		keys.add(keys.indexOf("SIGMA_Y") + 1, SpotTables.FLAGS);
+		assertEquals(keys, Arrays.asList(rt.getHeadings()), "the CSV's columns and the flags in words, for reading");
+		assertEquals(List.of("ID", "FRAME", "POSITION_X", "POSITION_Y", "RADIUS", "QUALITY", "SIGMA_X", "SIGMA_Y",
+			"FLAGS"), Arrays.asList(rt.getHeadings()).subList(0, 9), "where, how big and bright, how precise, flags");
+		for (int id = 0; id < spots.size(); id++)
+			assertEquals(spots.get(id).isFlagged() ? spots.get(id).flagSet().stream().filter(f -> f.isWarning()).map(
+				f -> f.description()).collect(java.util.stream.Collectors.joining("; ")) : "-", rt.getStringValue(
+					SpotTables.FLAGS, id));
 		// integers without decimals; whole values of real columns too, others with 4 decimals
 		assertEquals(Integer.toString((int) rt.getValue("ID", 1)), rt.getStringValue("ID", 1));
 		assertFalse(rt.getStringValue("POSITION_X", 0).isEmpty());
@@ -220,44 +225,62 @@ class ContactTrackerCommandTest {
 		for (final FrameResult r : results)
 			seconds.addAll(r.secondAreas());
 
-		final Overlay overlay = imp.getOverlay();
+		Overlay overlay = imp.getOverlay();
 		assertNotNull(overlay);
 		assertTrue(overlay.contains(mine), "the user's own overlay elements stay");
-		assertEquals(1 + 4 * spots.size(), overlay.size(), "disc, outline, first-pass dot and final cross per spot");
-		final Map<String, Roi> byKey = new HashMap<>();
-		for (final Roi roi : overlay.toArray())
-			if (SpotOverlay.kind(roi) != null) byKey.put(SpotOverlay.spotId(roi) + " " + SpotOverlay.kind(roi), roi);
-
+		assertEquals(1 + 3 * spots.size(), overlay.size(), "particle circle, final cross and first-pass dot per spot");
+		Map<String, Roi> byKey = byKey(overlay);
 		for (int id = 0; id < spots.size(); id++) {
 			final Localization s = spots.get(id);
 			final Roi cross = byKey.get(id + " FINAL"), dot = byKey.get(id + " FIRST_PASS");
-			final Roi disc = byKey.get(id + " DISC"), outline = byKey.get(id + " SECOND_AREA");
-			for (final Roi roi : new Roi[] { cross, dot, disc, outline }) {
+			final Roi particle = byKey.get(id + " PARTICLE");
+			for (final Roi roi : new Roi[] { cross, dot, particle }) {
 				assertNotNull(roi, "spot " + id);
 				assertEquals(s.frame() + 1, roi.getPosition(), "spot " + id + " " + roi.getName() + " on its frame");
 			}
+			assertNull(byKey.get(id + " DISC"), "no r_out disc unless asked for");
+			assertNull(byKey.get(id + " SECOND_AREA"), "no second area unless asked for");
 			// ImageJ puts pixel (0,0)'s centre at (0.5, 0.5), TrackMate at (0, 0)
 			assertEquals(s.x() + 0.5, cross.getFloatPolygon().xpoints[0], 1e-4);
 			assertEquals(s.y() + 0.5, cross.getFloatPolygon().ypoints[0], 1e-4);
 			assertEquals(s.firstX() + 0.5, dot.getFloatPolygon().xpoints[0], 1e-4);
 			assertEquals(s.firstY() + 0.5, dot.getFloatPolygon().ypoints[0], 1e-4);
+			// the particle: a circle of its RADIUS (px) around the final centre
+			final java.awt.geom.Rectangle2D.Double b = particle.getFloatBounds();
+			assertEquals(s.x() + 0.5 - s.radius(), b.x, 1e-9);
+			assertEquals(s.y() + 0.5 - s.radius(), b.y, 1e-9);
+			assertEquals(2 * s.radius(), b.width, 1e-9);
+			assertEquals(OverlayPng.FINAL, cross.getStrokeColor());
+			assertEquals(OverlayPng.FIRST_PASS, dot.getStrokeColor());
+			assertEquals(SpotOverlay.flagColor(s), particle.getStrokeColor());
+		}
+
+		// the diagnostics on request: the r_out disc and the second active area's outline too
+		assertSucceeded(run(imp, "r_out_circles", true));
+		overlay = imp.getOverlay();
+		assertEquals(1 + 5 * spots.size(), overlay.size());
+		assertTrue(overlay.contains(mine));
+		byKey = byKey(overlay);
+		for (int id = 0; id < spots.size(); id++) {
+			final Localization s = spots.get(id);
+			final Roi disc = byKey.get(id + " DISC"), outline = byKey.get(id + " SECOND_AREA");
 			final java.awt.geom.Rectangle2D.Double b = disc.getFloatBounds();
 			assertEquals(s.firstX() + 0.5 - R_OUT, b.x, 1e-9);
 			assertEquals(s.firstY() + 0.5 - R_OUT, b.y, 1e-9);
 			assertEquals(2 * R_OUT, b.width, 1e-9);
 			assertEquals(2 * R_OUT, b.height, 1e-9);
 			assertOutlines(seconds.get(id), outline);
-
-			assertEquals(OverlayPng.FINAL, cross.getStrokeColor());
-			assertEquals(OverlayPng.FIRST_PASS, dot.getStrokeColor());
 			assertEquals(OverlayPng.SECOND_AREA, outline.getStrokeColor());
-			assertEquals(s.isFlagged() ? OverlayPng.FLAGGED : OverlayPng.DISC, disc.getStrokeColor());
+			assertEquals(SpotOverlay.Kind.DISC.color(), disc.getStrokeColor());
+			assertEquals(s.frame() + 1, disc.getPosition());
 		}
+	}
 
-		// a second run replaces our ROIs and keeps the user's
-		assertSucceeded(run(imp));
-		assertEquals(1 + 4 * spots.size(), imp.getOverlay().size());
-		assertTrue(imp.getOverlay().contains(mine));
+	private static Map<String, Roi> byKey(final Overlay overlay) {
+		final Map<String, Roi> byKey = new HashMap<>();
+		for (final Roi roi : overlay.toArray())
+			if (SpotOverlay.kind(roi) != null) byKey.put(SpotOverlay.spotId(roi) + " " + SpotOverlay.kind(roi), roi);
+		return byKey;
 	}
 
 	/** The outline covers exactly the region's pixels. */
@@ -420,7 +443,7 @@ class ContactTrackerCommandTest {
 		assertSucceeded(m);
 		final ResultsTable spots = (ResultsTable) m.getOutput("spots");
 		final ResultsTable pairs = (ResultsTable) m.getOutput("pairs");
-		assertEquals(SpotTables.PAIRS_TITLE, pairs.getTitle());
+		assertEquals(SpotTables.PAIRS_TITLE + ": simulated pair", pairs.getTitle());
 		assertEquals(Simulated.FRAMES, pairs.size(), "the pair of each frame");
 		for (int row = 0; row < pairs.size(); row++) {
 			final int a = (int) pairs.getValue("SPOT_A", row), b = (int) pairs.getValue("SPOT_B", row);
@@ -518,8 +541,9 @@ class ContactTrackerCommandTest {
 		final Module m = context.service(ModuleService.class).createModule(commands.getCommand(
 			ContactTrackerCommand.class));
 		// the dialog remembers its values like Fiji's, except the image and the output files (and the measure
-		// button, which has no value)
-		final List<String> notRemembered = List.of("imp", "csv", "trackmate_xml", "measure");
+		// button, which has no value, and the Preview box, so that opening the dialog never starts tracking)
+		final List<String> notRemembered = List.of("imp", "csv", "trackmate_xml", "measure", "preview", "header",
+			"help");
 		m.getInfo().inputs().forEach(item -> {
 			if (!org.scijava.service.Service.class.isAssignableFrom(item.getType()) && item.getType() != Context.class)
 				assertEquals(!notRemembered.contains(item.getName()), item.isPersisted(), item.getName());
@@ -530,23 +554,36 @@ class ContactTrackerCommandTest {
 	}
 
 	@Test
-	void flaggedSpotsStandOut() {
+	void flaggedSpotsStandOutInTheirFlagsColour() {
 		final Localization ok = new Localization(0, 10, 10, 10, 10, 50, 50, 1, 4, 0, 2, 0.01, 0.01);
-		final Localization flagged = new Localization(0, 30, 10, 30.5, 10, 50, 10, 1, 4,
+		final Localization fellBack = new Localization(0, 30, 10, 30.5, 10, 50, 10, 1, 4,
 			io.github.contacttracker.core.Flag.FELL_BACK.bit(), 1, 0.01, 0.01);
-		final List<Roi> rois = SpotOverlay.rois(List.of(new FrameResult(List.of(ok, flagged), List.of(), List.of(), 1,
-			0, false)), 8, (roi, frame) -> {});
-		assertEquals(6, rois.size(), "no outline without regions");
-		final Roi okDisc = rois.get(0), badDisc = rois.get(3);
-		assertEquals(SpotOverlay.Kind.DISC, SpotOverlay.kind(badDisc));
-		assertEquals(OverlayPng.DISC, okDisc.getStrokeColor());
-		assertEquals(OverlayPng.FLAGGED, badDisc.getStrokeColor());
+		final Localization merged = new Localization(0, 50, 10, 50, 10, 50, 10, 1, 4,
+			io.github.contacttracker.core.Flag.MERGED.bit() | io.github.contacttracker.core.Flag.AT_BORDER.bit(), 1, 0.01,
+			0.01);
+		final List<Roi> rois = SpotOverlay.rois(List.of(new FrameResult(List.of(ok, fellBack, merged), List.of(), List
+			.of(), 1, 0, false)), 8, false, (roi, frame) -> {});
+		assertEquals(9, rois.size());
+		final Roi okCircle = rois.get(0), fellBackCircle = rois.get(3), mergedCircle = rois.get(6);
+		assertEquals(SpotOverlay.Kind.PARTICLE, SpotOverlay.kind(fellBackCircle));
+		assertEquals(OverlayPng.DISC, okCircle.getStrokeColor());
+		assertEquals(Color.WHITE, fellBackCircle.getStrokeColor(), "each flag its colour");
+		assertEquals(Color.MAGENTA, mergedCircle.getStrokeColor(), "merged wins over at border");
+		assertEquals(2 * 4, okCircle.getFloatBounds().width, 1e-12, "the particle's RADIUS (4 px), not r_out (8)");
 		// the first-pass dot comes after (is drawn over) the final cross
 		assertEquals(SpotOverlay.Kind.FINAL, SpotOverlay.kind(rois.get(1)));
 		assertEquals(SpotOverlay.Kind.FIRST_PASS, SpotOverlay.kind(rois.get(2)));
-		assertTrue(badDisc.getStrokeWidth() > okDisc.getStrokeWidth());
-		assertTrue(badDisc.getName().contains("fell back to first pass"), badDisc.getName());
-		assertEquals(Color.MAGENTA, OverlayPng.FLAGGED);
+		assertTrue(fellBackCircle.getStrokeWidth() > okCircle.getStrokeWidth());
+		assertTrue(fellBackCircle.getName().contains("fell back to first pass"), fellBackCircle.getName());
+		assertTrue(mergedCircle.getName().contains("suspected merge, touches border") || mergedCircle.getName().contains(
+			"touches border, suspected merge"), mergedCircle.getName());
+		// the legend names each flag's colour, in short lines
+		final List<String> legend = SpotOverlay.legend(false);
+		final String words = String.join(" ", legend).replaceAll(" +", " ");
+		assertTrue(words.contains("magenta = suspected merge"), legend.toString());
+		assertTrue(words.contains("white = fell back to first pass"), legend.toString());
+		for (final String line : legend)
+			assertTrue(line.length() <= ShownFrameProfile.LOG_WIDTH, line);
 	}
 
 	@Test
@@ -623,11 +660,20 @@ class ContactTrackerCommandTest {
 		m.setInput("imp", imp);
 		m.setInput("threshold", THRESHOLD);
 		m.setInput("r_out", R_OUT);
+		final ContactTrackerCommand command = (ContactTrackerCommand) m.getDelegateObject();
+		// the dialog calls preview() when it opens: with the box off by default, nothing is tracked
+		assertEquals(false, m.getInput("preview"));
 		m.preview();
+		command.awaitPreview();
+		assertEquals(1, imp.getOverlay().size(), "no preview before the box is ticked");
+		m.setInput("preview", true);
+		m.setInput("r_out_circles", true);
+		m.preview();
+		command.awaitPreview();
 		final List<Roi> ours = new ArrayList<>();
 		for (final Roi roi : imp.getOverlay().toArray())
 			if (SpotOverlay.kind(roi) != null) ours.add(roi);
-		assertEquals(4 * 2, ours.size(), "the two spots of the current frame, with their discs");
+		assertEquals(5 * 2, ours.size(), "the two spots of the current frame, with their discs");
 		for (final Roi roi : ours)
 			assertEquals(3, roi.getPosition(), "on the frame shown");
 		// what the core finds on that frame alone (methods that measure the profile measure it on this frame)
@@ -641,12 +687,30 @@ class ContactTrackerCommandTest {
 		// r_out edited: the discs follow; an invalid value keeps the last preview
 		m.setInput("r_out", R_OUT + 5);
 		m.preview();
+		command.awaitPreview();
 		final Roi disc = Arrays.stream(imp.getOverlay().toArray()).filter(r -> SpotOverlay.kind(r) == SpotOverlay.Kind.DISC)
 			.findFirst().get();
 		assertEquals(2 * (R_OUT + 5), disc.getFloatBounds().width, 1e-9);
 		m.setInput("r_out", -1.0);
 		m.preview();
-		assertEquals(1 + 8, imp.getOverlay().size());
+		command.awaitPreview();
+		assertEquals(1 + 10, imp.getOverlay().size());
+		// a newer value abandons a preview still computing: only the latest values are ever shown
+		m.setInput("r_out", R_OUT + 9);
+		m.preview();
+		m.setInput("r_out", R_OUT + 2);
+		m.preview();
+		command.awaitPreview();
+		assertEquals(2 * (R_OUT + 2), Arrays.stream(imp.getOverlay().toArray()).filter(r -> SpotOverlay.kind(
+			r) == SpotOverlay.Kind.DISC).findFirst().get().getFloatBounds().width, 1e-9);
+		// unticking the box takes the preview off
+		m.setInput("preview", false);
+		m.preview();
+		assertEquals(1, imp.getOverlay().size());
+		m.setInput("preview", true);
+		m.preview();
+		command.awaitPreview();
+		assertEquals(1 + 10, imp.getOverlay().size());
 
 		m.cancel(); // the dialog's Cancel
 		assertEquals(1, imp.getOverlay().size());
@@ -660,12 +724,20 @@ class ContactTrackerCommandTest {
 		final java.io.ByteArrayOutputStream printed = new java.io.ByteArrayOutputStream();
 		System.setOut(new java.io.PrintStream(printed, true, java.nio.charset.StandardCharsets.UTF_8));
 		try {
-			assertSucceeded(run(Simulated.image(), "overlay", false));
+			assertSucceeded(run(Simulated.image()));
 		}
 		finally {
 			System.setOut(out);
 		}
-		assertTrue(printed.toString(java.nio.charset.StandardCharsets.UTF_8).contains(
-			"Contact Tracker: 10 spots in 5 frames of 'simulated pair', 0 flagged"), printed::toString);
+		final String log = printed.toString(java.nio.charset.StandardCharsets.UTF_8);
+		assertTrue(log.contains("Contact Tracker: 10 spots in 5 frames of 'simulated pair', 0 flagged\n"), log);
+		assertTrue(log.contains("\n  0 components discarded, "), log);
+		assertTrue(log.contains("\n  positions, RADIUS, SIGMA in micron; r_out and areas in pixels\n"), log);
+		assertTrue(log.contains("\n  overlay: cyan circle = particle (RADIUS), red cross = centre"), "the legend:\n" + log);
+		// short lines: ImageJ's Log window cuts long ones (the old one-line summary had 113 characters, and 90
+		// characters wrapped word by word); the first line holds the image's title, however long
+		for (final String line : log.split("\n"))
+			if (!line.startsWith("[") && !line.startsWith("Contact Tracker: 10 spots")) assertTrue(line.length() <=
+				ShownFrameProfile.LOG_WIDTH, line.length() + ": " + line);
 	}
 }

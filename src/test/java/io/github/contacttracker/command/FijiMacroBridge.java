@@ -47,6 +47,7 @@ public class FijiMacroBridge implements PlugIn {
 		}
 		table.put("Contact Tracker", entry(ContactTrackerCommand.class));
 		table.put("Contact Tracker Profile", entry(ContactTrackerProfileCommand.class));
+		table.put("Contact Tracker Pair Potential", entry(ContactTrackerPotentialCommand.class));
 	}
 
 	private static String entry(final Class<? extends Command> command) {

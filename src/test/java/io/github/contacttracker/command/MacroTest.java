@@ -214,6 +214,42 @@ class MacroTest {
 			"a key left out takes the documented default");
 	}
 
+	/** Profile's suggestion reaches the macro through the Results table: nResults 1, getResult of each column. */
+	@Test
+	void theMacroReadsProfilesSuggestion() {
+		final ImagePlus imp = Simulated.image();
+		WindowManager.setTempCurrentImage(imp);
+		final double[] c = Simulated.truth(0).get(0);
+		final String printed = macro(String.format(Locale.ROOT, "makePoint(%d, %d);\n" + //
+			"run('Contact Tracker Profile', 'diameter=%s max_radius=60 plot=false');\n" + //
+			"print('n=' + nResults + ' t=' + d2s(getResult('THRESHOLD', 0), 6) + ' r=' + d2s(getResult('R_OUT', 0), 6) + " +
+			"' x=' + d2s(getResult('X', 0), 6));", Math.round(c[0]), Math.round(c[1]), Simulated.TYPE.diameterPx()));
+		WindowManager.setTempCurrentImage(null);
+		final org.scijava.module.Module m = FijiMacroBridge.last();
+		assertNull(((Cancelable) m).getCancelReason());
+		assertTrue(printed.contains(String.format(Locale.ROOT, "n=1 t=%.6f r=%.6f x=%.6f", (Double) m.getOutput(
+			"suggested_threshold"), (Double) m.getOutput("suggested_r_out"), (Double) m.getOutput("centre_x"))), printed);
+		assertEquals(c[0], (Double) m.getOutput("centre_x"), 0.5, "the particle marked");
+	}
+
+	/**
+	 * Pair Potential in a macro: the defaults (bin 0, r_max 0) work, csv= is read although the Results table holds
+	 * other spots, the values reach nResults; a bad value stops the macro.
+	 */
+	@Test
+	void pairPotentialInAMacro(@TempDir final Path dir) throws Exception {
+		final Path csv = dir.resolve("two.csv");
+		Files.write(csv, List.of("FRAME,POSITION_X,POSITION_Y", "0,1,1", "0,4,1", "0,9,7"));
+		ResultsTable.getResultsTable().incrementCounter();
+		ResultsTable.getResultsTable().addValue("POSITION_X", 5);
+		final String printed = macro("run('Contact Tracker Pair Potential', 'csv=[" + csv + "] width=10 height=8 " +
+			"show=false');\nprint('n=' + nResults + ' pairs=' + getResult('PAIRS', 37));\n" + //
+			"run('Contact Tracker Pair Potential', 'csv=[" + csv + "] bin=-1 show=false');\nprint('after');");
+		assertTrue(printed.contains("n=50 pairs=1"), printed);
+		assertFalse(printed.contains("after"), "bin=-1 stops the macro:\n" + printed);
+		assertEquals("bin must be a number >= 0, not -1.0", ((Cancelable) FijiMacroBridge.last()).getCancelReason());
+	}
+
 	@Test
 	void shippedBatchMacroWritesEachCsvAndReportsFailures(@TempDir final Path dir) throws Exception {
 		final Path in = Files.createDirectories(dir.resolve("in")), out = Files.createDirectories(dir.resolve("out"));

@@ -99,9 +99,13 @@ class MeasureFromImageTest {
 		assertEquals(7, value(m, "min_area"), 0, "the other fields are left alone");
 		// another frame measures otherwise: the one on display was taken
 		assertFalse(r.threshold() == helper(imp, 0, 0).threshold() && r.rOut() == helper(imp, 0, 0).rOut());
-		assertTrue(log.startsWith("Contact Tracker: measured 'particles', frame 3: threshold " + fmt(r
+		// wrapped for the Log window: continuation lines are indented
+		final String flat = log.replace("\n    ", " ");
+		assertTrue(flat.startsWith("Contact Tracker: measured 'particles', frame 3: threshold " + fmt(r
 			.suggestedThreshold(true)) + ", r_out " + fmt(r.suggestedROut()) + " px, diameter "), log);
-		assertTrue(log.contains(" px (estimated)"), log);
+		assertTrue(flat.contains(" px (estimated)"), log);
+		for (final String line : log.split("\n"))
+			assertTrue(line.length() <= io.github.contacttracker.io.ShownFrameProfile.LOG_WIDTH, line);
 		assertTrue(log.contains("  warning: the diameter"), "the helper's warnings follow: " + log);
 		assertFalse(((Cancelable) m).isCanceled());
 	}

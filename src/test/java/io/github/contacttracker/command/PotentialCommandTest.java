@@ -3,6 +3,7 @@ package io.github.contacttracker.command;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.File;
@@ -51,10 +52,21 @@ class PotentialCommandTest {
 		return rt;
 	}
 
+	/** Puts the spots into ImageJ's Results table, where Contact Tracker leaves them. */
+	private static void triangleInResults() {
+		final ResultsTable system = ResultsTable.getResultsTable();
+		system.reset();
+		final ResultsTable t = triangle();
+		for (final String c : t.getHeadings())
+			for (int i = 0; i < t.size(); i++)
+				system.setValue(c, i, t.getValue(c, i));
+	}
+
 	@Test
 	void tableInTableAndPlotOut() throws Exception {
-		final Module m = Simulated.run(context, ContactTrackerPotentialCommand.class, "spots", triangle(), "bin", 1.0,
-			"r_max", 6.0, "width", 10.0, "height", 8.0, "show", false);
+		triangleInResults();
+		final Module m = Simulated.run(context, ContactTrackerPotentialCommand.class, "table", "Results", "bin",
+			1.0, "r_max", 6.0, "width", 10.0, "height", 8.0, "show", false);
 		final ResultsTable out = (ResultsTable) m.getOutput("potential");
 		assertNotNull(out);
 		assertEquals(6, out.size());
@@ -64,6 +76,51 @@ class PotentialCommandTest {
 		assertTrue(Double.isNaN(out.getValue("U_KT", 2))); // empty bin: shown as an empty cell
 		assertEquals(1, out.getValue("U_KT_ERR", 5), 1e-12);
 		assertTrue(m.getOutput("plot") instanceof Plot);
+		// the values reach a macro's nResults and getResult
+		final ResultsTable system = ResultsTable.getResultsTable();
+		assertEquals(6, system.size());
+		assertEquals(3.5, system.getValue("R", 3), 1e-12);
+		assertEquals(1, system.getValue("U_KT_ERR", 5), 1e-12);
+	}
+
+	/** OK with the dialog's own defaults works: bin 0 and r_max 0 are chosen from the field of view. */
+	@Test
+	void theDefaultsWork() throws Exception {
+		triangleInResults();
+		final Module m = Simulated.run(context, ContactTrackerPotentialCommand.class, "table", "Results", "bin",
+			0.0, "r_max", 0.0, "width", 10.0, "height", 8.0, "show", false);
+		assertNull(((ContactTrackerPotentialCommand) m.getDelegateObject()).getCancelReason());
+		final ResultsTable out = (ResultsTable) m.getOutput("potential");
+		// r_max half the smaller side (8 / 2 = 4), 50 bins of 0.08
+		assertEquals(ContactTrackerPotentialCommand.AUTO_BINS, out.size());
+		assertEquals(0.04, out.getValue("R", 0), 1e-12);
+		assertEquals(4 - 0.04, out.getValue("R", out.size() - 1), 1e-9);
+		// the pair at distance 3 (1,1)-(4,1) falls in the bin [2.96, 3.04)
+		assertEquals(1, out.getValue("PAIRS", 37), 0);
+	}
+
+	/**
+	 * No ResultsTable input: Fiji's ResultsTablePreprocessor fills a command's only ResultsTable input with the
+	 * Results table, which then won over csv= and table=. A csv given is read although the Results table holds
+	 * other spots.
+	 */
+	@Test
+	void aCsvWinsOverTheResultsTable(@TempDir final Path csvDir) throws Exception {
+		final org.scijava.command.CommandInfo info = context.service(org.scijava.command.CommandService.class)
+			.getCommand(ContactTrackerPotentialCommand.class);
+		for (final org.scijava.module.ModuleItem<?> input : info.inputs())
+			assertFalse(ResultsTable.class.isAssignableFrom(input.getType()), input.getName());
+		triangleInResults();
+		final Path csv = csvDir.resolve("two.csv");
+		Files.write(csv, List.of("FRAME,POSITION_X,POSITION_Y", "0,1,1", "0,3,1"));
+		final Module m = Simulated.run(context, ContactTrackerPotentialCommand.class, "csv", csv.toFile(), "bin", 1.0,
+			"r_max", 4.0, "width", 10.0, "height", 8.0, "show", false);
+		final ResultsTable out = (ResultsTable) m.getOutput("potential");
+		double pairs = 0;
+		for (int i = 0; i < out.size(); i++)
+			pairs += out.getValue("PAIRS", i);
+		assertEquals(1, pairs, 0, "the CSV's one pair, not the Results table's three");
+		assertEquals(1, out.getValue("PAIRS", 2), 0);
 	}
 
 	@Test

@@ -183,6 +183,12 @@ class ProfileHelperTest {
 		final Plot plot = (Plot) m.getOutput("profile");
 		assertNotNull(plot);
 		assertNotNull(plot.getProcessor(), "the plot renders headless");
+		// the noise band's two lines (objects 2 and 3, after the profile and the background) can be told apart
+		assertTrue(plot.getPlotObjectStyle(2).startsWith(ij.plugin.Colors.colorToString(
+			io.github.contacttracker.io.ProfilePlots.NOISE_BAND) + ","), plot.getPlotObjectStyle(2));
+		assertTrue(plot.getPlotObjectStyle(3).startsWith(ij.plugin.Colors.colorToString(
+			io.github.contacttracker.io.ProfilePlots.NOISE_BAND_LOW) + ","), plot.getPlotObjectStyle(3));
+		assertFalse(plot.getPlotObjectStyle(2).split(",")[0].equals(plot.getPlotObjectStyle(3).split(",")[0]));
 
 		// without a point: a clear message
 		imp.deleteRoi();

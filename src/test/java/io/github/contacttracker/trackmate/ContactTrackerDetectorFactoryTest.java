@@ -44,6 +44,12 @@ class ContactTrackerDetectorFactoryTest {
 
 	private final ContactTrackerDetectorFactory<FloatType> factory = new ContactTrackerDetectorFactory<>();
 
+	/** Each test starts from the documented defaults, not the values another test's panel left. */
+	@org.junit.jupiter.api.BeforeEach
+	void freshSession() {
+		LastSettings.forget();
+	}
+
 	@Test
 	void identityAndInfoText() {
 		assertEquals("CONTACT_TRACKER_DETECTOR", factory.getKey());
@@ -63,10 +69,11 @@ class ContactTrackerDetectorFactoryTest {
 	@Test
 	void defaultSettingsHoldTheDocumentedKeysAndPassTheCheck() {
 		final Map<String, Object> d = factory.getDefaultSettings();
-		for (final String key : List.of("TARGET_CHANNEL", "THRESHOLD", "R_OUT", "MIN_AREA", "METHOD"))
+		for (final String key : List.of("TARGET_CHANNEL", "GREY_THRESHOLD", "R_OUT", "MIN_AREA", "METHOD"))
 			assertTrue(d.containsKey(key), key);
 		assertEquals(Integer.class, d.get("TARGET_CHANNEL").getClass());
-		assertEquals(Double.class, d.get("THRESHOLD").getClass());
+		assertEquals(Double.class, d.get("GREY_THRESHOLD").getClass());
+		assertFalse(d.containsKey("THRESHOLD"), "LoG and DoG use THRESHOLD for a quality cut-off");
 		assertEquals(Double.class, d.get("R_OUT").getClass());
 		assertEquals(Integer.class, d.get("MIN_AREA").getClass());
 		assertNull(factory.checkSettings(d));
@@ -116,7 +123,8 @@ class ContactTrackerDetectorFactoryTest {
 		final Element older = new Element("DetectorSettings").setAttribute("THRESHOLD", "55.5");
 		final Map<String, Object> map = new HashMap<>();
 		assertNull(factory.unmarshal(older, map));
-		assertEquals(55.5, map.get("THRESHOLD"));
+		assertEquals(55.5, map.get("GREY_THRESHOLD"), "an earlier file's THRESHOLD is read");
+		assertFalse(map.containsKey("THRESHOLD"));
 		assertEquals(factory.getDefaultSettings().get("METHOD"), map.get("METHOD"));
 	}
 
@@ -237,6 +245,97 @@ class ContactTrackerDetectorFactoryTest {
 		assertEquals(65.3, panel.getSettings().get("DIAMETER"));
 		assertTrue(allComponents(panel).stream().anyMatch(c -> c instanceof JLabel && "micron (65.3 px)".equals(((JLabel) c)
 			.getText())));
+	}
+
+	/**
+	 * A length typed in the image's units, as the spinner shows it (4 decimals), lands on the pixels shown beside
+	 * it: 61 px, not 60.999998.
+	 */
+	@Test
+	void aLengthTypedInMicronsLandsOnThePixelsShown() {
+		final double dx = 0.123456;
+		final ImagePlus imp = IJ.createImage("calibrated", "8-bit black", 64, 48, 1);
+		imp.getCalibration().pixelWidth = imp.getCalibration().pixelHeight = dx;
+		imp.getCalibration().setUnit("micron");
+		final ConfigurationPanel panel = factory.getDetectorConfigurationPanel(new Settings(imp), new Model());
+		final Map<String, Object> s = factory.getDefaultSettings();
+		s.put("R_OUT", 60.0);
+		panel.setSettings(s);
+		final JSpinner rOut = allComponents(panel).stream().filter(c -> c instanceof JSpinner && Math.abs(((Number) (
+			(JSpinner) c).getValue()).doubleValue() - 60 * dx) < 1e-9).map(c -> (JSpinner) c).findFirst().get();
+		rOut.setValue(7.5308); // 61 px shown to 4 decimals: 7.530816 um
+		assertEquals(61.0, panel.getSettings().get("R_OUT"));
+		assertEquals(60.0, ContactTrackerConfigurationPanel.pixels(7.407360, dx));
+		assertEquals(31.65, ContactTrackerConfigurationPanel.pixels(31.65 * dx, dx), "the helper's 0.01 px kept");
+	}
+
+	/**
+	 * What TrackMate 8.0.0's wizard does when the user goes from Contact Tracker to LoG and back
+	 * (ChooseDetectorDescriptor.aboutToHidePanel, TrackMateWizardSequence.getConfigDescriptor): our values come
+	 * back, and LoG's THRESHOLD (a quality cut-off) does not become our grey level.
+	 */
+	@Test
+	void settingsSurviveADetectorSwitch() {
+		final ConfigurationPanel ours = factory.getDetectorConfigurationPanel(new Settings(), new Model());
+		final Map<String, Object> mine = TrackMateSettings.toMap(new TrackerParameters(172, 34, 20, Connectivity.EIGHT,
+			50, Method.values()[1]), 1);
+		mine.put("DIAMETER", 31.65);
+		ours.setSettings(mine);
+		assertEquals(mine, ours.getSettings()); // the wizard reads the panel as the user moves on
+		// to LoG: our map fails LoG's check, so the settings become LoG's defaults plus what keys match
+		final Map<String, Object> log = new HashMap<>(Map.of("TARGET_CHANNEL", 1, "RADIUS", 2.5, "THRESHOLD", 0.0,
+			"DO_MEDIAN_FILTERING", false, "DO_SUBPIXEL_LOCALIZATION", true));
+		assertFalse(log.containsKey(TrackMateSettings.KEY_THRESHOLD));
+		// back to ours: LoG's map fails our check, so TrackMate takes our getDefaultSettings() ...
+		assertNotNull(factory.checkSettings(log));
+		final Map<String, Object> settings = factory.getDefaultSettings();
+		// ... then fills our keys from LoG's panel, else from those settings
+		final Map<String, Object> handed = factory.getDefaultSettings();
+		for (final String key : handed.keySet()) {
+			final Object previous = log.get(key);
+			handed.put(key, previous != null ? previous : settings.get(key));
+		}
+		final ConfigurationPanel back = factory.getDetectorConfigurationPanel(new Settings(), new Model());
+		back.setSettings(handed);
+		assertEquals(mine, back.getSettings(), "r_out, the diameter and the threshold survive");
+		// a key the previous detector did not have comes as null: the last values, not the defaults
+		final Map<String, Object> withNulls = new HashMap<>(mine);
+		withNulls.put("R_OUT", null);
+		back.setSettings(withNulls);
+		assertEquals(34.0, back.getSettings().get("R_OUT"));
+	}
+
+	/** The DOI link is not broken across lines at the panel's width (it wrapped mid-string in the real wizard). */
+	@Test
+	void theDoiLinkStaysOnOneLine() throws Exception {
+		final List<String> problems = new java.util.ArrayList<>();
+		final java.util.Set<Double> lines = new java.util.HashSet<>();
+		// Swing lays text out on its event thread only
+		javax.swing.SwingUtilities.invokeAndWait(() -> {
+			final javax.swing.JScrollPane scroll = (javax.swing.JScrollPane) ContactTrackerConfigurationPanel.infoPane();
+			final javax.swing.JEditorPane pane = (javax.swing.JEditorPane) scroll.getViewport().getView();
+			try {
+				final javax.swing.text.Document doc = pane.getDocument();
+				final String text = doc.getText(0, doc.getLength());
+				final int start = text.indexOf(ContactTrackerConfigurationPanel.DOI_TEXT);
+				if (start < 0) throw new AssertionError(text);
+				final int end = start + ContactTrackerConfigurationPanel.DOI_TEXT.length() - 1;
+				// every width the wizard may give (fonts differ between machines: the break moves with them)
+				for (int width = 200; width <= 420; width += 4) {
+					pane.setSize(width, Short.MAX_VALUE);
+					pane.setSize(width, pane.getPreferredSize().height);
+					final java.awt.geom.Rectangle2D first = pane.modelToView2D(start), last = pane.modelToView2D(end);
+					if (Math.abs(first.getY() - last.getY()) > 0.5) problems.add("at " + width + " px the DOI runs from (" +
+						first.getX() + ", " + first.getY() + ") to (" + last.getX() + ", " + last.getY() + ")");
+					lines.add(first.getY());
+				}
+			}
+			catch (final javax.swing.text.BadLocationException e) {
+				throw new AssertionError(e);
+			}
+		});
+		assertTrue(problems.isEmpty(), String.join("\n", problems));
+		assertTrue(lines.size() > 1, "the text is laid out (the DOI's line moves with the width): " + lines);
 	}
 
 	/** The panel's fields are the settings descriptor's: one per setting, with its label, help and every choice. */

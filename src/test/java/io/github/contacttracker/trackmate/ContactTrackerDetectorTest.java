@@ -122,6 +122,8 @@ class ContactTrackerDetectorTest {
 			assertEquals(l.firstX() * DX, s.getFeature(SpotColumn.FIRST_PASS_X.key()), 0);
 			assertEquals(l.firstY() * DY, s.getFeature(SpotColumn.FIRST_PASS_Y.key()), 0);
 			assertEquals(l.sigmaX() * DX, s.getFeature(SpotColumn.SIGMA_X.key()), 0);
+			assertEquals(l.sigmaX(), s.getFeature(ContactTrackerSpotFeatures.SIGMA_X_PX), 0, "in pixels too");
+			assertEquals(l.sigmaY(), s.getFeature(ContactTrackerSpotFeatures.SIGMA_Y_PX), 0);
 			assertEquals(l.activeArea(), s.getFeature(SpotColumn.ACTIVE_AREA.key()), 0);
 			assertEquals(l.secondArea(), s.getFeature(SpotColumn.SECOND_AREA.key()), 0);
 			assertEquals(l.has(Flag.SECOND_PASS) ? 1 : 0, s.getFeature(SpotColumn.FLAG_SECOND_PASS.key()), 0);
@@ -230,7 +232,7 @@ class ContactTrackerDetectorTest {
 		settings.put(TrackMateSettings.KEY_THRESHOLD, 80); // an Integer, not a Double
 		final SpotGlobalDetector<FloatType> detector = factory.getDetector(img, settings, null);
 		assertFalse(detector.checkInput());
-		assertTrue(detector.getErrorMessage().contains("THRESHOLD"), detector.getErrorMessage());
+		assertTrue(detector.getErrorMessage().contains("GREY_THRESHOLD"), detector.getErrorMessage());
 	}
 
 	@Test

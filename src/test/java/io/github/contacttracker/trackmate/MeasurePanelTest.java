@@ -39,6 +39,12 @@ class MeasurePanelTest {
 	/** 0.1 um pixels, so that lengths on the panel differ from pixels. */
 	private static final Calibration MICRONS = new Calibration(0.1, 0.1, "micron", 1, "s");
 
+	/** Each test starts from the documented defaults, not the values another test's panel left. */
+	@org.junit.jupiter.api.BeforeEach
+	void freshSession() {
+		LastSettings.forget();
+	}
+
 	private static <T extends RealType<T> & NativeType<T>> ContactTrackerConfigurationPanel panel(final ImagePlus imp) {
 		return (ContactTrackerConfigurationPanel) new ContactTrackerDetectorFactory<T>().getDetectorConfigurationPanel(
 			new Settings(imp), new Model());
@@ -63,7 +69,7 @@ class MeasurePanelTest {
 
 		final ProfileAnalysis.Result r = helper(imp, 1, 0);
 		final Map<String, Object> after = panel.getSettings();
-		assertEquals(r.suggestedThreshold(true), number(after, "THRESHOLD"), 0);
+		assertEquals(r.suggestedThreshold(true), number(after, "GREY_THRESHOLD"), 0);
 		assertEquals(r.suggestedROut(), number(after, "R_OUT"), 0, "in pixels, whatever the panel shows");
 		assertEquals(Math.round(r.diameter() * 100) / 100.0, number(after, "DIAMETER"), 0);
 		for (final String key : List.of("MIN_AREA", "MIN_SECOND_AREA", "CONNECTIVITY", "METHOD", "TARGET_CHANNEL"))
@@ -93,7 +99,7 @@ class MeasurePanelTest {
 		final ProfileAnalysis.Result r = helper(imp, 0, 21.5);
 		assertFalse(r.diameterEstimated());
 		assertEquals(21.5, number(panel.getSettings(), "DIAMETER"), 0);
-		assertEquals(r.suggestedThreshold(true), number(panel.getSettings(), "THRESHOLD"), 0);
+		assertEquals(r.suggestedThreshold(true), number(panel.getSettings(), "GREY_THRESHOLD"), 0);
 		assertEquals(r.suggestedROut(), number(panel.getSettings(), "R_OUT"), 0);
 	}
 
@@ -101,7 +107,7 @@ class MeasurePanelTest {
 	void nothingToMeasureLeavesTheFieldsAndSaysWhy() {
 		final ContactTrackerConfigurationPanel panel = panel(ProfileScenes.empty("background only"));
 		final Map<String, Object> s = panel.getSettings();
-		s.put("THRESHOLD", 123.0);
+		s.put("GREY_THRESHOLD", 123.0);
 		s.put("R_OUT", 17.0);
 		panel.setSettings(s);
 		final String message = panel.measureFromImage();
@@ -124,7 +130,7 @@ class MeasurePanelTest {
 		while (!shown(panel).contains("Measured") && System.currentTimeMillis() < deadline)
 			Thread.sleep(20);
 		SwingUtilities.invokeAndWait(() -> {}); // the fields are filled in the same event as the message
-		assertEquals(helper(imp, 0, 0).suggestedThreshold(true), number(panel.getSettings(), "THRESHOLD"), 0);
+		assertEquals(helper(imp, 0, 0).suggestedThreshold(true), number(panel.getSettings(), "GREY_THRESHOLD"), 0);
 		assertTrue(button.isEnabled(), "ready for another measurement");
 
 		// without an image there is nothing to measure on

@@ -1,0 +1,66 @@
+package io.github.contacttracker.command;
+
+import org.scijava.ItemVisibility;
+import org.scijava.command.ContextCommand;
+import org.scijava.event.EventService;
+import org.scijava.log.LogService;
+import org.scijava.module.ModuleService;
+import org.scijava.platform.PlatformService;
+import org.scijava.plugin.Parameter;
+import org.scijava.widget.Button;
+
+/**
+ * What our three commands share: the dialog's first row (a one-line description and a Help button opening the
+ * manual's page) and the run's own checks ({@link OwnInputs}), started by the initializer {@code macroInputs}
+ * (each command names it in its {@code @Plugin}). A plain {@link ContextCommand}, so
+ * {@code commandService.run(...)} returns the module as usual.
+ */
+abstract class OwnCommand extends ContextCommand {
+
+	@Parameter
+	protected LogService log;
+
+	// What the command does, in one line (a message with no value: not remembered, no macro key).
+	@Parameter(visibility = ItemVisibility.MESSAGE, persist = false, required = false)
+	private String header;
+
+	@Parameter(label = "Help", callback = "openManual", persist = false, required = false,
+		description = DialogHelp.TIP + "Opens the manual's page on this command in the web browser")
+	private Button help;
+
+	@Parameter(required = false)
+	private PlatformService platform;
+
+	@Parameter(required = false)
+	private EventService events;
+
+	@Parameter(required = false)
+	private ModuleService modules;
+
+	/** This run's checks: refused values, a macro's values and left-out keys. */
+	protected final OwnInputs own = new OwnInputs(this);
+
+	private final String page;
+
+	/**
+	 * @param header what the command does, one line (plain text)
+	 * @param page the manual's page on it ({@link DialogHelp})
+	 */
+	OwnCommand(final String header, final String page) {
+		this.header = "<html><b>" + header + "</b></html>";
+		this.page = page;
+	}
+
+	/**
+	 * The initializer: from here on the run's own checks follow the module ({@link OwnInputs}): in an ImageJ macro
+	 * the keys it leaves out keep their defaults and a value that does not convert is refused by the run.
+	 */
+	private void macroInputs() {
+		own.start(events, modules);
+	}
+
+	/** The Help button: the manual's page on this command. */
+	private void openManual() {
+		DialogHelp.open(platform, log, page);
+	}
+}

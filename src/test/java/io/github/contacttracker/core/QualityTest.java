@@ -1,0 +1,61 @@
+package io.github.contacttracker.core;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.ArrayList;
+import java.util.List;
+
+import org.junit.jupiter.api.Test;
+
+/**
+ * QUALITY ranks real particles above noise: every particle, bright or faint, gets 1, components of noise less, so
+ * that a histogram threshold (TrackMate's automatic one) that keeps the top group keeps every particle.
+ */
+class QualityTest {
+
+	@Test
+	void theSignificanceOfTheSummedExcessCappedAtOne() {
+		// z = 400 / (4 sqrt(25)) = 20, of 50
+		assertEquals(20.0 / ContactTracker.FULL_SIGNIFICANCE, ContactTracker.quality(400, 25, 4), 1e-15);
+		assertEquals(1, ContactTracker.quality(1e6, 25, 4), 0);
+		assertEquals(1, ContactTracker.quality(10, 25, 0), 0, "a noiseless image: every spot is certain");
+	}
+
+	@Test
+	void particlesOfTwoBrightnessesAllGetOneNoiseComponentsLess() {
+		final int w = 220, h = 160;
+		final double[][] bright = { { 50, 50 }, { 160, 45 } }, faint = { { 55, 115 }, { 165, 112 } };
+		final double[] b = TestImages.render(w, h, 20, TestImages.gaussian(150, 8), bright);
+		final double[] f = TestImages.render(w, h, 0, TestImages.gaussian(45, 8), faint);
+		final double[] img = new double[w * h];
+		for (int i = 0; i < img.length; i++)
+			img[i] = b[i] + f[i];
+		// white noise and a threshold 6 grey levels above the background: small components of noise pass min_area 3
+		final double[] noisy = TestImages.withUniformNoise(img, 10, 20261202L);
+		final List<Localization> spots = new ContactTracker(TrackerParameters.of(26, 30).withMinArea(3).withMethod(
+			Method.values()[0])).track(TestImages.floats(noisy, w, h), 0);
+		final List<double[]> truth = new ArrayList<>(List.of(bright));
+		truth.addAll(List.of(faint));
+		int particles = 0, noise = 0;
+		double brightArea = 0, faintArea = Double.POSITIVE_INFINITY;
+		for (final Localization s : spots) {
+			final double[] nearest = truth.stream().min((p, q) -> Double.compare(Math.hypot(p[0] - s.x(), p[1] - s.y()),
+				Math.hypot(q[0] - s.x(), q[1] - s.y()))).get();
+			if (Math.hypot(nearest[0] - s.x(), nearest[1] - s.y()) < 3) {
+				particles++;
+				assertEquals(1, s.quality(), 0, "a particle at " + s.x() + ", " + s.y());
+				// the two kinds differ in size and brightness (the summed excess, which QUALITY was, split them)
+				if (nearest[1] < 80) brightArea = Math.max(brightArea, s.activeArea());
+				else faintArea = Math.min(faintArea, s.activeArea());
+			}
+			else {
+				noise++;
+				assertTrue(s.quality() < 0.5, "noise at " + s.x() + ", " + s.y() + ": " + s.quality());
+			}
+		}
+		assertEquals(4, particles, "every particle found");
+		assertTrue(noise >= 3, "the scene must hold components of noise: " + noise);
+		assertTrue(brightArea > faintArea, "two kinds of particles");
+	}
+}
