@@ -90,7 +90,7 @@ final class ComponentShape {
 	 * for a share {@code f} of the gradient weight in the smaller one, above {@code 0.1 D} for any {@code f >= 2%}.
 	 * A real particle's lines do not meet in one point either (an imperfect lens, illumination from a slight angle,
 	 * JPEG blocks): on the bright-field movie of the paper's authors single cores of radius 4.7 to 8.3 px have
-	 * residuals of 0.3 to 1.3 px, up to 0.17 of their radius, for a diameter of 32 px. The radius alone would flag
+	 * residuals of 0.3 to 1.3 px, up to 0.17 of their radius, for particles about 32-34 px apart at contact. The radius alone would flag
 	 * them; the diameter, which two merged particles' lines must span, does not.
 	 */
 	double residualLimit(final double diameter) {

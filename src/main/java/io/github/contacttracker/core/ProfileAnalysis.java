@@ -18,8 +18,10 @@ import net.imglib2.type.numeric.RealType;
  * <li>Particles: the frame's bright spots at half height between the frame's median and its brightest pixels
  * (a point given: the brightest pixel near it), localized by one radial-symmetry pass; merged spots (by shape)
  * and spots at the border are not profiled.</li>
- * <li>Diameter {@code D}: given, or estimated as the 10th percentile of the spots' nearest-neighbour distances
- * (colloids at contact sit one diameter apart; a warning says so).</li>
+ * <li>Diameter {@code D}: given, or the smaller of the 10th percentile of the spots' nearest-neighbour distances
+ * (colloids at contact sit one diameter apart) and twice where the particles' own image ends (the outer edge of a
+ * dark ring, else the reach), read off a profile taken to a provisional diameter and measured again at the
+ * estimate; a warning says which.</li>
  * <li>Profiled particles: the point given, or up to {@value #MAX_PARTICLES} spots with the largest distances to
  * their nearest neighbour. Pixels within the reach of any other spot are masked (first {@code D}, then the
  * measured reach).</li>
@@ -40,6 +42,8 @@ import net.imglib2.type.numeric.RealType;
  * centres (outside every particle's own half): the brightest such point is the bridge their active areas must
  * not reach. The threshold is the bridge plus {@value #THRESHOLD_MARGIN_SIGMAS} {@code s}. On a saturated core
  * only the plateau is flat, and the rule does not look inside {@code D/2}.</li>
+ * <li>Raised, when it must be, clear of the background's texture ({@link #textureGap}) and until the frame's
+ * active areas are round ({@link #roundFrom}).</li>
  * </ol>
  */
 public final class ProfileAnalysis {
@@ -277,8 +281,8 @@ public final class ProfileAnalysis {
 				"the middle of that gap", fmt(round2(atContact)), (int) gap[2], fmt(round2(gap[0])), fmt(round2(gap[1]))));
 		// 9. and where every active area has the shape of one particle (bright fringes between touching particles
 		// in bright field are brighter than the sum of two profiles), up to half the cores' height
-		final double ceiling = pooled.background + 0.5 * (peak(plane, cx, cy, Math.max(2, diameter / 4)) -
-			pooled.background);
+		final double peak = peak(plane, cx, cy, Math.max(2, diameter / 4));
+		final double ceiling = pooled.background + 0.5 * (peak - pooled.background);
 		final double[] shaped = roundFrom(plane, clear, ceiling, Math.max(0.5, noise / 2));
 		final double threshold = shaped[0];
 		if (threshold > clear)
@@ -316,8 +320,8 @@ public final class ProfileAnalysis {
 		for (final double[] c : centres)
 			inFrame.add(new double[] { c[0] + plane.minX(), c[1] + plane.minY() });
 		return new Result(cx + plane.minX(), cy + plane.minY(), refined, diameter, estimated, centres.size(), radiusCap,
-			pooled.radius, level, pooled.count, pooled.background, noise, peak(plane, cx, cy, Math.max(2, diameter / 4)),
-			reach, rOut, bridge, atContact, threshold, activeRadius, inFrame, warnings);
+			pooled.radius, level, pooled.count, pooled.background, noise, peak, reach, rOut, bridge, atContact, threshold,
+			activeRadius, inFrame, warnings);
 	}
 
 	/**
@@ -395,8 +399,8 @@ public final class ProfileAnalysis {
 	 * Where the particle's own image ends: the outer edge of its dark ring (where the profile, past its minimum,
 	 * comes back within the noise of the background) when it has one deeper than {@value #THRESHOLD_MARGIN_SIGMAS}
 	 * noise sigmas, as bright-field particles do; otherwise the reach. A faint halo beyond the ring is light the
-	 * particle scatters, not the particle: on the paper authors' bright-field movie the ring ends at 21.4 px and the
-	 * halo at 32 px, for particles 32 px apart at contact.
+	 * particle scatters, not the particle: on the paper authors' bright-field movie the ring ends at 21 px and the
+	 * halo at 40 px, for particles about 34 px apart at contact.
 	 */
 	private static double imageEdge(final Pooled p, final double reach) {
 		int deepest = -1;
