@@ -21,15 +21,6 @@ final class GroupFit {
 
 	static final int MAX_ITERATIONS = 50;
 	/**
-	 * Groups of up to this many particles are fitted jointly; larger ones member by member ({@code fitInTurn}). The
-	 * accuracy scenes (clusters of up to 13 particles at contact) are fitted jointly.
-	 */
-	static final int MAX_JOINT = 16;
-	/** A fitted centre further than this many equivalent radii of its active area from where the fit started is no fit. */
-	static final double MAX_SLIDE = 1;
-	/** At most this many sweeps over a large group. */
-	static final int MAX_SWEEPS = 30;
-	/**
 	 * Converged when no centre moves more than this in an iteration (px); that step is taken, unevaluated. The
 	 * iterations converge at least tenfold per step near the solution (on the bench stack: steps of about 5e-2,
 	 * 1e-4, 1e-7 px), so the centres end within about 1e-4 px of the exact least-squares point: a hundredth of a
@@ -55,60 +46,13 @@ final class GroupFit {
 		final List<int[]> groups = groups(particles, e, groupDistance);
 		int worst = 0;
 		for (final int[] group : groups) {
-			final int it = group.length <= MAX_JOINT ? fitJointly(plane, particles, e, group, profile, window, censoring)
-				: fitInTurn(plane, particles, e, group, profile, window, censoring);
+			final int it = fitGroup(plane, particles, e, group, profile, window, censoring);
+			if (it == 0) for (final int k : group)
+				e[k] = e[k].withFlags(e[k].flags() | Flag.FELL_BACK.bit());
 			if (it < 0) worst = Math.min(worst, it);
 			else if (worst >= 0) worst = Math.max(worst, it);
 		}
 		return new ProfileRefinement.Refined(e, worst);
-	}
-
-	/** One joint fit of the group; its members keep their estimates flagged {@code FELL_BACK} if it cannot be made. */
-	private static int fitJointly(final Plane plane, final Particle[] particles, final Estimate[] e, final int[] group,
-		final EmpiricalProfile profile, final double window, final Censoring censoring)
-	{
-		final int it = fitGroup(plane, particles, e, group, profile, window, censoring);
-		if (it == 0) for (final int k : group)
-			e[k] = e[k].withFlags(e[k].flags() | Flag.FELL_BACK.bit());
-		return it;
-	}
-
-	/**
-	 * A group too large to fit jointly (a dense monolayer is one group of a hundred particles or more: a joint fit
-	 * of 400 parameters costs minutes per frame and did not converge in {@value #MAX_ITERATIONS} iterations on the
-	 * paper authors' real movie): each member fitted alone, its neighbours' light held at their latest estimates,
-	 * in sweeps over the group until no centre moves more than {@link #TOLERANCE} (block coordinate descent on the
-	 * same least-squares problem, each member with its own local background plane), at most
-	 * {@value #MAX_SWEEPS} sweeps; beyond that the members are returned as they are, the count negative (flagged
-	 * {@code NOT_CONVERGED}). The cost is linear in the group's size. A member's standard errors are those of its own
-	 * fit, without its covariance with the neighbours.
-	 *
-	 * @return the largest iteration count of a member's fit in the last sweep, negative if the sweeps did not settle
-	 */
-	private static int fitInTurn(final Plane plane, final Particle[] particles, final Estimate[] e, final int[] group,
-		final EmpiricalProfile profile, final double window, final Censoring censoring)
-	{
-		final boolean[] failed = new boolean[group.length];
-		int most = 0;
-		boolean limit = false, settled = false;
-		for (int sweep = 1; sweep <= MAX_SWEEPS && !settled; sweep++) {
-			double move = 0;
-			most = 0;
-			limit = false;
-			for (int q = 0; q < group.length; q++) {
-				final int k = group[q];
-				final Estimate before = e[k];
-				final int it = fitGroup(plane, particles, e, new int[] { k }, profile, window, censoring);
-				failed[q] = it == 0;
-				if (!failed[q]) move = Math.max(move, e[k].distanceTo(before));
-				most = Math.max(most, Math.abs(it));
-				limit |= it < 0;
-			}
-			settled = move <= TOLERANCE;
-		}
-		for (int q = 0; q < group.length; q++)
-			if (failed[q]) e[group[q]] = e[group[q]].withFlags(e[group[q]].flags() | Flag.FELL_BACK.bit());
-		return settled && !limit ? most : -Math.max(most, 1);
 	}
 
 	/** Groups of reliable particles closer than {@code distance} (transitively), at centres {@code e}. */
@@ -301,10 +245,6 @@ final class GroupFit {
 		}
 		final double[][] inv = SymmetricSolver.invert(jtj);
 		if (inv == null) return 0;
-		// a centre that slid away from its particle (onto a neighbour, or off into the background): no fit
-		for (int q = 0; q < n; q++)
-			if (Math.hypot(p[PER_PARTICLE * q] - e[group[q]].x(), p[PER_PARTICLE * q + 1] - e[group[q]].y()) > MAX_SLIDE *
-				Math.sqrt(ps[group[q]].region.area() / Math.PI)) return 0;
 		final double dof = pixels.count() / (double) (pixels.count() - np), s2 = rss / (pixels.count() - np);
 		for (int q = 0; q < n; q++) {
 			final Estimate old = e[group[q]];
