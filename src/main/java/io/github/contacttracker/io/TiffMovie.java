@@ -92,22 +92,34 @@ final class TiffMovie {
 		final ImagePlus one = opener.openImage(); // plane 1: the calibration (incl. signed 16-bit), the bit depth
 		if (one == null) throw new IOException("cannot read " + file + ": ImageJ could not decode its first plane (" +
 			describe(first) + ")");
-		final FileStack stack = new FileStack(file, planes.length, one.getWidth(), one.getHeight(), true, t -> {
-			final ImageProcessor ip = new FileOpener((FileInfo) planes[t].clone()).openProcessor();
-			if (ip == null) throw new IOException("cannot read plane " + (t + 1) + " of " + file);
-			return ip;
-		});
+		final FileStack stack = new FileStack(file.toString(), stackFolder(file), planes.length, one.getWidth(), one
+			.getHeight(), true, t -> {
+				final ImageProcessor ip = new FileOpener((FileInfo) planes[t].clone()).openProcessor();
+				if (ip == null) throw new IOException("cannot read plane " + (t + 1) + " of " + file);
+				return ip;
+			});
+		return withMetadata(file.toString(), file.getFileName().toString(), stack, one, (FileInfo) planes[0].clone(),
+			planes.length);
+	}
+
+	/**
+	 * @param one plane 1 as ImageJ opened it: its calibration (incl. signed 16-bit) and bit depth
+	 * @param fi the first plane's description: the hyperstack's or the OME-XML's dimensions
+	 * @return the image of {@code stack}
+	 */
+	private static ImagePlus withMetadata(final String file, final String title, final FileStack stack,
+		final ImagePlus one, final FileInfo fi, final int planes) throws IOException
+	{
 		stack.setBitDepth(one.getBitDepth());
-		final ImagePlus imp = new ImagePlus(file.getFileName().toString(), stack);
+		final ImagePlus imp = new ImagePlus(title, stack);
 		imp.setCalibration(one.getCalibration());
-		final FileInfo fi = (FileInfo) planes[0].clone();
 		imp.setFileInfo(fi);
 		final Properties props = new FileOpener(fi).decodeDescriptionString(fi);
 		if (props != null) {
 			final int c = integer(props, "channels"), z = integer(props, "slices"), t = integer(props, "frames");
-			if (c * z * t == planes.length) imp.setDimensions(c, z, t);
+			if (c * z * t == planes) imp.setDimensions(c, z, t);
 		}
-		else if (first.description != null && first.description.contains("<OME")) ome(file, imp, first.description);
+		else if (fi.description != null && fi.description.contains("<OME")) ome(file, imp, fi.description);
 		return imp;
 	}
 
@@ -134,7 +146,7 @@ final class TiffMovie {
 	 * dimensions where the planes are in ImageJ's order, and planes in any other order of several dimensions are
 	 * refused rather than mixed up; {@code PhysicalSizeX} (microns) sets the pixel size.
 	 */
-	private static void ome(final Path file, final ImagePlus imp, final String xml) throws IOException {
+	private static void ome(final String file, final ImagePlus imp, final String xml) throws IOException {
 		int c = 1, z = 1, t = 1;
 		final Matcher m = OME_SIZE.matcher(xml);
 		while (m.find()) {
@@ -167,42 +179,33 @@ final class TiffMovie {
 	// ---- our own reader: BigTIFF and 64-bit float ----
 
 	/** One plane's layout, from its image file directory. */
-	private record Plane(int width, int height, int bits, int format, long[] offsets, long[] counts) {}
+	private record Plane(int width, int height, int bits, int format, int compression, long[] offsets, long[] counts) {}
+
+	/**
+	 * Every plane's layout, from the chain of image file directories.
+	 *
+	 * @param firstNext where the first directory's pointer to the next one is (4 bytes in a classic TIFF)
+	 */
+	private record Layout(List<Plane> planes, ByteOrder order, boolean big, long firstNext) {}
 
 	private static ImagePlus own(final Path file) throws IOException {
-		final List<Plane> planes = new ArrayList<>();
-		final boolean little;
-		try (FileChannel ch = FileChannel.open(file, StandardOpenOption.READ)) {
-			final ByteBuffer head = read(ch, 0, 16, ByteOrder.BIG_ENDIAN, file);
-			little = head.get(0) == 'I';
-			head.order(little ? ByteOrder.LITTLE_ENDIAN : ByteOrder.BIG_ENDIAN);
-			final boolean big = head.getShort(2) == 43;
-			long ifd = big ? head.getLong(8) : head.getInt(4) & 0xffffffffL;
-			final long size = ch.size();
-			while (ifd != 0) {
-				if (ifd < 8 || ifd >= size || planes.size() > 10_000_000)
-					throw new IOException("cannot read " + file + ": damaged TIFF (directory offset " + ifd + ")");
-				final ByteBuffer n = read(ch, ifd, big ? 8 : 2, head.order(), file);
-				final long entries = big ? n.getLong(0) : n.getShort(0) & 0xffff;
-				final int entrySize = big ? 20 : 12;
-				final ByteBuffer dir = read(ch, ifd + (big ? 8 : 2), (int) (entries * entrySize + (big ? 8 : 4)), head
-					.order(), file);
-				planes.add(plane(ch, dir, (int) entries, big, file));
-				final int next = (int) entries * entrySize;
-				ifd = big ? dir.getLong(next) : dir.getInt(next) & 0xffffffffL;
-			}
-		}
-		if (planes.isEmpty()) throw new IOException("cannot read " + file + ": no image in this TIFF");
+		final SeekableBytes bytes = SeekableBytes.of(file);
+		final Layout layout = layout(bytes);
+		final Plane p0 = layout.planes.get(0);
+		if (p0.compression != 1) throw new IOException("cannot read " + file + ": compressed BigTIFF or 64-bit TIFF " +
+			"(compression " + p0.compression + ") is not supported; save it uncompressed");
+		return own(bytes, file.getFileName().toString(), stackFolder(file), layout);
+	}
+
+	private static ImagePlus own(final SeekableBytes bytes, final String title, final String folder,
+		final Layout layout)
+	{
+		final List<Plane> planes = layout.planes;
 		final Plane p0 = planes.get(0);
-		for (final Plane p : planes)
-			if (p.width != p0.width || p.height != p0.height || p.bits != p0.bits || p.format != p0.format)
-				throw new IOException("cannot read " + file + ": its pages differ in size or pixel type (a pyramid or " +
-					"thumbnails?)");
-		final ByteOrder order = little ? ByteOrder.LITTLE_ENDIAN : ByteOrder.BIG_ENDIAN;
-		final FileStack stack = new FileStack(file, planes.size(), p0.width, p0.height, true, t -> decode(file, planes.get(
-			t), order));
+		final FileStack stack = new FileStack(bytes.name(), folder, planes.size(), p0.width, p0.height, true,
+			t -> decode(bytes, planes.get(t), layout.order));
 		stack.setBitDepth(p0.bits == 8 ? 8 : p0.bits == 16 ? 16 : 32);
-		final ImagePlus imp = new ImagePlus(file.getFileName().toString(), stack);
+		final ImagePlus imp = new ImagePlus(title, stack);
 		// signed integers are stored with an offset (ImageJ's way); the calibration gives back the file's values
 		if (p0.bits == 16 && p0.format == 2) imp.getCalibration().setSigned16BitCalibration();
 		if (p0.bits == 8 && p0.format == 2) imp.getCalibration().setFunction(ij.measure.Calibration.STRAIGHT_LINE,
@@ -210,9 +213,106 @@ final class TiffMovie {
 		return imp;
 	}
 
-	private static Plane plane(final FileChannel ch, final ByteBuffer dir, final int entries, final boolean big,
-		final Path file) throws IOException
+	/** @return the folder a local file's virtual stack names (ImageJ's convention) */
+	private static String stackFolder(final Path file) {
+		final Path parent = file.toAbsolutePath().getParent();
+		return parent == null ? "/" : parent.toString();
+	}
+
+	/**
+	 * A TIFF, BigTIFF or OME-TIFF read plane by plane by offset, wherever its bytes are ({@link SeekableBytes}): the
+	 * same image, pixels and calibration as {@link #open} gives for the file, for uncompressed data (what large
+	 * movies are). Classic TIFF's calibration and dimensions come from ImageJ's decoder, shown the first directory
+	 * only (so a long movie's chain of directories is walked once, by our reader, and never buffered).
+	 *
+	 * @throws IOException one line naming the file, and for what it cannot read, how to convert it
+	 */
+	static ImagePlus openByOffset(final SeekableBytes bytes, final String title) throws IOException {
+		final ByteBuffer head = ByteBuffer.allocate((int) Math.min(16, bytes.size()));
+		bytes.read(0, head);
+		final Layout layout;
+		if (!isTiff(head.array())) throw new IOException("cannot read " + bytes.name() + ": not a TIFF (the Spark job " +
+			"reads TIFF, BigTIFF and OME-TIFF); convert it, e.g. in Fiji: open it, then File > Save As > Tiff...");
+		layout = layout(bytes);
+		for (final Plane p : layout.planes)
+			if (p.compression != 1) throw new IOException("cannot read " + bytes.name() + ": compressed TIFF " +
+				"(compression " + p.compression + "), which cannot be read plane by plane by offset; save it " +
+				"uncompressed (Fiji: File > Save As > Tiff..., or tifffile without compression)");
+		if (layout.big) return own(bytes, title, "", layout);
+		final FileInfo[] info;
+		try {
+			info = new TiffDecoder(bytes.stream(layout.firstNext), title).getTiffInfo();
+		}
+		catch (final IOException e) {
+			return own(bytes, title, "", layout); // what ImageJ 1 cannot decode (64-bit float), as open() does
+		}
+		if (info == null || info.length == 0) throw new IOException("cannot read " + bytes.name() + ": no image in " +
+			"this TIFF");
+		final FileInfo fi = info[0];
+		final List<Plane> planes = new ArrayList<>(layout.planes);
+		if (fi.nImages > planes.size()) { // an ImageJ stack written with one directory: contiguous planes
+			final Plane p0 = planes.get(0);
+			final long bytesPerPlane = (long) fi.width * fi.height * fi.getBytesPerPixel();
+			planes.clear();
+			for (int i = 0; i < fi.nImages; i++) {
+				final long at = fi.getOffset() + i * (bytesPerPlane + fi.getGap());
+				if (at + bytesPerPlane > bytes.size()) throw new IOException("cannot read " + bytes.name() + ": truncated," +
+					" it ends in plane " + (i + 1) + " of " + fi.nImages);
+				planes.add(new Plane(p0.width, p0.height, p0.bits, p0.format, 1, new long[] { at }, new long[] {
+					bytesPerPlane }));
+			}
+		}
+		final FileInfo first = (FileInfo) fi.clone();
+		first.nImages = 1;
+		first.inputStream = bytes.stream(-1);
+		final ImagePlus one = new FileOpener(first).openImage();
+		if (one == null) throw new IOException("cannot read " + bytes.name() + ": ImageJ could not decode its first " +
+			"plane (" + describe(fi) + ")");
+		final Plane p0 = planes.get(0);
+		final FileStack stack = new FileStack(bytes.name(), "", planes.size(), p0.width, p0.height, true, t -> decode(
+			bytes, planes.get(t), layout.order));
+		final FileInfo described = (FileInfo) fi.clone();
+		described.nImages = 1;
+		return withMetadata(bytes.name(), title, stack, one, described, planes.size());
+	}
+
+	/** Reads the chain of image file directories (classic or BigTIFF), by offset. */
+	private static Layout layout(final SeekableBytes bytes) throws IOException {
+		final String file = bytes.name();
+		final List<Plane> planes = new ArrayList<>();
+		final ByteBuffer head = read(bytes, 0, 16, ByteOrder.BIG_ENDIAN);
+		final boolean little = head.get(0) == 'I';
+		head.order(little ? ByteOrder.LITTLE_ENDIAN : ByteOrder.BIG_ENDIAN);
+		final boolean big = head.getShort(2) == 43;
+		long ifd = big ? head.getLong(8) : head.getInt(4) & 0xffffffffL;
+		final long size = bytes.size();
+		long firstNext = -1;
+		while (ifd != 0) {
+			if (ifd < 8 || ifd >= size || planes.size() > 10_000_000)
+				throw new IOException("cannot read " + file + ": damaged TIFF (directory offset " + ifd + ")");
+			final ByteBuffer n = read(bytes, ifd, big ? 8 : 2, head.order());
+			final long entries = big ? n.getLong(0) : n.getShort(0) & 0xffff;
+			final int entrySize = big ? 20 : 12;
+			final ByteBuffer dir = read(bytes, ifd + (big ? 8 : 2), (int) (entries * entrySize + (big ? 8 : 4)), head
+				.order());
+			planes.add(plane(bytes, dir, (int) entries, big));
+			final int next = (int) entries * entrySize;
+			if (firstNext < 0) firstNext = ifd + (big ? 8 : 2) + next;
+			ifd = big ? dir.getLong(next) : dir.getInt(next) & 0xffffffffL;
+		}
+		if (planes.isEmpty()) throw new IOException("cannot read " + file + ": no image in this TIFF");
+		final Plane p0 = planes.get(0);
+		for (final Plane p : planes)
+			if (p.width != p0.width || p.height != p0.height || p.bits != p0.bits || p.format != p0.format)
+				throw new IOException("cannot read " + file + ": its pages differ in size or pixel type (a pyramid or " +
+					"thumbnails?)");
+		return new Layout(planes, head.order(), big, firstNext);
+	}
+
+	private static Plane plane(final SeekableBytes ch, final ByteBuffer dir, final int entries, final boolean big)
+		throws IOException
 	{
+		final String file = ch.name();
 		int width = 0, height = 0, bits = 1, format = 1, compression = 1, samples = 1;
 		long[] offsets = null, counts = null;
 		for (int i = 0; i < entries; i++) {
@@ -226,13 +326,11 @@ final class TiffMovie {
 				case 259 -> compression = (int) value(dir, at, type, big);
 				case 277 -> samples = (int) value(dir, at, type, big);
 				case 339 -> format = (int) value(dir, at, type, big);
-				case 273, 324 -> offsets = values(ch, dir, at, type, count, big, file);
-				case 279, 325 -> counts = values(ch, dir, at, type, count, big, file);
+				case 273, 324 -> offsets = values(ch, dir, at, type, count, big);
+				case 279, 325 -> counts = values(ch, dir, at, type, count, big);
 				default -> { /* other tags do not change the pixels */ }
 			}
 		}
-		if (compression != 1) throw new IOException("cannot read " + file + ": compressed BigTIFF or 64-bit TIFF " +
-			"(compression " + compression + ") is not supported; save it uncompressed");
 		if (samples != 1) throw new IOException("cannot read " + file + ": " + samples + " samples per pixel (colour?); " +
 			"save one grey channel");
 		final boolean ok = (bits == 8 || bits == 16 || bits == 32) && (format == 1 || format == 2 || format == 3 && bits ==
@@ -241,7 +339,7 @@ final class TiffMovie {
 			" are not supported (8/16/32-bit integer, 32/64-bit float)");
 		if (width <= 0 || height <= 0 || offsets == null || counts == null || offsets.length != counts.length)
 			throw new IOException("cannot read " + file + ": damaged TIFF directory (size or strips missing)");
-		return new Plane(width, height, bits, format, offsets, counts);
+		return new Plane(width, height, bits, format, compression, offsets, counts);
 	}
 
 	/** The single value of an entry (SHORT, LONG or LONG8), stored in the entry itself. */
@@ -254,42 +352,42 @@ final class TiffMovie {
 		};
 	}
 
-	private static long[] values(final FileChannel ch, final ByteBuffer dir, final int at, final int type,
-		final long count, final boolean big, final Path file) throws IOException
+	private static long[] values(final SeekableBytes ch, final ByteBuffer dir, final int at, final int type,
+		final long count, final boolean big) throws IOException
 	{
+		final String file = ch.name();
 		final int size = type == 3 ? 2 : type == 16 ? 8 : 4;
 		if (count > 100_000_000) throw new IOException("cannot read " + file + ": damaged TIFF (" + count + " strips)");
 		final int v = at + (big ? 12 : 8);
 		final ByteBuffer b = size * count <= (big ? 8 : 4) ? dir.slice(v, (int) (size * count)).order(dir.order()) : read(
-			ch, big ? dir.getLong(v) : dir.getInt(v) & 0xffffffffL, (int) (size * count), dir.order(), file);
+			ch, big ? dir.getLong(v) : dir.getInt(v) & 0xffffffffL, (int) (size * count), dir.order());
 		final long[] out = new long[(int) count];
 		for (int i = 0; i < count; i++)
 			out[i] = size == 2 ? b.getShort(i * 2) & 0xffff : size == 8 ? b.getLong(i * 8) : b.getInt(i * 4) & 0xffffffffL;
 		return out;
 	}
 
-	private static ByteBuffer read(final FileChannel ch, final long at, final int length, final ByteOrder order,
-		final Path file) throws IOException
+	private static ByteBuffer read(final SeekableBytes bytes, final long at, final int length, final ByteOrder order)
+		throws IOException
 	{
 		final ByteBuffer b = ByteBuffer.allocate(length);
-		while (b.hasRemaining())
-			if (ch.read(b, at + b.position()) < 0)
-				throw new IOException("cannot read " + file + ": truncated (ends before byte " + (at + length) + ")");
+		bytes.read(at, b);
 		b.flip();
 		return b.order(order);
 	}
 
 	/** Reads one plane's strips (positional reads: threads may read planes at once) and converts the samples. */
-	private static ImageProcessor decode(final Path file, final Plane p, final ByteOrder order) throws IOException {
+	private static ImageProcessor decode(final SeekableBytes file, final Plane p, final ByteOrder order)
+		throws IOException
+	{
 		final int n = p.width * p.height, bytes = p.bits / 8;
 		final ByteBuffer data = ByteBuffer.allocate(n * bytes).order(order);
-		try (FileChannel ch = FileChannel.open(file, StandardOpenOption.READ)) {
-			for (int s = 0; s < p.offsets.length && data.hasRemaining(); s++) {
-				final int len = (int) Math.min(p.counts[s], data.remaining());
-				data.put(read(ch, p.offsets[s], len, order, file));
-			}
+		for (int s = 0; s < p.offsets.length && data.hasRemaining(); s++) {
+			final int len = (int) Math.min(p.counts[s], data.remaining());
+			file.read(p.offsets[s], data.slice(data.position(), len));
+			data.position(data.position() + len);
 		}
-		if (data.hasRemaining()) throw new IOException("cannot read " + file + ": a plane's strips hold fewer pixels " +
+		if (data.hasRemaining()) throw new IOException("cannot read " + file.name() + ": a plane's strips hold fewer pixels " +
 			"than " + p.width + " x " + p.height);
 		data.flip();
 		switch (p.bits) {
