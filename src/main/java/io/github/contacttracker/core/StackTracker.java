@@ -124,7 +124,7 @@ public final class StackTracker {
 		private final EmpiricalProfile profile;
 		private final boolean settled;
 		private final transient List<FrameResult> round;
-		private final List<List<Localization>> sampleSpots;
+		private final List<FrameResult> sampleResults;
 
 		ProfileStage(final int[] sample, final EmpiricalProfile profile, final boolean settled,
 			final List<FrameResult> round)
@@ -133,9 +133,7 @@ public final class StackTracker {
 			this.profile = profile;
 			this.settled = settled;
 			this.round = round;
-			this.sampleSpots = new ArrayList<>();
-			for (final FrameResult r : flagged(round, settled))
-				sampleSpots.add(new ArrayList<>(r.spots()));
+			this.sampleResults = new ArrayList<>(flagged(round, settled));
 		}
 
 		/** @return the sample frames (0-based, ascending) */
@@ -153,9 +151,9 @@ public final class StackTracker {
 			return settled;
 		}
 
-		/** @return the final spots of sample frame {@code i} (of {@link #sample()}), flags included */
-		public List<Localization> sampleSpots(final int i) {
-			return sampleSpots.get(i);
+		/** @return the final result of sample frame {@code i} (of {@link #sample()}), flags included */
+		public FrameResult sampleResult(final int i) {
+			return sampleResults.get(i);
 		}
 
 		/** @return the frames of a movie of {@code count} frames that are not sample frames, ascending */

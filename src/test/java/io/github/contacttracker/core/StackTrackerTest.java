@@ -116,7 +116,7 @@ class StackTrackerTest {
 		for (int t = 0; t < frames.size(); t++)
 			byFrame.add(null);
 		for (int i = 0; i < sample.length; i++)
-			byFrame.set(sample[i], stage.sampleSpots(i));
+			byFrame.set(sample[i], stage.sampleResult(i).spots());
 		// the chunks done last first, each on a tracker of its own (as on another machine)
 		for (final int[] chunk : new int[][] { java.util.Arrays.copyOfRange(others, 3, 6), java.util.Arrays
 			.copyOfRange(others, 0, 3) })
