@@ -144,6 +144,7 @@ public final class SparkTrack {
 		final Map<String, Object> given = MoviePlan.ship(o.settings());
 		final boolean thresholdGiven = o.given(TrackingSettings.THRESHOLD), rOutGiven = o.given(TrackingSettings.R_OUT),
 			channelGiven = o.given(TrackingSettings.CHANNEL);
+		final long jobStart = System.currentTimeMillis();
 		final List<Tuple2<Integer, String>> movies = new ArrayList<>();
 		for (int m = 0; m < o.movies.size(); m++)
 			movies.add(new Tuple2<>(m, o.movies.get(m)));
@@ -178,7 +179,7 @@ public final class SparkTrack {
 		final boolean xml = o.trackMateXml;
 		final JavaRDD<MovieOutcome> outcomes = everyMovie.groupByKey(new HashPartitioner(Math.max(1, movies.size())))
 			.map(g -> {
-				final MovieOutcome written = write(shared.value().get(g._1), g._2, dir, xml);
+				final MovieOutcome written = write(shared.value().get(g._1), g._2, dir, xml, jobStart);
 				// after the files are written: the retry writes them again, and must leave them as they were
 				if (failWrite && g._1 == firstGood(shared.value())) failOnFirstAttempt("write");
 				return written;
@@ -269,9 +270,10 @@ public final class SparkTrack {
 
 	/** Stage 3 of one movie (on an executor): its frames in order, its files written all or none. */
 	private static MovieOutcome write(final MoviePlan plan, final Iterable<TrackedChunk> chunks, final String dir,
-		final boolean xml) throws IOException
+		final boolean xml, final long jobStartMillis) throws IOException
 	{
-		final long start = System.nanoTime();
+		// the summary's time is the job's so far (wall clock: the driver's nanoTime means nothing here)
+		final long start = System.nanoTime() - (System.currentTimeMillis() - jobStartMillis) * 1_000_000L;
 		final FrameResult[] byFrame = new FrameResult[plan.frames()];
 		if (plan.stage() != null) {
 			final int[] sample = plan.stage().sample();
