@@ -24,11 +24,6 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
-import ij.ImagePlus;
-import ij.ImageStack;
-import ij.io.FileSaver;
-import ij.process.ImageProcessor;
-import io.github.contacttracker.cli.ContactTrackerCli;
 
 /**
  * The Spark job on {@code local[2]} against the command line: each movie's CSV and TrackMate XML byte for byte
@@ -48,39 +43,9 @@ class SparkTrackTest {
 
 	@BeforeAll
 	static void movies() throws IOException {
-		pair = dir.resolve("pair.tif");
-		final Object[] r = cli("simulate", "--scenario", "pair", "--separation", "1.0", "--frames", "12", "--seed", "3",
-			"--out", pair.toString(), "--truth", dir.resolve("truth.csv").toString());
-		assertEquals(0, r[0], (String) r[2]);
-		// the same frames on a large canvas of their background (ImageJ's writer, calibration kept)
-		final ImagePlus small = new ImagePlus(pair.toString());
-		final ImageStack big = new ImageStack(1024, 1024);
-		for (int t = 1; t <= small.getStackSize(); t++) {
-			final ImageProcessor ip = small.getStack().getProcessor(t);
-			final ImageProcessor canvas = ip.createProcessor(1024, 1024);
-			canvas.setValue(ip.getStatistics().median);
-			canvas.fill();
-			canvas.insert(ip, 300, 200);
-			big.addSlice(canvas);
-		}
-		final ImagePlus movie = new ImagePlus("padded", big);
-		movie.setCalibration(small.getCalibration());
-		padded = dir.resolve("padded.tif");
-		assertTrue(new FileSaver(movie).saveAsTiffStack(padded.toString()));
-		// pair.tif again, 6 frames
-		final ImageStack six = new ImageStack(small.getWidth(), small.getHeight());
-		for (int t = 1; t <= 6; t++)
-			six.addSlice(small.getStack().getProcessor(t));
-		final ImagePlus sixFrames = new ImagePlus("pair", six);
-		sixFrames.setCalibration(small.getCalibration());
-		assertTrue(new FileSaver(sixFrames).saveAsTiffStack(pair.toString()));
-	}
-
-	static Object[] cli(final String... args) {
-		final ByteArrayOutputStream out = new ByteArrayOutputStream(), err = new ByteArrayOutputStream();
-		final int status = ContactTrackerCli.run(args, new PrintStream(out, true, StandardCharsets.UTF_8),
-			new PrintStream(err, true, StandardCharsets.UTF_8));
-		return new Object[] { status, out.toString(StandardCharsets.UTF_8), err.toString(StandardCharsets.UTF_8) };
+		final Path[] movies = SparkTestMovies.movies(dir);
+		padded = movies[0];
+		pair = movies[1];
 	}
 
 	static Object[] spark(final String... args) {
@@ -94,9 +59,9 @@ class SparkTrackTest {
 	void equalsTheCommandLineByteForByteThroughRetriesAndABadMovie() throws IOException {
 		final Path cliDir = Files.createDirectories(dir.resolve("cli")), sparkDir = Files.createDirectories(dir.resolve(
 			"spark"));
-		final Object[] c = cli("track", padded.toString(), pair.toString(), "--out-dir", cliDir.toString());
+		final Object[] c = SparkTestMovies.cli("track", padded.toString(), pair.toString(), "--out-dir", cliDir.toString());
 		assertEquals(0, c[0], (String) c[2]);
-		final Object[] x = cli("track", pair.toString(), "--csv", cliDir.resolve("pair-xml.csv").toString(),
+		final Object[] x = SparkTestMovies.cli("track", pair.toString(), "--csv", cliDir.resolve("pair-xml.csv").toString(),
 			"--trackmate-xml", cliDir.resolve("pair.xml").toString());
 		assertEquals(0, x[0], (String) x[2]);
 		final Path broken = dir.resolve("broken.avi");
@@ -135,7 +100,7 @@ class SparkTrackTest {
 			"pair.csv")));
 		// the summaries are the command line's, but for the time
 		for (final String m : List.of(padded.toString(), pair.toString()))
-			assertEquals(summary((String) c[1], m), summary((String) s[1], m));
+			assertEquals(SparkTestMovies.summary((String) c[1], m), SparkTestMovies.summary((String) s[1], m));
 		// nothing else in the folder: no partial file of a failed attempt, no file of the broken movie
 		final Set<String> files = new TreeSet<>();
 		try (Stream<Path> list = Files.list(sparkDir)) {
@@ -166,11 +131,5 @@ class SparkTrackTest {
 		finally {
 			reader.stop();
 		}
-	}
-
-	/** @return the summary line of {@code movie}, its time left out */
-	private static String summary(final String out, final String movie) {
-		return out.lines().filter(l -> l.startsWith(movie + ": ")).findFirst().orElseThrow(() -> new AssertionError(
-			"no summary of " + movie + " in " + out)).replaceAll(", [0-9.]+ s \\([0-9.]+ frames/s\\)", "");
 	}
 }
