@@ -75,8 +75,13 @@ public final class SparkTrack {
 	 */
 	static final String FAIL_FIRST_ATTEMPT = "spark.contacttracker.test.failFirstAttempt";
 
-	/** Runs the job and exits with its status. */
+	/**
+	 * Runs the job and exits with its status; {@code potential TABLE ...} first runs the pair potential of a spots
+	 * table instead ({@link SparkPotential}).
+	 */
 	public static void main(final String[] args) {
+		if (args.length > 0 && args[0].equals("potential")) System.exit(SparkPotential.run(Arrays.copyOfRange(args, 1,
+			args.length), System.out, System.err));
 		System.exit(run(args, System.out, System.err));
 	}
 
