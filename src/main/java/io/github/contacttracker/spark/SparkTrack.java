@@ -194,30 +194,36 @@ public final class SparkTrack {
 
 		// the table of all spots, partitioned by movie
 		final String parquet = o.parquet != null ? o.parquet : outDir.resolve("spots.parquet").toUri().toString();
-		if (!done.isEmpty()) spark.createDataFrame(outcomes.flatMap(m -> rows(m).iterator()), schema()).write().mode(
+		if (done.stream().anyMatch(m -> m.error() == null)) spark.createDataFrame(outcomes.flatMap(m -> rows(m).iterator()), schema()).write().mode(
 			SaveMode.Overwrite).partitionBy("MOVIE").parquet(parquet);
 		outcomes.unpersist();
 
+		final Map<Integer, MovieOutcome> outcomeOf = new HashMap<>();
+		done.forEach(m -> outcomeOf.put(m.index(), m));
 		int failed = 0;
 		for (final MoviePlan p : plans) {
-			if (p.error() != null) {
-				err.println("contact-tracker-spark: error: " + p.movie() + ": " + p.error());
+			final String error = p.error() != null ? p.error() : outcomeOf.get(p.index()).error();
+			if (error != null) {
+				err.println("contact-tracker-spark: error: " + p.movie() + ": " + error);
 				failed++;
 				continue;
 			}
 			if (!p.notice().isEmpty()) err.println(p.notice());
 		}
 		for (final MovieOutcome m : done)
-			out.println(m.summary());
+			if (m.error() == null) out.println(m.summary());
 		if (failed == 0) return 0;
 		err.println("contact-tracker-spark: " + failed + " of " + plans.size() + " movies failed (see above); the " +
 			"others were written");
 		return EXIT_BAD_INPUT;
 	}
 
-	/** The frames of a chunk, tracked; {@link #NONE} stands for a movie's place in stage 3. */
-	record TrackedChunk(int[] frames, List<FrameResult> results) implements java.io.Serializable {
-		static final TrackedChunk NONE = new TrackedChunk(new int[0], List.of());
+	/**
+	 * The frames of a chunk, tracked, or why they could not be (a NaN pixel: one line, naming the frame); {@link #NONE}
+	 * stands for a movie's place in stage 3.
+	 */
+	record TrackedChunk(int[] frames, List<FrameResult> results, String error) implements java.io.Serializable {
+		static final TrackedChunk NONE = new TrackedChunk(new int[0], List.of(), null);
 	}
 
 	/**
@@ -227,10 +233,10 @@ public final class SparkTrack {
 	 * @param spots the spots written (empty once collected to the driver)
 	 */
 	record MovieOutcome(int index, String name, String summary, List<Localization> spots,
-		io.github.contacttracker.io.Calibration calibration) implements java.io.Serializable
+		io.github.contacttracker.io.Calibration calibration, String error) implements java.io.Serializable
 	{
 		MovieOutcome withoutSpots() {
-			return new MovieOutcome(index, name, summary, List.of(), calibration);
+			return new MovieOutcome(index, name, summary, List.of(), calibration, error);
 		}
 	}
 
@@ -266,11 +272,17 @@ public final class SparkTrack {
 
 	/** Stage 2 of one chunk (on an executor), one thread: the executor's cores are Spark's tasks. */
 	@SuppressWarnings("unchecked")
-	private static TrackedChunk trackChunk(final MoviePlan plan, final int[] chunk) throws IOException {
-		final ImagePlusFrames frames = Movies.open(plan.uri(), plan.movie(), plan.channel()).frames();
-		final List<FrameResult> results = StackTracker.withThreads(1, () -> new StackTracker(plan.values()
-			.parameters()).trackWith(plan.stage(), chunk, frameFunction(frames), () -> false));
-		return new TrackedChunk(chunk, results);
+	private static TrackedChunk trackChunk(final MoviePlan plan, final int[] chunk) {
+		try {
+			final ImagePlusFrames frames = Movies.open(plan.uri(), plan.movie(), plan.channel()).frames();
+			final List<FrameResult> results = StackTracker.withThreads(1, () -> new StackTracker(plan.values()
+				.parameters()).trackWith(plan.stage(), chunk, frameFunction(frames), () -> false));
+			return new TrackedChunk(chunk, results, null);
+		}
+		catch (final InvalidInputException | IOException | UncheckedIOException e) {
+			// the movie's fault, not the task's: retrying cannot help, and the other movies must still be done
+			return new TrackedChunk(chunk, List.of(), oneLine(e.getMessage()));
+		}
 	}
 
 	/** Stage 3 of one movie (on an executor): its frames in order, its files written all or none. */
@@ -279,6 +291,11 @@ public final class SparkTrack {
 	{
 		// the summary's time is the job's so far (wall clock: the driver's nanoTime means nothing here)
 		final long start = System.nanoTime() - (System.currentTimeMillis() - jobStartMillis) * 1_000_000L;
+		TrackedChunk failed = null; // the first in frame order, as the command line reports the first bad frame
+		for (final TrackedChunk c : chunks)
+			if (c.error() != null && (failed == null || c.frames()[0] < failed.frames()[0])) failed = c;
+		if (failed != null) return new MovieOutcome(plan.index(), name(plan.movie()), null, List.of(), plan
+			.calibration(), failed.error());
 		final FrameResult[] byFrame = new FrameResult[plan.frames()];
 		if (plan.stage() != null) {
 			final int[] sample = plan.stage().sample();
@@ -299,7 +316,7 @@ public final class SparkTrack {
 			outputs, start);
 		final String fileName = plan.uri().substring(plan.uri().lastIndexOf('/') + 1);
 		return new MovieOutcome(plan.index(), name, plan.movie() + ": " + r.summary(fileName), r.spots(), plan
-			.calibration());
+			.calibration(), null);
 	}
 
 	/** @return the image TrackMate's XML names: a local movie as the command line names it, else its URI */

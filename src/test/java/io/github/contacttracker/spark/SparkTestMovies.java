@@ -25,7 +25,8 @@ final class SparkTestMovies {
 
 	/**
 	 * @return in {@code dir}: padded.tif (12 frames of 1024 x 1024: the profile is measured on 3 of them, the 9 others
-	 *         go to chunks) and pair.tif (6 frames of 206 x 140, all of them profile frames), simulated touching pairs
+	 *         go to chunks), pair.tif (6 frames of 206 x 140, all of them profile frames), simulated touching pairs,
+	 *         and nan.tif (padded.tif in 32-bit float, a NaN pixel in frame 10)
 	 */
 	static Path[] movies(final Path dir) throws IOException {
 		final Path pair = dir.resolve("pair.tif");
@@ -54,7 +55,16 @@ final class SparkTestMovies {
 		final ImagePlus sixFrames = new ImagePlus("pair", six);
 		sixFrames.setCalibration(small.getCalibration());
 		assertTrue(new FileSaver(sixFrames).saveAsTiffStack(pair.toString()));
-		return new Path[] { padded, pair };
+		// padded.tif as 32-bit float with a NaN pixel in frame 10: a chunk's frame, not a profile frame (1, 5, 9)
+		final ImageStack floats = new ImageStack(1024, 1024);
+		for (int t = 1; t <= big.getSize(); t++)
+			floats.addSlice(big.getProcessor(t).convertToFloat());
+		floats.getProcessor(10).putPixelValue(10, 10, Float.NaN);
+		final ImagePlus nanMovie = new ImagePlus("nan", floats);
+		nanMovie.setCalibration(small.getCalibration());
+		final Path nan = dir.resolve("nan.tif");
+		assertTrue(new FileSaver(nanMovie).saveAsTiffStack(nan.toString()));
+		return new Path[] { padded, pair, nan };
 	}
 
 	static Object[] cli(final String... args) {

@@ -40,12 +40,15 @@ class SparkTrackTest {
 	static Path padded;
 	/** 6 frames of 206 x 140: all of them are profile frames. */
 	static Path pair;
+	/** padded.tif in float with a NaN pixel in frame 10, which a chunk task meets. */
+	static Path nan;
 
 	@BeforeAll
 	static void movies() throws IOException {
 		final Path[] movies = SparkTestMovies.movies(dir);
 		padded = movies[0];
 		pair = movies[1];
+		nan = movies[2];
 	}
 
 	static Object[] spark(final String... args) {
@@ -66,6 +69,11 @@ class SparkTrackTest {
 		assertEquals(0, x[0], (String) x[2]);
 		final Path broken = dir.resolve("broken.avi");
 		Files.writeString(broken, "RIFF....AVI not really");
+		final Object[] n = SparkTestMovies.cli("track", nan.toString(), pair.toString(), "--out-dir", Files
+			.createDirectories(dir.resolve("cli-nan")).toString());
+		final String nanError = ((String) n[2]).lines().filter(l -> l.startsWith("contact-tracker: error: " + nan))
+			.findFirst().orElseThrow(() -> new AssertionError((String) n[2])).substring("contact-tracker: ".length());
+		assertTrue(nanError.contains("frame 10"), nanError);
 
 		// local[2] with two attempts per task; the first attempt of the first chunk and of the first movie's writing
 		// fails (the writing one after its files are written)
@@ -79,18 +87,21 @@ class SparkTrackTest {
 				if (e.taskInfo().failed()) failedTasks.incrementAndGet();
 			}
 		});
-		final Object[] s = spark(padded.toString(), broken.toString(), pair.toString(), "--out-dir", sparkDir
-			.toString(), "--chunk", "4", "--trackmate-xml");
+		final Object[] s = spark(padded.toString(), broken.toString(), nan.toString(), pair.toString(), "--out-dir",
+			sparkDir.toString(), "--chunk", "4", "--trackmate-xml");
 		assertEquals(SparkTrack.EXIT_BAD_INPUT, s[0], (String) s[2]);
 		final List<String> errors = ((String) s[2]).lines().filter(l -> l.startsWith("contact-tracker-spark: error:"))
 			.toList();
-		assertEquals(1, errors.size(), (String) s[2]);
+		assertEquals(2, errors.size(), (String) s[2]);
+		// a NaN met by a chunk task: the command line's message, the movie not written, no task retried for it
+		assertEquals("contact-tracker-spark: " + nanError, errors.get(1));
 		assertTrue(errors.get(0).startsWith("contact-tracker-spark: error: " + broken + ": cannot read " + broken +
 			": not a TIFF") && errors.get(0).contains("Save As > Tiff"), errors.get(0));
-		assertTrue(((String) s[2]).contains("1 of 3 movies failed"), (String) s[2]);
-		assertEquals(2, failedTasks.get(), "the two injected failures, each retried once");
-		// stage 1: 3 movies; stage 2: 9 frames of padded.tif in chunks of 4; stage 3: 2 movies; the Parquet table
-		assertTrue(tasks.get() >= 3 + 3 + 2, tasks + " tasks");
+		assertTrue(((String) s[2]).contains("2 of 4 movies failed"), (String) s[2]);
+		assertEquals(3, failedTasks.get(), "the injected failures (the first chunk of padded.tif and of nan.tif, the " +
+			"first movie's writing), each retried once");
+		// stage 1: 4 movies; stage 2: 9 frames of padded.tif and of nan.tif in chunks of 4; stage 3: 3 movies
+		assertTrue(tasks.get() >= 4 + 6 + 3, tasks + " tasks");
 
 		for (final String name : List.of("padded.csv", "pair.csv"))
 			assertArrayEquals(Files.readAllBytes(cliDir.resolve(name)), Files.readAllBytes(sparkDir.resolve(name)), name);
