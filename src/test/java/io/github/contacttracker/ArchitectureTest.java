@@ -34,7 +34,8 @@ class ArchitectureTest {
 		Map.entry("pipeline", Set.of("core", "io", "settings")), //
 		Map.entry("cli", Set.of("core", "sim", "potential", "settings", "io", "eval", "pipeline")), //
 		Map.entry("command", Set.of("core", "sim", "potential", "settings", "io", "eval", "pipeline")), //
-		Map.entry("trackmate", Set.of("core", "settings", "io", "pipeline")));
+		Map.entry("trackmate", Set.of("core", "settings", "io", "pipeline")), //
+		Map.entry("spark", Set.of("core", "potential", "settings", "io", "pipeline")));
 
 	private static final Pattern REFERENCE = Pattern.compile("io\\.github\\.contacttracker\\.([a-z]+)\\.");
 

@@ -169,11 +169,6 @@ public final class ContactTrackerCli {
 		return file;
 	}
 
-	/** @return a number as an option's value: exact, shortest, no exponent ({@code 174}, {@code 31.65}) */
-	static String fmt(final double v) {
-		return java.math.BigDecimal.valueOf(v).stripTrailingZeros().toPlainString();
-	}
-
 	/** @return {@code text} split at commas, each part trimmed */
 	static List<String> list(final String text) {
 		return List.of(text.split(",")).stream().map(String::trim).toList();

@@ -15,6 +15,7 @@ import io.github.contacttracker.io.AtomicFile;
 import io.github.contacttracker.io.ImageFiles;
 import io.github.contacttracker.io.ImagePlusFrames;
 import io.github.contacttracker.io.ProfilePlots;
+import io.github.contacttracker.pipeline.MeasuredSettings;
 import net.imglib2.RandomAccessibleInterval;
 
 /**
@@ -97,8 +98,8 @@ public final class ProfileCommand extends ContactTrackerCli.Subcommand {
 		}
 		for (final Path t : targets)
 			out.println("  wrote " + t);
-		out.println(SUGGESTION + " --threshold " + ContactTrackerCli.fmt(threshold) + " --r-out " + ContactTrackerCli.fmt(
-			rOut) + " --diameter " + ContactTrackerCli.fmt(r.suggestedDiameter()));
+		out.println(SUGGESTION + " --threshold " + MeasuredSettings.optionValue(threshold) + " --r-out " + MeasuredSettings.optionValue(
+			rOut) + " --diameter " + MeasuredSettings.optionValue(r.suggestedDiameter()));
 		return 0;
 	}
 

@@ -15,14 +15,13 @@ import java.util.List;
 import java.util.Map;
 
 import ij.ImagePlus;
-import net.imglib2.RandomAccessibleInterval;
 import io.github.contacttracker.core.InvalidInputException;
-import io.github.contacttracker.core.ProfileAnalysis;
 import io.github.contacttracker.io.ImageFiles;
 import io.github.contacttracker.io.ImagePlusFrames;
 import io.github.contacttracker.io.ImageSource;
 import io.github.contacttracker.io.SpotCsvWriter;
 import io.github.contacttracker.pipeline.FrameSource;
+import io.github.contacttracker.pipeline.MeasuredSettings;
 import io.github.contacttracker.pipeline.Outputs;
 import io.github.contacttracker.pipeline.TrackingPipeline;
 import io.github.contacttracker.pipeline.TrackingResult;
@@ -165,64 +164,24 @@ final class TrackCommand extends ContactTrackerCli.Subcommand {
 	}
 
 	/**
-	 * The settings with what was not given measured from the movie's first frame by the profile helper, as
-	 * {@code profile} suggests it: {@code --threshold} and {@code --r-out} (an error if they cannot be measured), and
-	 * {@code --diameter} (merge detection and RADIUS use it; without it the movie is still tracked). What was
-	 * measured goes into {@code notice}, with the options that override it.
+	 * The settings with what was not given measured from the movie's first frame ({@link MeasuredSettings}); what was
+	 * measured goes into {@code notice}.
 	 */
 	private SettingValues measured(final Path input, final ImagePlus imp, final ImagePlusFrames frames,
 		final SettingValues settings, final StringBuilder notice)
 	{
-		final boolean threshold = options.given(settingOptions.get(TrackingSettings.THRESHOLD));
-		final boolean rOut = options.given(settingOptions.get(TrackingSettings.R_OUT));
-		final boolean diameter = settings.diameter() > 0;
-		if (threshold && rOut && diameter) return settings;
-		final ProfileAnalysis.Result r;
-		try {
-			r = profile(frames.frames().get(0), settings.diameter());
-		}
-		catch (final InvalidInputException e) {
-			if (threshold && rOut) {
-				notice.append("contact-tracker: ").append(input.getFileName()).append(": the diameter could not be " +
-					"measured (").append(InvalidInputException.oneLine(e.getMessage())).append("); tracked without it (give " +
-						"--diameter)");
-				return settings;
-			}
-			throw new InvalidInputException("cannot measure " + (threshold ? "" : "--threshold ") + (threshold || rOut
-				? "" : "and ") + (rOut ? "" : "--r-out ") + "on the first frame of " + input.getFileName() + ": " + e
-					.getMessage() + "; give them (contact-tracker profile MOVIE --at X,Y measures one particle)", e);
-		}
-		SettingValues v = settings;
-		final StringBuilder said = new StringBuilder();
-		if (!threshold) {
-			v = v.with(TrackingSettings.THRESHOLD, r.suggestedThreshold(imp.getBitDepth() != 32));
-			said.append(" --threshold ").append(ContactTrackerCli.fmt(v.get(TrackingSettings.THRESHOLD)));
-		}
-		if (!rOut) {
-			v = v.with(TrackingSettings.R_OUT, r.suggestedROut());
-			said.append(" --r-out ").append(ContactTrackerCli.fmt(v.get(TrackingSettings.R_OUT)));
-		}
-		if (!diameter) {
-			v = v.with(TrackingSettings.DIAMETER, r.suggestedDiameter());
-			said.append(" --diameter ").append(ContactTrackerCli.fmt(v.diameter()));
-		}
-		notice.append("contact-tracker: ").append(input.getFileName()).append(": measured on frame 1 by the profile " +
-			"helper:").append(said).append(" (given values win; 'contact-tracker profile ").append(input.getFileName())
-			.append("' shows how)");
-		return v;
-	}
-
-	@SuppressWarnings({ "unchecked", "rawtypes" })
-	private static ProfileAnalysis.Result profile(final RandomAccessibleInterval frame, final double diameter) {
-		return ProfileAnalysis.analyse(frame, diameter, 0);
+		final MeasuredSettings.Result r = MeasuredSettings.of(input.getFileName().toString(), frames.frames().get(0),
+			imp.getBitDepth() != 32, settings, options.given(settingOptions.get(TrackingSettings.THRESHOLD)), options
+				.given(settingOptions.get(TrackingSettings.R_OUT)));
+		notice.append(r.notice());
+		return r.settings();
 	}
 
 	/** @return a movie's name for its CSV: the file name without its extension (a folder's name as it is) */
 	static String name(final Path movie) {
 		final Path fileName = movie.toAbsolutePath().normalize().getFileName();
 		final String name = fileName == null ? "movie" : fileName.toString();
-		final int dot = name.lastIndexOf('.');
-		return dot > 0 && !Files.isDirectory(movie) ? name.substring(0, dot) : name;
+		return Files.isDirectory(movie) ? name : Outputs.baseName(name);
 	}
 
 	/** @return the tracking settings given on the command line, the others at their defaults */

@@ -1,5 +1,7 @@
 package io.github.contacttracker.core;
 
+import java.io.Serializable;
+
 /**
  * A single particle's radial intensity profile measured from the data: a smooth even function of the
  * distance to the centre (a uniform cubic B-spline, mirrored at r = 0 so that P'(0) = 0), going to zero with
@@ -8,7 +10,10 @@ package io.github.contacttracker.core;
  * It is the pixel-integrated profile (values are fitted to pixel values at pixel-centre distances), so models
  * built from it need no further pixel integration.
  */
-public final class EmpiricalProfile {
+public final class EmpiricalProfile implements Serializable {
+
+	// serializable: a distributed front end measures it once per movie and ships it to the workers
+	private static final long serialVersionUID = 1L;
 
 	private final double spacing;
 	private final double[] coefficients;

@@ -1,5 +1,6 @@
 package io.github.contacttracker.core;
 
+import java.io.Serializable;
 import java.util.List;
 
 /**
@@ -16,8 +17,12 @@ import java.util.List;
  *        front ends report)
  */
 public record FrameResult(List<Localization> spots, List<Region> activeAreas, List<Region> secondAreas,
-	double noiseSigma, int discarded, boolean ownProfile)
+	double noiseSigma, int discarded, boolean ownProfile) implements Serializable
 {
+	// serializable without regions (a distributed front end ships results without them)
+	private static final long serialVersionUID = 1L;
+
+	/** Copies the lists. */
 	public FrameResult {
 		spots = List.copyOf(spots);
 		activeAreas = List.copyOf(activeAreas);

@@ -1,5 +1,6 @@
 package io.github.contacttracker.core;
 
+import java.io.Serializable;
 import java.util.Set;
 
 /**
@@ -32,7 +33,7 @@ import java.util.Set;
  */
 public record Localization(int frame, double x, double y, double firstX, double firstY, int activeArea,
 	int secondArea, double quality, double radius, int flags, int iterations, double sigmaX, double sigmaY,
-	double amplitude, double scale)
+	double amplitude, double scale) implements Serializable
 {
 
 	/** A spot without the fit's amplitude and scale (NaN). */

@@ -1,5 +1,6 @@
 package io.github.contacttracker.core;
 
+import java.io.Serializable;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CancellationException;
@@ -94,6 +95,113 @@ public final class StackTracker {
 		// the iterative pass and the first round on the sample; all frames at the end, but without regions to keep
 		// the sample frames are done by then (see below)
 		final Progress progress = new Progress(listener, 2 * sample.length + count - (keepRegions ? 0 : sample.length));
+		final ProfileStage stage = profileStage(sample, frame, progress, cancelled);
+		if (keepRegions) return flagged(pass(tracker, stage.profile, all, frame, true, progress, cancelled),
+			stage.settled);
+		final boolean[] done = new boolean[count];
+		for (final int t : sample)
+			done[t] = true;
+		final List<FrameResult> others = pass(tracker, stage.profile, stage.others(count), frame, false, progress,
+			cancelled);
+		final List<FrameResult> results = new ArrayList<>(count);
+		for (int t = 0, s = 0, o = 0; t < count; t++)
+			results.add(done[t] ? stage.round.get(s++) : others.get(o++));
+		return flagged(results, stage.settled);
+	}
+
+	/**
+	 * The first stage of the profile methods on a movie, which a distributed front end runs once per movie before
+	 * the frames are shared out: the profile measured on {@link #profileFrames sample frames} (null when it could
+	 * not be, and each frame then measures its own), whether its rounds settled, and the sample frames' results.
+	 * {@link #track(int, IntFunction, boolean, ProgressListener, BooleanSupplier)} is this stage followed by
+	 * {@link #trackWith} on the other frames, so the two ways give the same spots.
+	 */
+	public static final class ProfileStage implements Serializable {
+
+		private static final long serialVersionUID = 1L;
+
+		private final int[] sample;
+		private final EmpiricalProfile profile;
+		private final boolean settled;
+		private final transient List<FrameResult> round;
+		private final List<FrameResult> sampleResults;
+
+		ProfileStage(final int[] sample, final EmpiricalProfile profile, final boolean settled,
+			final List<FrameResult> round)
+		{
+			this.sample = sample;
+			this.profile = profile;
+			this.settled = settled;
+			this.round = round;
+			this.sampleResults = new ArrayList<>(flagged(round, settled));
+		}
+
+		/** @return the sample frames (0-based, ascending) */
+		public int[] sample() {
+			return sample.clone();
+		}
+
+		/** @return the profile every frame is refined with, or {@code null} when each frame measures its own */
+		public EmpiricalProfile profile() {
+			return profile;
+		}
+
+		/** @return whether the profile rounds settled (if not, every spot is flagged {@code NOT_CONVERGED}) */
+		public boolean settled() {
+			return settled;
+		}
+
+		/** @return the final result of sample frame {@code i} (of {@link #sample()}), flags included */
+		public FrameResult sampleResult(final int i) {
+			return sampleResults.get(i);
+		}
+
+		/** @return the frames of a movie of {@code count} frames that are not sample frames, ascending */
+		public int[] others(final int count) {
+			final boolean[] done = new boolean[count];
+			for (final int t : sample)
+				done[t] = true;
+			final int[] rest = new int[count - sample.length];
+			for (int t = 0, k = 0; t < count; t++)
+				if (!done[t]) rest[k++] = t;
+			return rest;
+		}
+	}
+
+	/**
+	 * Runs the {@link ProfileStage} of a movie (profile methods only), one thread per task of the caller's executor.
+	 *
+	 * @param count number of frames
+	 * @param frame supplies frame {@code t} (thread-safe; read twice for the sample frames)
+	 * @return the stage, or {@code null} when the method needs no profile
+	 */
+	public <T extends RealType<T>> ProfileStage profileStage(final int count,
+		final IntFunction<? extends RandomAccessibleInterval<T>> frame, final BooleanSupplier cancelled)
+	{
+		if (!tracker.parameters().method().needsProfile() || count == 0) return null;
+		return profileStage(profileFrames(count, frame), frame, new Progress(null, 0), cancelled);
+	}
+
+	/**
+	 * Localizes frames {@code indices} (not sample frames) with a movie's {@link ProfileStage}, exactly as
+	 * {@link #track(int, IntFunction, boolean, ProgressListener, BooleanSupplier)} does them.
+	 *
+	 * @param stage the movie's stage, or {@code null} for a method that needs no profile
+	 * @return one result per index, in that order, regions not kept
+	 */
+	public <T extends RealType<T>> List<FrameResult> trackWith(final ProfileStage stage, final int[] indices,
+		final IntFunction<? extends RandomAccessibleInterval<T>> frame, final BooleanSupplier cancelled)
+	{
+		final Progress none = new Progress(null, 0);
+		if (stage == null) return pass(tracker, null, indices, frame, false, none, cancelled);
+		return flagged(pass(tracker, stage.profile, indices, frame, false, none, cancelled), stage.settled);
+	}
+
+	private <T extends RealType<T>> ProfileStage profileStage(final int[] sample,
+		final IntFunction<? extends RandomAccessibleInterval<T>> frame, final Progress progress,
+		final BooleanSupplier cancelled)
+	{
+		final TrackerParameters params = tracker.parameters();
 		final List<FrameResult> iterative = pass(new ContactTracker(params.withMethod(Method.ITERATIVE)), null,
 			sample, frame, false, progress, cancelled);
 		// The profile is measured around estimated centres, and in a configuration that never changes (every frame
@@ -110,22 +218,10 @@ public final class StackTracker {
 			round = pass(tracker, used, sample, frame, false, progress, cancelled);
 			move = largestMove(previous, round);
 		}
-		// no fixed point within the rounds: every centre rests on a profile that was still moving
-		final boolean settled = move <= PROFILE_TOLERANCE;
-		// settled: the profile of the last round is the fixed point's (to within the tolerance). The sample frames
-		// were just refined with that very profile: without regions to keep, their results are the final ones.
-		if (keepRegions) return flagged(pass(tracker, used, all, frame, true, progress, cancelled), settled);
-		final boolean[] done = new boolean[count];
-		for (final int t : sample)
-			done[t] = true;
-		final int[] rest = new int[count - sample.length];
-		for (int t = 0, k = 0; t < count; t++)
-			if (!done[t]) rest[k++] = t;
-		final List<FrameResult> others = pass(tracker, used, rest, frame, false, progress, cancelled);
-		final List<FrameResult> results = new ArrayList<>(count);
-		for (int t = 0, s = 0, o = 0; t < count; t++)
-			results.add(done[t] ? round.get(s++) : others.get(o++));
-		return flagged(results, settled);
+		// no fixed point within the rounds: every centre rests on a profile that was still moving. Settled: the
+		// profile of the last round is the fixed point's (to within the tolerance), and the sample frames were just
+		// refined with that very profile: without regions to keep, their results are the final ones.
+		return new ProfileStage(sample, used, move <= PROFILE_TOLERANCE, round);
 	}
 
 	/** @return the results, every spot flagged {@code NOT_CONVERGED} unless the profile rounds {@code settled} */
@@ -184,8 +280,10 @@ public final class StackTracker {
 	 */
 	public static final long PROFILE_PIXELS = 4_000_000;
 
-	/** The frames the profile is measured on: evenly spread, within both limits. */
-	private static <T extends RealType<T>> int[] profileFrames(final int count,
+	/**
+	 * @return the frames the profile is measured on: evenly spread, within both limits (read: frame 0, for its size)
+	 */
+	public static <T extends RealType<T>> int[] profileFrames(final int count,
 		final IntFunction<? extends RandomAccessibleInterval<T>> frame)
 	{
 		final RandomAccessibleInterval<T> first = frame.apply(0);

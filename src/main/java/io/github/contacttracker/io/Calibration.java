@@ -1,5 +1,7 @@
 package io.github.contacttracker.io;
 
+import java.io.Serializable;
+
 import io.github.contacttracker.core.InvalidInputException;
 
 /**
@@ -12,7 +14,9 @@ import io.github.contacttracker.core.InvalidInputException;
  * @param frameInterval time between frames, in {@code timeUnit}
  * @param timeUnit time unit ("frame" when unknown)
  */
-public record Calibration(double pixelWidth, double pixelHeight, String unit, double frameInterval, String timeUnit) {
+public record Calibration(double pixelWidth, double pixelHeight, String unit, double frameInterval, String timeUnit)
+	implements Serializable
+{
 
 	/** One pixel per unit, one frame per time unit. */
 	public static final Calibration PIXELS = new Calibration(1, 1, "pixel", 1, "frame");

@@ -36,12 +36,22 @@ final class FileStack extends VirtualStack {
 	FileStack(final Path file, final int size, final int width, final int height, final boolean concurrent,
 		final PlaneReader reader)
 	{
-		super(width, height, null, file.toAbsolutePath().getParent() == null ? "/" : file.toAbsolutePath().getParent()
-			.toString());
+		this(file.toString(), file.toAbsolutePath().getParent() == null ? "/" : file.toAbsolutePath().getParent()
+			.toString(), size, width, height, concurrent, reader);
+	}
+
+	/**
+	 * @param file the file's name or address, for messages
+	 * @param folder the folder ImageJ's virtual stack names ("" for none)
+	 */
+	FileStack(final String file, final String folder, final int size, final int width, final int height,
+		final boolean concurrent, final PlaneReader reader)
+	{
+		super(width, height, null, folder);
 		this.size = size;
 		this.concurrent = concurrent;
 		this.reader = reader;
-		this.path = file.toString();
+		this.path = file;
 	}
 
 	/** @return whether planes may be read from several threads at once */

@@ -1,7 +1,6 @@
 package io.github.contacttracker.io;
 
 import java.io.IOException;
-import java.nio.file.Path;
 
 /**
  * How large a frame a file may declare before anything is allocated for it. A file's header can claim any width
@@ -26,13 +25,13 @@ final class FrameBudget {
 	static final double HEAP_SHARE = 0.125;
 
 	/**
-	 * @param file the file, for the message
+	 * @param file the file (a path, or an address such as hdfs://nn/a.tif), for the message
 	 * @param width the declared width (px)
 	 * @param height the declared height (px)
 	 * @param bytesPerPixel the bytes one pixel takes once read (at least 1)
 	 * @throws IOException naming the file and the declared size when the frame is impossible or does not fit
 	 */
-	static void check(final Path file, final long width, final long height, final int bytesPerPixel)
+	static void check(final Object file, final long width, final long height, final int bytesPerPixel)
 		throws IOException
 	{
 		if (width <= 0 || height <= 0) throw new IOException("cannot read " + file + ": it declares a frame of " +
@@ -51,12 +50,12 @@ final class FrameBudget {
 	 * Checks the memory a file's description takes as it is read (a TIFF's directories: a hostile file can chain
 	 * millions of them), against the same share of the heap as a frame.
 	 *
-	 * @param file the file, for the message
+	 * @param file the file (a path, or an address such as hdfs://nn/a.tif), for the message
 	 * @param what what takes the memory, e.g. "its 500000 image directories"
 	 * @param bytes the bytes it takes so far
 	 * @throws IOException naming the file when that is more than the share
 	 */
-	static void checkDescription(final Path file, final String what, final long bytes) throws IOException {
+	static void checkDescription(final Object file, final String what, final long bytes) throws IOException {
 		final long heap = Runtime.getRuntime().maxMemory();
 		if (bytes > heap * HEAP_SHARE) throw new IOException("cannot read " + file + ": " + what + " take more than " +
 			mb((long) (heap * HEAP_SHARE)) + " MB to describe, an eighth of the Java heap (" + mb(heap) + " MB); if " +

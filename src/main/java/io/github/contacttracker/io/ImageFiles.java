@@ -110,6 +110,27 @@ public final class ImageFiles {
 		return new ImagePlus(file.getFileName().toString(), stack);
 	}
 
+	/**
+	 * Opens a TIFF, BigTIFF or OME-TIFF movie read plane by plane by offset from {@code bytes}, wherever they live
+	 * (the Spark job reads through Hadoop's file systems): the same frames and calibration as {@link #open(Path)} for
+	 * uncompressed data. Other formats and compressed TIFF are refused in one line that says how to convert them.
+	 *
+	 * @throws IOException with a one-line message naming the file
+	 */
+	public static ImagePlus openByOffset(final SeekableBytes bytes) throws IOException {
+		final String name = bytes.name();
+		final String title = name.substring(name.lastIndexOf('/') + 1);
+		try {
+			return TiffMovie.openByOffset(bytes, title);
+		}
+		catch (final UncheckedIOException e) {
+			throw e.getCause();
+		}
+		catch (final RuntimeException e) {
+			throw new IOException("cannot read " + name + " as an image: " + e, e);
+		}
+	}
+
 	/** Saves {@code imp} as a TIFF (stack), atomically: nothing appears at {@code file} if saving fails. */
 	public static void saveTiff(final ImagePlus imp, final Path file) throws IOException {
 		final Path abs = file.toAbsolutePath();

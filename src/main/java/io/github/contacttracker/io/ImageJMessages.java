@@ -5,7 +5,6 @@ import java.io.IOException;
 import java.io.OutputStream;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Path;
 
 import ij.IJ;
 import io.github.contacttracker.core.InvalidInputException;
@@ -51,10 +50,10 @@ final class ImageJMessages {
 	 * check (DICOM element lengths, a PNG's size, ...); where ours could not check first, running out of memory on
 	 * such a request (one allocation that failed, so the heap is intact) is a refusal naming the file.
 	 *
-	 * @param file the file read, for the message
+	 * @param file the file read (a path, or an address such as hdfs://nn/a.tif), for the message
 	 * @throws IOException also when the read ran out of memory
 	 */
-	static <T> Result<T> call(final Path file, final Read<T> read) throws IOException {
+	static <T> Result<T> call(final Object file, final Read<T> read) throws IOException {
 		final ByteArrayOutputStream previous = BUFFER.get(); // a read inside a read: the outer one's buffer
 		final ByteArrayOutputStream buffer = previous != null ? previous : new ByteArrayOutputStream();
 		BUFFER.set(buffer);

@@ -45,8 +45,13 @@ final class TiffDirectories {
 		}
 	}
 
-	/** The whole file's layout. */
-	record Layout(boolean little, boolean big, List<Directory> directories) {
+	/**
+	 * The whole file's layout.
+	 *
+	 * @param firstNext where the first directory's pointer to the next one is (ImageJ's decoder is shown the first
+	 *        directory alone by reading it as 0, when the planes are read by offset)
+	 */
+	record Layout(boolean little, boolean big, List<Directory> directories, long firstNext) {
 
 		ByteOrder order() {
 			return little ? ByteOrder.LITTLE_ENDIAN : ByteOrder.BIG_ENDIAN;
@@ -60,50 +65,63 @@ final class TiffDirectories {
 	 */
 	static Layout read(final Path file) throws IOException {
 		try (FileChannel ch = FileChannel.open(file)) {
-			final long size = ch.size();
-			final ByteBuffer head = read(ch, 0, 16, ByteOrder.BIG_ENDIAN, size, file, "header");
-			final boolean little = head.get(0) == 'I';
-			head.order(little ? ByteOrder.LITTLE_ENDIAN : ByteOrder.BIG_ENDIAN);
-			final boolean big = head.getShort(2) == 43;
-			if (big && (head.getShort(4) != 8 || head.getShort(6) != 0))
-				throw damaged(file, "BigTIFF header with offsets of " + head.getShort(4) + " bytes");
-			final int entrySize = big ? 20 : 12, countSize = big ? 8 : 2, nextSize = big ? 8 : 4;
-			final List<Directory> directories = new ArrayList<>();
-			final Set<Long> seen = new HashSet<>();
-			long ifd = big ? head.getLong(8) : head.getInt(4) & 0xffffffffL;
-			if (ifd == 0) throw damaged(file, "no image directory");
-			long held = 0; // bytes of what we keep per directory (its offset seen, its layout): bounded by the heap
-			while (ifd != 0) {
-				if (ifd < (big ? 16 : 8) || ifd > size - countSize)
-					throw damaged(file, "image directory " + (directories.size() + 1) + " at byte " + Long.toUnsignedString(
-						ifd) + ", outside the file (" + size + " bytes)");
-				// a chain that comes back to a directory would never end
-				if (!seen.add(ifd)) throw damaged(file, "its chain of image directories loops back to byte " + ifd +
-					" after " + directories.size() + (directories.size() == 1 ? " directory" : " directories"));
-				// one read for a usual directory (a few dozen entries), a second one for a larger
-				final ByteBuffer window = read(ch, ifd, (int) Math.min(WINDOW, size - ifd), head.order(), size, file,
-					"directory");
-				final long entries = big ? window.getLong(0) : window.getShort(0) & 0xffff;
-				if (entries <= 0 || entries > (size - ifd - countSize - nextSize) / entrySize)
-					throw damaged(file, "image directory " + (directories.size() + 1) + " claims " + Long.toUnsignedString(
-						entries) + " entries, more than the file holds");
-				final int length = (int) (entries * entrySize + nextSize);
-				final ByteBuffer dir = countSize + length <= window.limit() ? window.slice(countSize, length).order(head
-					.order()) : read(ch, ifd + countSize, length, head.order(), size, file, "directory");
-				final Directory d = directory(ch, dir, (int) entries, big, size, file, directories.size() + 1);
-				if (d != null) directories.add(d); // a directory without an image (EXIF, GPS) is passed over
-				held += BYTES_PER_DIRECTORY + (d == null ? 0 : 16L * d.offsets().length);
-				if (seen.size() % 1024 == 0) FrameBudget.checkDescription(file, "its " + seen.size() + " image directories " +
-					"(and more)", held);
-				final int next = (int) entries * entrySize;
-				ifd = big ? dir.getLong(next) : dir.getInt(next) & 0xffffffffL;
-			}
-			if (directories.isEmpty()) throw new IOException("cannot read " + file + ": no image in this TIFF");
-			return new Layout(little, big, directories);
+			return read(SeekableBytes.of(ch, file));
 		}
 	}
 
-	private static IOException damaged(final Path file, final String what) {
+	/**
+	 * Reads and checks every directory of a TIFF read by offset, wherever its bytes are (a local file, or a Hadoop
+	 * path in the Spark job): the same checks for both.
+	 *
+	 * @throws IOException naming the file and what is wrong with it
+	 */
+	static Layout read(final SeekableBytes ch) throws IOException {
+		final String file = ch.name();
+		final long size = ch.size();
+		final ByteBuffer head = read(ch, 0, 16, ByteOrder.BIG_ENDIAN, size, file, "header");
+		final boolean little = head.get(0) == 'I';
+		head.order(little ? ByteOrder.LITTLE_ENDIAN : ByteOrder.BIG_ENDIAN);
+		final boolean big = head.getShort(2) == 43;
+		if (big && (head.getShort(4) != 8 || head.getShort(6) != 0))
+			throw damaged(file, "BigTIFF header with offsets of " + head.getShort(4) + " bytes");
+		final int entrySize = big ? 20 : 12, countSize = big ? 8 : 2, nextSize = big ? 8 : 4;
+		final List<Directory> directories = new ArrayList<>();
+		final Set<Long> seen = new HashSet<>();
+		long ifd = big ? head.getLong(8) : head.getInt(4) & 0xffffffffL;
+		if (ifd == 0) throw damaged(file, "no image directory");
+		long held = 0; // bytes of what we keep per directory (its offset seen, its layout): bounded by the heap
+		long firstNext = -1;
+		while (ifd != 0) {
+			if (ifd < (big ? 16 : 8) || ifd > size - countSize)
+				throw damaged(file, "image directory " + (directories.size() + 1) + " at byte " + Long.toUnsignedString(
+					ifd) + ", outside the file (" + size + " bytes)");
+			// a chain that comes back to a directory would never end
+			if (!seen.add(ifd)) throw damaged(file, "its chain of image directories loops back to byte " + ifd +
+				" after " + directories.size() + (directories.size() == 1 ? " directory" : " directories"));
+			// one read for a usual directory (a few dozen entries), a second one for a larger
+			final ByteBuffer window = read(ch, ifd, (int) Math.min(WINDOW, size - ifd), head.order(), size, file,
+				"directory");
+			final long entries = big ? window.getLong(0) : window.getShort(0) & 0xffff;
+			if (entries <= 0 || entries > (size - ifd - countSize - nextSize) / entrySize)
+				throw damaged(file, "image directory " + (directories.size() + 1) + " claims " + Long.toUnsignedString(
+					entries) + " entries, more than the file holds");
+			final int length = (int) (entries * entrySize + nextSize);
+			final ByteBuffer dir = countSize + length <= window.limit() ? window.slice(countSize, length).order(head
+				.order()) : read(ch, ifd + countSize, length, head.order(), size, file, "directory");
+			final Directory d = directory(ch, dir, (int) entries, big, size, file, directories.size() + 1);
+			if (d != null) directories.add(d); // a directory without an image (EXIF, GPS) is passed over
+			held += BYTES_PER_DIRECTORY + (d == null ? 0 : 16L * d.offsets().length);
+			if (seen.size() % 1024 == 0) FrameBudget.checkDescription(file, "its " + seen.size() + " image directories " +
+				"(and more)", held);
+			final int next = (int) entries * entrySize;
+			if (firstNext < 0) firstNext = ifd + countSize + next;
+			ifd = big ? dir.getLong(next) : dir.getInt(next) & 0xffffffffL;
+		}
+		if (directories.isEmpty()) throw new IOException("cannot read " + file + ": no image in this TIFF");
+		return new Layout(little, big, directories, firstNext);
+	}
+
+	private static IOException damaged(final String file, final String what) {
 		return new IOException("cannot read " + file + ": damaged TIFF: " + what);
 	}
 
@@ -118,8 +136,8 @@ final class TiffDirectories {
 	}
 
 	/** @return the directory's image, checked; null for a directory without an image size */
-	private static Directory directory(final FileChannel ch, final ByteBuffer dir, final int entries,
-		final boolean big, final long size, final Path file, final int index) throws IOException
+	private static Directory directory(final SeekableBytes ch, final ByteBuffer dir, final int entries,
+		final boolean big, final long size, final String file, final int index) throws IOException
 	{
 		long width = -1, height = -1, bits = 1, format = 1, compression = 1, samples = 1;
 		// entries whose values are tables, read once the image's size bounds them
@@ -202,8 +220,8 @@ final class TiffDirectories {
 	 * and a table of the items' sizes, which ImageJ's decoder allocates as they say. Checked: the sizes add up to
 	 * at most the metadata's bytes, and the header's counts to at most the items there are.
 	 */
-	private static void imageJMetadata(final FileChannel ch, final ByteBuffer dir, final int countsAt,
-		final int dataAt, final boolean big, final long size, final Path file) throws IOException
+	private static void imageJMetadata(final SeekableBytes ch, final ByteBuffer dir, final int countsAt,
+		final int dataAt, final boolean big, final long size, final String file) throws IOException
 	{
 		if (countsAt < 0 || dataAt < 0) throw damaged(file, "ImageJ metadata without its table of sizes");
 		final long items = count(dir, countsAt, big);
@@ -256,8 +274,8 @@ final class TiffDirectories {
 	}
 
 	/** The first {@code count} values of an entry (SHORT, LONG or LONG8), in the entry or where it points. */
-	private static long[] table(final FileChannel ch, final ByteBuffer dir, final int at, final int type,
-		final long count, final boolean big, final long size, final Path file) throws IOException
+	private static long[] table(final SeekableBytes ch, final ByteBuffer dir, final int at, final int type,
+		final long count, final boolean big, final long size, final String file) throws IOException
 	{
 		final int bytes = type == 3 ? 2 : type == 16 ? 8 : 4;
 		final long all = bytes * count(dir, at, big);
@@ -274,15 +292,13 @@ final class TiffDirectories {
 	 * Reads {@code length} bytes at {@code at}, which the caller has checked to lie inside the file of
 	 * {@code size} bytes (a truncated file still ends with a message).
 	 */
-	static ByteBuffer read(final FileChannel ch, final long at, final int length, final ByteOrder order,
-		final long size, final Path file, final String what) throws IOException
+	static ByteBuffer read(final SeekableBytes ch, final long at, final int length, final ByteOrder order,
+		final long size, final String file, final String what) throws IOException
 	{
 		if (at < 0 || length > size - at) throw new IOException("cannot read " + file + ": truncated TIFF: its " + what +
 			" ends at byte " + (at + length) + ", beyond the end of the file (" + size + " bytes)");
 		final ByteBuffer b = ByteBuffer.allocate(length);
-		while (b.hasRemaining())
-			if (ch.read(b, at + b.position()) < 0)
-				throw new IOException("cannot read " + file + ": truncated (ends before byte " + (at + length) + ")");
+		ch.read(at, b);
 		b.flip();
 		return b.order(order);
 	}

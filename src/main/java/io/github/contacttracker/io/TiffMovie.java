@@ -6,6 +6,7 @@ import java.nio.ByteOrder;
 import java.nio.channels.FileChannel;
 import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Properties;
 import java.util.regex.Matcher;
@@ -35,7 +36,8 @@ import ij.process.ShortProcessor;
  * <p>
  * Either way the file's directories are first read and checked by {@link TiffDirectories}, so that neither reader
  * believes a number the file has not backed (a looping chain, a size or a strip beyond the file), and ImageJ's
- * messages are caught ({@link ImageJMessages}).
+ * messages are caught ({@link ImageJMessages}). The same holds for a movie read by offset ({@link #openByOffset},
+ * the Spark job's way, from any {@link SeekableBytes}): the same checks of its directories, then its planes.
  */
 final class TiffMovie {
 
@@ -78,31 +80,39 @@ final class TiffMovie {
 				f.nImages = 1;
 			return info;
 		}
-		final long bytes = (long) fi.width * fi.height * fi.getBytesPerPixel();
-		final long length = file.toFile().length();
-		// the description's image count is checked against the file before a FileInfo is made for each
-		final long end = fi.getOffset() + (fi.nImages - 1) * (bytes + fi.getGap()) + bytes;
-		if (bytes <= 0 || end > length) {
-			final long whole = bytes <= 0 ? 0 : (length - fi.getOffset()) / (bytes + fi.getGap());
-			throw new IOException("cannot read " + file + ": truncated, it ends in plane " + (whole + 1) + " of " +
-				fi.nImages);
-		}
-		final FileInfo[] planes = new FileInfo[fi.nImages];
+		final long[] at = contiguous(file.toString(), fi, file.toFile().length());
+		final FileInfo[] planes = new FileInfo[at.length];
 		for (int i = 0; i < planes.length; i++) {
 			planes[i] = (FileInfo) fi.clone();
 			planes[i].nImages = 1;
-			planes[i].longOffset = fi.getOffset() + i * (bytes + fi.getGap());
+			planes[i].longOffset = at[i];
 		}
 		return planes;
 	}
 
+	/**
+	 * @param fi the one directory of an ImageJ stack whose planes follow each other
+	 * @param length the file's length (bytes)
+	 * @return where each plane starts, the description's image count checked against the file before anything is
+	 *         allocated for each
+	 */
+	private static long[] contiguous(final String file, final FileInfo fi, final long length) throws IOException {
+		final long bytes = (long) fi.width * fi.height * fi.getBytesPerPixel();
+		final long step = bytes + fi.getGap();
+		if (bytes <= 0 || step <= 0 || fi.nImages - 1L > (length - fi.getOffset() - bytes) / step) {
+			final long whole = bytes <= 0 || step <= 0 ? 0 : Math.max(0, length - fi.getOffset()) / step;
+			throw new IOException("cannot read " + file + ": truncated, it ends in plane " + (whole + 1) + " of " +
+				fi.nImages);
+		}
+		final long[] at = new long[fi.nImages];
+		for (int i = 0; i < at.length; i++)
+			at[i] = fi.getOffset() + i * step;
+		return at;
+	}
+
 	private static ImagePlus ij(final Path file, final FileInfo[] planes) throws IOException {
 		final FileInfo first = (FileInfo) planes[0].clone();
-		// plane 1: the calibration (incl. signed 16-bit), the bit depth
-		final ImageJMessages.Result<ImagePlus> opened = ImageJMessages.call(file, () -> new FileOpener(first).openImage());
-		final ImagePlus one = opened.value();
-		if (one == null) throw new IOException("cannot read " + file + ": ImageJ could not decode its first plane (" +
-			describe(first) + (opened.messages().isEmpty() ? "" : "; " + opened.messages()) + ")");
+		final ImagePlus one = firstPlane(file.toString(), first);
 		final FileStack stack = new FileStack(file, planes.length, one.getWidth(), one.getHeight(), true, t -> {
 			final ImageJMessages.Result<ImageProcessor> ip = ImageJMessages.call(file, () -> new FileOpener(
 				(FileInfo) planes[t].clone()).openProcessor());
@@ -110,17 +120,36 @@ final class TiffMovie {
 				.isEmpty() ? "" : ": " + ip.messages()));
 			return ip.value();
 		});
+		return withMetadata(file.toString(), file.getFileName().toString(), stack, one, (FileInfo) planes[0].clone(),
+			planes.length);
+	}
+
+	/** @return plane 1 as ImageJ decodes it: the calibration (incl. signed 16-bit), the bit depth */
+	private static ImagePlus firstPlane(final String file, final FileInfo first) throws IOException {
+		final ImageJMessages.Result<ImagePlus> opened = ImageJMessages.call(file, () -> new FileOpener(first).openImage());
+		if (opened.value() == null) throw new IOException("cannot read " + file + ": ImageJ could not decode its first " +
+			"plane (" + describe(first) + (opened.messages().isEmpty() ? "" : "; " + opened.messages()) + ")");
+		return opened.value();
+	}
+
+	/**
+	 * @param one plane 1 as ImageJ opened it: its calibration (incl. signed 16-bit) and bit depth
+	 * @param fi the first plane's description: the hyperstack's or the OME-XML's dimensions
+	 * @return the image of {@code stack}
+	 */
+	private static ImagePlus withMetadata(final String file, final String title, final FileStack stack,
+		final ImagePlus one, final FileInfo fi, final int planes) throws IOException
+	{
 		stack.setBitDepth(one.getBitDepth());
-		final ImagePlus imp = new ImagePlus(file.getFileName().toString(), stack);
+		final ImagePlus imp = new ImagePlus(title, stack);
 		imp.setCalibration(one.getCalibration());
-		final FileInfo fi = (FileInfo) planes[0].clone();
 		imp.setFileInfo(fi);
 		final Properties props = new FileOpener(fi).decodeDescriptionString(fi);
 		if (props != null) {
 			final int c = integer(props, "channels"), z = integer(props, "slices"), t = integer(props, "frames");
-			if ((long) c * z * t == planes.length) imp.setDimensions(c, z, t);
+			if ((long) c * z * t == planes) imp.setDimensions(c, z, t);
 		}
-		else if (first.description != null && first.description.contains("<OME")) ome(file, imp, first.description);
+		else if (fi.description != null && fi.description.contains("<OME")) ome(file, imp, fi.description);
 		return imp;
 	}
 
@@ -147,7 +176,7 @@ final class TiffMovie {
 	 * dimensions where the planes are in ImageJ's order, and planes in any other order of several dimensions are
 	 * refused rather than mixed up; {@code PhysicalSizeX} (microns) sets the pixel size.
 	 */
-	private static void ome(final Path file, final ImagePlus imp, final String xml) throws IOException {
+	private static void ome(final String file, final ImagePlus imp, final String xml) throws IOException {
 		int c = 1, z = 1, t = 1;
 		final Matcher m = OME_SIZE.matcher(xml);
 		while (m.find()) {
@@ -178,10 +207,43 @@ final class TiffMovie {
 		}
 	}
 
-	// ---- our own reader: BigTIFF and 64-bit float ----
+	// ---- our own reader: BigTIFF, 64-bit float, and every plane read by offset ----
 
 	private static ImagePlus own(final Path file, final TiffDirectories.Layout layout) throws IOException {
-		final List<TiffDirectories.Directory> planes = layout.directories();
+		final List<TiffDirectories.Directory> planes = checked(file.toString(), layout.directories());
+		final TiffDirectories.Directory p0 = planes.get(0);
+		return own(file.getFileName().toString(), new FileStack(file, planes.size(), p0.width(), p0.height(), true, t -> {
+			try (FileChannel ch = FileChannel.open(file, StandardOpenOption.READ)) {
+				return decode(SeekableBytes.of(ch, file), planes.get(t), layout.order());
+			}
+		}), p0);
+	}
+
+	private static ImagePlus own(final SeekableBytes bytes, final String title, final TiffDirectories.Layout layout)
+		throws IOException
+	{
+		final List<TiffDirectories.Directory> planes = checked(bytes.name(), layout.directories());
+		final TiffDirectories.Directory p0 = planes.get(0);
+		return own(title, new FileStack(bytes.name(), "", planes.size(), p0.width(), p0.height(), true, t -> decode(
+			bytes, planes.get(t), layout.order())), p0);
+	}
+
+	/** @return the image of {@code stack}, whose planes are of {@code p0}'s pixel type */
+	private static ImagePlus own(final String title, final FileStack stack, final TiffDirectories.Directory p0) {
+		final int bits = p0.bits(), format = p0.format();
+		stack.setBitDepth(bits == 8 ? 8 : bits == 16 ? 16 : 32);
+		final ImagePlus imp = new ImagePlus(title, stack);
+		// signed integers are stored with an offset (ImageJ's way); the calibration gives back the file's values
+		if (bits == 16 && format == 2) imp.getCalibration().setSigned16BitCalibration();
+		if (bits == 8 && format == 2) imp.getCalibration().setFunction(ij.measure.Calibration.STRAIGHT_LINE,
+			new double[] { -128, 1 }, "Gray Value");
+		return imp;
+	}
+
+	/** @return {@code planes}, which our reader decodes: uncompressed, one sample, of one size and pixel type */
+	private static List<TiffDirectories.Directory> checked(final String file,
+		final List<TiffDirectories.Directory> planes) throws IOException
+	{
 		final TiffDirectories.Directory p0 = planes.get(0);
 		for (final TiffDirectories.Directory p : planes) {
 			if (p.compression() != 1) throw new IOException("cannot read " + file + ": compressed BigTIFF or 64-bit " +
@@ -197,35 +259,78 @@ final class TiffMovie {
 				.format()) throw new IOException("cannot read " + file + ": its pages differ in size or pixel type (a " +
 					"pyramid or thumbnails?)");
 		}
-		final ByteOrder order = layout.order();
-		final FileStack stack = new FileStack(file, planes.size(), p0.width(), p0.height(), true, t -> decode(file,
-			planes.get(t), order));
-		final int bits = p0.bits(), format = p0.format();
-		stack.setBitDepth(bits == 8 ? 8 : bits == 16 ? 16 : 32);
-		final ImagePlus imp = new ImagePlus(file.getFileName().toString(), stack);
-		// signed integers are stored with an offset (ImageJ's way); the calibration gives back the file's values
-		if (bits == 16 && format == 2) imp.getCalibration().setSigned16BitCalibration();
-		if (bits == 8 && format == 2) imp.getCalibration().setFunction(ij.measure.Calibration.STRAIGHT_LINE,
-			new double[] { -128, 1 }, "Gray Value");
-		return imp;
+		return planes;
+	}
+
+	/**
+	 * A TIFF, BigTIFF or OME-TIFF read plane by plane by offset, wherever its bytes are ({@link SeekableBytes}): the
+	 * same image, pixels and calibration as {@link #open} gives for the file, for uncompressed data (what large
+	 * movies are), after the same checks of its directories ({@link TiffDirectories}). Classic TIFF's calibration
+	 * and dimensions come from ImageJ's decoder, shown the first directory only (so a long movie's chain of
+	 * directories is walked once, by {@link TiffDirectories}, and never buffered).
+	 *
+	 * @throws IOException one line naming the file, and for what it cannot read, how to convert it
+	 */
+	static ImagePlus openByOffset(final SeekableBytes bytes, final String title) throws IOException {
+		final String file = bytes.name();
+		final ByteBuffer head = ByteBuffer.allocate((int) Math.min(16, bytes.size()));
+		bytes.read(0, head);
+		if (!isTiff(head.array())) throw new IOException("cannot read " + file + ": not a TIFF (the Spark job " +
+			"reads TIFF, BigTIFF and OME-TIFF); convert it, e.g. in Fiji: open it, then File > Save As > Tiff...");
+		final TiffDirectories.Layout layout = TiffDirectories.read(bytes);
+		for (final TiffDirectories.Directory p : layout.directories())
+			if (p.compression() != 1) throw new IOException("cannot read " + file + ": compressed TIFF " +
+				"(compression " + p.compression() + "), which cannot be read plane by plane by offset; save it " +
+				"uncompressed (Fiji: File > Save As > Tiff..., or tifffile without compression)");
+		if (layout.big()) return own(bytes, title, layout);
+		final ImageJMessages.Result<FileInfo[]> info;
+		try {
+			info = ImageJMessages.call(file, () -> new TiffDecoder(bytes.stream(layout.firstNext()), title)
+				.getTiffInfo());
+		}
+		catch (final IOException e) {
+			return own(bytes, title, layout); // what ImageJ 1 cannot decode (64-bit float), as open() does
+		}
+		if (info.value() == null || info.value().length == 0) throw new IOException("cannot read " + file + ": no " +
+			"image in this TIFF" + (info.messages().isEmpty() ? "" : " (ImageJ: " + info.messages() + ")"));
+		final FileInfo fi = info.value()[0];
+		List<TiffDirectories.Directory> planes = checked(file, layout.directories());
+		if (fi.nImages > planes.size()) { // an ImageJ stack written with one directory: contiguous planes
+			final TiffDirectories.Directory p0 = planes.get(0);
+			final long bytesPerPlane = (long) fi.width * fi.height * fi.getBytesPerPixel();
+			final List<TiffDirectories.Directory> all = new ArrayList<>();
+			for (final long at : contiguous(file, fi, bytes.size()))
+				all.add(new TiffDirectories.Directory(p0.width(), p0.height(), p0.bits(), p0.samples(), p0.format(), 1,
+					new long[] { at }, new long[] { bytesPerPlane }));
+			planes = all;
+		}
+		final FileInfo first = (FileInfo) fi.clone();
+		first.nImages = 1;
+		first.inputStream = bytes.stream(-1);
+		final ImagePlus one = firstPlane(file, first);
+		final List<TiffDirectories.Directory> read = planes;
+		final TiffDirectories.Directory p0 = read.get(0);
+		final FileStack stack = new FileStack(file, "", read.size(), p0.width(), p0.height(), true, t -> decode(bytes,
+			read.get(t), layout.order()));
+		final FileInfo described = (FileInfo) fi.clone();
+		described.nImages = 1;
+		return withMetadata(file, title, stack, one, described, read.size());
 	}
 
 	/** Reads one plane's strips (positional reads: threads may read planes at once) and converts the samples. */
-	private static ImageProcessor decode(final Path file, final TiffDirectories.Directory p, final ByteOrder order)
-		throws IOException
+	private static ImageProcessor decode(final SeekableBytes file, final TiffDirectories.Directory p,
+		final ByteOrder order) throws IOException
 	{
 		final int n = p.width() * p.height(), bytes = p.bits() / 8;
 		// the directory was checked: the plane's bytes fit the frame budget, its strips lie inside the file
 		final ByteBuffer data = ByteBuffer.allocate(Math.multiplyExact(n, bytes)).order(order);
-		try (FileChannel ch = FileChannel.open(file, StandardOpenOption.READ)) {
-			final long size = ch.size();
-			for (int s = 0; s < p.offsets().length && data.hasRemaining(); s++) {
-				final int len = (int) Math.min(p.counts()[s], data.remaining());
-				data.put(TiffDirectories.read(ch, p.offsets()[s], len, order, size, file, "strip " + (s + 1)));
-			}
+		for (int s = 0; s < p.offsets().length && data.hasRemaining(); s++) {
+			final int len = (int) Math.min(p.counts()[s], data.remaining());
+			file.read(p.offsets()[s], data.slice(data.position(), len));
+			data.position(data.position() + len);
 		}
-		if (data.hasRemaining()) throw new IOException("cannot read " + file + ": a plane's strips hold fewer pixels " +
-			"than " + p.width() + " x " + p.height());
+		if (data.hasRemaining()) throw new IOException("cannot read " + file.name() + ": a plane's strips hold fewer " +
+			"pixels than " + p.width() + " x " + p.height());
 		data.flip();
 		switch (p.bits()) {
 			case 8: {

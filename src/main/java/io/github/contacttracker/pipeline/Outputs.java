@@ -26,6 +26,15 @@ public record Outputs(Path csv, Path trackMateXml, ImageSource source) {
 	/** No file. */
 	public static final Outputs NONE = new Outputs(null, null, null);
 
+	/**
+	 * @param fileName a movie's file name ({@code run1.ome.tif})
+	 * @return the name its outputs take in an output folder: without its extension ({@code run1.ome})
+	 */
+	public static String baseName(final String fileName) {
+		final int dot = fileName.lastIndexOf('.');
+		return dot > 0 ? fileName.substring(0, dot) : fileName;
+	}
+
 	/** @return whether any file is to be written */
 	public boolean any() {
 		return csv != null || trackMateXml != null;

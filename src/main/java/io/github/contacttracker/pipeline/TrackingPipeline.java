@@ -12,6 +12,7 @@ import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.core.Localization;
 import io.github.contacttracker.core.StackTracker;
 import io.github.contacttracker.core.TrackerParameters;
+import io.github.contacttracker.io.Calibration;
 import io.github.contacttracker.settings.SettingValues;
 import net.imglib2.RandomAccessibleInterval;
 
@@ -84,8 +85,24 @@ public final class TrackingPipeline {
 		@SuppressWarnings("unchecked")
 		final List<FrameResult> frames = StackTracker.withThreads(threads, () -> tracker.track(source.frameCount(),
 			(IntFunction) frame, keepRegions, progress, cancelled));
+		return finish(frames, source.calibration(), outputs, start);
+	}
+
+	/**
+	 * The end of every run, also of one whose frames were tracked elsewhere (the Spark job's tasks): {@code RADIUS}
+	 * set from the diameter, the files written all or none, the spots counted.
+	 *
+	 * @param frames one result per frame, in frame order
+	 * @param calibration the movie's calibration (positions in its units)
+	 * @param outputs the files to write
+	 * @param startNanos {@link System#nanoTime()} when the run began
+	 * @throws IOException when writing a file fails (none is left behind)
+	 */
+	public TrackingResult finish(final List<FrameResult> frames, final Calibration calibration,
+		final Outputs outputs, final long startNanos) throws IOException
+	{
 		final List<Localization> spots = withDiameter(StackTracker.spots(frames));
-		outputs.write(spots, source.calibration(), params, settings.channel());
+		outputs.write(spots, calibration, params, settings.channel());
 		int flagged = 0, discarded = 0, ownProfile = 0;
 		for (final Localization s : spots)
 			if (s.isFlagged()) flagged++;
@@ -97,8 +114,8 @@ public final class TrackingPipeline {
 		if (ownProfile > 0 && frames.size() > 1) warnings.add("the particles' profile could not be measured over the " +
 			"movie (too few isolated, unflagged particles); " + ownProfile + " frames measured their own, which is " +
 			"less precise");
-		return new TrackingResult(frames, spots, flagged, discarded, (System.nanoTime() - start) * 1e-9, List.copyOf(
-			warnings));
+		return new TrackingResult(frames, spots, flagged, discarded, (System.nanoTime() - startNanos) * 1e-9, List
+			.copyOf(warnings));
 	}
 
 	/**
@@ -107,8 +124,10 @@ public final class TrackingPipeline {
 	 * first frame), so a valid threshold costs one frame's read, and a threshold outside the data is refused after
 	 * one read-only pass, before anything is tracked or written. A NaN or infinite pixel in the frames scanned is
 	 * refused here; one in a later frame by the tracker, naming its frame.
+	 *
+	 * @throws InvalidInputException naming the threshold, the data range and the movie
 	 */
-	private void checkThreshold(final FrameSource source) {
+	public void checkThreshold(final FrameSource source) {
 		if (!source.checksDataRange()) return;
 		final double t = params.threshold();
 		double min = Double.POSITIVE_INFINITY, max = Double.NEGATIVE_INFINITY;

@@ -58,7 +58,19 @@ public record FieldOfView(double width, double height, boolean inferred) {
 			y0 = Math.min(y0, ys[i]);
 			y1 = Math.max(y1, ys[i]);
 		}
-		final int n = xs.length;
+		return inferred(x0, x1, y0, y1, xs.length);
+	}
+
+	/**
+	 * @return the field inferred from the spots' extent and number (what a distributed front end aggregates), as
+	 *         {@link #inferred(double[], double[])}
+	 */
+	public static FieldOfView inferred(final double x0, final double x1, final double y0, final double y1,
+		final long n)
+	{
+		if (n < 2)
+			throw new InvalidInputException("cannot infer the field of view from fewer than 2 spots: give its width " +
+				"and height");
 		final double w = (x1 - x0) * (n + 1) / (n - 1), h = (y1 - y0) * (n + 1) / (n - 1);
 		if (!(w > 0) || !(h > 0))
 			throw new InvalidInputException("cannot infer the field of view: all spots lie on one line; give its " +

@@ -145,6 +145,24 @@ public final class PairCorrelation {
 	public static Result compute(final SpotSet spots, final FieldOfView field, final double binWidth,
 		final double rMax)
 	{
+		final int count = bins(field, binWidth, rMax);
+		final long[] pairs = new long[count];
+		double framePairs = 0;
+		for (final double[][] frame : spots.frames()) {
+			final int n = frame[0].length;
+			framePairs += 0.5 * n * (n - 1.0);
+			final long[] own = framePairs(frame[0], frame[1], binWidth, count);
+			for (int k = 0; k < count; k++)
+				pairs[k] += own[k];
+		}
+		return fromCounts(pairs, framePairs, spots.frames().size(), spots.size(), field, binWidth);
+	}
+
+	/**
+	 * @return the number of bins of width {@code binWidth} up to {@code rMax}: {@code floor(rMax / binWidth)}
+	 * @throws IllegalArgumentException for bad bins, or {@code rMax} beyond the field's smaller side
+	 */
+	public static int bins(final FieldOfView field, final double binWidth, final double rMax) {
 		if (!(binWidth > 0) || !Double.isFinite(binWidth))
 			throw new InvalidInputException("the bin width must be a positive number, not " + binWidth);
 		if (!(rMax >= binWidth) || !Double.isFinite(rMax))
@@ -157,35 +175,57 @@ public final class PairCorrelation {
 			throw new InvalidInputException(String.format(Locale.ROOT, "r_max %s exceeds the smaller side of the " +
 				"field of view (%s x %s%s): the edge correction holds only up to %s", num(top), num(field.width()), num(
 					field.height()), field.inferred() ? ", inferred from the spots" : "", num(field.maxDistance())));
+		return count;
+	}
+
+	/**
+	 * One frame's pair counts, what a distributed front end counts frame by frame and sums.
+	 *
+	 * @param x the frame's spots' x
+	 * @param y their y
+	 * @param count the number of bins ({@link #bins})
+	 * @return the pairs closer than {@code count * binWidth}, per bin of distance
+	 */
+	public static long[] framePairs(final double[] x, final double[] y, final double binWidth, final int count) {
 		final long[] pairs = new long[count];
-		double framePairs = 0;
-		final double rMax2 = top * top;
-		for (final double[][] frame : spots.frames()) {
-			final int n = frame[0].length;
-			framePairs += 0.5 * n * (n - 1.0);
-			// sorted by x, a spot needs comparing only with the following ones closer than top along x
-			final Integer[] order = new Integer[n];
-			for (int i = 0; i < n; i++)
-				order[i] = i;
-			final double[] x = frame[0], y = frame[1];
-			Arrays.sort(order, Comparator.comparingDouble(i -> x[i]));
-			final double[] sx = new double[n], sy = new double[n];
-			for (int i = 0; i < n; i++) {
-				sx[i] = x[order[i]];
-				sy[i] = y[order[i]];
-			}
-			for (int a = 0; a < n; a++)
-				for (int b = a + 1; b < n; b++) {
-					final double dx = sx[b] - sx[a];
-					if (dx >= top) break;
-					final double dy = sy[b] - sy[a], d2 = dx * dx + dy * dy;
-					if (d2 >= rMax2) continue;
-					final int k = (int) (Math.sqrt(d2) / binWidth);
-					if (k < count) pairs[k]++; // k == count only by rounding at the very edge
-				}
+		final double top = count * binWidth, rMax2 = top * top;
+		final int n = x.length;
+		// sorted by x, a spot needs comparing only with the following ones closer than top along x
+		final Integer[] order = new Integer[n];
+		for (int i = 0; i < n; i++)
+			order[i] = i;
+		Arrays.sort(order, Comparator.comparingDouble(i -> x[i]));
+		final double[] sx = new double[n], sy = new double[n];
+		for (int i = 0; i < n; i++) {
+			sx[i] = x[order[i]];
+			sy[i] = y[order[i]];
 		}
+		for (int a = 0; a < n; a++)
+			for (int b = a + 1; b < n; b++) {
+				final double dx = sx[b] - sx[a];
+				if (dx >= top) break;
+				final double dy = sy[b] - sy[a], d2 = dx * dx + dy * dy;
+				if (d2 >= rMax2) continue;
+				final int k = (int) (Math.sqrt(d2) / binWidth);
+				if (k < count) pairs[k]++; // k == count only by rounding at the very edge
+			}
+		return pairs;
+	}
+
+	/**
+	 * @param pairs the pairs per bin, summed over the frames
+	 * @param framePairs the pairs of spots summed over the frames, {@code sum n (n - 1) / 2}
+	 * @param frames the frames with spots
+	 * @param spots the spots
+	 * @return g(r) and U(r), without a zero shift
+	 * @throws IllegalArgumentException when no frame has two spots
+	 */
+	public static Result fromCounts(final long[] pairs, final double framePairs, final int frames, final int spots,
+		final FieldOfView field, final double binWidth)
+	{
 		if (framePairs == 0)
 			throw new InvalidInputException("no frame has two spots: there is no pair to count");
+		final int count = pairs.length;
 		final List<Bin> bins = new ArrayList<>(count);
 		double below = 0;
 		for (int k = 0; k < count; k++) {
@@ -194,7 +234,7 @@ public final class PairCorrelation {
 			bins.add(new Bin(lo, hi, pairs[k], framePairs * (within - below)));
 			below = within;
 		}
-		return new Result(bins, field, spots.frames().size(), spots.size(), framePairs, 0, Double.NaN, Double.NaN);
+		return new Result(bins, field, frames, spots, framePairs, 0, Double.NaN, Double.NaN);
 	}
 
 	/** @return {@code v} with at most 6 significant digits and no trailing zeros, for messages */

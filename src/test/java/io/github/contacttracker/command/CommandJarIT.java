@@ -41,7 +41,7 @@ class CommandJarIT {
 			files.filter(p -> {
 				final String n = p.getFileName().toString();
 				return n.endsWith(".jar") && !n.startsWith("original-") && !n.matches(
-					".*-(sources|tests|test-sources|javadoc|cli)\\.jar");
+					".*-(sources|tests|test-sources|javadoc|cli|spark)\\.jar");
 			}).forEach(jars::add);
 		}
 		assertEquals(1, jars.size(), "expected exactly one plugin jar in " + target + ": " + jars);

@@ -90,6 +90,47 @@ class StackTrackerTest {
 				assertTrue(!s.isFlagged(), s.flagSet().toString());
 	}
 
+	/**
+	 * The distributed way (the profile stage once, shipped serialized, then the other frames in chunks, in any
+	 * order) gives exactly the spots of one run: what the Spark job relies on.
+	 */
+	@Test
+	void profileStageThenChunksEqualsOneRun() throws Exception {
+		final List<RandomAccessibleInterval<FloatType>> frames = frames(70); // more than PROFILE_FRAMES
+		final TrackerParameters p = TrackerParameters.of(80, 20).withMethod(Method.FIT);
+		final List<Localization> whole = StackTracker.spots(new StackTracker(p).track(frames, false));
+		final java.io.ByteArrayOutputStream bytes = new java.io.ByteArrayOutputStream();
+		try (java.io.ObjectOutputStream out = new java.io.ObjectOutputStream(bytes)) {
+			out.writeObject(new StackTracker(p).profileStage(frames.size(), frames::get, () -> false));
+		}
+		final StackTracker.ProfileStage stage;
+		try (java.io.ObjectInputStream in = new java.io.ObjectInputStream(new java.io.ByteArrayInputStream(bytes
+			.toByteArray())))
+		{
+			stage = (StackTracker.ProfileStage) in.readObject();
+		}
+		final int[] sample = stage.sample(), others = stage.others(frames.size());
+		assertEquals(64, sample.length);
+		assertEquals(6, others.length);
+		final List<List<Localization>> byFrame = new ArrayList<>();
+		for (int t = 0; t < frames.size(); t++)
+			byFrame.add(null);
+		for (int i = 0; i < sample.length; i++)
+			byFrame.set(sample[i], stage.sampleResult(i).spots());
+		// the chunks done last first, each on a tracker of its own (as on another machine)
+		for (final int[] chunk : new int[][] { java.util.Arrays.copyOfRange(others, 3, 6), java.util.Arrays
+			.copyOfRange(others, 0, 3) })
+		{
+			final List<FrameResult> r = new StackTracker(p).trackWith(stage, chunk, frames::get, () -> false);
+			for (int i = 0; i < chunk.length; i++)
+				byFrame.set(chunk[i], r.get(i).spots());
+		}
+		final List<Localization> distributed = new ArrayList<>();
+		byFrame.forEach(distributed::addAll);
+		assertTrue(whole.size() >= 70, whole.size() + " spots"); // particles leave the frame late in the movie
+		assertEquals(whole, distributed);
+	}
+
 	@Test
 	void cancellationStopsTheRun() {
 		final List<RandomAccessibleInterval<FloatType>> frames = frames(4);

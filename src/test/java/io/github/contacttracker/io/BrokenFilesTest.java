@@ -1,7 +1,9 @@
 package io.github.contacttracker.io;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTimeoutPreemptively;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
 import java.nio.ByteBuffer;
@@ -92,6 +94,38 @@ class BrokenFilesTest {
 		final int strf = indexOf(wide, "strf");
 		ByteBuffer.wrap(wide).order(ByteOrder.LITTLE_ENDIAN).putInt(strf + 12, 1 << 30);
 		assertEquals(Outcome.REFUSED, check("huge-width.avi", wide));
+	}
+
+	/**
+	 * The Spark job reads a movie by offset ({@link ImageFiles#openByOffset}, through Hadoop): its directories are
+	 * checked by the same {@link TiffDirectories}, so the issue's TIFF cases and a stack that claims more images than
+	 * it holds are refused there too, in one line naming the file, in bounded time.
+	 */
+	@Test
+	void theCasesOfTheIssueAreRefusedWhenReadByOffset() throws IOException {
+		final List<Path> cases = new ArrayList<>();
+		for (final String seed : List.of("imagej.tif", "pages16.tif", "big.tif", "float64.tif")) {
+			final int first = new SeedFiles.Tiff(seeds.get(seed)).ifd;
+			final Map<String, UnaryOperator<SeedFiles.Tiff>> changes = Map.of("loop-to-first", t -> t.next(0, first),
+				"last-loops-to-first", t -> t.next(99, first), "huge-width", t -> t.set(256, 0x7fff_fff0L), "huge-both",
+				t -> t.set(256, 60000).set(257, 60000), "zero-height", t -> t.set(257, 0), "strip-past-end", t -> t.set(
+					273, seeds.get(seed).length + 10));
+			for (final Map.Entry<String, UnaryOperator<SeedFiles.Tiff>> c : changes.entrySet()) {
+				final Path file = dir.resolve("offset-" + seed.replace(".tif", "") + "-" + c.getKey() + ".tif");
+				Files.write(file, c.getValue().apply(new SeedFiles.Tiff(seeds.get(seed))).bytes);
+				cases.add(file);
+			}
+		}
+		final byte[] more = seeds.get("imagej.tif").clone();
+		final int at = new String(more, StandardCharsets.ISO_8859_1).indexOf("images=3");
+		System.arraycopy("images=9".getBytes(StandardCharsets.ISO_8859_1), 0, more, at, 8);
+		cases.add(Files.write(dir.resolve("offset-more-images.tif"), more));
+		for (final Path file : cases) {
+			final IOException e = assertTimeoutPreemptively(BOUND, () -> assertThrows(IOException.class,
+				() -> ImageFiles.openByOffset(SeekableBytes.of(file)).getStack().getProcessor(1), file.toString()));
+			assertTrue(e.getMessage().startsWith("cannot read " + file + ": "), e.getMessage());
+			assertEquals(1, e.getMessage().lines().count(), e.getMessage());
+		}
 	}
 
 	private static int indexOf(final byte[] bytes, final String fourcc) {

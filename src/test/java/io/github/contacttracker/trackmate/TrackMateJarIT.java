@@ -58,7 +58,7 @@ class TrackMateJarIT {
 		try (Stream<Path> files = Files.list(target())) {
 			files.filter(p -> {
 				final String n = p.getFileName().toString();
-				return n.endsWith(".jar") && !n.startsWith("original-") && !n.matches(".*-(sources|tests|test-sources|javadoc|cli)\\.jar");
+				return n.endsWith(".jar") && !n.startsWith("original-") && !n.matches(".*-(sources|tests|test-sources|javadoc|cli|spark)\\.jar");
 			}).forEach(jars::add);
 		}
 		assertEquals(1, jars.size(), "expected exactly one plugin jar in " + target() + ": " + jars);

@@ -1,0 +1,75 @@
+package io.github.contacttracker.pipeline;
+
+import java.math.BigDecimal;
+
+import io.github.contacttracker.core.InvalidInputException;
+import io.github.contacttracker.core.ProfileAnalysis;
+import io.github.contacttracker.settings.SettingValues;
+import io.github.contacttracker.settings.TrackingSettings;
+import net.imglib2.RandomAccessibleInterval;
+
+/**
+ * The settings of a run with what the user did not give measured from the movie's first frame by the profile
+ * helper, as {@code profile} suggests it: the threshold and r_out (an error if they cannot be measured), and the
+ * diameter (merge detection and RADIUS use it; without it the movie is still tracked). The command line's
+ * {@code track} and the Spark job both use it, so that they track a movie with the same settings.
+ */
+public final class MeasuredSettings {
+
+	private MeasuredSettings() {}
+
+	/**
+	 * @param settings the settings to use
+	 * @param notice what was measured, with the options that override it, in one line; empty when nothing was
+	 */
+	public record Result(SettingValues settings, String notice) {}
+
+	/**
+	 * @param name the movie's file name, for messages
+	 * @param first the movie's first frame
+	 * @param integerData whether the pixels are integers (the threshold is then suggested as a whole number)
+	 * @param settings the settings given (the others at their defaults)
+	 * @param thresholdGiven whether the threshold was given
+	 * @param rOutGiven whether r_out was given
+	 * @throws InvalidInputException when the threshold or r_out is missing and cannot be measured
+	 */
+	@SuppressWarnings({ "unchecked", "rawtypes" })
+	public static Result of(final String name, final RandomAccessibleInterval<?> first, final boolean integerData,
+		final SettingValues settings, final boolean thresholdGiven, final boolean rOutGiven)
+	{
+		final boolean diameter = settings.diameter() > 0;
+		if (thresholdGiven && rOutGiven && diameter) return new Result(settings, "");
+		final ProfileAnalysis.Result r;
+		try {
+			r = ProfileAnalysis.analyse((RandomAccessibleInterval) first, settings.diameter(), 0);
+		}
+		catch (final InvalidInputException e) {
+			if (thresholdGiven && rOutGiven) return new Result(settings, "contact-tracker: " + name + ": the diameter " +
+				"could not be measured (" + InvalidInputException.oneLine(e.getMessage()) + "); tracked without it (give --diameter)");
+			throw new InvalidInputException("cannot measure " + (thresholdGiven ? "" : "--threshold ") + (thresholdGiven ||
+				rOutGiven ? "" : "and ") + (rOutGiven ? "" : "--r-out ") + "on the first frame of " + name + ": " + e
+					.getMessage() + "; give them (contact-tracker profile MOVIE --at X,Y measures one particle)", e);
+		}
+		SettingValues v = settings;
+		final StringBuilder said = new StringBuilder();
+		if (!thresholdGiven) {
+			v = v.with(TrackingSettings.THRESHOLD, r.suggestedThreshold(integerData));
+			said.append(" --threshold ").append(optionValue(v.get(TrackingSettings.THRESHOLD)));
+		}
+		if (!rOutGiven) {
+			v = v.with(TrackingSettings.R_OUT, r.suggestedROut());
+			said.append(" --r-out ").append(optionValue(v.get(TrackingSettings.R_OUT)));
+		}
+		if (!diameter) {
+			v = v.with(TrackingSettings.DIAMETER, r.suggestedDiameter());
+			said.append(" --diameter ").append(optionValue(v.diameter()));
+		}
+		return new Result(v, "contact-tracker: " + name + ": measured on frame 1 by the profile helper:" + said +
+			" (given values win; 'contact-tracker profile " + name + "' shows how)");
+	}
+
+	/** @return a number as an option's value: exact, shortest, no exponent ({@code 174}, {@code 31.65}) */
+	public static String optionValue(final double v) {
+		return BigDecimal.valueOf(v).stripTrailingZeros().toPlainString();
+	}
+}

@@ -1,0 +1,54 @@
+package io.github.contacttracker.spark;
+
+import java.io.IOException;
+import java.net.URI;
+import java.util.LinkedHashMap;
+import java.util.Map;
+
+import ij.ImagePlus;
+import io.github.contacttracker.io.ImageFiles;
+import io.github.contacttracker.io.ImagePlusFrames;
+
+/**
+ * The movies open in this JVM (an executor runs many tasks of one movie): opening a TIFF walks its whole chain of
+ * directories, which for a long movie costs more than a chunk's frames, so it is done once per executor.
+ */
+final class Movies {
+
+	private Movies() {}
+
+	/** A few movies at once: tasks of the same movie tend to run together. */
+	private static final int KEPT = 4;
+
+	/** A movie's frames, and whether its pixels are floating-point (the threshold is then suggested unrounded). */
+	record Open(ImagePlusFrames frames, boolean floats) {}
+
+	private static final Map<String, Open> OPEN = new LinkedHashMap<>(8, 0.75f, true) {
+
+		private static final long serialVersionUID = 1L;
+
+		@Override
+		protected boolean removeEldestEntry(final Map.Entry<String, Open> eldest) {
+			return size() > KEPT;
+		}
+	};
+
+	/**
+	 * @param channel 1-based, or 0 for single-channel images only
+	 * @return the movie's frames, read by offset through Hadoop as they are needed
+	 * @throws IOException naming the movie, in one line
+	 */
+	static Open open(final String uri, final String movie, final int channel) throws IOException {
+		final String key = channel + "|" + uri;
+		synchronized (OPEN) {
+			final Open open = OPEN.get(key);
+			if (open != null) return open;
+		}
+		final ImagePlus imp = ImageFiles.openByOffset(new HadoopBytes(URI.create(uri), movie));
+		final Open open = new Open(ImagePlusFrames.of(imp, channel), imp.getBitDepth() == 32);
+		synchronized (OPEN) {
+			OPEN.put(key, open);
+		}
+		return open;
+	}
+}

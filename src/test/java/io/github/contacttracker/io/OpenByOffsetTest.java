@@ -1,0 +1,114 @@
+package io.github.contacttracker.io;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+import ij.ImagePlus;
+import ij.ImageStack;
+import ij.io.FileSaver;
+import ij.process.FloatProcessor;
+import net.imglib2.RandomAccessibleInterval;
+import net.imglib2.type.numeric.RealType;
+
+/**
+ * Reading a TIFF by offset (what the Spark job does through Hadoop) gives the very frames and calibration that
+ * {@link ImageFiles#open} gives the command line, for every kind of TIFF the command line reads uncompressed;
+ * compressed TIFF and other formats are refused in one line that says how to convert them.
+ */
+class OpenByOffsetTest {
+
+	@TempDir
+	Path dir;
+
+	private static final int FRAMES = 5;
+
+	@Test
+	void everyUncompressedKindGivesTheCommandLinesFramesAndCalibration() throws IOException {
+		final List<float[]> frames = TestMovies.frames(FRAMES, 20, 220);
+		final List<Path> files = new ArrayList<>();
+		for (final int[] type : new int[][] { { 8, 1 }, { 16, 1 }, { 16, 2 }, { 32, 1 }, { 32, 3 }, { 64, 3 } })
+			for (final boolean big : new boolean[] { false, true }) {
+				final Path tif = dir.resolve("m" + type[0] + "-" + type[1] + (big ? "-big" : "") + ".tif");
+				TestMovies.writeTiff(tif, big, type[0], type[1], frames, null, 0);
+				files.add(tif);
+			}
+		final Path ome = dir.resolve("movie.ome.tif");
+		TestMovies.writeTiff(ome, false, 16, 1, frames, "<?xml version=\"1.0\"?><OME><Image><Pixels " +
+			"DimensionOrder=\"XYZCT\" SizeC=\"1\" SizeZ=\"1\" SizeT=\"" + FRAMES + "\" PhysicalSizeX=\"0.5\"/></Image>" +
+			"</OME>", 0);
+		files.add(ome);
+		// ImageJ's own writer: a calibrated hyperstack (pixel size, unit, frame interval in its description)
+		final ImageStack stack = new ImageStack(TestMovies.W, TestMovies.H);
+		for (final float[] f : frames)
+			stack.addSlice(null, new FloatProcessor(TestMovies.W, TestMovies.H, f.clone()).convertToShort(false));
+		final ImagePlus imp = new ImagePlus("cal", stack);
+		imp.setDimensions(1, 1, FRAMES);
+		imp.getCalibration().pixelWidth = imp.getCalibration().pixelHeight = 0.25;
+		imp.getCalibration().setUnit("micron");
+		imp.getCalibration().frameInterval = 0.01;
+		imp.getCalibration().setTimeUnit("s");
+		final Path cal = dir.resolve("calibrated.tif");
+		assertTrue(new FileSaver(imp).saveAsTiffStack(cal.toString()));
+		files.add(cal);
+
+		for (final Path file : files) {
+			final ImagePlusFrames cli = ImagePlusFrames.of(ImageFiles.open(file), 0);
+			final ImagePlusFrames byOffset = ImagePlusFrames.of(ImageFiles.openByOffset(SeekableBytes.of(file)), 0);
+			assertEquals(cli.frameCount(), byOffset.frameCount(), file.toString());
+			assertEquals(FRAMES, byOffset.frameCount(), file.toString());
+			assertEquals(cli.calibration(), byOffset.calibration(), file.toString());
+			for (int t = 0; t < FRAMES; t++)
+				assertArrayEquals(values(cli.frame(t)), values(byOffset.frame(t)), file + " frame " + (t + 1));
+		}
+		assertEquals(0.5, ImagePlusFrames.of(ImageFiles.openByOffset(SeekableBytes.of(ome)), 0).calibration()
+			.pixelWidth());
+		final Calibration c = ImagePlusFrames.of(ImageFiles.openByOffset(SeekableBytes.of(cal)), 0).calibration();
+		assertEquals(0.25, c.pixelWidth());
+		assertEquals(0.01, c.frameInterval());
+	}
+
+	@Test
+	void compressedTiffAndOtherFormatsAreRefusedInOneLineSayingHowToConvert() throws IOException {
+		final Path png = dir.resolve("frame.png");
+		Files.write(png, new byte[] { (byte) 0x89, 'P', 'N', 'G', 13, 10, 26, 10, 0, 0, 0, 13, 'I', 'H', 'D', 'R' });
+		final IOException notTiff = assertThrows(IOException.class, () -> ImageFiles.openByOffset(SeekableBytes.of(
+			png)));
+		assertTrue(notTiff.getMessage().contains("not a TIFF") && notTiff.getMessage().contains("Save As > Tiff"),
+			notTiff.getMessage());
+		assertEquals(1, notTiff.getMessage().lines().count());
+		// a compressed TIFF (PackBits), which the command line reads through ImageJ
+		final Path packed = dir.resolve("packed.tif");
+		TestMovies.writeTiff(packed, false, 8, 1, TestMovies.frames(3, 20, 220), null, 0);
+		final byte[] bytes = Files.readAllBytes(packed);
+		// each directory (8-byte header, then 2 + 9 x 12 + 4 bytes apiece): its 4th entry is the compression (259),
+		// set from 1 (none) to 32773 (PackBits)
+		for (int p = 0; p < 3; p++) {
+			final int value = 8 + p * 114 + 2 + 3 * 12 + 8;
+			assertEquals(1, bytes[value]);
+			bytes[value] = (byte) 0x05;
+			bytes[value + 1] = (byte) 0x80;
+		}
+		Files.write(packed, bytes);
+		final IOException compressed = assertThrows(IOException.class, () -> ImageFiles.openByOffset(SeekableBytes
+			.of(packed)));
+		assertTrue(compressed.getMessage().contains("compressed TIFF (compression 32773)") && compressed.getMessage()
+			.contains("save it uncompressed"), compressed.getMessage());
+	}
+
+	private static double[] values(final RandomAccessibleInterval<? extends RealType<?>> frame) {
+		final List<Double> v = new ArrayList<>();
+		frame.forEach(p -> v.add(p.getRealDouble()));
+		return v.stream().mapToDouble(Double::doubleValue).toArray();
+	}
+}

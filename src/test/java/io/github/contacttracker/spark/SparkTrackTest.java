@@ -1,0 +1,146 @@
+package io.github.contacttracker.spark;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Set;
+import java.util.TreeSet;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.stream.Stream;
+
+import org.apache.spark.scheduler.SparkListener;
+import org.apache.spark.scheduler.SparkListenerTaskEnd;
+import org.apache.spark.sql.Row;
+import org.apache.spark.sql.SparkSession;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+
+/**
+ * The Spark job on {@code local[2]} against the command line: each movie's CSV and TrackMate XML byte for byte
+ * {@code track}'s (the default method {@code fit}, its profile measured once per movie and broadcast, and the
+ * settings measured on frame 1), with tasks that fail on their first attempt retried to the same files; an
+ * unreadable movie named in one line, the others written, exit 2; the Parquet table holds the CSVs' spots.
+ */
+class SparkTrackTest {
+
+	@TempDir
+	static Path dir;
+
+	/** 12 frames of 1024 x 1024: the profile is measured on 3 of them (PROFILE_PIXELS), the 9 others in chunks. */
+	static Path padded;
+	/** 6 frames of 206 x 140: all of them are profile frames. */
+	static Path pair;
+	/** padded.tif in float with a NaN pixel in frame 10, which a chunk task meets. */
+	static Path nan;
+
+	@BeforeAll
+	static void movies() throws IOException {
+		final Path[] movies = SparkTestMovies.movies(dir);
+		padded = movies[0];
+		pair = movies[1];
+		nan = movies[2];
+	}
+
+	static Object[] spark(final String... args) {
+		final ByteArrayOutputStream out = new ByteArrayOutputStream(), err = new ByteArrayOutputStream();
+		final int status = SparkTrack.run(args, new PrintStream(out, true, StandardCharsets.UTF_8), new PrintStream(
+			err, true, StandardCharsets.UTF_8));
+		return new Object[] { status, out.toString(StandardCharsets.UTF_8), err.toString(StandardCharsets.UTF_8) };
+	}
+
+	@Test
+	void equalsTheCommandLineByteForByteThroughRetriesAndABadMovie() throws IOException {
+		final Path cliDir = Files.createDirectories(dir.resolve("cli")), sparkDir = Files.createDirectories(dir.resolve(
+			"spark"));
+		final Object[] c = SparkTestMovies.cli("track", padded.toString(), pair.toString(), "--out-dir", cliDir.toString());
+		assertEquals(0, c[0], (String) c[2]);
+		final Object[] x = SparkTestMovies.cli("track", pair.toString(), "--csv", cliDir.resolve("pair-xml.csv").toString(),
+			"--trackmate-xml", cliDir.resolve("pair.xml").toString());
+		assertEquals(0, x[0], (String) x[2]);
+		final Path broken = dir.resolve("broken.avi");
+		Files.writeString(broken, "RIFF....AVI not really");
+		final Object[] n = SparkTestMovies.cli("track", nan.toString(), pair.toString(), "--out-dir", Files
+			.createDirectories(dir.resolve("cli-nan")).toString());
+		final String nanError = ((String) n[2]).lines().filter(l -> l.startsWith("contact-tracker: error: " + nan))
+			.findFirst().orElseThrow(() -> new AssertionError((String) n[2])).substring("contact-tracker: ".length());
+		assertTrue(nanError.contains("frame 10"), nanError);
+
+		// local[2] with two attempts per task; the first attempt of the first chunk and of the first movie's writing
+		// fails (the writing one after its files are written)
+		final SparkSession session = SparkSession.builder().master("local[2,2]").appName("test").config(
+			SparkTrack.FAIL_FIRST_ATTEMPT, "track,write").getOrCreate();
+		final AtomicInteger failedTasks = new AtomicInteger(), tasks = new AtomicInteger();
+		session.sparkContext().addSparkListener(new SparkListener() {
+			@Override
+			public void onTaskEnd(final SparkListenerTaskEnd e) {
+				tasks.incrementAndGet();
+				if (e.taskInfo().failed()) failedTasks.incrementAndGet();
+			}
+		});
+		final Object[] s = spark(padded.toString(), broken.toString(), nan.toString(), pair.toString(), "--out-dir",
+			sparkDir.toString(), "--chunk", "4", "--trackmate-xml");
+		assertEquals(SparkTrack.EXIT_BAD_INPUT, s[0], (String) s[2]);
+		final List<String> errors = ((String) s[2]).lines().filter(l -> l.startsWith("contact-tracker-spark: error:"))
+			.toList();
+		assertEquals(2, errors.size(), (String) s[2]);
+		// a NaN met by a chunk task: the command line's message, the movie not written, no task retried for it
+		assertEquals("contact-tracker-spark: " + nanError, errors.get(1));
+		assertTrue(errors.get(0).startsWith("contact-tracker-spark: error: " + broken + ": cannot read " + broken +
+			": not a TIFF") && errors.get(0).contains("Save As > Tiff"), errors.get(0));
+		assertTrue(((String) s[2]).contains("2 of 4 movies failed"), (String) s[2]);
+		assertEquals(3, failedTasks.get(), "the injected failures (the first chunk of padded.tif and of nan.tif, the " +
+			"first movie's writing), each retried once");
+		// stage 1: 4 movies; stage 2: 9 frames of padded.tif and of nan.tif in chunks of 4; stage 3: 3 movies
+		assertTrue(tasks.get() >= 4 + 6 + 3, tasks + " tasks");
+
+		for (final String name : List.of("padded.csv", "pair.csv"))
+			assertArrayEquals(Files.readAllBytes(cliDir.resolve(name)), Files.readAllBytes(sparkDir.resolve(name)), name);
+		assertArrayEquals(Files.readAllBytes(cliDir.resolve("pair.xml")), Files.readAllBytes(sparkDir.resolve(
+			"pair.xml")));
+		assertArrayEquals(Files.readAllBytes(cliDir.resolve("pair-xml.csv")), Files.readAllBytes(sparkDir.resolve(
+			"pair.csv")));
+		// the summaries are the command line's, but for the time
+		for (final String m : List.of(padded.toString(), pair.toString()))
+			assertEquals(SparkTestMovies.summary((String) c[1], m), SparkTestMovies.summary((String) s[1], m));
+		// nothing else in the folder: no partial file of a failed attempt, no file of the broken movie
+		final Set<String> files = new TreeSet<>();
+		try (Stream<Path> list = Files.list(sparkDir)) {
+			list.forEach(p -> files.add(p.getFileName().toString()));
+		}
+		assertEquals(Set.of("padded.csv", "padded.xml", "pair.csv", "pair.xml", "spots.parquet"), files);
+
+		// the Parquet table: the CSVs' spots, partitioned by movie
+		final SparkSession reader = SparkSession.builder().master("local[1]").appName("read").getOrCreate();
+		try {
+			final List<Row> rows = reader.read().parquet(sparkDir.resolve("spots.parquet").toString()).orderBy("MOVIE",
+				"ID").select("MOVIE", "ID", "FRAME", "POSITION_X", "POSITION_Y").collectAsList();
+			final List<String> csv = Stream.concat(Files.readAllLines(cliDir.resolve("padded.csv")).stream().skip(1).map(
+				l -> "padded," + l), Files.readAllLines(cliDir.resolve("pair.csv")).stream().skip(1).map(l -> "pair," +
+					l)).toList();
+			assertEquals(csv.size(), rows.size());
+			for (int i = 0; i < rows.size(); i++) {
+				final String[] f = csv.get(i).split(",");
+				final Row r = rows.get(i);
+				assertEquals(f[0], r.getString(0));
+				assertEquals(Long.parseLong(f[1]), r.getLong(1));
+				assertEquals(Long.parseLong(f[2]), r.getLong(2));
+				assertEquals(Double.parseDouble(f[3]), r.getDouble(3), 1e-12);
+				assertEquals(Double.parseDouble(f[4]), r.getDouble(4), 1e-12);
+			}
+			assertTrue(Files.isDirectory(sparkDir.resolve("spots.parquet/MOVIE=padded")));
+		}
+		finally {
+			reader.stop();
+		}
+	}
+}
