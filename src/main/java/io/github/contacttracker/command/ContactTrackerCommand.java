@@ -307,8 +307,8 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 		final List<PairDistances.Pair> pairList = pair_cutoff > 0 ? PairDistances.within(all, frames.calibration(),
 			pair_cutoff) : null;
 		final TitledResultsTable pairTable = pairList == null ? null : SpotTables.pairs(pairList, imp.getTitle());
-		if (overlay) SpotOverlay.show(imp, SpotOverlay.rois(found, params.rOut(), r_out_circles, SpotOverlay.placer(
-			imp)));
+		if (overlay) SpotOverlay.show(imp, SpotOverlay.rois(found, params.rOut(), settings.diameter(), r_out_circles,
+			SpotOverlay.placer(imp)));
 
 		// We show the tables ourselves (or not); the run marks them resolved so that SciJava does not display them again.
 		spots = spotTable;
@@ -406,7 +406,7 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 				previewShown = true;
 			}
 			final SpotOverlay.FramePlacer placer = SpotOverlay.placer(imp);
-			SpotOverlay.show(imp, SpotOverlay.rois(List.of(r), settings.parameters().rOut(), r_out_circles, (roi,
+			SpotOverlay.show(imp, SpotOverlay.rois(List.of(r), settings.parameters().rOut(), settings.diameter(), r_out_circles, (roi,
 				frame) -> placer.place(roi, t)));
 		}
 		if (status != null) status.showStatus(TITLE + " preview: " + r.spots().size() + " spots on frame " + (t + 1));

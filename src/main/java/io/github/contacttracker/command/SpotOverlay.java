@@ -148,12 +148,14 @@ public final class SpotOverlay {
 	/**
 	 * @param results one result per frame, in frame order
 	 * @param rOut the {@code r_out} used (px)
+	 * @param diameter the particle diameter given (px; 0 = none): the particle circles' diameter, as the table's
+	 *        {@code RADIUS} is half of it (else each spot's own {@code RADIUS}, its active area's)
 	 * @param diagnostics whether to draw the r_out discs and the second active areas too
 	 * @param placer puts each ROI on its frame
 	 * @return the ROIs, spot by spot (IDs counted over all frames, as in the spots table)
 	 */
-	public static List<Roi> rois(final List<FrameResult> results, final double rOut, final boolean diagnostics,
-		final FramePlacer placer)
+	public static List<Roi> rois(final List<FrameResult> results, final double rOut, final double diameter,
+		final boolean diagnostics, final FramePlacer placer)
 	{
 		final List<Roi> rois = new ArrayList<>();
 		int id = 0;
@@ -164,7 +166,7 @@ public final class SpotOverlay {
 				final String name = "spot " + id;
 				final String flags = flagText(s);
 
-				final double radius = s.radius();
+				final double radius = diameter > 0 ? diameter / 2 : s.radius();
 				final Roi particle = new OvalRoi(s.x() + 0.5 - radius, s.y() + 0.5 - radius, 2 * radius, 2 * radius);
 				add(rois, particle, Kind.PARTICLE, id, name + " " + Kind.PARTICLE.label() + flags, s, placer);
 				if (s.isFlagged()) {

@@ -353,8 +353,10 @@ public final class StackTracker {
 		final Throwable[] failures = new Throwable[indices.length];
 		final List<FrameResult> results = executor.forEachApply(positions(indices.length), i -> {
 			try {
+				// counted in passes over a frame: the profile methods track their sample frames once per profile round,
+				// so a count of "frames" could exceed the movie's (117 on a 30-frame movie, seen in Fiji)
 				if (cancelled.getAsBoolean()) throw new CancellationException("cancelled after " + progress.done.get() +
-					" frames");
+					" of " + progress.total + " passes over a frame");
 				final FrameResult r = one(tracker, profile, frame, indices[i], keepRegions);
 				progress.frameDone();
 				return r;

@@ -511,10 +511,11 @@ class ContactTrackerCommandTest {
 		assertSame(module, m);
 		final String reason = ((Cancelable) m).getCancelReason();
 		assertTrue(((Cancelable) m).isCanceled());
-		final java.util.regex.Matcher done = java.util.regex.Pattern.compile("cancelled after (\\d+) frames").matcher(
-			reason);
+		final java.util.regex.Matcher done = java.util.regex.Pattern.compile("cancelled after (\\d+) of (\\d+) passes " +
+			"over a frame").matcher(reason);
 		assertTrue(done.matches(), reason);
-		assertTrue(Integer.parseInt(done.group(1)) < frames, reason);
+		assertTrue(Integer.parseInt(done.group(1)) < Integer.parseInt(done.group(2)), reason);
+		assertTrue(Integer.parseInt(done.group(2)) >= frames, reason);
 		assertNull(m.getOutput("spots"));
 		assertNull(imp.getOverlay());
 
@@ -562,7 +563,7 @@ class ContactTrackerCommandTest {
 			io.github.contacttracker.core.Flag.MERGED.bit() | io.github.contacttracker.core.Flag.AT_BORDER.bit(), 1, 0.01,
 			0.01);
 		final List<Roi> rois = SpotOverlay.rois(List.of(new FrameResult(List.of(ok, fellBack, merged), List.of(), List
-			.of(), 1, 0, false)), 8, false, (roi, frame) -> {});
+			.of(), 1, 0, false)), 8, 0, false, (roi, frame) -> {});
 		assertEquals(9, rois.size());
 		final Roi okCircle = rois.get(0), fellBackCircle = rois.get(3), mergedCircle = rois.get(6);
 		assertEquals(SpotOverlay.Kind.PARTICLE, SpotOverlay.kind(fellBackCircle));
@@ -570,6 +571,9 @@ class ContactTrackerCommandTest {
 		assertEquals(Color.WHITE, fellBackCircle.getStrokeColor(), "each flag its colour");
 		assertEquals(Color.MAGENTA, mergedCircle.getStrokeColor(), "merged wins over at border");
 		assertEquals(2 * 4, okCircle.getFloatBounds().width, 1e-12, "the particle's RADIUS (4 px), not r_out (8)");
+		// with a diameter given, the circle is the particle's (RADIUS = D/2, as in the table), not its active area's
+		assertEquals(17, SpotOverlay.rois(List.of(new FrameResult(List.of(ok), List.of(), List.of(), 1, 0, false)), 8,
+			17, false, (roi, frame) -> {}).get(0).getFloatBounds().width, 1e-12);
 		// the first-pass dot comes after (is drawn over) the final cross
 		assertEquals(SpotOverlay.Kind.FINAL, SpotOverlay.kind(rois.get(1)));
 		assertEquals(SpotOverlay.Kind.FIRST_PASS, SpotOverlay.kind(rois.get(2)));
