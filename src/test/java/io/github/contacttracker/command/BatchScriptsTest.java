@@ -13,8 +13,6 @@ import java.util.List;
 import javax.script.ScriptEngine;
 import javax.script.ScriptEngineManager;
 
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.scijava.Context;
@@ -38,19 +36,7 @@ import io.github.contacttracker.io.SpotCsvWriter;
  * argument handling are tested here, in plain ImageJ's macro interpreter; {@link MacroTest} runs it on images
  * through a stand-in for Fiji's bridge.
  */
-class BatchScriptsTest {
-
-	private static Context context;
-
-	@BeforeAll
-	static void start() {
-		context = new Context();
-	}
-
-	@AfterAll
-	static void stop() {
-		context.dispose();
-	}
+class BatchScriptsTest extends WithContext {
 
 	/** @return what the macro printed (headless, ImageJ prints to standard output) */
 	private static String runMacro(final String argument) throws Exception {

@@ -24,8 +24,6 @@ import java.util.stream.Stream;
 
 import org.jdom2.Document;
 import org.jdom2.input.SAXBuilder;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -72,22 +70,10 @@ import io.github.contacttracker.io.SpotCsvWriter;
  * The Contact Tracker command, headless through SciJava's {@link ModuleService} (what {@code CommandService},
  * scripts and Fiji's macro bridge use), on the simulated 5-frame stack of {@link Simulated}.
  */
-class ContactTrackerCommandTest {
-
-	private static Context context;
+class ContactTrackerCommandTest extends WithContext {
 
 	private static final double THRESHOLD = Simulated.TYPE.threshold();
 	private static final double R_OUT = Simulated.TYPE.rOut();
-
-	@BeforeAll
-	static void start() {
-		context = new Context();
-	}
-
-	@AfterAll
-	static void stop() {
-		context.dispose();
-	}
 
 	/** The dialog remembers values: every test starts from the documented defaults. */
 	@BeforeEach

@@ -9,8 +9,6 @@ import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.scijava.Cancelable;
 import org.scijava.Context;
@@ -35,19 +33,7 @@ import net.imglib2.RandomAccessibleInterval;
  * message when the frame has nothing to measure. The button is not a setting, not remembered and not a macro
  * option: a headless run ignores it.
  */
-class MeasureFromImageTest {
-
-	private static Context context;
-
-	@BeforeAll
-	static void start() {
-		context = new Context();
-	}
-
-	@AfterAll
-	static void stop() {
-		context.dispose();
-	}
+class MeasureFromImageTest extends WithContext {
 
 	/** The command's module as the dialog holds it, on {@code imp}. */
 	private static Module dialog(final ImagePlus imp) {

@@ -11,8 +11,6 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.scijava.Context;
@@ -22,22 +20,10 @@ import ij.gui.Plot;
 import ij.measure.ResultsTable;
 
 /** The Fiji command, headless: from a results table and from a CSV file, and refusing bad input. */
-class PotentialCommandTest {
-
-	private static Context context;
+class PotentialCommandTest extends WithContext {
 
 	@TempDir
 	Path dir;
-
-	@BeforeAll
-	static void start() {
-		context = new Context();
-	}
-
-	@AfterAll
-	static void stop() {
-		context.dispose();
-	}
 
 	private static ResultsTable triangle() {
 		final ResultsTable rt = new ResultsTable();

@@ -10,8 +10,6 @@ import java.util.List;
 import java.util.SplittableRandom;
 import java.util.stream.Stream;
 
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
@@ -42,7 +40,7 @@ import net.imglib2.img.array.ArrayImg;
  * whose dark first ring stays below the background at contact, and a long-range one whose bright second ring
  * lies beyond {@code D/2} and so sets the threshold.
  */
-class ProfileHelperTest {
+class ProfileHelperTest extends WithContext {
 
 	/** Short range, the 5.53 um kind: D = 65 px. */
 	static final ParticleType SHORT = new ParticleType("short range", 6.5, 100, new GaussianBesselProfile(120, 0.1,
@@ -50,18 +48,6 @@ class ProfileHelperTest {
 	/** Long range, the 2.06 um kind: D = 56 px, second bright ring at 44 px. */
 	static final ParticleType LONG = new ParticleType("long range", 5.6, 100, new GaussianBesselProfile(100, 0.16, 40),
 		80, 115, 80, NoiseModel.uniform(5));
-
-	private static Context context;
-
-	@BeforeAll
-	static void start() {
-		context = new Context();
-	}
-
-	@AfterAll
-	static void stop() {
-		context.dispose();
-	}
 
 	/** One particle at (cx, cy) in a frame with room for 2.5 diameters around it. */
 	record Scene(ParticleType type, ArrayImg<?, ?> frame, double cx, double cy) {}
