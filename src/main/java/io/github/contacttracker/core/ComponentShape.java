@@ -79,8 +79,15 @@ final class ComponentShape {
 	 * @return whether the component looks like several particles
 	 */
 	boolean merged(final boolean atBorder, final double noise, final boolean alone, final double diameter) {
-		return !atBorder && elongation > MERGE_ELONGATION || bayDepth >= mergeDepth(filledArea) || alone &&
-			excessResidual(noise) > residualLimit(diameter);
+		return outlineMerged(atBorder) || alone && excessResidual(noise) > residualLimit(diameter);
+	}
+
+	/**
+	 * @param atBorder whether the component is cut by the image border (then elongation does not count)
+	 * @return whether the outline alone is that of several particles: elongated, or with a bay as deep as a waist
+	 */
+	boolean outlineMerged(final boolean atBorder) {
+		return !atBorder && elongation > MERGE_ELONGATION || bayDepth >= mergeDepth(filledArea);
 	}
 
 	/**
@@ -90,8 +97,8 @@ final class ComponentShape {
 	 * for a share {@code f} of the gradient weight in the smaller one, above {@code 0.1 D} for any {@code f >= 2%}.
 	 * A real particle's lines do not meet in one point either (an imperfect lens, illumination from a slight angle,
 	 * JPEG blocks): on the bright-field movie of the paper's authors single cores of radius 4.7 to 8.3 px have
-	 * residuals of 0.3 to 1.3 px, up to 0.17 of their radius, for particles about 32-34 px apart at contact. The radius alone would flag
-	 * them; the diameter, which two merged particles' lines must span, does not.
+	 * residuals of 0.3 to 1.3 px, up to 0.17 of their radius, for particles about 32-34 px apart at contact. The
+	 * radius alone would flag them; the diameter, which two merged particles' lines must span, does not.
 	 */
 	double residualLimit(final double diameter) {
 		return MERGE_RESIDUAL_FRACTION * Math.max(Math.sqrt(filledArea / Math.PI), diameter);

@@ -164,8 +164,8 @@ public final class ContactTracker {
 	 * Flags particles at the border and components whose shape is that of several particles merged
 	 * ({@link ComponentShape}: elongated, or with a bay as deep as a waist between two lobes). Size does not make a
 	 * merge: particles in and out of focus differ in size, not in shape. But a merge holds two particles' active
-	 * areas: a component of the wrong outline (elongated, or with a bay) smaller than twice the frame's small round ones (their 10th percentile,
-	 * given {@value #MIN_ROUND_FOR_SIZES} or more) is no particle at all. In bright field such components are the
+	 * areas: a component of the wrong outline (elongated, or with a bay) smaller than twice the frame's small round
+	 * ones (their 10th percentile, given {@value #MIN_ROUND_FOR_SIZES} or more) is no particle at all. In bright field such components are the
 	 * bright fringes between touching particles; they are dropped and counted in {@code discarded[0]}, as the
 	 * noise blobs below {@code min_area} are.
 	 */
@@ -189,7 +189,7 @@ public final class ContactTracker {
 		for (int k = 0; k < ps.length; k++) {
 			final Particle p = particles.get(k);
 			// (by outline only: a particle flagged for its gradient lines has the shape of one)
-			if (merged[k] && p.region.area() < smallestMerge && p.shape.merged(p.atBorder, 0, false, 0)) {
+			if (merged[k] && p.region.area() < smallestMerge && p.shape.outlineMerged(p.atBorder)) {
 				discarded[0]++;
 				continue;
 			}

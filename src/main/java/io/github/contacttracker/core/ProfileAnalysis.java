@@ -476,7 +476,7 @@ public final class ProfileAnalysis {
 			if (r.area() < TrackerParameters.DEFAULT_MIN_AREA || r.minX() == 0 || r.minY() == 0 || r.maxX() == plane
 				.width() - 1 || r.maxY() == plane.height() - 1) continue;
 			all++;
-			if (ComponentShape.of(r).merged(false, 0, false, 0)) bad++;
+			if (ComponentShape.of(r).outlineMerged(false)) bad++;
 		}
 		return new int[] { bad, all };
 	}

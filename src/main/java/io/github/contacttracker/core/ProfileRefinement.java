@@ -130,7 +130,7 @@ final class ProfileRefinement implements Refinement {
 	/**
 	 * Flags every refined spot that an unmodelled particle's light reaches: a suspected merge or a first pass
 	 * without a centre is left out of the model (its centre is meaningless), so its light is fitted as if it were
-	 * the neighbour's and pulls that centre (on a simulated touching pair, by over a pixel). Reach: as for a group
+	 * the neighbour's and pulls that centre by an amount nothing measures. Reach: as for a group
 	 * ({@code 2 r_out}: a particle's light above the noise reaches {@code r_out}, and the fit reads pixels up to
 	 * {@code r_out} from its particles), plus the unmodelled component's own equivalent radius (a merge spans two).
 	 */
