@@ -134,6 +134,25 @@ public final class EmpiricalProfile implements Serializable {
 		return r;
 	}
 
+	/**
+	 * @return the radius within which a particle's image holds the fraction {@code fraction} of the information on
+	 *         its centre: the Fisher information on x from a ring at r is proportional to {@code P'(r)^2 r} (for
+	 *         uniform noise), so this is where the cumulative {@code integral P'^2 r dr} reaches that fraction
+	 */
+	public double informationRadius(final double fraction) {
+		final double[] d = tableDerivative;
+		double total = 0;
+		for (int i = 0; i < d.length; i++)
+			total += d[i] * d[i] * i;
+		if (!(total > 0)) return radius;
+		double sum = 0;
+		for (int i = 0; i < d.length; i++) {
+			sum += d[i] * d[i] * i;
+			if (sum >= fraction * total) return Math.min(radius, (i + 1) * TABLE_STEP);
+		}
+		return radius;
+	}
+
 	private double coefficient(final int j) {
 		final int a = Math.abs(j);
 		return a < coefficients.length ? coefficients[a] : 0;

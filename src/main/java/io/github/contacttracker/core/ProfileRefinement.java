@@ -70,9 +70,10 @@ final class ProfileRefinement implements Refinement {
 			}
 			double move = 0;
 			for (int k = 0; k < next.length; k++)
-				move = Math.max(move, next[k].distanceTo(e[k]));
+				if (ps[k].reliable() && !next[k].has(Flag.FELL_BACK) && !e[k].has(Flag.FELL_BACK)) move = Math.max(move,
+					next[k].distanceTo(e[k]) / GroupFit.settled(next[k].sigmaX(), next[k].sigmaY()));
 			e = next;
-			if (round > 0 && move <= StackTracker.PROFILE_TOLERANCE) {
+			if (round > 0 && move <= 1) {
 				settled = true;
 				break;
 			}

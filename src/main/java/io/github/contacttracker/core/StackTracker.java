@@ -98,8 +98,9 @@ public final class StackTracker {
 		final ProfileStage stage = profileStage(sample, frame, progress, cancelled);
 		if (keepRegions) return flagged(pass(tracker, stage.profile, all, frame, true, progress, cancelled),
 			stage.settled);
+		progress.total += sample.length - stage.sample.length; // frames left to the last pass
 		final boolean[] done = new boolean[count];
-		for (final int t : sample)
+		for (final int t : stage.sample)
 			done[t] = true;
 		final List<FrameResult> others = pass(tracker, stage.profile, stage.others(count), frame, false, progress,
 			cancelled);
@@ -197,31 +198,41 @@ public final class StackTracker {
 		return flagged(pass(tracker, stage.profile, indices, frame, false, none, cancelled), stage.settled);
 	}
 
-	private <T extends RealType<T>> ProfileStage profileStage(final int[] sample,
+	private <T extends RealType<T>> ProfileStage profileStage(int[] sample,
 		final IntFunction<? extends RandomAccessibleInterval<T>> frame, final Progress progress,
 		final BooleanSupplier cancelled)
 	{
 		final TrackerParameters params = tracker.parameters();
-		final List<FrameResult> iterative = pass(new ContactTracker(params.withMethod(Method.ITERATIVE)), null,
-			sample, frame, false, progress, cancelled);
+		final List<FrameResult> first = pass(new ContactTracker(params.withMethod(Method.ITERATIVE)), null, sample,
+			frame, false, progress, cancelled);
+		// a dense field needs fewer frames for as many particles: the rounds' cost follows the frames
+		final int[] kept = fewer(first);
+		final List<FrameResult> iterative = new ArrayList<>(kept.length);
+		final int[] chosen = new int[kept.length];
+		for (int i = 0; i < kept.length; i++) {
+			iterative.add(first.get(kept[i]));
+			chosen[i] = sample[kept[i]];
+		}
+		progress.total -= sample.length - chosen.length; // the first round's frames
+		sample = chosen;
 		// The profile is measured around estimated centres, and in a configuration that never changes (every frame
 		// the same cluster) it absorbs part of their error; so profile and centres are alternated on the sample
-		// frames until the centres stop moving (the joint least-squares fixed point).
+		// frames until the centres stop moving (the joint least-squares fixed point, to a tenth of the centres' errors).
 		List<FrameResult> previous = iterative;
 		EmpiricalProfile used = profile(previous, null, sample, frame, params.rOut());
 		List<FrameResult> round = pass(tracker, used, sample, frame, false, progress, cancelled);
-		double move = largestMove(previous, round);
-		for (int r = 1; r < PROFILE_ROUNDS && move > PROFILE_TOLERANCE; r++) {
+		double move = unsettled(previous, round);
+		for (int r = 1; r < PROFILE_ROUNDS && move > 1; r++) {
 			progress.total += sample.length;
 			previous = round;
 			used = profile(round, used, sample, frame, params.rOut());
 			round = pass(tracker, used, sample, frame, false, progress, cancelled);
-			move = largestMove(previous, round);
+			move = unsettled(previous, round);
 		}
 		// no fixed point within the rounds: every centre rests on a profile that was still moving. Settled: the
 		// profile of the last round is the fixed point's (to within the tolerance), and the sample frames were just
 		// refined with that very profile: without regions to keep, their results are the final ones.
-		return new ProfileStage(sample, used, move <= PROFILE_TOLERANCE, round);
+		return new ProfileStage(sample, used, move <= 1, round);
 	}
 
 	/** @return the results, every spot flagged {@code NOT_CONVERGED} unless the profile rounds {@code settled} */
@@ -238,21 +249,35 @@ public final class StackTracker {
 		return out;
 	}
 
-	/** At most this many rounds of profile and centres on the sample frames... */
+	/**
+	 * At most this many rounds of profile and centres on the sample frames, which stop when every fitted centre has
+	 * {@link GroupFit#settled settled}.
+	 */
 	public static final int PROFILE_ROUNDS = 30;
-	/** ...which stop when no centre moves more than this between rounds (px). */
-	public static final double PROFILE_TOLERANCE = 1e-3;
 
-	/** The largest distance any spot moved between two results of the same frames (spots in the same order). */
-	static double largestMove(final List<FrameResult> before, final List<FrameResult> after) {
+	/**
+	 * How far two results of the same frames (spots in the same order) are from settled: the largest move of a
+	 * fitted spot between them, in units of its {@link GroupFit#settled tolerance}; settled at 1 or less.
+	 */
+	static double unsettled(final List<FrameResult> before, final List<FrameResult> after) {
 		double move = 0;
 		for (int t = 0; t < before.size(); t++) {
 			final List<Localization> a = before.get(t).spots(), b = after.get(t).spots();
 			if (a.size() != b.size()) return Double.POSITIVE_INFINITY;
 			for (int k = 0; k < a.size(); k++)
-				move = Math.max(move, Math.hypot(a.get(k).x() - b.get(k).x(), a.get(k).y() - b.get(k).y()));
+				if (fitted(b.get(k))) move = Math.max(move, Math.hypot(a.get(k).x() - b.get(k).x(), a
+					.get(k).y() - b.get(k).y()) / GroupFit.settled(b.get(k).sigmaX(), b.get(k).sigmaY()));
 		}
 		return move;
+	}
+
+	/**
+	 * Whether a spot's centre is the fit's own: not one kept from the first pass because the fit could not be made
+	 * ({@code FELL_BACK}), nor a particle left out of the model; only those take part in the profile's fixed point
+	 * (the spot in the newer result: the older may be the iterative pass's).
+	 */
+	private static boolean fitted(final Localization l) {
+		return !l.has(Flag.FELL_BACK) && !l.has(Flag.MERGED) && !l.has(Flag.DEGENERATE);
 	}
 
 	/** Frames done over frames to do, across the passes of one run. */
@@ -294,6 +319,30 @@ public final class StackTracker {
 			frames[i] = (int) ((long) i * count / n);
 		return frames;
 	}
+
+	/**
+	 * Enough particles for the profile: past {@value #PROFILE_PARTICLES} usable particles the profile's spline is
+	 * as well determined as the centres need (the bench stack's 15 frames hold 180), and more frames only multiply
+	 * the cost of the profile rounds.
+	 *
+	 * @return the positions in {@code results} (evenly spread) of the frames kept
+	 */
+	private static int[] fewer(final List<FrameResult> results) {
+		int particles = 0;
+		for (final FrameResult r : results)
+			for (final Localization l : r.spots())
+				if (fitted(l)) particles++;
+		final int n = results.size();
+		final int m = particles <= PROFILE_PARTICLES ? n : (int) Math.max(1, Math.min(n, Math.ceil((double) PROFILE_PARTICLES *
+			n / particles)));
+		final int[] kept = new int[m];
+		for (int i = 0; i < m; i++)
+			kept[i] = (int) ((long) i * n / m);
+		return kept;
+	}
+
+	/** The profile rounds use frames holding about this many particles, if the sample frames hold more. */
+	public static final int PROFILE_PARTICLES = 300;
 
 	private static int[] range(final int count) {
 		final int[] r = new int[count];

@@ -254,4 +254,42 @@ class MergeDetectionTest {
 		assertTrue(new ContactTracker(TrackerParameters.of(THRESHOLD, 20).withMethod(Method.PAPER)).analyse(plane, 0,
 			false).spots().stream().noneMatch(s -> s.has(Flag.UNMODELLED_NEIGHBOUR)));
 	}
+
+	/**
+	 * A group larger than {@link GroupFit#MAX_JOINT} (a dense monolayer: 30 particles whose light overlaps) is fitted
+	 * member by member in sweeps: every centre converges, unflagged, within 0.25 px of the truth. (This scene, 30
+	 * saturated cores 16-18 px apart with the profile measured on the frame itself, is hard for any fit: fitted
+	 * jointly, which {@code MAX_JOINT = 100} forces, the worst centre is 0.181 px off; member by member 0.195 px.)
+	 */
+	@Test
+	void aLargeGroupIsFittedMemberByMember() {
+		final SplittableRandom rnd = new SplittableRandom(23);
+		final List<Item> items = new ArrayList<>();
+		for (int i = 0; i < 6; i++)
+			for (int j = 0; j < 5; j++)
+				items.add(new Item(IN_FOCUS, 30 + 18 * i + (j % 2) * 9 + 0.5 * rnd.nextDouble(), 30 + 16 * j + 0.5 * rnd
+					.nextDouble()));
+		final Plane plane = render(170, 130, items, 29);
+		final TrackerParameters params = TrackerParameters.of(THRESHOLD, 16).withMethod(Method.FIT);
+		assertTrue(GroupFit.groups(ContactTracker.particles(plane, params), firstPasses(plane, params), 2 * params
+			.rOut()).stream().anyMatch(g -> g.length > GroupFit.MAX_JOINT), "one group too large to fit jointly");
+		final List<Localization> spots = new ContactTracker(params).analyse(plane, 0, false).spots();
+		assertEquals(items.size(), spots.size());
+		double worst = 0;
+		for (final Localization s : spots) {
+			assertEquals(0, s.flags() & ~Flag.AT_BORDER.bit(), "unflagged: " + Flag.decode(s.flags()));
+			final Item truth = items.stream().min(java.util.Comparator.comparingDouble(it -> Math.hypot(it.x() - s.x(), it
+				.y() - s.y()))).orElseThrow();
+			worst = Math.max(worst, Math.hypot(truth.x() - s.x(), truth.y() - s.y()));
+		}
+		assertTrue(worst < 0.25, "every centre within 0.25 px of the truth: worst " + worst + " px");
+	}
+
+	private static Estimate[] firstPasses(final Plane plane, final TrackerParameters params) {
+		final Particle[] ps = ContactTracker.particles(plane, params);
+		final Estimate[] e = new Estimate[ps.length];
+		for (int k = 0; k < ps.length; k++)
+			e[k] = ps[k].first;
+		return e;
+	}
 }
