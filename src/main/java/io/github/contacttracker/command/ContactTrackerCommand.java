@@ -125,7 +125,8 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 	// macro preprocessor resolves it: it is no macro option, and headless nobody presses it.
 	@Parameter(label = "Measure from the image", callback = "measureFromImage", persist = false,
 		description = DialogHelp.TIP + "Runs the profile helper on the frame on display (in the channel above) and fills in " +
-			"threshold, r_out and the diameter; a diameter above 0 is kept and used")
+			"threshold, r_out and the diameter; a diameter above 0 is kept and used (estimated instead if it does not fit " +
+			"this image)")
 	private Button measure;
 
 	// Off by default, as in ImageJ's own dialogs: the dialog opens at once and nothing is tracked before the user
@@ -433,7 +434,8 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 	/**
 	 * The dialog's "Measure from the image" button: runs the profile helper on the most isolated particles of the
 	 * frame on display, in the channel to be tracked, and fills {@code threshold}, {@code r_out} and {@code diameter}
-	 * with its suggestions; a diameter already given (above 0) is kept and used. What was measured, with the helper's
+	 * with its suggestions; a diameter already given (above 0) is kept and used, or estimated instead if the helper
+	 * cannot measure with it ({@link ShownFrameProfile#measure}). What was measured, with the helper's
 	 * warnings, goes to the Log window and the status bar. When the helper finds nothing to measure, the fields stay
 	 * as they were and the status bar and the Log say why in one line.
 	 */
