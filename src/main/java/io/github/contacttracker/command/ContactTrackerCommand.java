@@ -85,6 +85,9 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 
 	private static final String TITLE = "Contact Tracker";
 
+	/** The dialog's format of lengths in pixels: to 0.01 px, as the helper suggests them (SciJava's "format:"). */
+	static final String LENGTH_FORMAT = "format:0.0#";
+
 
 	@Parameter(required = false)
 	private StatusService status;
@@ -97,7 +100,9 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 	@Parameter(validater = "validateInputs", label = "Threshold (grey level)", description = DialogHelp.TIP + TrackingSettings.HELP_THRESHOLD)
 	private double threshold = TrackingSettings.THRESHOLD.defaultValue();
 
-	@Parameter(validater = "validateInputs", label = "r_out (px)", min = "0", stepSize = "0.5", description = DialogHelp.TIP + TrackingSettings.HELP_R_OUT)
+	// format: the helper fills in 0.01 px (a diameter of 34.06 showed as 34.1: the dialog's format follows the
+	// default's decimals)
+	@Parameter(validater = "validateInputs", label = "r_out (px)", min = "0", stepSize = "0.5", style = LENGTH_FORMAT, description = DialogHelp.TIP + TrackingSettings.HELP_R_OUT)
 	private double r_out = TrackingSettings.R_OUT.defaultValue();
 
 	@Parameter(validater = "validateInputs", label = "Min area (px)", min = "1", description = DialogHelp.TIP + TrackingSettings.HELP_MIN_AREA)
@@ -115,6 +120,7 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 	private String method = TrackingSettings.METHOD.defaultValue();
 
 	@Parameter(validater = "validateInputs", label = "Particle diameter (px, 0 = not given)", min = "0", stepSize = "0.5",
+		style = LENGTH_FORMAT,
 		description = DialogHelp.TIP + TrackingSettings.HELP_DIAMETER)
 	private double diameter = TrackingSettings.DIAMETER.defaultValue();
 
@@ -184,8 +190,17 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 	private ExecutorService previewer;
 	private Future<?> pendingPreview;
 
+	/** The dialog goes beside the image, not over it: its preview and its Measure button work on the image. */
+	private final DialogBesideImage besideImage = new DialogBesideImage(TITLE, () -> imp);
+
+	@Override
+	protected void initialized() {
+		besideImage.arm();
+	}
+
 	@Override
 	public void run() {
+		besideImage.disarm(); // in case there was no dialog (a macro, a script)
 		IJ.resetEscape();
 		stopPreviews();
 		clearPreview(false); // a real run replaces the preview's ROIs (or leaves the image alone)
@@ -461,6 +476,7 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 	/** Takes the preview off the image: the dialog was cancelled. */
 	@Override
 	public void cancel() {
+		besideImage.disarm();
 		stopPreviews();
 		synchronized (this) {
 			clearPreview(true);
