@@ -85,6 +85,9 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 
 	private static final String TITLE = "Contact Tracker";
 
+	/** The dialog's format of lengths in pixels: to 0.01 px, as the helper suggests them (SciJava's "format:"). */
+	static final String LENGTH_FORMAT = "format:0.0#";
+
 
 	@Parameter(required = false)
 	private StatusService status;
@@ -97,7 +100,9 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 	@Parameter(validater = "validateInputs", label = "Threshold (grey level)", description = DialogHelp.TIP + TrackingSettings.HELP_THRESHOLD)
 	private double threshold = TrackingSettings.THRESHOLD.defaultValue();
 
-	@Parameter(validater = "validateInputs", label = "r_out (px)", min = "0", stepSize = "0.5", description = DialogHelp.TIP + TrackingSettings.HELP_R_OUT)
+	// format: the helper fills in 0.01 px (a diameter of 34.06 showed as 34.1: the dialog's format follows the
+	// default's decimals)
+	@Parameter(validater = "validateInputs", label = "r_out (px)", min = "0", stepSize = "0.5", style = LENGTH_FORMAT, description = DialogHelp.TIP + TrackingSettings.HELP_R_OUT)
 	private double r_out = TrackingSettings.R_OUT.defaultValue();
 
 	@Parameter(validater = "validateInputs", label = "Min area (px)", min = "1", description = DialogHelp.TIP + TrackingSettings.HELP_MIN_AREA)
@@ -115,6 +120,7 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 	private String method = TrackingSettings.METHOD.defaultValue();
 
 	@Parameter(validater = "validateInputs", label = "Particle diameter (px, 0 = not given)", min = "0", stepSize = "0.5",
+		style = LENGTH_FORMAT,
 		description = DialogHelp.TIP + TrackingSettings.HELP_DIAMETER)
 	private double diameter = TrackingSettings.DIAMETER.defaultValue();
 
@@ -125,7 +131,8 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 	// macro preprocessor resolves it: it is no macro option, and headless nobody presses it.
 	@Parameter(label = "Measure from the image", callback = "measureFromImage", persist = false,
 		description = DialogHelp.TIP + "Runs the profile helper on the frame on display (in the channel above) and fills in " +
-			"threshold, r_out and the diameter; a diameter above 0 is kept and used")
+			"threshold, r_out and the diameter; a diameter above 0 is kept and used (estimated instead if it does not fit " +
+			"this image)")
 	private Button measure;
 
 	// Off by default, as in ImageJ's own dialogs: the dialog opens at once and nothing is tracked before the user
@@ -183,8 +190,17 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 	private ExecutorService previewer;
 	private Future<?> pendingPreview;
 
+	/** The dialog goes beside the image, not over it: its preview and its Measure button work on the image. */
+	private final DialogBesideImage besideImage = new DialogBesideImage(TITLE, () -> imp);
+
+	@Override
+	protected void initialized() {
+		besideImage.arm();
+	}
+
 	@Override
 	public void run() {
+		besideImage.disarm(); // in case there was no dialog (a macro, a script)
 		IJ.resetEscape();
 		stopPreviews();
 		clearPreview(false); // a real run replaces the preview's ROIs (or leaves the image alone)
@@ -433,7 +449,8 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 	/**
 	 * The dialog's "Measure from the image" button: runs the profile helper on the most isolated particles of the
 	 * frame on display, in the channel to be tracked, and fills {@code threshold}, {@code r_out} and {@code diameter}
-	 * with its suggestions; a diameter already given (above 0) is kept and used. What was measured, with the helper's
+	 * with its suggestions; a diameter already given (above 0) is kept and used, or estimated instead if the helper
+	 * cannot measure with it ({@link ShownFrameProfile#measure}). What was measured, with the helper's
 	 * warnings, goes to the Log window and the status bar. When the helper finds nothing to measure, the fields stay
 	 * as they were and the status bar and the Log say why in one line.
 	 */
@@ -459,6 +476,7 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 	/** Takes the preview off the image: the dialog was cancelled. */
 	@Override
 	public void cancel() {
+		besideImage.disarm();
 		stopPreviews();
 		synchronized (this) {
 			clearPreview(true);

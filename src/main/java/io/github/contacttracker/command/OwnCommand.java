@@ -57,6 +57,12 @@ abstract class OwnCommand extends ContextCommand {
 	 */
 	private void macroInputs() {
 		own.start(events, modules);
+		initialized();
+	}
+
+	/** Called by the initializer, before SciJava fills in the inputs and shows the dialog (if any). */
+	protected void initialized() {
+		// nothing by default
 	}
 
 	/** The Help button: the manual's page on this command. */

@@ -25,9 +25,12 @@ import net.imglib2.RandomAccessibleInterval;
  * @param frameCount the image's frames
  * @param channel the 1-based channel measured
  * @param integerData whether the image holds whole grey levels (8- or 16-bit)
+ * @param rejectedDiameter a diameter given (px) that the helper could not measure with, so it estimated the
+ *        diameter instead ({@link #measure}); 0 if none
+ * @param rejection why it could not, {@code null} if none
  */
 public record ShownFrameProfile(ProfileAnalysis.Result result, String title, int frame, int frameCount, int channel,
-	boolean integerData)
+	boolean integerData, double rejectedDiameter, String rejection)
 {
 
 	/** Longest line written to ImageJ's Log window: it does not wrap, and a default Log window is about this wide. */
@@ -35,16 +38,33 @@ public record ShownFrameProfile(ProfileAnalysis.Result result, String title, int
 
 	/**
 	 * The profile of the most isolated particles of the frame on display (the "Measure from the image" buttons).
+	 * A diameter given is used; if the helper cannot measure with it (typically one left in the fields from another
+	 * image, e.g. twice these particles' size on a dense monolayer: no background within reach), the diameter is
+	 * estimated instead and {@link #summary()} and {@link #logText} say so ({@link #rejectedDiameter()}).
 	 *
 	 * @param imp the image
 	 * @param channel the 1-based channel to measure (the one that will be tracked)
 	 * @param diameter the particle diameter in pixels, or 0 to estimate it from the frame
 	 * @return the profile and the suggestions
 	 * @throws InvalidInputException with a one-line message: an image that cannot be tracked, or a frame the helper
-	 *         finds no usable particle in
+	 *         finds no usable particle in (with the diameter given, if estimating it does not help either)
 	 */
 	public static ShownFrameProfile measure(final ImagePlus imp, final int channel, final double diameter) {
-		return run(imp, channel, null, diameter, 0);
+		try {
+			return run(imp, channel, null, diameter, 0);
+		}
+		catch (final InvalidInputException e) {
+			if (!(diameter > 0)) throw e;
+			final ShownFrameProfile estimated;
+			try {
+				estimated = run(imp, channel, null, 0, 0);
+			}
+			catch (final InvalidInputException again) {
+				throw e;
+			}
+			return new ShownFrameProfile(estimated.result, estimated.title, estimated.frame, estimated.frameCount,
+				estimated.channel, estimated.integerData, diameter, e.getMessage());
+		}
 	}
 
 	/**
@@ -75,7 +95,7 @@ public record ShownFrameProfile(ProfileAnalysis.Result result, String title, int
 		final ProfileAnalysis.Result r = point == null ? ProfileAnalysis.analyse(frame, diameter, maxRadius)
 			: ProfileAnalysis.analyse(frame, point[0], point[1], diameter, maxRadius);
 		return new ShownFrameProfile(r, imp.getTitle(), t, frames.frameCount(), frames.channel(), imp
-			.getBitDepth() != 32);
+			.getBitDepth() != 32, 0, null);
 	}
 
 	/** @return the suggested threshold, rounded up to a whole grey level for 8- and 16-bit images */
@@ -94,17 +114,19 @@ public record ShownFrameProfile(ProfileAnalysis.Result result, String title, int
 	}
 
 	/**
-	 * @return one line, e.g. {@code 'movie.tif', frame 3: threshold 131, r_out 36 px, diameter 64.87 px (estimated)}
+	 * @return one line, e.g. {@code 'movie.tif', frame 3: threshold 131, r_out 36 px, diameter 64.87 px (estimated)};
+	 *         {@code (estimated: 65.29 px given did not fit)} when a diameter given could not be measured with
 	 */
 	public String summary() {
 		return String.format(Locale.ROOT, "'%s'%s%s: threshold %s, r_out %s px, diameter %s px (%s)", title,
 			frameCount > 1 ? ", frame " + (frame + 1) : "", channel > 1 ? ", channel " + channel : "", fmt(threshold()),
-			fmt(rOut()), fmt(diameter()), result.diameterEstimated() ? "estimated" : "given");
+			fmt(rOut()), fmt(diameter()), rejectedDiameter > 0 ? "estimated: " + fmt(rejectedDiameter) +
+				" px given did not fit" : result.diameterEstimated() ? "estimated" : "given");
 	}
 
 	/** @return {@link #summary()} and, if the helper warns, how many warnings the Log window holds */
 	public String status() {
-		final int n = result.warnings().size();
+		final int n = result.warnings().size() + (rejectedDiameter > 0 ? 1 : 0);
 		return summary() + (n == 0 ? "" : "; " + n + " warning" + (n == 1 ? "" : "s") + " in the Log window");
 	}
 
@@ -115,6 +137,8 @@ public record ShownFrameProfile(ProfileAnalysis.Result result, String title, int
 	public String logText(final String who) {
 		final List<String> lines = new ArrayList<>();
 		lines.add(wrap(who + " " + summary(), LOG_WIDTH, "    "));
+		if (rejectedDiameter > 0) lines.add(wrap("  warning: not measured with the diameter given, " + fmt(
+			rejectedDiameter) + " px (left from another image?): " + rejection, LOG_WIDTH, "    "));
 		for (final String w : result.warnings())
 			lines.add(wrap("  warning: " + w, LOG_WIDTH, "    "));
 		return String.join("\n", lines);

@@ -7,6 +7,7 @@ import java.awt.BasicStroke;
 import java.awt.Color;
 import java.awt.Dimension;
 import java.awt.Font;
+import java.awt.FontMetrics;
 import java.awt.Graphics2D;
 import java.awt.GridBagConstraints;
 import java.awt.GridBagLayout;
@@ -67,6 +68,9 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 	/** The wizard's panel size, which this panel must fit (TrackMate's own detector panels use it). */
 	public static final Dimension WIZARD_SIZE = new Dimension(300, 511);
 
+	/** The icon on the title line: {@link #icon()} at 32 px, as the panel has no height to spare in the wizard. */
+	private static final ImageIcon TITLE_ICON = icon(32);
+
 	/** The DOI as the info text shows it. */
 	static final String DOI_TEXT = "doi:10.1088/1361-648X/aa908e";
 
@@ -117,13 +121,20 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 			}
 			else control = doubleSpinner(0, -1e15, 1e15, 1, "0.###");
 			unitLabel.setFont(FONT);
+			if (setting.unit() == Setting.Unit.PIXELS && !"pixel".equals(unit)) {
+				// wide enough for "micron (9999.99 px)" from the start: the fields do not shift as the pixels change
+				final FontMetrics fm = unitLabel.getFontMetrics(FONT);
+				final Dimension d = new Dimension(fm.stringWidth(unit + " (9999.99 px)"), fm.getHeight());
+				unitLabel.setPreferredSize(d);
+				unitLabel.setMinimumSize(d);
+			}
 		}
 
 		/** Shows a value of the setting's type. */
 		void show(final Object value) {
 			if (control instanceof JComboBox) ((JComboBox<?>) control).setSelectedItem(value);
-			else if (setting.unit() == Setting.Unit.PIXELS) ((JSpinner) control).setValue(((Number) value).doubleValue() *
-				pixelWidth);
+			else if (setting.unit() == Setting.Unit.PIXELS) ((JSpinner) control).setValue(units(((Number) value)
+				.doubleValue(), pixelWidth));
 			else ((JSpinner) control).setValue(value);
 			showPixels();
 		}
@@ -144,6 +155,25 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 			final String px = new DecimalFormat("0.##", DecimalFormatSymbols.getInstance(Locale.ROOT)).format(value());
 			unitLabel.setText("pixel".equals(unit) ? "px" : unit + " (" + px + " px)");
 		}
+	}
+
+	/**
+	 * The length to show for a value in pixels: the one with the fewest decimals (up to the 4 the field shows) that
+	 * {@link #pixels} takes back to exactly those pixels, so a length typed in the image's units comes back as typed
+	 * (5.53 um, not 5.5301 um, after a detector switch or in a new session); else the exact product.
+	 *
+	 * @param px a length in pixels
+	 * @param pixelWidth the pixel width, in the image's units
+	 * @return the length in the image's units
+	 */
+	static double units(final double px, final double pixelWidth) {
+		final double exact = px * pixelWidth;
+		for (int decimals = 0; decimals <= 4; decimals++) {
+			final double scale = Math.pow(10, decimals);
+			final double shown = Math.round(exact * scale) / scale;
+			if (pixels(shown, pixelWidth) == px) return shown;
+		}
+		return exact;
 	}
 
 	/**
@@ -173,8 +203,7 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 		setBorder(BorderFactory.createEmptyBorder(5, 5, 5, 5));
 		setPreferredSize(WIZARD_SIZE);
 		int row = 0;
-		final JLabel title = new JLabel(ContactTrackerDetectorFactory.SHORT_NAME, ContactTrackerDetectorFactory.ICON,
-			SwingConstants.CENTER);
+		final JLabel title = new JLabel(ContactTrackerDetectorFactory.SHORT_NAME, TITLE_ICON, SwingConstants.CENTER);
 		title.setFont(BIG_FONT);
 		final GridBagConstraints tc = at(0, row++, 3);
 		tc.anchor = GridBagConstraints.CENTER;
@@ -188,7 +217,10 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 			// the channel is asked only where there is a choice, as in TrackMate's own panels
 			if (s == TrackingSettings.CHANNEL && nChannels < 2) continue;
 			if (s.unit() != Setting.Unit.PIXELS) f.unitLabel.setText(s.unit().symbol());
-			row = addRow(row, s.label(), f.control, f.unitLabel, s.help());
+			// the settings' help speaks of pixels, as the command line does; here a length is typed in the image's units
+			final String tip = s.unit() == Setting.Unit.PIXELS && !"pixel".equals(unit) ? s.help() + " Typed here in " +
+				unit + "; its value in pixels shows beside." : s.help();
+			row = addRow(row, s.label(), f.control, f.unitLabel, tip);
 		}
 
 		row = addMeasureRows(row);
@@ -213,7 +245,7 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 		measureButton.setMargin(new Insets(1, 6, 1, 6));
 		measureButton.setToolTipText("<html>Runs the profile helper on the most isolated particles of the frame on " +
 			"display (in the target channel)<br>and fills in threshold, r_out and the particle diameter; a diameter " +
-			"above 0 is kept and used.</html>");
+			"above 0 is kept and used<br>(estimated instead if it does not fit this image).</html>");
 		measureButton.setEnabled(imp != null);
 		measureButton.addActionListener(e -> measureInBackground());
 		final GridBagConstraints bc = at(1, row, 2);
@@ -257,7 +289,8 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 	/**
 	 * What the button does, at once on the calling thread (for tests): runs the profile helper on the most isolated
 	 * particles of the frame on display, in the target channel, and fills in the threshold, {@code r_out} and the
-	 * diameter with its suggestions; a diameter already given (above 0) is kept and used. {@code r_out} and the
+	 * diameter with its suggestions; a diameter already given (above 0) is kept and used (estimated instead if the
+	 * helper cannot measure with it: {@link ShownFrameProfile#measure}). {@code r_out} and the
 	 * diameter are shown in the image's units like every length here. When the helper finds nothing to measure the
 	 * fields stay as they were. The outcome is shown under the button and written to ImageJ's Log window, with the
 	 * helper's warnings.
@@ -408,23 +441,42 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 		return s;
 	}
 
-	/** A 32 x 32 icon: two touching particles, each with its centre marked. */
+	/** Width and height of the detector's icon: TrackMate's own detector icons are 64 x 64. */
+	static final int ICON_SIZE = 64;
+
+	/**
+	 * A 64 x 64 icon: two touching particles, each with its centre marked. As wide as TrackMate's own detector icons,
+	 * so that the names in its detector list line up (the list draws each icon's middle strip, about 16 px high, in
+	 * front of the name); the particles' centres lie on that strip.
+	 */
 	static ImageIcon icon() {
-		final BufferedImage img = new BufferedImage(32, 32, BufferedImage.TYPE_INT_ARGB);
+		return icon(ICON_SIZE);
+	}
+
+	/**
+	 * @param size the icon's width and height: {@value #ICON_SIZE} for TrackMate's lists, 32 on the panel's title
+	 *        line (the panel has no height to spare in the wizard)
+	 * @return the icon of {@link #icon()}, drawn at that size
+	 */
+	static ImageIcon icon(final int size) {
+		final BufferedImage img = new BufferedImage(size, size, BufferedImage.TYPE_INT_ARGB);
 		final Graphics2D g = img.createGraphics();
 		g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
-		g.setColor(new Color(250, 200, 60));
-		g.fillOval(1, 8, 15, 15);
-		g.fillOval(16, 8, 15, 15);
-		g.setColor(new Color(120, 80, 0));
-		g.setStroke(new BasicStroke(1.2f));
-		g.drawOval(1, 8, 15, 15);
-		g.drawOval(16, 8, 15, 15);
-		g.setColor(Color.RED);
-		g.drawLine(6, 15, 11, 15);
-		g.drawLine(8, 13, 8, 18);
-		g.drawLine(21, 15, 26, 15);
-		g.drawLine(23, 13, 23, 18);
+		g.setRenderingHint(RenderingHints.KEY_STROKE_CONTROL, RenderingHints.VALUE_STROKE_PURE);
+		g.scale(size / (double) ICON_SIZE, size / (double) ICON_SIZE);
+		final int d = 30, top = (ICON_SIZE - d) / 2; // two discs of 30 px touching at the icon's centre
+		final int[] lefts = { ICON_SIZE / 2 - d, ICON_SIZE / 2 };
+		for (final int left : lefts) {
+			g.setColor(new Color(250, 200, 60));
+			g.fillOval(left, top, d, d);
+			g.setColor(new Color(120, 80, 0));
+			g.setStroke(new BasicStroke(2f));
+			g.drawOval(left + 1, top + 1, d - 2, d - 2);
+			g.setColor(Color.RED);
+			final int cx = left + d / 2, cy = top + d / 2;
+			g.drawLine(cx - 5, cy, cx + 5, cy);
+			g.drawLine(cx, cy - 5, cx, cy + 5);
+		}
 		g.dispose();
 		return new ImageIcon(img);
 	}

@@ -269,7 +269,7 @@ public final class ContactTrackerDetector<T extends RealType<T> & NativeType<T>>
 	 * Converts a localization (pixels) into a TrackMate spot (physical units), with the same numbers as every
 	 * other output through {@link SpotColumn}: {@code POSITION_X/Y}, {@code RADIUS}, {@code QUALITY} and every
 	 * extra column (first-pass position, areas, solves, standard errors, flags as 0/1) as a spot feature, and the
-	 * standard errors in pixels too ({@link ContactTrackerSpotFeatures#SIGMA_X_PX}), NaN where
+	 * standard errors in thousandths of a pixel too ({@link ContactTrackerSpotFeatures#SIGMA_X_MPX}), NaN where
 	 * undefined (so every spot has every declared feature; TrackMate saves and reloads NaN).
 	 * {@code FRAME} and {@code VISIBILITY} are TrackMate's to set.
 	 *
@@ -284,8 +284,8 @@ public final class ContactTrackerDetector<T extends RealType<T> & NativeType<T>>
 			0, SpotColumn.RADIUS.value(loc, 0, cal), SpotColumn.QUALITY.value(loc, 0, cal));
 		for (final SpotColumn c : SpotColumn.values())
 			if (!c.isTrackMateKey()) spot.putFeature(c.key(), c.value(loc, 0, cal));
-		spot.putFeature(ContactTrackerSpotFeatures.SIGMA_X_PX, loc.sigmaX());
-		spot.putFeature(ContactTrackerSpotFeatures.SIGMA_Y_PX, loc.sigmaY());
+		spot.putFeature(ContactTrackerSpotFeatures.SIGMA_X_MPX, loc.sigmaX() * ContactTrackerSpotFeatures.MPX_PER_PX);
+		spot.putFeature(ContactTrackerSpotFeatures.SIGMA_Y_MPX, loc.sigmaY() * ContactTrackerSpotFeatures.MPX_PER_PX);
 		return spot;
 	}
 

@@ -67,7 +67,8 @@ public class ContactTrackerDetectorFactory<T extends RealType<T> & NativeType<T>
 		+ "method, fit, fits touching particles jointly with their profile measured over the movie: unbiased at "
 		+ "contact.</p>"
 		+ "<p>"
-		+ "Spots: RADIUS is the active area's equivalent radius; QUALITY how clearly it stands out of the noise "
+		+ "Spots: RADIUS is half the particle diameter if given (DIAMETER), else the active area's equivalent "
+		+ "radius; QUALITY how clearly it stands out of the noise "
 		+ "(0 to 1; particles 1); SIGMA_X/Y the standard errors; FLAG_... what happened. 2D images and "
 		+ "time-lapses only.</p>"
 		+ "</html>";

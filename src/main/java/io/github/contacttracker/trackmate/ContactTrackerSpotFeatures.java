@@ -32,11 +32,14 @@ import net.imglib2.type.numeric.RealType;
 public class ContactTrackerSpotFeatures<T extends RealType<T> & NativeType<T>> implements SpotAnalyzerFactory<T> {
 
 	/**
-	 * The standard errors in pixels, for TrackMate only: its spot table shows 3 decimals, so the calibrated
-	 * {@code SIGMA_X} of a well-localized particle (a few nm) reads 0.001 um in every row; in pixels it reads
-	 * e.g. 0.012.
+	 * The standard errors in thousandths of a pixel, for TrackMate only: its spot table shows 3 decimals, so the
+	 * calibrated {@code SIGMA_X} of a well-localized particle (a few nm) reads 0.001 um in every row, and in pixels
+	 * the real movie 1.avi's errors read 0.003 to 0.006 (one digit); in thousandths of a pixel they read e.g. 4.412.
 	 */
-	public static final String SIGMA_X_PX = "SIGMA_X_PX", SIGMA_Y_PX = "SIGMA_Y_PX";
+	public static final String SIGMA_X_MPX = "SIGMA_X_MPX", SIGMA_Y_MPX = "SIGMA_Y_MPX";
+
+	/** Thousandths of a pixel per pixel. */
+	public static final double MPX_PER_PX = 1000;
 
 	/** The key of this analyzer in TrackMate. */
 	public static final String KEY = "CONTACT_TRACKER_SPOT_FEATURES";
@@ -56,11 +59,11 @@ public class ContactTrackerSpotFeatures<T extends RealType<T> & NativeType<T>> i
 			SHORT_NAMES.put(c.key(), c.shortName());
 			DIMENSIONS.put(c.key(), Dimension.valueOf(c.dimension().name()));
 			IS_INT.put(c.key(), c.isInteger());
-			if (c == SpotColumn.SIGMA_Y) for (final String px : List.of(SIGMA_X_PX, SIGMA_Y_PX)) {
+			if (c == SpotColumn.SIGMA_Y) for (final String px : List.of(SIGMA_X_MPX, SIGMA_Y_MPX)) {
 				features.add(px);
-				final String axis = px.equals(SIGMA_X_PX) ? "X" : "Y";
-				NAMES.put(px, "Std. error " + axis + " (px)");
-				SHORT_NAMES.put(px, "SE " + axis + " px");
+				final String axis = px.equals(SIGMA_X_MPX) ? "X" : "Y";
+				NAMES.put(px, "Std. error " + axis + " (1/1000 px)");
+				SHORT_NAMES.put(px, "SE " + axis + " mpx");
 				DIMENSIONS.put(px, Dimension.NONE);
 				IS_INT.put(px, false);
 			}

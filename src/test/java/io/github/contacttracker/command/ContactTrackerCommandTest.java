@@ -538,6 +538,15 @@ class ContactTrackerCommandTest extends WithContext {
 		// method is a choice list of every method, in Method's order
 		assertEquals(methodKeys(), String.join(", ", m.getInfo().getInput("method", String.class).getChoices()));
 		assertEquals(List.of("spots", "pairs", "none"), m.getInfo().getInput("results", String.class).getChoices());
+		// lengths show the helper's 0.01 px (a measured diameter of 34.06 px showed as 34.1 in the real dialog)
+		for (final String length : List.of("r_out", "diameter")) {
+			final String format = org.scijava.widget.WidgetStyle.getStyleModifier(m.getInfo().getInput(length)
+				.getWidgetStyle(), "format");
+			assertEquals("34.06", new java.text.DecimalFormat(format, java.text.DecimalFormatSymbols.getInstance(
+				java.util.Locale.ROOT)).format(34.06), length);
+			assertEquals("43.0", new java.text.DecimalFormat(format, java.text.DecimalFormatSymbols.getInstance(
+				java.util.Locale.ROOT)).format(43), length);
+		}
 	}
 
 	@Test

@@ -59,7 +59,9 @@ class ContactTrackerDetectorFactoryTest {
 		assertTrue(info.contains("465101"), "must cite the paper");
 		assertTrue(info.contains("RADIUS") && info.contains("QUALITY"), "must document radius and quality");
 		assertNotNull(factory.getIcon());
-		assertEquals(32, factory.getIcon().getIconWidth());
+		// as wide as TrackMate's own detector icons (64 x 64): the names in its detector list line up
+		assertEquals(64, factory.getIcon().getIconWidth());
+		assertEquals(64, factory.getIcon().getIconHeight());
 		assertFalse(factory.forbidMultithreading());
 		assertFalse(factory.has2Dsegmentation());
 		assertFalse(factory.has3Dsegmentation());
@@ -237,14 +239,48 @@ class ContactTrackerDetectorFactoryTest {
 		final List<Component> all = allComponents(panel);
 		assertTrue(all.stream().anyMatch(c -> c instanceof JLabel && "micron (61 px)".equals(((JLabel) c).getText())),
 			"r_out's unit and its value in pixels must be shown");
-		assertTrue(all.stream().anyMatch(c -> c instanceof JSpinner && Math.abs(((Number) ((JSpinner) c).getValue())
-			.doubleValue() - 61 * 0.0847) < 1e-9), "r_out must be shown in microns");
+		assertTrue(all.stream().anyMatch(c -> c instanceof JLabel && "r_out".equals(((JLabel) c).getText()) && ((JLabel) c)
+			.getToolTipText().endsWith(" Typed here in micron; its value in pixels shows beside.")), "the help says so");
+		// in microns, with the fewest decimals that still mean 61 px: 5.167 (5.1667 is 61 * 0.0847 to 4 decimals)
+		assertTrue(all.stream().anyMatch(c -> c instanceof JSpinner && ((Number) ((JSpinner) c).getValue())
+			.doubleValue() == 5.167), "r_out must be shown in microns");
 		// the particle diameter, a length too, likewise
 		s.put("DIAMETER", 65.3);
 		panel.setSettings(s);
 		assertEquals(65.3, panel.getSettings().get("DIAMETER"));
 		assertTrue(allComponents(panel).stream().anyMatch(c -> c instanceof JLabel && "micron (65.3 px)".equals(((JLabel) c)
 			.getText())));
+	}
+
+	/**
+	 * A length typed in the image's units comes back as typed when the panel is shown again (a detector switch, a
+	 * new session): seen in the real wizard, 5.53 um typed (65.29 px) came back as 5.5301 um.
+	 */
+	@Test
+	void aLengthTypedInMicronsComesBackAsTyped() {
+		final double dx = 0.08470000317625012; // the simulator's pixel, as ImageJ reads it from the TIFF
+		final ImagePlus imp = IJ.createImage("calibrated", "8-bit black", 64, 48, 1);
+		imp.getCalibration().pixelWidth = imp.getCalibration().pixelHeight = dx;
+		imp.getCalibration().setUnit("micron");
+		final ConfigurationPanel panel = factory.getDetectorConfigurationPanel(new Settings(imp), new Model());
+		final JSpinner diameter = (JSpinner) allComponents(panel).stream().filter(c -> c instanceof JSpinner && ((JSpinner) c)
+			.getToolTipText().startsWith("The particles' diameter")).findFirst().get();
+		diameter.setValue(5.53);
+		final Map<String, Object> typed = panel.getSettings();
+		assertEquals(65.29, typed.get("DIAMETER"));
+		final ConfigurationPanel again = factory.getDetectorConfigurationPanel(new Settings(imp), new Model());
+		again.setSettings(typed);
+		assertTrue(allComponents(again).stream().anyMatch(c -> c instanceof JSpinner && ((Number) ((JSpinner) c)
+			.getValue()).doubleValue() == 5.53), "5.53 um, not 5.5301 um");
+		assertEquals(typed, again.getSettings());
+		// every length in pixels to 0.01 px comes back to the same pixels, shown with at most 4 decimals
+		for (int hundredths = 0; hundredths <= 20000; hundredths += 7) {
+			final double px = hundredths / 100.0;
+			final double shown = ContactTrackerConfigurationPanel.units(px, dx);
+			assertEquals(px, ContactTrackerConfigurationPanel.pixels(shown, dx), 0, "px " + px);
+			assertEquals(shown, Math.round(shown * 1e4) / 1e4, 0, "px " + px);
+		}
+		assertEquals(61.0, ContactTrackerConfigurationPanel.units(61, 1), "uncalibrated: the pixels themselves");
 	}
 
 	/**
@@ -262,7 +298,7 @@ class ContactTrackerDetectorFactoryTest {
 		s.put("R_OUT", 60.0);
 		panel.setSettings(s);
 		final JSpinner rOut = allComponents(panel).stream().filter(c -> c instanceof JSpinner && Math.abs(((Number) (
-			(JSpinner) c).getValue()).doubleValue() - 60 * dx) < 1e-9).map(c -> (JSpinner) c).findFirst().get();
+			(JSpinner) c).getValue()).doubleValue() - 60 * dx) < 1e-3).map(c -> (JSpinner) c).findFirst().get();
 		rOut.setValue(7.5308); // 61 px shown to 4 decimals: 7.530816 um
 		assertEquals(61.0, panel.getSettings().get("R_OUT"));
 		assertEquals(60.0, ContactTrackerConfigurationPanel.pixels(7.407360, dx));

@@ -122,8 +122,13 @@ class ContactTrackerDetectorTest {
 			assertEquals(l.firstX() * DX, s.getFeature(SpotColumn.FIRST_PASS_X.key()), 0);
 			assertEquals(l.firstY() * DY, s.getFeature(SpotColumn.FIRST_PASS_Y.key()), 0);
 			assertEquals(l.sigmaX() * DX, s.getFeature(SpotColumn.SIGMA_X.key()), 0);
-			assertEquals(l.sigmaX(), s.getFeature(ContactTrackerSpotFeatures.SIGMA_X_PX), 0, "in pixels too");
-			assertEquals(l.sigmaY(), s.getFeature(ContactTrackerSpotFeatures.SIGMA_Y_PX), 0);
+			assertEquals(l.sigmaX() * 1000, s.getFeature(ContactTrackerSpotFeatures.SIGMA_X_MPX), 0,
+				"in thousandths of a pixel too");
+			assertEquals(l.sigmaY() * 1000, s.getFeature(ContactTrackerSpotFeatures.SIGMA_Y_MPX), 0);
+			// as TrackMate's spot table shows it (java.text.DecimalFormat's default: 3 decimals), to 1 part in 100
+			final double mpx = s.getFeature(ContactTrackerSpotFeatures.SIGMA_X_MPX);
+			if (Double.isFinite(mpx) && mpx > 0) assertEquals(mpx, Double.parseDouble(new java.text.DecimalFormat("0.###",
+				java.text.DecimalFormatSymbols.getInstance(java.util.Locale.ROOT)).format(mpx)), mpx / 100, "readable");
 			assertEquals(l.activeArea(), s.getFeature(SpotColumn.ACTIVE_AREA.key()), 0);
 			assertEquals(l.secondArea(), s.getFeature(SpotColumn.SECOND_AREA.key()), 0);
 			assertEquals(l.has(Flag.SECOND_PASS) ? 1 : 0, s.getFeature(SpotColumn.FLAG_SECOND_PASS.key()), 0);

@@ -103,6 +103,32 @@ class MeasurePanelTest {
 		assertEquals(r.suggestedROut(), number(panel.getSettings(), "R_OUT"), 0);
 	}
 
+	/**
+	 * A diameter left in the fields from another image (TrackMate hands the panel the last values) that the helper
+	 * cannot measure with: seen in the real wizard, 65.29 px from a simulated movie, then on the real 1-1.tif (34 px
+	 * particles, a dense monolayer) the button said "Not measured: only 0 background pixels ... use a larger
+	 * max_radius", an option the panel does not have. Now the diameter is estimated instead, and the message says so.
+	 */
+	@Test
+	void aGivenDiameterThatDoesNotFitIsEstimatedInsteadAndSaidSo() {
+		final ImagePlus imp = ProfileScenes.particles("particles", 1, Calibration.PIXELS);
+		final double tooLarge = 5 * ProfileScenes.SMALL.diameterPx();
+		final ContactTrackerConfigurationPanel panel = panel(imp);
+		final Map<String, Object> s = panel.getSettings();
+		s.put("DIAMETER", tooLarge);
+		panel.setSettings(s);
+		org.junit.jupiter.api.Assertions.assertThrows(io.github.contacttracker.core.InvalidInputException.class,
+			() -> helper(imp, 0, tooLarge), "the helper cannot measure with it");
+		final String message = panel.measureFromImage();
+		final ProfileAnalysis.Result r = helper(imp, 0, 0);
+		assertEquals(Math.round(r.diameter() * 100) / 100.0, number(panel.getSettings(), "DIAMETER"), 0);
+		assertEquals(r.suggestedThreshold(true), number(panel.getSettings(), "GREY_THRESHOLD"), 0);
+		assertEquals(r.suggestedROut(), number(panel.getSettings(), "R_OUT"), 0);
+		assertTrue(message.contains("(estimated: 100 px given did not fit)"), message);
+		final int warnings = r.warnings().size() + 1;
+		assertTrue(message.endsWith(warnings + " warnings in the Log window"), message);
+	}
+
 	@Test
 	void nothingToMeasureLeavesTheFieldsAndSaysWhy() {
 		final ContactTrackerConfigurationPanel panel = panel(ProfileScenes.empty("background only"));

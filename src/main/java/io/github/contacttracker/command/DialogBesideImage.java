@@ -1,0 +1,116 @@
+package io.github.contacttracker.command;
+
+import java.awt.AWTEvent;
+import java.awt.Dialog;
+import java.awt.Dimension;
+import java.awt.GraphicsConfiguration;
+import java.awt.GraphicsEnvironment;
+import java.awt.Insets;
+import java.awt.Rectangle;
+import java.awt.Toolkit;
+import java.awt.Window;
+import java.awt.event.AWTEventListener;
+import java.awt.event.WindowEvent;
+import java.util.function.Supplier;
+
+import ij.ImagePlus;
+
+/**
+ * Puts a command's dialog beside its image instead of over it. SciJava's Swing dialog (the input harvester's) is
+ * modal and opens in the middle of the screen, where it covered the image that its Preview draws on and that its
+ * "Measure from the image" button measures (seen in a real ImageJ2 + imagej-legacy 2.0.3). The command arms this
+ * before its dialog exists (from its initializer); when the dialog of that title opens, it is moved beside the
+ * image's window, on the side with room for it, and this disarms itself. No dialog (a macro, a script, headless):
+ * {@link #disarm()} when the command runs.
+ */
+final class DialogBesideImage implements AWTEventListener {
+
+	/** Between the image's window and the dialog (px). */
+	static final int GAP = 8;
+
+	private final String title;
+	private final Supplier<ImagePlus> image;
+	private boolean armed; // guarded by DialogBesideImage.class
+
+	/**
+	 * @param title the dialog's title (the command's label)
+	 * @param image the command's image, read when the dialog opens (SciJava fills it in before the dialog)
+	 */
+	DialogBesideImage(final String title, final Supplier<ImagePlus> image) {
+		this.title = title;
+		this.image = image;
+	}
+
+	/** The one armed, if any: a run cancelled before its dialog must not place the next run's dialog. */
+	private static DialogBesideImage current;
+
+	/** Watches for the dialog (not headless), instead of any run's that still watches. */
+	void arm() {
+		if (GraphicsEnvironment.isHeadless()) return;
+		synchronized (DialogBesideImage.class) {
+			if (current != null) current.disarm();
+			current = this;
+			Toolkit.getDefaultToolkit().addAWTEventListener(this, AWTEvent.WINDOW_EVENT_MASK);
+			armed = true;
+		}
+	}
+
+	/** Stops watching: the dialog was placed, or the command runs without one. */
+	void disarm() {
+		synchronized (DialogBesideImage.class) {
+			if (!armed) return;
+			Toolkit.getDefaultToolkit().removeAWTEventListener(this);
+			armed = false;
+			if (current == this) current = null;
+		}
+	}
+
+	/** @return whether it watches for the dialog */
+	boolean armed() {
+		synchronized (DialogBesideImage.class) {
+			return armed;
+		}
+	}
+
+	@Override
+	public void eventDispatched(final AWTEvent event) {
+		if (event.getID() != WindowEvent.WINDOW_OPENED || !(event.getSource() instanceof Dialog)) return;
+		final Dialog dialog = (Dialog) event.getSource();
+		if (!title.equals(dialog.getTitle())) return;
+		disarm();
+		final ImagePlus imp = image.get();
+		final Window window = imp == null ? null : imp.getWindow();
+		if (window == null || !window.isShowing()) return;
+		final GraphicsConfiguration gc = window.getGraphicsConfiguration();
+		final Rectangle screen = gc.getBounds();
+		final Insets insets = Toolkit.getDefaultToolkit().getScreenInsets(gc);
+		screen.x += insets.left;
+		screen.y += insets.top;
+		screen.width -= insets.left + insets.right;
+		screen.height -= insets.top + insets.bottom;
+		final Rectangle at = beside(window.getBounds(), dialog.getSize(), screen);
+		if (at != null) dialog.setLocation(at.x, at.y);
+	}
+
+	/**
+	 * Where a dialog goes beside an image's window: to its right if the dialog fits there on the screen, else to its
+	 * left, else to the side with more room, overlapping the image as little as it can; top aligned with the
+	 * window's, kept on the screen.
+	 *
+	 * @param image the image window's bounds
+	 * @param dialog the dialog's size
+	 * @param screen the usable screen
+	 * @return the dialog's new bounds, or {@code null} if it does not fit on the screen at all (leave it)
+	 */
+	static Rectangle beside(final Rectangle image, final Dimension dialog, final Rectangle screen) {
+		if (dialog.width > screen.width || dialog.height > screen.height) return null;
+		final int right = image.x + image.width + GAP, left = image.x - GAP - dialog.width;
+		final int roomRight = screen.x + screen.width - (right + dialog.width), roomLeft = left - screen.x;
+		int x;
+		if (roomRight >= 0) x = right;
+		else if (roomLeft >= 0) x = left;
+		else x = roomRight >= roomLeft ? screen.x + screen.width - dialog.width : screen.x;
+		final int y = Math.max(screen.y, Math.min(image.y, screen.y + screen.height - dialog.height));
+		return new Rectangle(x, y, dialog.width, dialog.height);
+	}
+}
