@@ -10,6 +10,7 @@ import java.util.concurrent.CancellationException;
 
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.io.AtomicFile;
+import io.github.contacttracker.io.ProjectVersion;
 
 /**
  * The command line: {@code contact-tracker demo | track | simulate | bench | accuracy | potential |
@@ -22,8 +23,10 @@ public final class ContactTrackerCli {
 	/** Exit status for bad input (missing file, bad option, untrackable image). */
 	public static final int EXIT_BAD_INPUT = 2;
 
-	/** What {@code --version} prints. */
-	static final String VERSION = "Contact Tracker";
+	/** @return what {@code --version} prints: the name and the version ({@link ProjectVersion}) */
+	static String version() {
+		return "Contact Tracker " + ProjectVersion.get();
+	}
 
 	/**
 	 * A subcommand: its options, declared by the subclass, and its work (run once they are parsed), which writes to
@@ -35,6 +38,8 @@ public final class ContactTrackerCli {
 		final CommandOptions options;
 		/** Where the command's results go. */
 		final PrintStream out;
+		/** The arguments the command was run with, its name first (for the stamp of a {@link Report}). */
+		List<String> arguments = List.of();
 
 		Subcommand(final CommandOptions options, final PrintStream out) {
 			this.options = options;
@@ -127,13 +132,14 @@ public final class ContactTrackerCli {
 			return 0;
 		}
 		if (options.versionRequested()) {
-			out.println(VERSION);
+			out.println(version());
 			return 0;
 		}
 		if (command == null) {
 			err.print(root.usage());
 			return EXIT_BAD_INPUT;
 		}
+		command.arguments = List.of(args);
 		try {
 			return command.call();
 		}

@@ -11,6 +11,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Locale;
 
+import io.github.contacttracker.core.Numbers;
 import io.github.contacttracker.io.Calibration;
 import io.github.contacttracker.io.ImageFiles;
 import io.github.contacttracker.sim.PaperParticles;
@@ -70,7 +71,7 @@ final class SimulateCommand extends ContactTrackerCli.Subcommand {
 		out.printf(Locale.ROOT,
 			"%s: %d frames %dx%d, %s of %s at r/D = %.3f; suggested --threshold %s --r-out %s; truth in %s%n",
 			stackFile, frames, stack.width(), stack.height(), scenario.name().toLowerCase(Locale.ROOT), type.name(),
-			separation, fmt(type.threshold()), fmt(type.rOut()), truthFile);
+			separation, Numbers.fmt(type.threshold()), Numbers.fmt(type.rOut()), truthFile);
 		return 0;
 	}
 
@@ -86,9 +87,5 @@ final class SimulateCommand extends ContactTrackerCli.Subcommand {
 			case "2.06": return PaperParticles.silica206();
 			default: throw new InvalidInputException("--particle must be 5.53 or 2.06 (um), not '" + text + "'");
 		}
-	}
-
-	private static String fmt(final double v) {
-		return v == Math.rint(v) ? Long.toString((long) v) : String.format(Locale.ROOT, "%.1f", v);
 	}
 }

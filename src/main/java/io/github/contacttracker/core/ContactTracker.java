@@ -152,11 +152,6 @@ public final class ContactTracker {
 		return Math.min(1, excess / (noise * Math.sqrt(area)) / FULL_SIGNIFICANCE);
 	}
 
-	/** Upper bound on the passes of the iterative method. */
-	public static final int MAX_ITERATIONS = SecondPass.MAX_ITERATIONS;
-	/** The iterative method stops when no centre moves more than this between passes (px). */
-	public static final double TOLERANCE = SecondPass.TOLERANCE;
-
 	/** Fewest round active areas in a frame for their sizes to tell what a merge must hold. */
 	static final int MIN_ROUND_FOR_SIZES = 5;
 

@@ -7,6 +7,7 @@ import java.nio.ByteOrder;
 import net.imglib2.RandomAccess;
 import net.imglib2.RandomAccessibleInterval;
 import net.imglib2.blocks.PrimitiveBlocks;
+import net.imglib2.blocks.PrimitiveBlocks.OnFallback;
 import net.imglib2.img.array.ArrayImg;
 import net.imglib2.img.basictypeaccess.array.ByteArray;
 import net.imglib2.img.basictypeaccess.array.FloatArray;
@@ -172,9 +173,14 @@ public abstract class Plane {
 		return generic(frame);
 	}
 
-	/** Copies a 2D interval of a native type into {@code dest}, row by row, with imglib2's {@link PrimitiveBlocks}. */
+	/**
+	 * Copies a 2D interval of a native type into {@code dest}, row by row, with imglib2's {@link PrimitiveBlocks}. A
+	 * view it cannot copy in blocks is copied pixel by pixel through its {@code RandomAccess} (the same values,
+	 * slower): {@link OnFallback#ACCEPT} says so here, where the default ({@code WARN}) printed a line to stderr for
+	 * every frame that took that path.
+	 */
 	private static <T extends NativeType<T>> void copy(final RandomAccessibleInterval<T> frame, final Object dest) {
-		PrimitiveBlocks.of(frame).copy(frame, dest);
+		PrimitiveBlocks.of(frame, OnFallback.ACCEPT).copy(frame, dest);
 	}
 
 	/** Wraps a 2D interval through a {@link RandomAccess}, never the fast path (for any {@link RealType}). */

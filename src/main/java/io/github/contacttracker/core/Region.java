@@ -1,9 +1,5 @@
 package io.github.contacttracker.core;
 
-import net.imglib2.RandomAccess;
-import net.imglib2.RandomAccessibleInterval;
-import net.imglib2.type.numeric.IntegerType;
-
 /**
  * An immutable set of pixels stored as horizontal runs in raster order (row by row, left to right): an active
  * area, a second active area, a labelled component. Coordinates are pixel indices.
@@ -127,17 +123,5 @@ public final class Region {
 			b[i] += dx;
 		}
 		return new Region(y, a, b, area);
-	}
-
-	/**
-	 * Writes {@code label} into every pixel of the region in {@code target} (whose interval must contain it).
-	 */
-	public <L extends IntegerType<L>> void paint(final RandomAccessibleInterval<L> target, final int label) {
-		final RandomAccess<L> ra = target.randomAccess();
-		forEachPixel((x, y) -> {
-			ra.setPosition(x, 0);
-			ra.setPosition(y, 1);
-			ra.get().setInteger(label);
-		});
 	}
 }

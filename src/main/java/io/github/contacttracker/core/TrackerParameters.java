@@ -51,20 +51,8 @@ public record TrackerParameters(double threshold, double rOut, int minArea, Conn
 			Method.DEFAULT);
 	}
 
-	public TrackerParameters withThreshold(final double t) {
-		return new TrackerParameters(t, rOut, minArea, connectivity, minSecondArea, method, diameter);
-	}
-
-	public TrackerParameters withROut(final double r) {
-		return new TrackerParameters(threshold, r, minArea, connectivity, minSecondArea, method, diameter);
-	}
-
 	public TrackerParameters withMinArea(final int a) {
 		return new TrackerParameters(threshold, rOut, a, connectivity, minSecondArea, method, diameter);
-	}
-
-	public TrackerParameters withConnectivity(final Connectivity c) {
-		return new TrackerParameters(threshold, rOut, minArea, c, minSecondArea, method, diameter);
 	}
 
 	public TrackerParameters withMinSecondArea(final int a) {

@@ -61,6 +61,11 @@ public final class SceneStudy {
 		this.threads = threads;
 	}
 
+	/** @return the method measured */
+	public Method method() {
+		return method;
+	}
+
 	/**
 	 * @param key {@code 5.53}, {@code 2.06} or {@code flat} ({@link Scene#flatTop()})
 	 * @return the particle type
@@ -233,16 +238,16 @@ public final class SceneStudy {
 	 * @param particles comma-separated particle keys ({@link #particle})
 	 * @param scenes comma-separated scene keys ({@link #sceneKeys})
 	 * @param images frames per scene
-	 * @return the table as CSV
+	 * @return the table's rows, in order (as CSV: {@link #CSV_HEADER}, then {@link #csv} of each)
 	 */
-	public String report(final PrintStream out, final String particles, final String scenes, final int images) {
+	public List<Result> report(final PrintStream out, final String particles, final String scenes, final int images) {
 		final List<ParticleType> types = new ArrayList<>();
 		for (final String p : particles.split(","))
 			types.add(particle(p));
 		final List<String> keys = sceneKeys(scenes);
 		for (final String k : keys)
 			Scene.of(k, types.get(0)); // unknown names fail before any work
-		final StringBuilder csv = new StringBuilder(CSV_HEADER);
+		final List<Result> rows = new ArrayList<>();
 		for (final ParticleType type : types) {
 			out.printf(Locale.ROOT, "%n%s (D = %.1f px at %.1f nm/px), r_out %.0f px, method %s, %d images per scene, " +
 				"at contact%n", type.name(), type.diameterPx(), type.pixelSizeNm(), type.rOut(), method.key(), images);
@@ -251,10 +256,10 @@ public final class SceneStudy {
 			for (final String k : keys) {
 				final Result r = run(Scene.of(k, type), images, seed++);
 				print(out, r);
-				csv.append(csv(r));
+				rows.add(r);
 			}
 		}
-		return csv.toString();
+		return rows;
 	}
 
 	/** @return the scenes named in a comma-separated list ({@code all}: every one) */

@@ -1,12 +1,12 @@
 package io.github.contacttracker.io;
 
-import java.math.BigDecimal;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 
 import ij.ImagePlus;
 import io.github.contacttracker.core.InvalidInputException;
+import io.github.contacttracker.core.Numbers;
 import io.github.contacttracker.core.ProfileAnalysis;
 import net.imglib2.RandomAccessibleInterval;
 
@@ -98,8 +98,9 @@ public record ShownFrameProfile(ProfileAnalysis.Result result, String title, int
 	 */
 	public String summary() {
 		return String.format(Locale.ROOT, "'%s'%s%s: threshold %s, r_out %s px, diameter %s px (%s)", title,
-			frameCount > 1 ? ", frame " + (frame + 1) : "", channel > 1 ? ", channel " + channel : "", fmt(threshold()),
-			fmt(rOut()), fmt(diameter()), result.diameterEstimated() ? "estimated" : "given");
+			frameCount > 1 ? ", frame " + (frame + 1) : "", channel > 1 ? ", channel " + channel : "", Numbers.fmt(
+				threshold(), 3), Numbers.fmt(rOut(), 3), Numbers.fmt(diameter(), 3), result.diameterEstimated()
+					? "estimated" : "given");
 	}
 
 	/** @return {@link #summary()} and, if the helper warns, how many warnings the Log window holds */
@@ -142,10 +143,5 @@ public record ShownFrameProfile(ProfileAnalysis.Result result, String title, int
 			lineWords++;
 		}
 		return out.toString();
-	}
-
-	/** @return {@code v} with up to three decimals, no trailing zeros */
-	private static String fmt(final double v) {
-		return new BigDecimal(String.format(Locale.ROOT, "%.3f", v)).stripTrailingZeros().toPlainString();
 	}
 }

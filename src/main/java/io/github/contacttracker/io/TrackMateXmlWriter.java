@@ -216,8 +216,7 @@ public final class TrackMateXmlWriter {
 	private static String log(final int n, final Calibration cal, final ImageSource src, final TrackerParameters params,
 		final int targetChannel)
 	{
-		final String version = TrackMateXmlWriter.class.getPackage().getImplementationVersion();
-		return "Written by Contact Tracker " + (version == null ? "(development build)" : version) +
+		return "Written by Contact Tracker " + ProjectVersion.get() +
 			": radial-symmetry localization of particles near contact (Yucel & Okumusoglu, " +
 			"J. Phys.: Condens. Matter 29, 465101, 2017).\n" +
 			n + " spots in " + src.nframes() + " frames of " + (src.filename().isEmpty() ? "an unsaved image"

@@ -35,11 +35,6 @@ public record Outputs(Path csv, Path trackMateXml, ImageSource source) {
 		return dot > 0 ? fileName.substring(0, dot) : fileName;
 	}
 
-	/** @return whether any file is to be written */
-	public boolean any() {
-		return csv != null || trackMateXml != null;
-	}
-
 	/**
 	 * @throws io.github.contacttracker.core.InvalidInputException naming a file whose folder does not exist
 	 */

@@ -10,6 +10,7 @@ import java.util.function.IntFunction;
 import io.github.contacttracker.core.FrameResult;
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.core.Localization;
+import io.github.contacttracker.core.Numbers;
 import io.github.contacttracker.core.StackTracker;
 import io.github.contacttracker.core.TrackerParameters;
 import io.github.contacttracker.io.Calibration;
@@ -138,7 +139,7 @@ public final class TrackingPipeline {
 			if (t >= min && t <= max) return;
 		}
 		throw new InvalidInputException(String.format(Locale.ROOT, "threshold %s is outside the data range [%s, %s] " +
-			"of '%s'", fmt(t), fmt(min), fmt(max), source.name()));
+			"of '%s'", Numbers.fmt(t), Numbers.fmt(min), Numbers.fmt(max), source.name()));
 	}
 
 	/** @return the spots, their radius set to half the particle diameter when one was given */
@@ -151,7 +152,4 @@ public final class TrackingPipeline {
 		return out;
 	}
 
-	static String fmt(final double v) {
-		return v == Math.rint(v) && Math.abs(v) < 1e15 ? Long.toString((long) v) : Double.toString(v);
-	}
 }

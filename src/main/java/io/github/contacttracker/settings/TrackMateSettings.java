@@ -36,7 +36,6 @@ public final class TrackMateSettings {
 	public static final String KEY_MIN_SECOND_AREA = TrackingSettings.MIN_SECOND_AREA.trackMateKey();
 	public static final String KEY_CONNECTIVITY = TrackingSettings.CONNECTIVITY.trackMateKey();
 	public static final String KEY_METHOD = TrackingSettings.METHOD.trackMateKey();
-	public static final String KEY_DIAMETER = TrackingSettings.DIAMETER.trackMateKey();
 
 	public static final int DEFAULT_TARGET_CHANNEL = TrackingSettings.CHANNEL.defaultValue();
 

@@ -2,6 +2,8 @@ package io.github.contacttracker.sim;
 
 import java.util.random.RandomGenerator;
 
+import io.github.contacttracker.core.Numbers;
+
 /**
  * Additive, independent per-pixel noise in grey levels, drawn before rounding to integers. Any
  * {@link RandomGenerator} works as the source ({@code java.util.Random}, {@code SplittableRandom}, ...).
@@ -50,7 +52,7 @@ public sealed interface NoiseModel {
 
 		@Override
 		public String toString() {
-			return "uniform noise in [-" + amplitude + ", " + amplitude + "] (sigma " + fmt(sigma()) + ")";
+			return "uniform noise in [-" + amplitude + ", " + amplitude + "] (sigma " + Numbers.fmt(sigma(), 3) + ")";
 		}
 	}
 
@@ -70,7 +72,7 @@ public sealed interface NoiseModel {
 
 		@Override
 		public String toString() {
-			return "Gaussian noise (sigma " + fmt(sigma) + ")";
+			return "Gaussian noise (sigma " + Numbers.fmt(sigma, 3) + ")";
 		}
 	}
 
@@ -93,9 +95,5 @@ public sealed interface NoiseModel {
 		public String toString() {
 			return "no noise";
 		}
-	}
-
-	private static String fmt(final double v) {
-		return String.format(java.util.Locale.ROOT, "%.4g", v);
 	}
 }

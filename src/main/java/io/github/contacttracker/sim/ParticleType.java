@@ -41,9 +41,4 @@ public record ParticleType(String name, double diameterMicrons, double pixelSize
 	public double pixelSizeMicrons() {
 		return pixelSizeNm / 1000;
 	}
-
-	/** @return a copy with other noise, e.g. {@link NoiseModel#none()} for exact images */
-	public ParticleType withNoise(final NoiseModel otherNoise) {
-		return new ParticleType(name, diameterMicrons, pixelSizeNm, profile, background, threshold, rOut, otherNoise);
-	}
 }

@@ -47,14 +47,6 @@ public class ContactTrackerDetectorFactory<T extends RealType<T> & NativeType<T>
 	/** The detector's icon (two touching particles), shown in TrackMate's detector list and panel. */
 	static final ImageIcon ICON = ContactTrackerConfigurationPanel.icon();
 
-	public static final String KEY_TARGET_CHANNEL = TrackMateSettings.KEY_TARGET_CHANNEL;
-	public static final String KEY_THRESHOLD = TrackMateSettings.KEY_THRESHOLD;
-	public static final String KEY_R_OUT = TrackMateSettings.KEY_R_OUT;
-	public static final String KEY_MIN_AREA = TrackMateSettings.KEY_MIN_AREA;
-	public static final String KEY_MIN_SECOND_AREA = TrackMateSettings.KEY_MIN_SECOND_AREA;
-	public static final String KEY_CONNECTIVITY = TrackMateSettings.KEY_CONNECTIVITY;
-	public static final String KEY_METHOD = TrackMateSettings.KEY_METHOD;
-
 	/** The paper the method comes from (its DOI page). */
 	public static final String URL = "https://doi.org/10.1088/1361-648X/aa908e";
 

@@ -147,7 +147,8 @@ class RealFootageFailuresTest {
 		// spots of 170-180 there: round, they are spots, as at any threshold a user picks below them; the helper's
 		// threshold is clear of them.)
 		assertTrue(r.suggestedThreshold(true) > 185, "the helper is above the fringes' feet: " + r.threshold());
-		final FrameResult low = new ContactTracker(p.withThreshold(185)).analyse(plane, 0, false);
+		final FrameResult low = new ContactTracker(TrackerParameters.of(185, p.rOut()).withDiameter(d).withMethod(
+			Method.PAPER)).analyse(plane, 0, false);
 		assertOneSpotPerParticle(low, centres, "at 185");
 		assertTrue(low.discarded() >= fringes / 2, "fringes dropped: " + low.discarded() + " of " + fringes);
 	}

@@ -53,7 +53,7 @@ class NoiseModelTest {
 	@Test
 	void readableAndValidated() {
 		assertEquals("uniform noise in [-5.0, 5.0] (sigma 2.887)", NoiseModel.uniform(5).toString());
-		assertEquals("Gaussian noise (sigma 1.500)", NoiseModel.gaussian(1.5).toString());
+		assertEquals("Gaussian noise (sigma 1.5)", NoiseModel.gaussian(1.5).toString());
 		assertEquals("no noise", NoiseModel.none().toString());
 		assertThrows(IllegalArgumentException.class, () -> NoiseModel.uniform(-1));
 		assertThrows(IllegalArgumentException.class, () -> NoiseModel.gaussian(Double.NaN));

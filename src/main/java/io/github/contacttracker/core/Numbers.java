@@ -1,0 +1,33 @@
+package io.github.contacttracker.core;
+
+import java.math.BigDecimal;
+import java.util.Locale;
+
+/**
+ * How a number is written for people and command lines: messages, suggested option values, report text. (Data
+ * files keep their own fixed formats.) The one place for it: a front end or the core that prints a number uses
+ * one of these two, not a format of its own.
+ */
+public final class Numbers {
+
+	private Numbers() {}
+
+	/**
+	 * @return {@code v} exactly, as short as it reads back: a whole number without a decimal point ({@code 85}),
+	 *         any other as {@link Double#toString} ({@code 61.5}); for values a user may pass back as an option
+	 */
+	public static String fmt(final double v) {
+		return v == Math.rint(v) && Math.abs(v) < 1e15 ? Long.toString((long) v) : Double.toString(v);
+	}
+
+	/**
+	 * @param decimals how many decimals at most
+	 * @return {@code v} rounded to {@code decimals} decimals (half up), trailing zeros dropped: {@code 85},
+	 *         {@code 12.5}, {@code 2.887}; for measured values shown to people
+	 */
+	public static String fmt(final double v, final int decimals) {
+		if (!Double.isFinite(v)) return Double.toString(v);
+		return new BigDecimal(String.format(Locale.ROOT, "%." + decimals + "f", v)).stripTrailingZeros()
+			.toPlainString();
+	}
+}
