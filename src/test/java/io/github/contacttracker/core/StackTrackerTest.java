@@ -35,7 +35,8 @@ class StackTrackerTest {
 	void parallelRunEqualsSerialRunInFrameOrder() {
 		final TrackerParameters p = TrackerParameters.of(80, 20).withMethod(Method.PAPER);
 		final List<RandomAccessibleInterval<FloatType>> frames = frames(9);
-		final List<FrameResult> serial = new StackTracker(p).track(frames, false);
+		// really serial: one thread (imglib2's default executor is the common ForkJoinPool, not one thread)
+		final List<FrameResult> serial = StackTracker.withThreads(1, () -> new StackTracker(p).track(frames, false));
 		final AtomicInteger calls = new AtomicInteger();
 		final Set<String> workers = ConcurrentHashMap.newKeySet();
 		// the first two frames wait for each other: they meet only if two threads really run at once
