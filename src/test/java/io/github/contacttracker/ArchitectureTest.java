@@ -18,7 +18,7 @@ import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 
 /**
- * The house (README, "For developers"): each package uses only the packages below it, so there is no cycle and
+ * The house (src/site/markdown/contributing.md, "The house"): each package uses only the packages below it, so there is no cycle and
  * the front ends never import each other. Read from the sources' references to our packages.
  */
 class ArchitectureTest {
@@ -50,7 +50,7 @@ class ArchitectureTest {
 				seen.add(pkg);
 				final Set<String> allowed = ALLOWED.get(pkg);
 				if (allowed == null) {
-					violations.add(pkg + ": a package the house does not know (add it to ALLOWED and the README)");
+					violations.add(pkg + ": a package the house does not know (add it to ALLOWED and to contributing.md)");
 					continue;
 				}
 				final Matcher m = REFERENCE.matcher(Files.readString(f));

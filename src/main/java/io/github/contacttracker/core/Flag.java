@@ -23,7 +23,10 @@ public enum Flag {
 	DEGENERATE("degenerate system"),
 	/** The active area reaches within 2 px of the image border; pixels there have no gradient. */
 	AT_BORDER("touches border"),
-	/** The active area looks like several particles merged into one component (see README). */
+	/**
+	 * The active area looks like several particles merged into one component ({@code ComponentShape}; the
+	 * documentation's Methods, Merge detection).
+	 */
 	MERGED("suspected merge"),
 	/**
 	 * An iterative method stopped at its iteration limit before the centres settled; for the profile methods also

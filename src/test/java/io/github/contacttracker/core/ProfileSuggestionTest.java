@@ -80,7 +80,7 @@ class ProfileSuggestionTest {
 
 	/**
 	 * Tolerances on the worst of 21 centres: the fit's centres scatter by about the Cramer-Rao bound per coordinate,
-	 * 0.015 px for the 5.53 um-like particles (about 1.2 nm at 84.7 nm/px; README accuracy table) and 0.02-0.03 px
+	 * 0.015 px for the 5.53 um-like particles (about 1.2 nm at 84.7 nm/px; the accuracy report) and 0.02-0.03 px
 	 * for the 2.06 um-like (37 nm/px) and bright-field-like ones (their reported standard errors). The tolerance is
 	 * 4 of those (0.06 px; 0.1 px), below the first pass's pull at contact (0.06-0.1 px per particle for the
 	 * 5.53 um-like ones, more for the others). Measured: worst 0.044, 0.039 and 0.020 px.

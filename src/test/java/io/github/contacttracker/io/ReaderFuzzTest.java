@@ -25,7 +25,7 @@ import com.code_intelligence.jazzer.junit.FuzzTest;
  * <pre>
  * JAZZER_FUZZ=1 mvn -B test -Dtest='ReaderFuzzTest#readers' -Djazzer.instrument='io.github.contacttracker.**,ij.**'
  * </pre>
- * for 10 minutes or to the first finding (see README, Broken files).
+ * for 10 minutes or to the first finding (see src/site/markdown/manual.md, Broken files).
  */
 class ReaderFuzzTest {
 
