@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Benchmark behind README "Broken files": TwelveMonkeys imageio-tiff against our readers, and `track` on the broken
+# Benchmark behind the manual's "Broken files" (src/site/markdown/manual.md): TwelveMonkeys imageio-tiff against our readers, and `track` on the broken
 # files. Not part of the build. Needs the packaged project (mvn -B package) and Maven Central (for TwelveMonkeys).
 #   scripts/reader-comparison/run.sh hostile          every case file through both readers, -Xmx256m, 15 s limit
 #   scripts/reader-comparison/run.sh speed            every frame of the 400-frame bench stack, one thread

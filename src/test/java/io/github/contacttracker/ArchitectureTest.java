@@ -1,3 +1,24 @@
+/*-
+ * #%L
+ * Contact Tracker: sub-pixel localization of colloidal particles, also when they touch.
+ * %%
+ * Copyright (C) 2026 Contact Tracker developers
+ * %%
+ * This program is free software: you can redistribute it and/or modify
+ * it under the terms of the GNU General Public License as
+ * published by the Free Software Foundation, either version 3 of the
+ * License, or (at your option) any later version.
+ * 
+ * This program is distributed in the hope that it will be useful,
+ * but WITHOUT ANY WARRANTY; without even the implied warranty of
+ * MERCHANTABILITY or FITNESS FOR A PARTICULAR PURPOSE.  See the
+ * GNU General Public License for more details.
+ * 
+ * You should have received a copy of the GNU General Public
+ * License along with this program.  If not, see
+ * <http://www.gnu.org/licenses/gpl-3.0.html>.
+ * #L%
+ */
 package io.github.contacttracker;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -18,7 +39,7 @@ import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 
 /**
- * The house (README, "For developers"): each package uses only the packages below it, so there is no cycle and
+ * The house (src/site/markdown/contributing.md, "The house"): each package uses only the packages below it, so there is no cycle and
  * the front ends never import each other. Read from the sources' references to our packages.
  */
 class ArchitectureTest {
@@ -50,7 +71,7 @@ class ArchitectureTest {
 				seen.add(pkg);
 				final Set<String> allowed = ALLOWED.get(pkg);
 				if (allowed == null) {
-					violations.add(pkg + ": a package the house does not know (add it to ALLOWED and the README)");
+					violations.add(pkg + ": a package the house does not know (add it to ALLOWED and to contributing.md)");
 					continue;
 				}
 				final Matcher m = REFERENCE.matcher(Files.readString(f));

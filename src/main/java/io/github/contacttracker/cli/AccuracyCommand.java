@@ -1,3 +1,24 @@
+/*-
+ * #%L
+ * Contact Tracker: sub-pixel localization of colloidal particles, also when they touch.
+ * %%
+ * Copyright (C) 2026 Contact Tracker developers
+ * %%
+ * This program is free software: you can redistribute it and/or modify
+ * it under the terms of the GNU General Public License as
+ * published by the Free Software Foundation, either version 3 of the
+ * License, or (at your option) any later version.
+ * 
+ * This program is distributed in the hope that it will be useful,
+ * but WITHOUT ANY WARRANTY; without even the implied warranty of
+ * MERCHANTABILITY or FITNESS FOR A PARTICULAR PURPOSE.  See the
+ * GNU General Public License for more details.
+ * 
+ * You should have received a copy of the GNU General Public
+ * License along with this program.  If not, see
+ * <http://www.gnu.org/licenses/gpl-3.0.html>.
+ * #L%
+ */
 package io.github.contacttracker.cli;
 
 import io.github.contacttracker.core.InvalidInputException;
@@ -32,6 +53,8 @@ final class AccuracyCommand extends ContactTrackerCli.Subcommand {
 		"separation (at least 2).").withDefault("200"));
 	private final Option<Integer> threadsOption = ContactTrackerCli.threads(options);
 	private final Option<Path> csvOption = options.add(Option.path("--csv", "OUT.csv", "Also write the table as CSV."));
+	private final Option<Path> reportOption = options.add(Option.path("--report", "FILE.md", "Also write the tables " +
+		"as a markdown page, stamped with this command, the version and the date (the documentation's reports)."));
 	private final Option<String> particlesOption = options.add(Option.text("--particle", "5.53,2.06", "Particle " +
 		"types (um).").withDefault("5.53,2.06"));
 	private final Option<String> scenariosOption = options.add(Option.text("--scenario", "pair,triple", "Scenarios.")
@@ -56,12 +79,20 @@ final class AccuracyCommand extends ContactTrackerCli.Subcommand {
 			options.value(methodsOption);
 		if (reps < 2) throw new InvalidInputException("--reps must be at least 2");
 		final Path csv = ContactTrackerCli.output("--csv", options.value(csvOption));
+		final Path report = ContactTrackerCli.output("--report", options.value(reportOption));
 		if (scene != null) { // the scenes of eval.SceneStudy (clusters, unlike particles, ramp, saturation)
 			final long t0 = System.nanoTime();
-			final String sceneCsv = new SceneStudy(Method.parse(methodList == null ? "fit" : methodList),
-				threads).report(out, particles, scene, reps);
-			out.printf(Locale.ROOT, "%nAccuracy run took %.0f s.%n", (System.nanoTime() - t0) * 1e-9);
-			if (csv != null) AtomicFile.write(csv, os -> os.write(sceneCsv.getBytes(StandardCharsets.UTF_8)));
+			final SceneStudy study = new SceneStudy(Method.parse(methodList == null ? "fit" : methodList), threads);
+			final List<SceneStudy.Result> results = study.report(out, particles, scene, reps);
+			final double seconds = (System.nanoTime() - t0) * 1e-9;
+			out.printf(Locale.ROOT, "%nAccuracy run took %.0f s.%n", seconds);
+			if (csv != null) {
+				final StringBuilder sceneCsv = new StringBuilder(SceneStudy.CSV_HEADER);
+				for (final SceneStudy.Result r : results)
+					sceneCsv.append(study.csv(r));
+				AtomicFile.write(csv, os -> os.write(sceneCsv.toString().getBytes(StandardCharsets.UTF_8)));
+			}
+			if (report != null) AccuracyReport.scenes(results, study, reps).write(report, arguments, seconds);
 			return 0;
 		}
 		final List<ParticleType> types = new ArrayList<>();
@@ -79,13 +110,15 @@ final class AccuracyCommand extends ContactTrackerCli.Subcommand {
 			"particle,scenario,separation_over_d,method,images,measured,failures,fallbacks,mean_error_nm,std_nm," +
 				"mean_reported_sigma_nm,crb_nm\n");
 		final long start = System.nanoTime();
+		final AccuracyReport rows = new AccuracyReport(reps);
 		for (final ParticleType type : types)
 			for (final Scenario scenario : scenarios) {
 				final DistanceStudy study = new DistanceStudy(type, scenario, threads);
-				out.printf(Locale.ROOT, "%n%s, %s (D = %.1f px at %.1f nm/px), threshold %.0f, r_out %.0f px, %d " +
-					"images per separation, %s%n", type.name(), scenario == Scenario.PAIR ? "two particles" :
-						"three particles", type.diameterPx(), type.pixelSizeNm(), type.threshold(), type.rOut(), reps, type
-							.noise());
+				final String heading = String.format(Locale.ROOT, "%s, %s (D = %.1f px at %.1f nm/px), threshold " +
+					"%.0f, r_out %.0f px, %d images per separation, %s", type.name(), scenario == Scenario.PAIR ?
+						"two particles" : "three particles", type.diameterPx(), type.pixelSizeNm(), type.threshold(), type
+							.rOut(), reps, type.noise());
+				out.printf(Locale.ROOT, "%n%s%n", heading);
 				out.println("  r/D  method     | mean err   std (nm) | std/CRB | reported sigma | lost  fell back | " +
 					"CRB (nm)");
 				for (int i = 0; i < separations.length; i++) {
@@ -99,10 +132,13 @@ final class AccuracyCommand extends ContactTrackerCli.Subcommand {
 						table.append(String.format(Locale.ROOT, "%s,%s,%.3f,%s,%d,%d,%d,%d,%.4f,%.4f,%.4f,%.4f%n", type
 							.name(), scenario.name().toLowerCase(Locale.ROOT), separations[i], m.key(), e.images(), e
 								.measured(), e.failures(), e.fallbacks(), e.meanErrorNm(), e.stdNm(), e.meanSigmaNm(), crb));
+						rows.add(type.name() + (scenario == Scenario.PAIR ? " pair" : " triple"), heading, e, crb);
 					}
 				}
 			}
-		out.printf(Locale.ROOT, "%nAccuracy run took %.0f s.%n", (System.nanoTime() - start) * 1e-9);
+		final double seconds = (System.nanoTime() - start) * 1e-9;
+		out.printf(Locale.ROOT, "%nAccuracy run took %.0f s.%n", seconds);
+		if (report != null) rows.paper().write(report, arguments, seconds);
 		if (csv != null) {
 			AtomicFile.write(csv, os -> {
 				final Writer w = new OutputStreamWriter(os, StandardCharsets.UTF_8);

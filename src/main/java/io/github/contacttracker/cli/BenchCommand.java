@@ -1,3 +1,24 @@
+/*-
+ * #%L
+ * Contact Tracker: sub-pixel localization of colloidal particles, also when they touch.
+ * %%
+ * Copyright (C) 2026 Contact Tracker developers
+ * %%
+ * This program is free software: you can redistribute it and/or modify
+ * it under the terms of the GNU General Public License as
+ * published by the Free Software Foundation, either version 3 of the
+ * License, or (at your option) any later version.
+ * 
+ * This program is distributed in the hope that it will be useful,
+ * but WITHOUT ANY WARRANTY; without even the implied warranty of
+ * MERCHANTABILITY or FITNESS FOR A PARTICULAR PURPOSE.  See the
+ * GNU General Public License for more details.
+ * 
+ * You should have received a copy of the GNU General Public
+ * License along with this program.  If not, see
+ * <http://www.gnu.org/licenses/gpl-3.0.html>.
+ * #L%
+ */
 package io.github.contacttracker.cli;
 
 import io.github.contacttracker.core.InvalidInputException;
@@ -7,10 +28,12 @@ import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 
 import io.github.contacttracker.core.Method;
+import io.github.contacttracker.core.Numbers;
 import io.github.contacttracker.core.StackTracker;
 import io.github.contacttracker.core.TrackerParameters;
 import io.github.contacttracker.io.AtomicFile;
@@ -40,6 +63,14 @@ final class BenchCommand extends ContactTrackerCli.Subcommand {
 			"true"));
 	private final Option<Path> saveStackOption = options.add(Option.path("--save-stack", "FILE.tif", "Also save the " +
 		"simulated stack here (e.g. to time another tracker on the same frames: scripts/compare-trackpy-speed.py)."));
+	private final Option<Path> reportOption = options.add(Option.path("--report", "FILE.md", "Also write the tables " +
+		"as a markdown page, stamped with this command, the version and the date (the documentation's reports)."));
+
+	/** The tables as they are printed, for {@code --report}: in process, end to end, start-up. */
+	private final List<List<String>> inProcess = new ArrayList<>(), endToEnd = new ArrayList<>(), startUp =
+		new ArrayList<>();
+	/** The printed lines that head the tables, for {@code --report}. */
+	private final List<String> headings = new ArrayList<>();
 
 	BenchCommand(final PrintStream out) {
 		super(new CommandOptions("contact-tracker bench", "Speed of each method on a simulated 512x512 8-bit stack " +
@@ -55,6 +86,8 @@ final class BenchCommand extends ContactTrackerCli.Subcommand {
 		if (frames < 1 || rounds < 1 || profileFrames < 1)
 			throw new InvalidInputException("--frames, --rounds and --profile-frames must be at least 1");
 		if (saveStack != null) AtomicFile.checkFolder("--save-stack", saveStack);
+		final Path report = ContactTrackerCli.output("--report", options.value(reportOption));
+		final long start = System.nanoTime();
 		final ParticleType type = PaperParticles.silica553();
 		final SimulatedStack<UnsignedByteType> stack = SimulatedStack.benchmarkStack(type, frames, 7);
 		if (saveStack != null) ImageFiles.saveTiff(ImageFiles.timeSeries(saveStack.getFileName().toString(), stack
@@ -62,8 +95,9 @@ final class BenchCommand extends ContactTrackerCli.Subcommand {
 		final List<ArrayImg<UnsignedByteType, ?>> imgs = stack.frames();
 		final double mpx = (double) frames * stack.width() * stack.height() / 1e6;
 		final int cores = Runtime.getRuntime().availableProcessors();
-		out.printf(Locale.ROOT, "%d frames of %dx%d 8-bit, 12 particles (4 touching pairs) of %s, %d cores, " +
-			"best of %d rounds%n", frames, stack.width(), stack.height(), type.name(), cores, rounds);
+		headings.add(String.format(Locale.ROOT, "%d frames of %dx%d 8-bit, 12 particles (4 touching pairs) of %s, %d " +
+			"cores, best of %d rounds", frames, stack.width(), stack.height(), type.name(), cores, rounds));
+		out.println(headings.get(0));
 
 		final double readSeconds = best(rounds, () -> {
 			long sum = 0;
@@ -81,7 +115,7 @@ final class BenchCommand extends ContactTrackerCli.Subcommand {
 		final List<ArrayImg<UnsignedByteType, ?>> few = imgs.subList(0, Math.min(frames, 20));
 		for (int w = 0; w < 3; w++)
 			for (final Method m : Method.values())
-				new StackTracker(base.withMethod(m)).track(few, false); // imglib2's default: one thread
+				new StackTracker(base.withMethod(m)).track(few, false); // imglib2's default executor
 		for (final Method m : Method.values()) {
 			// The profile methods are slower: they run on the first --profile-frames frames (and pass over them
 			// three times: iterative centres, then the profile measured twice).
@@ -96,7 +130,25 @@ final class BenchCommand extends ContactTrackerCli.Subcommand {
 			}
 		}
 		if (options.value(endToEndOption)) endToEnd(stack, type, cores, rounds);
+		if (report != null) report().write(report, arguments, (System.nanoTime() - start) * 1e-9);
 		return 0;
+	}
+
+	/** @return the tables printed, as a markdown page */
+	private Report report() {
+		final Report r = new Report("Speed: bench").paragraph("A simulated 512x512 8-bit stack, 12 particles of the " +
+			"5.53 µm-like kind (4 touching pairs, 4 single), every method on 1 thread and on all cores, best of the " +
+			"rounds after a warm-up. The profile methods (`deblend`, `fit`) run in process on the first " +
+			"`--profile-frames` frames, all their passes included.");
+		r.heading("In process").paragraph(headings.get(0) + ": the tracking alone on frames in memory, against one " +
+			"plain read pass over the same frames.").table(List.of("", "frames/s", "Mpixel/s", "x read time"),
+				inProcess);
+		if (!endToEnd.isEmpty()) r.heading("End to end").paragraph(headings.get(1) + ".").table(endToEnd.get(0).size() ==
+			5 ? List.of("", "frames/s", "ms/frame", "new process: frames/s", "ms/frame") : List.of("", "frames/s",
+				"ms/frame"), endToEnd);
+		if (!startUp.isEmpty()) r.heading("Start-up").paragraph(headings.get(2)).table(List.of("", "start-up (s)",
+			"then ms/frame"), startUp);
+		return r;
 	}
 
 	/**
@@ -114,10 +166,11 @@ final class BenchCommand extends ContactTrackerCli.Subcommand {
 			ImageFiles.saveTiff(ImageFiles.timeSeries("bench", stack.frames(), Calibration.ofPixelSize(type
 				.pixelSizeMicrons(), "micron")), tif);
 			final Path launcher = launcher();
-			out.printf(Locale.ROOT, "%nEnd to end: track %s (%d frames, %.0f MB) --csv, best of %d: in this JVM (warm, " +
-				"no start-up)%s%n", tif.getFileName(), frames, Files.size(tif) / 1e6, Math.min(rounds, 2), launcher ==
-					null ? "" : "; and as a user runs it, " + launcher.getFileName() + " in a new process (JVM start-up " +
-						"and warm-up included)");
+			headings.add(String.format(Locale.ROOT, "End to end: track %s (%d frames, %.0f MB) --csv, best of %d: in " +
+				"this JVM (warm, no start-up)%s", tif.getFileName(), frames, Files.size(tif) / 1e6, Math.min(rounds, 2),
+				launcher == null ? "" : "; and as a user runs it, " + launcher.getFileName() + " in a new process (JVM " +
+					"start-up and warm-up included)"));
+			out.printf(Locale.ROOT, "%n%s%n", headings.get(1));
 			out.printf(Locale.ROOT, "%-28s %10s %10s %14s %12s%n", "", "frames/s", "ms/frame", launcher == null ? "" :
 				"new process/s", launcher == null ? "" : "ms/frame");
 			final ByteArrayOutputStream sink = new ByteArrayOutputStream();
@@ -125,9 +178,9 @@ final class BenchCommand extends ContactTrackerCli.Subcommand {
 			final java.util.Map<Method, Double> newProcess = new java.util.EnumMap<>(Method.class); // new process, all cores
 			for (final Method m : Method.values())
 				for (final int threads : new int[] { 1, cores }) {
-					final String[] args = { "track", tif.toString(), "--threshold", fmt(type.threshold()), "--r-out", fmt(type
-						.rOut()), "--method", m.key(), "--threads", Integer.toString(threads), "--csv", csv.toString(),
-						"--no-progress" };
+					final String[] args = { "track", tif.toString(), "--threshold", Numbers.fmt(type.threshold()),
+						"--r-out", Numbers.fmt(type.rOut()), "--method", m.key(), "--threads", Integer.toString(threads),
+						"--csv", csv.toString(), "--no-progress" };
 					final double s = best(Math.min(rounds, 2), () -> {
 						sink.reset();
 						if (ContactTrackerCli.run(args, quiet, quiet) != 0)
@@ -136,6 +189,8 @@ final class BenchCommand extends ContactTrackerCli.Subcommand {
 					final String name = m.key() + " (" + threads + " thread" + (threads == 1 ? "" : "s") + ")";
 					if (launcher == null) {
 						out.printf(Locale.ROOT, "%-28s %10.0f %10.2f%n", name, frames / s, 1000 * s / frames);
+						endToEnd.add(List.of(name, String.format(Locale.ROOT, "%.0f", frames / s), String.format(Locale.ROOT,
+							"%.2f", 1000 * s / frames)));
 						continue;
 					}
 					final String[] command = new String[args.length];
@@ -145,6 +200,9 @@ final class BenchCommand extends ContactTrackerCli.Subcommand {
 					if (threads == cores) newProcess.put(m, f);
 					out.printf(Locale.ROOT, "%-28s %10.0f %10.2f %14.0f %12.2f%n", name, frames / s, 1000 * s / frames,
 						frames / f, 1000 * f / frames);
+					endToEnd.add(List.of(name, String.format(Locale.ROOT, "%.0f", frames / s), String.format(Locale.ROOT,
+						"%.2f", 1000 * s / frames), String.format(Locale.ROOT, "%.0f", frames / f), String.format(Locale.ROOT,
+							"%.2f", 1000 * f / frames)));
 				}
 			if (launcher != null) startUp(stack, type, cores, rounds, dir, launcher, newProcess);
 		}
@@ -170,15 +228,18 @@ final class BenchCommand extends ContactTrackerCli.Subcommand {
 		ImageFiles.saveTiff(ImageFiles.timeSeries("one", stack.frames().subList(0, 1), Calibration.ofPixelSize(type
 			.pixelSizeMicrons(), "micron")), one);
 		final int frames = stack.frames().size();
-		out.printf(Locale.ROOT, "%nStart-up of a new process (track on 1 frame, best of %d), and the rate beyond it on " +
-			"the %d frames above (new process, all cores):%n", Math.min(rounds, 2), frames);
+		headings.add(String.format(Locale.ROOT, "Start-up of a new process (track on 1 frame, best of %d), and the rate " +
+			"beyond it on the %d frames above (new process, all cores):", Math.min(rounds, 2), frames));
+		out.printf(Locale.ROOT, "%n%s%n", headings.get(2));
 		for (final Method m : new Method[] { Method.PAPER, Method.FIT }) {
-			final String[] command = { launcher.toString(), "track", one.toString(), "--threshold", fmt(type.threshold()),
-				"--r-out", fmt(type.rOut()), "--method", m.key(), "--threads", Integer.toString(cores), "--csv", dir
+			final String[] command = { launcher.toString(), "track", one.toString(), "--threshold", Numbers.fmt(type
+				.threshold()), "--r-out", Numbers.fmt(type.rOut()), "--method", m.key(), "--threads", Integer.toString(cores), "--csv", dir
 					.resolve("one.csv").toString(), "--no-progress" };
 			final double s = best(Math.min(rounds, 2), () -> runProcess(command));
 			out.printf(Locale.ROOT, "%-28s %8.3f s%s%n", m.key() + " (" + cores + " threads)", s, frames > 1 ? String
 				.format(Locale.ROOT, ", then %.2f ms/frame", 1000 * (movie.get(m) - s) / (frames - 1)) : "");
+			startUp.add(List.of(m.key() + " (" + cores + " threads)", String.format(Locale.ROOT, "%.3f", s), frames > 1
+				? String.format(Locale.ROOT, "%.2f", 1000 * (movie.get(m) - s) / (frames - 1)) : ""));
 		}
 	}
 
@@ -215,15 +276,13 @@ final class BenchCommand extends ContactTrackerCli.Subcommand {
 		}
 	}
 
-	private static String fmt(final double v) {
-		return v == Math.rint(v) ? Long.toString((long) v) : Double.toString(v);
-	}
-
 	private void row(final String name, final int frames, final double mpx, final double seconds,
 		final double readSeconds)
 	{
 		out.printf(Locale.ROOT, "%-28s %10.0f %10.0f %12.1f%n", name, frames / seconds, mpx / seconds, seconds /
 			readSeconds);
+		inProcess.add(List.of(name, String.format(Locale.ROOT, "%.0f", frames / seconds), String.format(Locale.ROOT,
+			"%.0f", mpx / seconds), String.format(Locale.ROOT, "%.1f", seconds / readSeconds)));
 	}
 
 	/** Best wall time of {@code rounds} runs after one warm-up run. */

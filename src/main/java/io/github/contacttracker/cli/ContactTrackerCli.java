@@ -1,3 +1,24 @@
+/*-
+ * #%L
+ * Contact Tracker: sub-pixel localization of colloidal particles, also when they touch.
+ * %%
+ * Copyright (C) 2026 Contact Tracker developers
+ * %%
+ * This program is free software: you can redistribute it and/or modify
+ * it under the terms of the GNU General Public License as
+ * published by the Free Software Foundation, either version 3 of the
+ * License, or (at your option) any later version.
+ * 
+ * This program is distributed in the hope that it will be useful,
+ * but WITHOUT ANY WARRANTY; without even the implied warranty of
+ * MERCHANTABILITY or FITNESS FOR A PARTICULAR PURPOSE.  See the
+ * GNU General Public License for more details.
+ * 
+ * You should have received a copy of the GNU General Public
+ * License along with this program.  If not, see
+ * <http://www.gnu.org/licenses/gpl-3.0.html>.
+ * #L%
+ */
 package io.github.contacttracker.cli;
 
 import java.io.IOException;
@@ -10,6 +31,7 @@ import java.util.concurrent.CancellationException;
 
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.io.AtomicFile;
+import io.github.contacttracker.io.ProjectVersion;
 
 /**
  * The command line: {@code contact-tracker demo | track | simulate | bench | accuracy | potential |
@@ -22,8 +44,10 @@ public final class ContactTrackerCli {
 	/** Exit status for bad input (missing file, bad option, untrackable image). */
 	public static final int EXIT_BAD_INPUT = 2;
 
-	/** What {@code --version} prints. */
-	static final String VERSION = "Contact Tracker";
+	/** @return what {@code --version} prints: the name and the version ({@link ProjectVersion}) */
+	static String version() {
+		return "Contact Tracker " + ProjectVersion.get();
+	}
 
 	/**
 	 * A subcommand: its options, declared by the subclass, and its work (run once they are parsed), which writes to
@@ -35,6 +59,8 @@ public final class ContactTrackerCli {
 		final CommandOptions options;
 		/** Where the command's results go. */
 		final PrintStream out;
+		/** The arguments the command was run with, its name first (for the stamp of a {@link Report}). */
+		List<String> arguments = List.of();
 
 		Subcommand(final CommandOptions options, final PrintStream out) {
 			this.options = options;
@@ -127,13 +153,14 @@ public final class ContactTrackerCli {
 			return 0;
 		}
 		if (options.versionRequested()) {
-			out.println(VERSION);
+			out.println(version());
 			return 0;
 		}
 		if (command == null) {
 			err.print(root.usage());
 			return EXIT_BAD_INPUT;
 		}
+		command.arguments = List.of(args);
 		try {
 			return command.call();
 		}

@@ -1,3 +1,24 @@
+/*-
+ * #%L
+ * Contact Tracker: sub-pixel localization of colloidal particles, also when they touch.
+ * %%
+ * Copyright (C) 2026 Contact Tracker developers
+ * %%
+ * This program is free software: you can redistribute it and/or modify
+ * it under the terms of the GNU General Public License as
+ * published by the Free Software Foundation, either version 3 of the
+ * License, or (at your option) any later version.
+ * 
+ * This program is distributed in the hope that it will be useful,
+ * but WITHOUT ANY WARRANTY; without even the implied warranty of
+ * MERCHANTABILITY or FITNESS FOR A PARTICULAR PURPOSE.  See the
+ * GNU General Public License for more details.
+ * 
+ * You should have received a copy of the GNU General Public
+ * License along with this program.  If not, see
+ * <http://www.gnu.org/licenses/gpl-3.0.html>.
+ * #L%
+ */
 package io.github.contacttracker.cli;
 
 import io.github.contacttracker.io.AtomicFile;
@@ -11,6 +32,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Locale;
 
+import io.github.contacttracker.core.Numbers;
 import io.github.contacttracker.io.Calibration;
 import io.github.contacttracker.io.ImageFiles;
 import io.github.contacttracker.sim.PaperParticles;
@@ -70,7 +92,7 @@ final class SimulateCommand extends ContactTrackerCli.Subcommand {
 		out.printf(Locale.ROOT,
 			"%s: %d frames %dx%d, %s of %s at r/D = %.3f; suggested --threshold %s --r-out %s; truth in %s%n",
 			stackFile, frames, stack.width(), stack.height(), scenario.name().toLowerCase(Locale.ROOT), type.name(),
-			separation, fmt(type.threshold()), fmt(type.rOut()), truthFile);
+			separation, Numbers.fmt(type.threshold()), Numbers.fmt(type.rOut()), truthFile);
 		return 0;
 	}
 
@@ -86,9 +108,5 @@ final class SimulateCommand extends ContactTrackerCli.Subcommand {
 			case "2.06": return PaperParticles.silica206();
 			default: throw new InvalidInputException("--particle must be 5.53 or 2.06 (um), not '" + text + "'");
 		}
-	}
-
-	private static String fmt(final double v) {
-		return v == Math.rint(v) ? Long.toString((long) v) : String.format(Locale.ROOT, "%.1f", v);
 	}
 }

@@ -1,3 +1,24 @@
+/*-
+ * #%L
+ * Contact Tracker: sub-pixel localization of colloidal particles, also when they touch.
+ * %%
+ * Copyright (C) 2026 Contact Tracker developers
+ * %%
+ * This program is free software: you can redistribute it and/or modify
+ * it under the terms of the GNU General Public License as
+ * published by the Free Software Foundation, either version 3 of the
+ * License, or (at your option) any later version.
+ * 
+ * This program is distributed in the hope that it will be useful,
+ * but WITHOUT ANY WARRANTY; without even the implied warranty of
+ * MERCHANTABILITY or FITNESS FOR A PARTICULAR PURPOSE.  See the
+ * GNU General Public License for more details.
+ * 
+ * You should have received a copy of the GNU General Public
+ * License along with this program.  If not, see
+ * <http://www.gnu.org/licenses/gpl-3.0.html>.
+ * #L%
+ */
 package io.github.contacttracker.core;
 
 import java.util.ArrayList;
@@ -151,11 +172,6 @@ public final class ContactTracker {
 		if (!(noise > 0)) return 1;
 		return Math.min(1, excess / (noise * Math.sqrt(area)) / FULL_SIGNIFICANCE);
 	}
-
-	/** Upper bound on the passes of the iterative method. */
-	public static final int MAX_ITERATIONS = SecondPass.MAX_ITERATIONS;
-	/** The iterative method stops when no centre moves more than this between passes (px). */
-	public static final double TOLERANCE = SecondPass.TOLERANCE;
 
 	/** Fewest round active areas in a frame for their sizes to tell what a merge must hold. */
 	static final int MIN_ROUND_FOR_SIZES = 5;

@@ -1,3 +1,24 @@
+/*-
+ * #%L
+ * Contact Tracker: sub-pixel localization of colloidal particles, also when they touch.
+ * %%
+ * Copyright (C) 2026 Contact Tracker developers
+ * %%
+ * This program is free software: you can redistribute it and/or modify
+ * it under the terms of the GNU General Public License as
+ * published by the Free Software Foundation, either version 3 of the
+ * License, or (at your option) any later version.
+ * 
+ * This program is distributed in the hope that it will be useful,
+ * but WITHOUT ANY WARRANTY; without even the implied warranty of
+ * MERCHANTABILITY or FITNESS FOR A PARTICULAR PURPOSE.  See the
+ * GNU General Public License for more details.
+ * 
+ * You should have received a copy of the GNU General Public
+ * License along with this program.  If not, see
+ * <http://www.gnu.org/licenses/gpl-3.0.html>.
+ * #L%
+ */
 package io.github.contacttracker.core;
 
 import java.lang.invoke.MethodHandles;
@@ -7,6 +28,7 @@ import java.nio.ByteOrder;
 import net.imglib2.RandomAccess;
 import net.imglib2.RandomAccessibleInterval;
 import net.imglib2.blocks.PrimitiveBlocks;
+import net.imglib2.blocks.PrimitiveBlocks.OnFallback;
 import net.imglib2.img.array.ArrayImg;
 import net.imglib2.img.basictypeaccess.array.ByteArray;
 import net.imglib2.img.basictypeaccess.array.FloatArray;
@@ -172,9 +194,14 @@ public abstract class Plane {
 		return generic(frame);
 	}
 
-	/** Copies a 2D interval of a native type into {@code dest}, row by row, with imglib2's {@link PrimitiveBlocks}. */
+	/**
+	 * Copies a 2D interval of a native type into {@code dest}, row by row, with imglib2's {@link PrimitiveBlocks}. A
+	 * view it cannot copy in blocks is copied pixel by pixel through its {@code RandomAccess} (the same values,
+	 * slower): {@link OnFallback#ACCEPT} says so here, where the default ({@code WARN}) printed a line to stderr for
+	 * every frame that took that path.
+	 */
 	private static <T extends NativeType<T>> void copy(final RandomAccessibleInterval<T> frame, final Object dest) {
-		PrimitiveBlocks.of(frame).copy(frame, dest);
+		PrimitiveBlocks.of(frame, OnFallback.ACCEPT).copy(frame, dest);
 	}
 
 	/** Wraps a 2D interval through a {@link RandomAccess}, never the fast path (for any {@link RealType}). */

@@ -1,8 +1,25 @@
+/*-
+ * #%L
+ * Contact Tracker: sub-pixel localization of colloidal particles, also when they touch.
+ * %%
+ * Copyright (C) 2026 Contact Tracker developers
+ * %%
+ * This program is free software: you can redistribute it and/or modify
+ * it under the terms of the GNU General Public License as
+ * published by the Free Software Foundation, either version 3 of the
+ * License, or (at your option) any later version.
+ * 
+ * This program is distributed in the hope that it will be useful,
+ * but WITHOUT ANY WARRANTY; without even the implied warranty of
+ * MERCHANTABILITY or FITNESS FOR A PARTICULAR PURPOSE.  See the
+ * GNU General Public License for more details.
+ * 
+ * You should have received a copy of the GNU General Public
+ * License along with this program.  If not, see
+ * <http://www.gnu.org/licenses/gpl-3.0.html>.
+ * #L%
+ */
 package io.github.contacttracker.core;
-
-import net.imglib2.RandomAccess;
-import net.imglib2.RandomAccessibleInterval;
-import net.imglib2.type.numeric.IntegerType;
 
 /**
  * An immutable set of pixels stored as horizontal runs in raster order (row by row, left to right): an active
@@ -127,17 +144,5 @@ public final class Region {
 			b[i] += dx;
 		}
 		return new Region(y, a, b, area);
-	}
-
-	/**
-	 * Writes {@code label} into every pixel of the region in {@code target} (whose interval must contain it).
-	 */
-	public <L extends IntegerType<L>> void paint(final RandomAccessibleInterval<L> target, final int label) {
-		final RandomAccess<L> ra = target.randomAccess();
-		forEachPixel((x, y) -> {
-			ra.setPosition(x, 0);
-			ra.setPosition(y, 1);
-			ra.get().setInteger(label);
-		});
 	}
 }

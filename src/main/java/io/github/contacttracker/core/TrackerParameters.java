@@ -1,3 +1,24 @@
+/*-
+ * #%L
+ * Contact Tracker: sub-pixel localization of colloidal particles, also when they touch.
+ * %%
+ * Copyright (C) 2026 Contact Tracker developers
+ * %%
+ * This program is free software: you can redistribute it and/or modify
+ * it under the terms of the GNU General Public License as
+ * published by the Free Software Foundation, either version 3 of the
+ * License, or (at your option) any later version.
+ * 
+ * This program is distributed in the hope that it will be useful,
+ * but WITHOUT ANY WARRANTY; without even the implied warranty of
+ * MERCHANTABILITY or FITNESS FOR A PARTICULAR PURPOSE.  See the
+ * GNU General Public License for more details.
+ * 
+ * You should have received a copy of the GNU General Public
+ * License along with this program.  If not, see
+ * <http://www.gnu.org/licenses/gpl-3.0.html>.
+ * #L%
+ */
 package io.github.contacttracker.core;
 
 /**
@@ -51,20 +72,8 @@ public record TrackerParameters(double threshold, double rOut, int minArea, Conn
 			Method.DEFAULT);
 	}
 
-	public TrackerParameters withThreshold(final double t) {
-		return new TrackerParameters(t, rOut, minArea, connectivity, minSecondArea, method, diameter);
-	}
-
-	public TrackerParameters withROut(final double r) {
-		return new TrackerParameters(threshold, r, minArea, connectivity, minSecondArea, method, diameter);
-	}
-
 	public TrackerParameters withMinArea(final int a) {
 		return new TrackerParameters(threshold, rOut, a, connectivity, minSecondArea, method, diameter);
-	}
-
-	public TrackerParameters withConnectivity(final Connectivity c) {
-		return new TrackerParameters(threshold, rOut, minArea, c, minSecondArea, method, diameter);
 	}
 
 	public TrackerParameters withMinSecondArea(final int a) {

@@ -1,3 +1,24 @@
+/*-
+ * #%L
+ * Contact Tracker: sub-pixel localization of colloidal particles, also when they touch.
+ * %%
+ * Copyright (C) 2026 Contact Tracker developers
+ * %%
+ * This program is free software: you can redistribute it and/or modify
+ * it under the terms of the GNU General Public License as
+ * published by the Free Software Foundation, either version 3 of the
+ * License, or (at your option) any later version.
+ * 
+ * This program is distributed in the hope that it will be useful,
+ * but WITHOUT ANY WARRANTY; without even the implied warranty of
+ * MERCHANTABILITY or FITNESS FOR A PARTICULAR PURPOSE.  See the
+ * GNU General Public License for more details.
+ * 
+ * You should have received a copy of the GNU General Public
+ * License along with this program.  If not, see
+ * <http://www.gnu.org/licenses/gpl-3.0.html>.
+ * #L%
+ */
 package io.github.contacttracker.eval;
 
 import java.io.PrintStream;
@@ -59,6 +80,11 @@ public final class SceneStudy {
 	public SceneStudy(final Method method, final int threads) {
 		this.method = method;
 		this.threads = threads;
+	}
+
+	/** @return the method measured */
+	public Method method() {
+		return method;
 	}
 
 	/**
@@ -233,16 +259,16 @@ public final class SceneStudy {
 	 * @param particles comma-separated particle keys ({@link #particle})
 	 * @param scenes comma-separated scene keys ({@link #sceneKeys})
 	 * @param images frames per scene
-	 * @return the table as CSV
+	 * @return the table's rows, in order (as CSV: {@link #CSV_HEADER}, then {@link #csv} of each)
 	 */
-	public String report(final PrintStream out, final String particles, final String scenes, final int images) {
+	public List<Result> report(final PrintStream out, final String particles, final String scenes, final int images) {
 		final List<ParticleType> types = new ArrayList<>();
 		for (final String p : particles.split(","))
 			types.add(particle(p));
 		final List<String> keys = sceneKeys(scenes);
 		for (final String k : keys)
 			Scene.of(k, types.get(0)); // unknown names fail before any work
-		final StringBuilder csv = new StringBuilder(CSV_HEADER);
+		final List<Result> rows = new ArrayList<>();
 		for (final ParticleType type : types) {
 			out.printf(Locale.ROOT, "%n%s (D = %.1f px at %.1f nm/px), r_out %.0f px, method %s, %d images per scene, " +
 				"at contact%n", type.name(), type.diameterPx(), type.pixelSizeNm(), type.rOut(), method.key(), images);
@@ -251,10 +277,10 @@ public final class SceneStudy {
 			for (final String k : keys) {
 				final Result r = run(Scene.of(k, type), images, seed++);
 				print(out, r);
-				csv.append(csv(r));
+				rows.add(r);
 			}
 		}
-		return csv.toString();
+		return rows;
 	}
 
 	/** @return the scenes named in a comma-separated list ({@code all}: every one) */

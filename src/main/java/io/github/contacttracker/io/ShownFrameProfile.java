@@ -1,12 +1,33 @@
+/*-
+ * #%L
+ * Contact Tracker: sub-pixel localization of colloidal particles, also when they touch.
+ * %%
+ * Copyright (C) 2026 Contact Tracker developers
+ * %%
+ * This program is free software: you can redistribute it and/or modify
+ * it under the terms of the GNU General Public License as
+ * published by the Free Software Foundation, either version 3 of the
+ * License, or (at your option) any later version.
+ * 
+ * This program is distributed in the hope that it will be useful,
+ * but WITHOUT ANY WARRANTY; without even the implied warranty of
+ * MERCHANTABILITY or FITNESS FOR A PARTICULAR PURPOSE.  See the
+ * GNU General Public License for more details.
+ * 
+ * You should have received a copy of the GNU General Public
+ * License along with this program.  If not, see
+ * <http://www.gnu.org/licenses/gpl-3.0.html>.
+ * #L%
+ */
 package io.github.contacttracker.io;
 
-import java.math.BigDecimal;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 
 import ij.ImagePlus;
 import io.github.contacttracker.core.InvalidInputException;
+import io.github.contacttracker.core.Numbers;
 import io.github.contacttracker.core.ProfileAnalysis;
 import net.imglib2.RandomAccessibleInterval;
 
@@ -119,9 +140,10 @@ public record ShownFrameProfile(ProfileAnalysis.Result result, String title, int
 	 */
 	public String summary() {
 		return String.format(Locale.ROOT, "'%s'%s%s: threshold %s, r_out %s px, diameter %s px (%s)", title,
-			frameCount > 1 ? ", frame " + (frame + 1) : "", channel > 1 ? ", channel " + channel : "", fmt(threshold()),
-			fmt(rOut()), fmt(diameter()), rejectedDiameter > 0 ? "estimated: " + fmt(rejectedDiameter) +
-				" px given did not fit" : result.diameterEstimated() ? "estimated" : "given");
+			frameCount > 1 ? ", frame " + (frame + 1) : "", channel > 1 ? ", channel " + channel : "", Numbers.fmt(
+				threshold(), 3), Numbers.fmt(rOut(), 3), Numbers.fmt(diameter(), 3), rejectedDiameter > 0 ? "estimated: " +
+					Numbers.fmt(rejectedDiameter, 3) + " px given did not fit" : result.diameterEstimated() ? "estimated"
+						: "given");
 	}
 
 	/** @return {@link #summary()} and, if the helper warns, how many warnings the Log window holds */
@@ -137,8 +159,8 @@ public record ShownFrameProfile(ProfileAnalysis.Result result, String title, int
 	public String logText(final String who) {
 		final List<String> lines = new ArrayList<>();
 		lines.add(wrap(who + " " + summary(), LOG_WIDTH, "    "));
-		if (rejectedDiameter > 0) lines.add(wrap("  warning: not measured with the diameter given, " + fmt(
-			rejectedDiameter) + " px (left from another image?): " + rejection, LOG_WIDTH, "    "));
+		if (rejectedDiameter > 0) lines.add(wrap("  warning: not measured with the diameter given, " + Numbers.fmt(
+			rejectedDiameter, 3) + " px (left from another image?): " + rejection, LOG_WIDTH, "    "));
 		for (final String w : result.warnings())
 			lines.add(wrap("  warning: " + w, LOG_WIDTH, "    "));
 		return String.join("\n", lines);
@@ -166,10 +188,5 @@ public record ShownFrameProfile(ProfileAnalysis.Result result, String title, int
 			lineWords++;
 		}
 		return out.toString();
-	}
-
-	/** @return {@code v} with up to three decimals, no trailing zeros */
-	private static String fmt(final double v) {
-		return new BigDecimal(String.format(Locale.ROOT, "%.3f", v)).stripTrailingZeros().toPlainString();
 	}
 }

@@ -1,3 +1,24 @@
+/*-
+ * #%L
+ * Contact Tracker: sub-pixel localization of colloidal particles, also when they touch.
+ * %%
+ * Copyright (C) 2026 Contact Tracker developers
+ * %%
+ * This program is free software: you can redistribute it and/or modify
+ * it under the terms of the GNU General Public License as
+ * published by the Free Software Foundation, either version 3 of the
+ * License, or (at your option) any later version.
+ * 
+ * This program is distributed in the hope that it will be useful,
+ * but WITHOUT ANY WARRANTY; without even the implied warranty of
+ * MERCHANTABILITY or FITNESS FOR A PARTICULAR PURPOSE.  See the
+ * GNU General Public License for more details.
+ * 
+ * You should have received a copy of the GNU General Public
+ * License along with this program.  If not, see
+ * <http://www.gnu.org/licenses/gpl-3.0.html>.
+ * #L%
+ */
 package io.github.contacttracker.io;
 
 import io.github.contacttracker.core.InvalidInputException;
@@ -216,8 +237,7 @@ public final class TrackMateXmlWriter {
 	private static String log(final int n, final Calibration cal, final ImageSource src, final TrackerParameters params,
 		final int targetChannel)
 	{
-		final String version = TrackMateXmlWriter.class.getPackage().getImplementationVersion();
-		return "Written by Contact Tracker " + (version == null ? "(development build)" : version) +
+		return "Written by Contact Tracker " + ProjectVersion.get() +
 			": radial-symmetry localization of particles near contact (Yucel & Okumusoglu, " +
 			"J. Phys.: Condens. Matter 29, 465101, 2017).\n" +
 			n + " spots in " + src.nframes() + " frames of " + (src.filename().isEmpty() ? "an unsaved image"

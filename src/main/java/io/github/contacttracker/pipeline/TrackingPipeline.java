@@ -1,3 +1,24 @@
+/*-
+ * #%L
+ * Contact Tracker: sub-pixel localization of colloidal particles, also when they touch.
+ * %%
+ * Copyright (C) 2026 Contact Tracker developers
+ * %%
+ * This program is free software: you can redistribute it and/or modify
+ * it under the terms of the GNU General Public License as
+ * published by the Free Software Foundation, either version 3 of the
+ * License, or (at your option) any later version.
+ * 
+ * This program is distributed in the hope that it will be useful,
+ * but WITHOUT ANY WARRANTY; without even the implied warranty of
+ * MERCHANTABILITY or FITNESS FOR A PARTICULAR PURPOSE.  See the
+ * GNU General Public License for more details.
+ * 
+ * You should have received a copy of the GNU General Public
+ * License along with this program.  If not, see
+ * <http://www.gnu.org/licenses/gpl-3.0.html>.
+ * #L%
+ */
 package io.github.contacttracker.pipeline;
 
 import java.io.IOException;
@@ -10,6 +31,7 @@ import java.util.function.IntFunction;
 import io.github.contacttracker.core.FrameResult;
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.core.Localization;
+import io.github.contacttracker.core.Numbers;
 import io.github.contacttracker.core.StackTracker;
 import io.github.contacttracker.core.TrackerParameters;
 import io.github.contacttracker.io.Calibration;
@@ -138,7 +160,7 @@ public final class TrackingPipeline {
 			if (t >= min && t <= max) return;
 		}
 		throw new InvalidInputException(String.format(Locale.ROOT, "threshold %s is outside the data range [%s, %s] " +
-			"of '%s'", fmt(t), fmt(min), fmt(max), source.name()));
+			"of '%s'", Numbers.fmt(t), Numbers.fmt(min), Numbers.fmt(max), source.name()));
 	}
 
 	/** @return the spots, their radius set to half the particle diameter when one was given */
@@ -151,7 +173,4 @@ public final class TrackingPipeline {
 		return out;
 	}
 
-	static String fmt(final double v) {
-		return v == Math.rint(v) && Math.abs(v) < 1e15 ? Long.toString((long) v) : Double.toString(v);
-	}
 }

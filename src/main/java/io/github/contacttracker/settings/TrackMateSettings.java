@@ -1,3 +1,24 @@
+/*-
+ * #%L
+ * Contact Tracker: sub-pixel localization of colloidal particles, also when they touch.
+ * %%
+ * Copyright (C) 2026 Contact Tracker developers
+ * %%
+ * This program is free software: you can redistribute it and/or modify
+ * it under the terms of the GNU General Public License as
+ * published by the Free Software Foundation, either version 3 of the
+ * License, or (at your option) any later version.
+ * 
+ * This program is distributed in the hope that it will be useful,
+ * but WITHOUT ANY WARRANTY; without even the implied warranty of
+ * MERCHANTABILITY or FITNESS FOR A PARTICULAR PURPOSE.  See the
+ * GNU General Public License for more details.
+ * 
+ * You should have received a copy of the GNU General Public
+ * License along with this program.  If not, see
+ * <http://www.gnu.org/licenses/gpl-3.0.html>.
+ * #L%
+ */
 package io.github.contacttracker.settings;
 
 import java.util.LinkedHashMap;
@@ -36,7 +57,6 @@ public final class TrackMateSettings {
 	public static final String KEY_MIN_SECOND_AREA = TrackingSettings.MIN_SECOND_AREA.trackMateKey();
 	public static final String KEY_CONNECTIVITY = TrackingSettings.CONNECTIVITY.trackMateKey();
 	public static final String KEY_METHOD = TrackingSettings.METHOD.trackMateKey();
-	public static final String KEY_DIAMETER = TrackingSettings.DIAMETER.trackMateKey();
 
 	public static final int DEFAULT_TARGET_CHANNEL = TrackingSettings.CHANNEL.defaultValue();
 

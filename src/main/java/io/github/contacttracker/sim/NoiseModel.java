@@ -1,6 +1,29 @@
+/*-
+ * #%L
+ * Contact Tracker: sub-pixel localization of colloidal particles, also when they touch.
+ * %%
+ * Copyright (C) 2026 Contact Tracker developers
+ * %%
+ * This program is free software: you can redistribute it and/or modify
+ * it under the terms of the GNU General Public License as
+ * published by the Free Software Foundation, either version 3 of the
+ * License, or (at your option) any later version.
+ * 
+ * This program is distributed in the hope that it will be useful,
+ * but WITHOUT ANY WARRANTY; without even the implied warranty of
+ * MERCHANTABILITY or FITNESS FOR A PARTICULAR PURPOSE.  See the
+ * GNU General Public License for more details.
+ * 
+ * You should have received a copy of the GNU General Public
+ * License along with this program.  If not, see
+ * <http://www.gnu.org/licenses/gpl-3.0.html>.
+ * #L%
+ */
 package io.github.contacttracker.sim;
 
 import java.util.random.RandomGenerator;
+
+import io.github.contacttracker.core.Numbers;
 
 /**
  * Additive, independent per-pixel noise in grey levels, drawn before rounding to integers. Any
@@ -50,7 +73,7 @@ public sealed interface NoiseModel {
 
 		@Override
 		public String toString() {
-			return "uniform noise in [-" + amplitude + ", " + amplitude + "] (sigma " + fmt(sigma()) + ")";
+			return "uniform noise in [-" + amplitude + ", " + amplitude + "] (sigma " + Numbers.fmt(sigma(), 3) + ")";
 		}
 	}
 
@@ -70,7 +93,7 @@ public sealed interface NoiseModel {
 
 		@Override
 		public String toString() {
-			return "Gaussian noise (sigma " + fmt(sigma) + ")";
+			return "Gaussian noise (sigma " + Numbers.fmt(sigma, 3) + ")";
 		}
 	}
 
@@ -93,9 +116,5 @@ public sealed interface NoiseModel {
 		public String toString() {
 			return "no noise";
 		}
-	}
-
-	private static String fmt(final double v) {
-		return String.format(java.util.Locale.ROOT, "%.4g", v);
 	}
 }

@@ -1,3 +1,24 @@
+/*-
+ * #%L
+ * Contact Tracker: sub-pixel localization of colloidal particles, also when they touch.
+ * %%
+ * Copyright (C) 2026 Contact Tracker developers
+ * %%
+ * This program is free software: you can redistribute it and/or modify
+ * it under the terms of the GNU General Public License as
+ * published by the Free Software Foundation, either version 3 of the
+ * License, or (at your option) any later version.
+ * 
+ * This program is distributed in the hope that it will be useful,
+ * but WITHOUT ANY WARRANTY; without even the implied warranty of
+ * MERCHANTABILITY or FITNESS FOR A PARTICULAR PURPOSE.  See the
+ * GNU General Public License for more details.
+ * 
+ * You should have received a copy of the GNU General Public
+ * License along with this program.  If not, see
+ * <http://www.gnu.org/licenses/gpl-3.0.html>.
+ * #L%
+ */
 package io.github.contacttracker.trackmate;
 
 import io.github.contacttracker.settings.TrackMateSettings;
@@ -46,14 +67,6 @@ public class ContactTrackerDetectorFactory<T extends RealType<T> & NativeType<T>
 
 	/** The detector's icon (two touching particles), shown in TrackMate's detector list and panel. */
 	static final ImageIcon ICON = ContactTrackerConfigurationPanel.icon();
-
-	public static final String KEY_TARGET_CHANNEL = TrackMateSettings.KEY_TARGET_CHANNEL;
-	public static final String KEY_THRESHOLD = TrackMateSettings.KEY_THRESHOLD;
-	public static final String KEY_R_OUT = TrackMateSettings.KEY_R_OUT;
-	public static final String KEY_MIN_AREA = TrackMateSettings.KEY_MIN_AREA;
-	public static final String KEY_MIN_SECOND_AREA = TrackMateSettings.KEY_MIN_SECOND_AREA;
-	public static final String KEY_CONNECTIVITY = TrackMateSettings.KEY_CONNECTIVITY;
-	public static final String KEY_METHOD = TrackMateSettings.KEY_METHOD;
 
 	/** The paper the method comes from (its DOI page). */
 	public static final String URL = "https://doi.org/10.1088/1361-648X/aa908e";

@@ -1,3 +1,24 @@
+/*-
+ * #%L
+ * Contact Tracker: sub-pixel localization of colloidal particles, also when they touch.
+ * %%
+ * Copyright (C) 2026 Contact Tracker developers
+ * %%
+ * This program is free software: you can redistribute it and/or modify
+ * it under the terms of the GNU General Public License as
+ * published by the Free Software Foundation, either version 3 of the
+ * License, or (at your option) any later version.
+ * 
+ * This program is distributed in the hope that it will be useful,
+ * but WITHOUT ANY WARRANTY; without even the implied warranty of
+ * MERCHANTABILITY or FITNESS FOR A PARTICULAR PURPOSE.  See the
+ * GNU General Public License for more details.
+ * 
+ * You should have received a copy of the GNU General Public
+ * License along with this program.  If not, see
+ * <http://www.gnu.org/licenses/gpl-3.0.html>.
+ * #L%
+ */
 package io.github.contacttracker.core;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -80,7 +101,7 @@ class ProfileSuggestionTest {
 
 	/**
 	 * Tolerances on the worst of 21 centres: the fit's centres scatter by about the Cramer-Rao bound per coordinate,
-	 * 0.015 px for the 5.53 um-like particles (about 1.2 nm at 84.7 nm/px; README accuracy table) and 0.02-0.03 px
+	 * 0.015 px for the 5.53 um-like particles (about 1.2 nm at 84.7 nm/px; the accuracy report) and 0.02-0.03 px
 	 * for the 2.06 um-like (37 nm/px) and bright-field-like ones (their reported standard errors). The tolerance is
 	 * 4 of those (0.06 px; 0.1 px), below the first pass's pull at contact (0.06-0.1 px per particle for the
 	 * 5.53 um-like ones, more for the others). Measured: worst 0.044, 0.039 and 0.020 px.

@@ -1,3 +1,24 @@
+/*-
+ * #%L
+ * Contact Tracker: sub-pixel localization of colloidal particles, also when they touch.
+ * %%
+ * Copyright (C) 2026 Contact Tracker developers
+ * %%
+ * This program is free software: you can redistribute it and/or modify
+ * it under the terms of the GNU General Public License as
+ * published by the Free Software Foundation, either version 3 of the
+ * License, or (at your option) any later version.
+ * 
+ * This program is distributed in the hope that it will be useful,
+ * but WITHOUT ANY WARRANTY; without even the implied warranty of
+ * MERCHANTABILITY or FITNESS FOR A PARTICULAR PURPOSE.  See the
+ * GNU General Public License for more details.
+ * 
+ * You should have received a copy of the GNU General Public
+ * License along with this program.  If not, see
+ * <http://www.gnu.org/licenses/gpl-3.0.html>.
+ * #L%
+ */
 package io.github.contacttracker.sim;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -53,7 +74,7 @@ class NoiseModelTest {
 	@Test
 	void readableAndValidated() {
 		assertEquals("uniform noise in [-5.0, 5.0] (sigma 2.887)", NoiseModel.uniform(5).toString());
-		assertEquals("Gaussian noise (sigma 1.500)", NoiseModel.gaussian(1.5).toString());
+		assertEquals("Gaussian noise (sigma 1.5)", NoiseModel.gaussian(1.5).toString());
 		assertEquals("no noise", NoiseModel.none().toString());
 		assertThrows(IllegalArgumentException.class, () -> NoiseModel.uniform(-1));
 		assertThrows(IllegalArgumentException.class, () -> NoiseModel.gaussian(Double.NaN));
