@@ -85,7 +85,7 @@ public final class ContactTrackerCli {
 
 	/** The subcommands' names, in the order the help lists them. */
 	private static final List<String> COMMANDS = List.of("demo", "track", "simulate", "bench", "accuracy", "potential",
-		"demo-potential", "profile");
+		"demo-potential", "static-error", "profile");
 
 	/**
 	 * @return the subcommand {@code name} (one of {@link #COMMANDS}), or null. Only the one run is made: building a
@@ -100,6 +100,7 @@ public final class ContactTrackerCli {
 			case "accuracy" -> new AccuracyCommand(out);
 			case "potential" -> new PotentialCommand(out, err);
 			case "demo-potential" -> new DemoPotentialCommand(out);
+			case "static-error" -> new StaticErrorCommand(out);
 			case "profile" -> new ProfileCommand(out);
 			default -> null;
 		};
