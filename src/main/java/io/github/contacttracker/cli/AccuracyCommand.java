@@ -56,7 +56,8 @@ final class AccuracyCommand extends ContactTrackerCli.Subcommand {
 	private final Option<Path> reportOption = options.add(Option.path("--report", "FILE.md", "Also write the tables " +
 		"as a markdown page, stamped with this command, the version and the date (the documentation's reports)."));
 	private final Option<String> particlesOption = options.add(Option.text("--particle", "5.53,2.06", "Particle " +
-		"types (um).").withDefault("5.53,2.06"));
+		"types (um); with --scene also flat, and movie:PATH, a particle like a movie's (profile, noise and settings " +
+		"measured on its first frame).").withDefault("5.53,2.06"));
 	private final Option<String> scenariosOption = options.add(Option.text("--scenario", "pair,triple", "Scenarios.")
 		.withDefault("pair,triple"));
 	private final Option<String> methodsOption = options.add(Option.text("--methods", "M,...", "Methods. Default: " +
@@ -83,7 +84,11 @@ final class AccuracyCommand extends ContactTrackerCli.Subcommand {
 		if (scene != null) { // the scenes of eval.SceneStudy (clusters, unlike particles, ramp, saturation)
 			final long t0 = System.nanoTime();
 			final SceneStudy study = new SceneStudy(Method.parse(methodList == null ? "fit" : methodList), threads);
-			final List<SceneStudy.Result> results = study.report(out, particles, scene, reps);
+			final List<ParticleType> sceneTypes = new ArrayList<>();
+			for (final String p : ContactTrackerCli.list(particles))
+				sceneTypes.add(p.startsWith(MeasuredParticle.PREFIX) ? MeasuredParticle.of(Path.of(p.substring(
+					MeasuredParticle.PREFIX.length()))) : SceneStudy.particle(p));
+			final List<SceneStudy.Result> results = study.report(out, sceneTypes, scene, reps);
 			final double seconds = (System.nanoTime() - t0) * 1e-9;
 			out.printf(Locale.ROOT, "%nAccuracy run took %.0f s.%n", seconds);
 			if (csv != null) {

@@ -265,6 +265,13 @@ public final class SceneStudy {
 		final List<ParticleType> types = new ArrayList<>();
 		for (final String p : particles.split(","))
 			types.add(particle(p));
+		return report(out, types, scenes, images);
+	}
+
+	/** As {@link #report(PrintStream, String, String, int)}, for particle types given. */
+	public List<Result> report(final PrintStream out, final List<ParticleType> types, final String scenes,
+		final int images)
+	{
 		final List<String> keys = sceneKeys(scenes);
 		for (final String k : keys)
 			Scene.of(k, types.get(0)); // unknown names fail before any work
