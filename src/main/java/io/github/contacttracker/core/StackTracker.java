@@ -70,13 +70,15 @@ public final class StackTracker {
 	/**
 	 * Runs {@code work} with {@code threads} threads as imglib2's task executor of this thread (below 1: all
 	 * processors), the way a front end owns the threads of a run. Unlike {@code Parallelization.runWithNumThreads
-	 * (int, Callable)}, exceptions pass unchanged (a user error stays an {@code IllegalArgumentException}).
+	 * (int, Callable)}, exceptions pass unchanged (a user error stays an {@code IllegalArgumentException}). One
+	 * thread is the calling thread itself (imglib2's sequential executor), not a pool of one that it waits for: a
+	 * Spark task's work then runs on the task's thread, and Spark's metrics count its CPU time.
 	 */
 	public static <R> R withThreads(final int threads, final Supplier<R> work) {
 		final List<R> out = new ArrayList<>(1);
-		Parallelization.runWithNumThreads(threads(threads), () -> {
-			out.add(work.get()); // a block, so the Runnable overload is chosen: it does not wrap exceptions
-		});
+		final Runnable run = () -> out.add(work.get()); // a Runnable: it does not wrap exceptions
+		if (threads(threads) == 1) Parallelization.runSingleThreaded(run);
+		else Parallelization.runWithNumThreads(threads(threads), run);
 		return out.get(0);
 	}
 

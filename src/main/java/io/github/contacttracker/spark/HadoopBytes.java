@@ -27,6 +27,7 @@ import java.net.URI;
 import java.nio.ByteBuffer;
 
 import org.apache.hadoop.conf.Configuration;
+import org.apache.hadoop.fs.ChecksumFileSystem;
 import org.apache.hadoop.fs.FSDataInputStream;
 import org.apache.hadoop.fs.FileSystem;
 import org.apache.hadoop.fs.Path;
@@ -57,8 +58,13 @@ final class HadoopBytes implements SeekableBytes {
 	private synchronized FSDataInputStream in() throws IOException {
 		if (in == null) {
 			// the cluster's settings (HADOOP_CONF_DIR) where there are any; Hadoop caches the FileSystem itself
-			final FileSystem fs = FileSystem.get(uri, new Configuration());
 			final Path path = new Path(uri);
+			FileSystem fs = FileSystem.get(uri, new Configuration());
+			// A local file without Hadoop's checksum file beside it (a microscope's) has nothing to verify: read it
+			// through the raw file system, whose positioned reads share the open file. The checksummed one opens the
+			// file and looks for the checksum file again on every read: each of a TIFF's thousands of directories.
+			if (fs instanceof ChecksumFileSystem checked && !checked.exists(checked.getChecksumFile(path))) fs = checked
+				.getRawFileSystem();
 			try {
 				size = fs.getFileStatus(path).getLen();
 			}
