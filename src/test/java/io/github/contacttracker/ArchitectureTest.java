@@ -28,6 +28,7 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
@@ -40,25 +41,41 @@ import org.junit.jupiter.api.Test;
 
 /**
  * The house (src/site/markdown/contributing.md, "The house"): each package uses only the packages below it, so there is no cycle and
- * the front ends never import each other. Read from the sources' references to our packages.
+ * the front ends never import each other. The core is built of rooms ({@code core} and {@code core.*}) that stand in
+ * the same kind of order, and holds no ImageJ, SciJava or Fiji type. Read from the sources' references to our packages.
  */
 class ArchitectureTest {
 
-	/** Which of our packages each package may use. */
+	/** The core's rooms, bottom first; each uses only rooms to its left. The packages outside see the core as one. */
+	private static final List<String> CORE = List.of("core", "core.math", "core.image", "core.profile", "core.radial",
+		"core.fit", "core.track");
+
+	/** Which of our packages each package may use ({@code core} standing for all of the core's rooms). */
 	private static final Map<String, Set<String>> ALLOWED = Map.ofEntries( //
 		Map.entry("core", Set.of()), //
+		Map.entry("core.math", Set.of()), //
+		Map.entry("core.image", Set.of("core")), //
+		Map.entry("core.profile", Set.of("core", "core.math", "core.image")), //
+		Map.entry("core.radial", Set.of("core", "core.math", "core.image", "core.profile")), //
+		Map.entry("core.fit", Set.of("core", "core.math", "core.image", "core.profile", "core.radial")), //
+		Map.entry("core.track", Set.of("core", "core.math", "core.image", "core.profile", "core.radial", "core.fit")), //
+		Map.entry("advisor", Set.of("core")), //
 		Map.entry("sim", Set.of("core")), //
 		Map.entry("potential", Set.of("core")), //
 		Map.entry("settings", Set.of("core")), //
-		Map.entry("io", Set.of("core", "settings", "potential")), //
+		Map.entry("io", Set.of("core", "settings", "potential", "advisor")), //
 		Map.entry("eval", Set.of("core", "sim", "potential")), //
-		Map.entry("pipeline", Set.of("core", "io", "settings")), //
-		Map.entry("cli", Set.of("core", "sim", "potential", "settings", "io", "eval", "pipeline")), //
-		Map.entry("command", Set.of("core", "sim", "potential", "settings", "io", "eval", "pipeline")), //
+		Map.entry("pipeline", Set.of("core", "advisor", "io", "settings")), //
+		Map.entry("cli", Set.of("core", "advisor", "sim", "potential", "settings", "io", "eval", "pipeline")), //
+		Map.entry("command", Set.of("core", "advisor", "sim", "potential", "settings", "io", "eval", "pipeline")), //
 		Map.entry("trackmate", Set.of("core", "settings", "io", "pipeline")), //
 		Map.entry("spark", Set.of("core", "potential", "settings", "io", "pipeline")));
 
-	private static final Pattern REFERENCE = Pattern.compile("io\\.github\\.contacttracker\\.([a-z]+)\\.");
+	/** A reference to a type of ours: the package (a core room with its name) followed by a type or a wildcard. */
+	private static final Pattern REFERENCE = Pattern.compile("io\\.github\\.contacttracker\\.((?:core\\.)?[a-z]+)\\.(?=[A-Z*])");
+
+	/** ImageJ 1, ImageJ2/SciJava and Fiji packages: none of them in the core. */
+	private static final Pattern FRONT_END_TYPE = Pattern.compile("(?<![\\w.])(ij|net\\.imagej|org\\.scijava|fiji)\\.[a-zA-Z]");
 
 	@Test
 	void everyPackageUsesOnlyThePackagesBelowIt() throws IOException {
@@ -67,21 +84,47 @@ class ArchitectureTest {
 		final Set<String> seen = new TreeSet<>();
 		try (Stream<Path> files = Files.walk(root)) {
 			for (final Path f : (Iterable<Path>) files.filter(p -> p.toString().endsWith(".java"))::iterator) {
-				final String pkg = root.relativize(f).getName(0).toString();
+				final String pkg = root.relativize(f.getParent()).toString().replace('/', '.').replace('\\', '.');
 				seen.add(pkg);
 				final Set<String> allowed = ALLOWED.get(pkg);
 				if (allowed == null) {
 					violations.add(pkg + ": a package the house does not know (add it to ALLOWED and to contributing.md)");
 					continue;
 				}
-				final Matcher m = REFERENCE.matcher(Files.readString(f));
+				final String text = Files.readString(f);
+				final Matcher m = REFERENCE.matcher(text);
 				while (m.find()) {
 					final String used = m.group(1);
-					if (!used.equals(pkg) && !allowed.contains(used)) violations.add(root.relativize(f) + " uses " + used);
+					final String seenAs = CORE.contains(pkg) || !CORE.contains(used) ? used : "core";
+					if (!used.equals(pkg) && !allowed.contains(seenAs)) violations.add(root.relativize(f) + " uses " + used);
 				}
+				if (CORE.contains(pkg) && FRONT_END_TYPE.matcher(text).find())
+					violations.add(root.relativize(f) + " uses an ImageJ, SciJava or Fiji type: the core is pure ImgLib2");
 			}
 		}
 		assertEquals(ALLOWED.keySet(), seen, "packages");
 		assertTrue(violations.isEmpty(), String.join("\n", violations));
+	}
+
+	/** The rules themselves have no cycle: following "may use" from any package never comes back to it. */
+	@Test
+	void theRulesHaveNoCycle() {
+		for (final String start : ALLOWED.keySet()) {
+			final Set<String> reached = new HashSet<>();
+			final List<String> todo = new ArrayList<>(ALLOWED.get(start));
+			while (!todo.isEmpty()) {
+				final String p = todo.remove(todo.size() - 1);
+				assertTrue(!p.equals(start), start + " reaches itself");
+				if (reached.add(p)) todo.addAll(ALLOWED.get(p));
+			}
+		}
+	}
+
+	/** The core's rooms stand in the order {@link #CORE} lists: each may use only rooms listed before it. */
+	@Test
+	void coreRoomsStandInOrder() {
+		for (int i = 0; i < CORE.size(); i++)
+			for (final String used : ALLOWED.get(CORE.get(i)))
+				assertTrue(CORE.indexOf(used) >= 0 && CORE.indexOf(used) < i, CORE.get(i) + " may use " + used);
 	}
 }

@@ -34,8 +34,8 @@ import java.util.Locale;
 
 import io.github.contacttracker.core.Method;
 import io.github.contacttracker.core.Numbers;
-import io.github.contacttracker.core.StackTracker;
 import io.github.contacttracker.core.TrackerParameters;
+import io.github.contacttracker.core.track.StackTracker;
 import io.github.contacttracker.io.AtomicFile;
 import io.github.contacttracker.io.Calibration;
 import io.github.contacttracker.io.ImageFiles;

@@ -30,9 +30,9 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 
-import io.github.contacttracker.core.ContactTracker;
-import io.github.contacttracker.core.FrameResult;
 import io.github.contacttracker.core.Method;
+import io.github.contacttracker.core.track.ContactTracker;
+import io.github.contacttracker.core.track.FrameResult;
 import io.github.contacttracker.eval.DistanceError;
 import io.github.contacttracker.eval.DistanceStudy;
 import io.github.contacttracker.io.OverlayPng;

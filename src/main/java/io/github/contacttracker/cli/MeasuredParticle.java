@@ -26,7 +26,7 @@ import java.util.ArrayList;
 import java.util.List;
 
 import ij.ImagePlus;
-import io.github.contacttracker.core.ProfileAnalysis;
+import io.github.contacttracker.advisor.ProfileAnalysis;
 import io.github.contacttracker.io.ImageFiles;
 import io.github.contacttracker.io.ImagePlusFrames;
 import io.github.contacttracker.sim.NoiseModel;

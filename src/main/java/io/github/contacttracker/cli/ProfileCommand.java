@@ -30,8 +30,8 @@ import java.util.List;
 import java.util.Locale;
 
 import ij.ImagePlus;
+import io.github.contacttracker.advisor.ProfileAnalysis;
 import io.github.contacttracker.core.InvalidInputException;
-import io.github.contacttracker.core.ProfileAnalysis;
 import io.github.contacttracker.io.AtomicFile;
 import io.github.contacttracker.io.ImageFiles;
 import io.github.contacttracker.io.ImagePlusFrames;

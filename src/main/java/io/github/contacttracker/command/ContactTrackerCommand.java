@@ -21,14 +21,14 @@
  */
 package io.github.contacttracker.command;
 
-import io.github.contacttracker.settings.SettingValues;
-import io.github.contacttracker.pipeline.TrackingResult;
-import io.github.contacttracker.pipeline.TrackingPipeline;
-import io.github.contacttracker.pipeline.Outputs;
-import io.github.contacttracker.pipeline.FrameSource;
 import io.github.contacttracker.core.InvalidInputException;
-import io.github.contacttracker.settings.TrackingSettings;
+import io.github.contacttracker.pipeline.FrameSource;
+import io.github.contacttracker.pipeline.Outputs;
+import io.github.contacttracker.pipeline.TrackingPipeline;
+import io.github.contacttracker.pipeline.TrackingResult;
 import io.github.contacttracker.settings.Setting;
+import io.github.contacttracker.settings.SettingValues;
+import io.github.contacttracker.settings.TrackingSettings;
 import java.util.LinkedHashMap;
 import java.util.Map;
 import java.awt.GraphicsEnvironment;
@@ -62,10 +62,10 @@ import ij.gui.Overlay;
 import ij.io.FileInfo;
 import ij.measure.ResultsTable;
 import io.github.contacttracker.core.Connectivity;
-import io.github.contacttracker.core.FrameResult;
 import io.github.contacttracker.core.Localization;
 import io.github.contacttracker.core.Method;
 import io.github.contacttracker.core.TrackerParameters;
+import io.github.contacttracker.core.track.FrameResult;
 import io.github.contacttracker.io.ImagePlusFrames;
 import io.github.contacttracker.io.ImageSource;
 import io.github.contacttracker.io.ShownFrameProfile;

@@ -40,7 +40,7 @@ import ij.gui.Plot;
 import ij.gui.PointRoi;
 import ij.gui.Roi;
 import ij.measure.ResultsTable;
-import io.github.contacttracker.core.ProfileAnalysis;
+import io.github.contacttracker.advisor.ProfileAnalysis;
 import io.github.contacttracker.io.ProfilePlots;
 import io.github.contacttracker.io.ShownFrameProfile;
 

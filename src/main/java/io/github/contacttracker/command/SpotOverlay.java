@@ -38,9 +38,9 @@ import ij.gui.PointRoi;
 import ij.gui.Roi;
 import ij.gui.ShapeRoi;
 import io.github.contacttracker.core.Flag;
-import io.github.contacttracker.core.FrameResult;
 import io.github.contacttracker.core.Localization;
-import io.github.contacttracker.core.Region;
+import io.github.contacttracker.core.image.Region;
+import io.github.contacttracker.core.track.FrameResult;
 import io.github.contacttracker.io.OverlayPng;
 import io.github.contacttracker.io.ShownFrameProfile;
 

@@ -31,7 +31,7 @@ public enum Method {
 	PAPER,
 	/**
 	 * The paper's second pass repeated with the discs rebuilt around the refined centres, until no centre moves
-	 * more than 1e-4 px (at most {@value SecondPass#MAX_ITERATIONS} passes; flagged if not settled).
+	 * more than 1e-4 px (at most 100 passes; flagged if not settled).
 	 */
 	ITERATIVE,
 	/**
@@ -53,19 +53,7 @@ public enum Method {
 
 	/** @return whether the method needs the particles' radial profile measured from the data */
 	public boolean needsProfile() {
-		return refinement() instanceof ProfileRefinement;
-	}
-
-	/** @return the strategy that computes this method's centres from the first pass */
-	Refinement refinement() {
-		switch (this) {
-			case FIRST: return Refinement.FIRST_PASS;
-			case PAPER: return SecondPass.PAPER;
-			case ITERATIVE: return SecondPass.ITERATIVE;
-			case DEBLEND: return ProfileRefinement.DEBLEND;
-			case FIT: return ProfileRefinement.FIT;
-			default: throw new AssertionError(this);
-		}
+		return this == DEBLEND || this == FIT;
 	}
 
 	/** @return the lower-case name used on the command line, in macros and in TrackMate settings */

@@ -33,7 +33,7 @@ package io.github.contacttracker.core;
  * @param method how centres are computed
  * @param diameter the particles' diameter (px): the smallest centre distance of two particles at contact; 0 when
  *        not known. Merge detection uses it: a component too small to hold two particles that far apart is one
- *        particle, whatever its gradient lines do ({@link ComponentShape})
+ *        particle, whatever its gradient lines do (the component's shape, {@code core.radial.ComponentShape})
  */
 public record TrackerParameters(double threshold, double rOut, int minArea, Connectivity connectivity,
 	int minSecondArea, Method method, double diameter)

@@ -23,7 +23,7 @@ package io.github.contacttracker.eval;
 
 import java.util.List;
 
-import io.github.contacttracker.core.SymmetricSolver;
+import io.github.contacttracker.core.math.SymmetricSolver;
 import io.github.contacttracker.sim.ImageSimulator;
 import io.github.contacttracker.sim.NoiseFreeImage;
 import io.github.contacttracker.sim.ParticleType;

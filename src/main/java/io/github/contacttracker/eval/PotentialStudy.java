@@ -23,11 +23,11 @@ package io.github.contacttracker.eval;
 
 import java.util.List;
 
-import io.github.contacttracker.core.FrameResult;
 import io.github.contacttracker.core.Localization;
 import io.github.contacttracker.core.Method;
-import io.github.contacttracker.core.StackTracker;
 import io.github.contacttracker.core.TrackerParameters;
+import io.github.contacttracker.core.track.FrameResult;
+import io.github.contacttracker.core.track.StackTracker;
 import io.github.contacttracker.potential.FieldOfView;
 import io.github.contacttracker.potential.PairCorrelation;
 import io.github.contacttracker.potential.SpotSet;

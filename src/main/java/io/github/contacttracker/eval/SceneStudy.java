@@ -26,12 +26,12 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 
-import io.github.contacttracker.core.FrameResult;
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.core.Localization;
 import io.github.contacttracker.core.Method;
-import io.github.contacttracker.core.StackTracker;
 import io.github.contacttracker.core.TrackerParameters;
+import io.github.contacttracker.core.track.FrameResult;
+import io.github.contacttracker.core.track.StackTracker;
 import io.github.contacttracker.sim.PaperParticles;
 import io.github.contacttracker.sim.ParticleType;
 import io.github.contacttracker.sim.Scene;

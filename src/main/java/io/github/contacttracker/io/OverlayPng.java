@@ -35,9 +35,9 @@ import java.util.List;
 
 import javax.imageio.ImageIO;
 
-import io.github.contacttracker.core.FrameResult;
 import io.github.contacttracker.core.Localization;
-import io.github.contacttracker.core.Region;
+import io.github.contacttracker.core.image.Region;
+import io.github.contacttracker.core.track.FrameResult;
 import net.imglib2.Cursor;
 import net.imglib2.RandomAccessibleInterval;
 import net.imglib2.type.numeric.RealType;

@@ -30,7 +30,7 @@ import java.nio.file.Path;
 import java.util.Locale;
 
 import ij.gui.Plot;
-import io.github.contacttracker.core.ProfileAnalysis;
+import io.github.contacttracker.advisor.ProfileAnalysis;
 
 /**
  * The radial profile of {@link ProfileAnalysis} as a plot (the paper's Fig. 2: the profile, the background, the

@@ -26,9 +26,9 @@ import java.util.List;
 import java.util.Locale;
 
 import ij.ImagePlus;
+import io.github.contacttracker.advisor.ProfileAnalysis;
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.core.Numbers;
-import io.github.contacttracker.core.ProfileAnalysis;
 import net.imglib2.RandomAccessibleInterval;
 
 /**

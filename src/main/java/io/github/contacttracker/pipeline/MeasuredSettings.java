@@ -23,8 +23,8 @@ package io.github.contacttracker.pipeline;
 
 import java.math.BigDecimal;
 
+import io.github.contacttracker.advisor.ProfileAnalysis;
 import io.github.contacttracker.core.InvalidInputException;
-import io.github.contacttracker.core.ProfileAnalysis;
 import io.github.contacttracker.settings.SettingValues;
 import io.github.contacttracker.settings.TrackingSettings;
 import net.imglib2.RandomAccessibleInterval;

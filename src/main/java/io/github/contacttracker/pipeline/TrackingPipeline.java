@@ -28,12 +28,12 @@ import java.util.Locale;
 import java.util.function.BooleanSupplier;
 import java.util.function.IntFunction;
 
-import io.github.contacttracker.core.FrameResult;
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.core.Localization;
 import io.github.contacttracker.core.Numbers;
-import io.github.contacttracker.core.StackTracker;
 import io.github.contacttracker.core.TrackerParameters;
+import io.github.contacttracker.core.track.FrameResult;
+import io.github.contacttracker.core.track.StackTracker;
 import io.github.contacttracker.io.Calibration;
 import io.github.contacttracker.settings.SettingValues;
 import net.imglib2.RandomAccessibleInterval;

@@ -25,8 +25,8 @@ import java.util.List;
 import java.util.ArrayList;
 import java.util.Locale;
 
-import io.github.contacttracker.core.FrameResult;
 import io.github.contacttracker.core.Localization;
+import io.github.contacttracker.core.track.FrameResult;
 
 /**
  * What a run found.

@@ -25,7 +25,7 @@ import java.io.Serializable;
 import java.util.LinkedHashMap;
 import java.util.Map;
 
-import io.github.contacttracker.core.StackTracker;
+import io.github.contacttracker.core.track.StackTracker;
 import io.github.contacttracker.io.Calibration;
 import io.github.contacttracker.settings.SettingValues;
 import io.github.contacttracker.settings.TrackingSettings;

@@ -49,10 +49,10 @@ import org.apache.spark.sql.types.StructField;
 import org.apache.spark.sql.types.StructType;
 import org.apache.spark.storage.StorageLevel;
 
-import io.github.contacttracker.core.FrameResult;
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.core.Localization;
-import io.github.contacttracker.core.StackTracker;
+import io.github.contacttracker.core.track.FrameResult;
+import io.github.contacttracker.core.track.StackTracker;
 import io.github.contacttracker.io.ImagePlusFrames;
 import io.github.contacttracker.io.ImageSource;
 import io.github.contacttracker.io.SpotColumn;

@@ -40,7 +40,7 @@ import org.scijava.module.ModuleService;
 import org.scijava.widget.Button;
 
 import ij.ImagePlus;
-import io.github.contacttracker.core.ProfileAnalysis;
+import io.github.contacttracker.advisor.ProfileAnalysis;
 import io.github.contacttracker.io.Calibration;
 import io.github.contacttracker.io.ImagePlusFrames;
 import io.github.contacttracker.io.ProfileScenes;

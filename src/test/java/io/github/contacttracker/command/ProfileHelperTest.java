@@ -42,7 +42,7 @@ import org.scijava.module.Module;
 import ij.ImagePlus;
 import ij.gui.Plot;
 import ij.gui.PointRoi;
-import io.github.contacttracker.core.ProfileAnalysis;
+import io.github.contacttracker.advisor.ProfileAnalysis;
 import io.github.contacttracker.io.Calibration;
 import io.github.contacttracker.io.ImageFiles;
 import io.github.contacttracker.sim.GaussianBesselProfile;

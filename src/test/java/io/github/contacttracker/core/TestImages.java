@@ -36,12 +36,12 @@ import net.imglib2.type.numeric.real.DoubleType;
 import net.imglib2.type.numeric.real.FloatType;
 
 /** Small synthetic images for the core's tests, independent of the simulator package. */
-final class TestImages {
+public final class TestImages {
 
 	private TestImages() {}
 
 	/** A Gaussian bump: value(r) = amplitude * exp(-r^2 / (2 sigma^2)). */
-	static DoubleUnaryOperator gaussian(final double amplitude, final double sigma) {
+	public static DoubleUnaryOperator gaussian(final double amplitude, final double sigma) {
 		return r -> amplitude * Math.exp(-r * r / (2 * sigma * sigma));
 	}
 
@@ -49,7 +49,7 @@ final class TestImages {
 	 * Renders particles (centres in px, pixel (i,j) centred at (i,j)) of a radial profile on a background,
 	 * averaging 8x8 sub-samples per pixel.
 	 */
-	static double[] render(final int w, final int h, final double background, final DoubleUnaryOperator profile,
+	public static double[] render(final int w, final int h, final double background, final DoubleUnaryOperator profile,
 		final double[]... centres)
 	{
 		final double[] img = new double[w * h];
@@ -69,7 +69,7 @@ final class TestImages {
 	}
 
 	/** Adds seeded uniform noise in [-amplitude, amplitude]. */
-	static double[] withUniformNoise(final double[] img, final double amplitude, final long seed) {
+	public static double[] withUniformNoise(final double[] img, final double amplitude, final long seed) {
 		final Random rnd = new Random(seed);
 		final double[] out = img.clone();
 		for (int i = 0; i < out.length; i++)
@@ -77,28 +77,28 @@ final class TestImages {
 		return out;
 	}
 
-	static ArrayImg<UnsignedByteType, ByteArray> bytes(final double[] img, final int w, final int h) {
+	public static ArrayImg<UnsignedByteType, ByteArray> bytes(final double[] img, final int w, final int h) {
 		final byte[] b = new byte[img.length];
 		for (int i = 0; i < img.length; i++)
 			b[i] = (byte) Math.max(0, Math.min(255, Math.round(img[i])));
 		return ArrayImgs.unsignedBytes(b, w, h);
 	}
 
-	static ArrayImg<UnsignedShortType, ShortArray> shorts(final double[] img, final int w, final int h) {
+	public static ArrayImg<UnsignedShortType, ShortArray> shorts(final double[] img, final int w, final int h) {
 		final short[] s = new short[img.length];
 		for (int i = 0; i < img.length; i++)
 			s[i] = (short) Math.max(0, Math.min(65535, Math.round(img[i])));
 		return ArrayImgs.unsignedShorts(s, w, h);
 	}
 
-	static ArrayImg<FloatType, FloatArray> floats(final double[] img, final int w, final int h) {
+	public static ArrayImg<FloatType, FloatArray> floats(final double[] img, final int w, final int h) {
 		final float[] f = new float[img.length];
 		for (int i = 0; i < img.length; i++)
 			f[i] = (float) img[i];
 		return ArrayImgs.floats(f, w, h);
 	}
 
-	static ArrayImg<DoubleType, DoubleArray> doubles(final double[] img, final int w, final int h) {
+	public static ArrayImg<DoubleType, DoubleArray> doubles(final double[] img, final int w, final int h) {
 		return ArrayImgs.doubles(img.clone(), w, h);
 	}
 }

@@ -29,11 +29,11 @@ import java.util.SplittableRandom;
 
 import org.junit.jupiter.api.Test;
 
-import io.github.contacttracker.core.ContactTracker;
 import io.github.contacttracker.core.Flag;
 import io.github.contacttracker.core.Localization;
 import io.github.contacttracker.core.Method;
 import io.github.contacttracker.core.TrackerParameters;
+import io.github.contacttracker.core.track.ContactTracker;
 import io.github.contacttracker.sim.ImageSimulator;
 import io.github.contacttracker.sim.NoiseFreeImage;
 import io.github.contacttracker.sim.PaperParticles;

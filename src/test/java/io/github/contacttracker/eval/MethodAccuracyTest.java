@@ -28,9 +28,9 @@ import java.util.List;
 
 import org.junit.jupiter.api.Test;
 
-import io.github.contacttracker.core.FrameResult;
 import io.github.contacttracker.core.Localization;
 import io.github.contacttracker.core.Method;
+import io.github.contacttracker.core.track.FrameResult;
 import io.github.contacttracker.sim.PaperParticles;
 import io.github.contacttracker.sim.ParticleType;
 import io.github.contacttracker.sim.Scenario;

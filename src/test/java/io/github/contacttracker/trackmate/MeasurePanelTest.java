@@ -41,7 +41,7 @@ import org.junit.jupiter.api.Test;
 import fiji.plugin.trackmate.Model;
 import fiji.plugin.trackmate.Settings;
 import ij.ImagePlus;
-import io.github.contacttracker.core.ProfileAnalysis;
+import io.github.contacttracker.advisor.ProfileAnalysis;
 import io.github.contacttracker.io.Calibration;
 import io.github.contacttracker.io.ImagePlusFrames;
 import io.github.contacttracker.io.ProfileScenes;

@@ -1,0 +1,850 @@
+/*-
+ * #%L
+ * Contact Tracker: sub-pixel localization of colloidal particles, also when they touch.
+ * %%
+ * Copyright (C) 2026 Contact Tracker developers
+ * %%
+ * This program is free software: you can redistribute it and/or modify
+ * it under the terms of the GNU General Public License as
+ * published by the Free Software Foundation, either version 3 of the
+ * License, or (at your option) any later version.
+ * 
+ * This program is distributed in the hope that it will be useful,
+ * but WITHOUT ANY WARRANTY; without even the implied warranty of
+ * MERCHANTABILITY or FITNESS FOR A PARTICULAR PURPOSE.  See the
+ * GNU General Public License for more details.
+ * 
+ * You should have received a copy of the GNU General Public
+ * License along with this program.  If not, see
+ * <http://www.gnu.org/licenses/gpl-3.0.html>.
+ * #L%
+ */
+package io.github.contacttracker.advisor;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.Comparator;
+import java.util.List;
+import java.util.Locale;
+
+import io.github.contacttracker.core.Connectivity;
+import io.github.contacttracker.core.Flag;
+import io.github.contacttracker.core.InvalidInputException;
+import io.github.contacttracker.core.Localization;
+import io.github.contacttracker.core.Method;
+import io.github.contacttracker.core.TrackerParameters;
+import io.github.contacttracker.core.image.ComponentLabeling;
+import io.github.contacttracker.core.image.NoiseEstimate;
+import io.github.contacttracker.core.image.Plane;
+import io.github.contacttracker.core.image.Region;
+import io.github.contacttracker.core.radial.ComponentShape;
+import io.github.contacttracker.core.track.ContactTracker;
+import net.imglib2.RandomAccessibleInterval;
+import net.imglib2.type.numeric.RealType;
+
+/**
+ * Suggests {@code threshold}, {@code r_out} (and, when not given, the diameter) from the radial intensity profile
+ * of isolated particles, the way the paper reads them off its Fig. 2. One implementation for the Fiji helper and
+ * the command line's {@code profile}. Built to hold on real movies: saturated cores, a background that drifts
+ * across the frame, dense neighbours and compression (MJPEG) noise.
+ * <ol>
+ * <li>Particles: the frame's bright spots at half height between the frame's median and its brightest pixels
+ * (a point given: the brightest pixel near it), localized by one radial-symmetry pass; merged spots (by shape)
+ * and spots at the border are not profiled.</li>
+ * <li>Diameter {@code D}: given, or the smaller of the 10th percentile of the spots' nearest-neighbour distances
+ * (colloids at contact sit one diameter apart) and twice where the particles' own image ends (the outer edge of a
+ * dark ring, else the reach), read off a profile taken to a provisional diameter and measured again at the
+ * estimate; a warning says which.</li>
+ * <li>Profiled particles: the point given, or up to {@value #MAX_PARTICLES} spots with the largest distances to
+ * their nearest neighbour. Pixels within the reach of any other spot are masked (first {@code D}, then the
+ * measured reach).</li>
+ * <li>Local background: around each particle a plane fitted robustly to the outer {@value #BACKGROUND_ANNULUS_PERCENT}%
+ * of {@code max_radius} ({@value #AUTO_RADIUS_DIAMETERS} diameters unless given): a background drifting across
+ * the frame is removed with it.</li>
+ * <li>Noise {@code s}: the robust (3.5-sigma clipped) standard deviation of the pixels of those annuli about their
+ * planes. It
+ * sees compression noise that is smooth within 8x8 blocks, which a pixel-difference estimator (Immerkaer) misses,
+ * and is not moved by a neighbour's light in part of the annulus.</li>
+ * <li>Profile {@code P(r)}: the interquartile mean, over all profiled particles, of the pixels' heights above their
+ * local background in 1 px wide rings. It ignores the part of a ring a neighbour covers (up to a quarter), and
+ * unlike a median it is not stuck on the integer steps of 8-bit data.</li>
+ * <li>{@code r_out}: the radius beyond which {@code |P(r)| <= s} (the reach), plus {@value #R_OUT_MARGIN_PX}
+ * px.</li>
+ * <li>{@code threshold}: particles at contact add up. For two (centres {@code D} apart) and three (a touching
+ * triangle) the summed profiles are evaluated on a 0.5 px grid at every point at least {@code D/2} from all
+ * centres (outside every particle's own half): the brightest such point is the bridge their active areas must
+ * not reach. The threshold is the bridge plus {@value #THRESHOLD_MARGIN_SIGMAS} {@code s}. On a saturated core
+ * only the plateau is flat, and the rule does not look inside {@code D/2}.</li>
+ * <li>Raised, when it must be, clear of the background's texture ({@link #textureGap}) and until the frame's
+ * active areas are round ({@link #roundFrom}).</li>
+ * </ol>
+ */
+public final class ProfileAnalysis {
+
+	/** Added to the reach for {@code r_out}: half the width of the gradient operator. */
+	public static final double R_OUT_MARGIN_PX = 2;
+	/** Noise margin of the threshold above the brightest point between particles at contact, in noise sigmas. */
+	public static final double THRESHOLD_MARGIN_SIGMAS = 3;
+	/** Default {@code max_radius}, in particle diameters. */
+	public static final double AUTO_RADIUS_DIAMETERS = 2.5;
+	/** The background is measured in this outer part of {@code max_radius} (percent). */
+	public static final int BACKGROUND_ANNULUS_PERCENT = 20;
+	/** At most this many particles are profiled together. */
+	public static final int MAX_PARTICLES = 8;
+	/** Percentile of the nearest-neighbour distances taken as the diameter when it is not given. */
+	public static final double DIAMETER_PERCENTILE = 10;
+	/** Fewest pixels accepted in the background annulus. */
+	static final int MIN_BACKGROUND_PIXELS = 20;
+	/** Median absolute deviation to standard deviation, for normal noise. */
+	static final double MAD_TO_SIGMA = 1.4826;
+	/** Values further than this many sigmas from the mean do not count in the noise. */
+	static final double CLIP_SIGMAS = 3.5;
+	/**
+	 * The provisional diameter (to measure the profile on) is at most this many times the spots' median radius at
+	 * half height: the cores of the authors' bright-field particles have radii of 4.7-8.3 px at half height and
+	 * their images end 21 px out; a Gaussian particle's image ends about 2.5 half-height radii out.
+	 */
+	static final double PROVISIONAL_CORE_RADII = 6;
+	/** Smallest ratio of peak heights that separates the background's texture from the particles' cores. */
+	static final double TEXTURE_GAP_RATIO = 2;
+	/** At most this share (percent) of the active areas may fail the outline tests at the suggested threshold. */
+	static final int MAX_NOT_ROUND_PERCENT = 1;
+	/** Grid step (px) of the bridge search. */
+	static final double BRIDGE_STEP_PX = 0.5;
+
+	/**
+	 * What the profile shows.
+	 *
+	 * @param x refined centre x of the (first) profiled particle (px, TrackMate convention)
+	 * @param y refined centre y (px)
+	 * @param refined whether the particle was found by radial symmetry (else the point given is used)
+	 * @param diameter the particle diameter (px), given or estimated
+	 * @param diameterEstimated whether the diameter was estimated from the spots' distances
+	 * @param particles how many particles the profile pools
+	 * @param maxRadius radius measured out to (px)
+	 * @param radius mean distance of each ring's pixels from the centre (px); ring {@code k} holds the pixels at
+	 *        distances in {@code [k - 0.5, k + 0.5)}
+	 * @param level each ring's grey level: the background plus the interquartile mean height of its pixels above
+	 *        the local background (NaN for an empty ring)
+	 * @param count pixels in each ring (over all profiled particles)
+	 * @param background background grey level {@code I0} (mean of the local backgrounds at the centres)
+	 * @param noise pixel-noise standard deviation {@code s} (robust, around the particles)
+	 * @param peak brightest pixel of the (first) particle
+	 * @param reach radius beyond which {@code |I(r) - I0| <= s} (px)
+	 * @param rOut suggested {@code r_out}: {@code reach + 2} (px, not rounded)
+	 * @param bridge brightest grey level between two or three such particles at contact
+	 * @param atContact {@code bridge + 3 s}: the threshold that keeps two or three particles at contact apart
+	 * @param threshold suggested threshold (not rounded): {@code atContact}, raised clear of the background's texture
+	 *        and until every active area is round, when it must be
+	 * @param activeRadius radius of the particle's active area at the suggested threshold (px; 0 when even the
+	 *        centre is below it)
+	 * @param centres the profiled particles' centres {@code {x, y}} (px)
+	 * @param warnings things the user should know, one sentence each (empty when all is well)
+	 */
+	public record Result(double x, double y, boolean refined, double diameter, boolean diameterEstimated,
+		int particles, double maxRadius, double[] radius, double[] level, int[] count, double background,
+		double noise, double peak, double reach, double rOut, double bridge, double atContact, double threshold,
+		double activeRadius,
+		List<double[]> centres, List<String> warnings)
+	{
+		public Result {
+			warnings = List.copyOf(warnings);
+			centres = List.copyOf(centres);
+		}
+
+		/** @return {@link #threshold} rounded up to a whole grey level when the data are integers */
+		public double suggestedThreshold(final boolean integerData) {
+			return integerData ? Math.ceil(threshold - 1e-9) : threshold;
+		}
+
+		/** @return {@link #diameter} rounded to 0.01 px, as the helper prints it */
+		public double suggestedDiameter() {
+			return round2(diameter);
+		}
+
+		/** @return {@link #rOut} rounded up to whole pixels */
+		public double suggestedROut() {
+			return Math.ceil(rOut - 1e-9);
+		}
+
+		/** @return the lines that explain the numbers (no trailing newline), the same in Fiji and on the command line */
+		public List<String> report(final boolean integerData) {
+			final List<String> lines = new ArrayList<>();
+			lines.add(String.format(Locale.ROOT, "  background %.2f, noise sigma %.2f (robust, around the particles), " +
+				"peak %.2f (grey levels)", background, noise, peak));
+			lines.add(String.format(Locale.ROOT, "  diameter %.2f px%s; profile of %d particle%s", diameter,
+				diameterEstimated ? " (estimated)" : "", particles, particles == 1 ? "" : "s"));
+			lines.add(String.format(Locale.ROOT,
+				"  profile within the noise of the background beyond %.2f px; + %.0f px = %.2f -> r_out = %.0f px", reach,
+				R_OUT_MARGIN_PX, rOut, suggestedROut()));
+			lines.add(String.format(Locale.ROOT, "  brightest point between two or three particles at contact " +
+				"(D = %.2f px): %.2f; + %.0f sigma = %.2f%s -> threshold = %s", diameter, bridge,
+				THRESHOLD_MARGIN_SIGMAS, atContact, threshold > atContact ? String.format(Locale.ROOT, ", raised to %.2f " +
+					"(see the warnings)", threshold) : "", fmt(suggestedThreshold(integerData))));
+			lines.add(String.format(Locale.ROOT, "  active area radius at this threshold: %.2f px (D/2 = %.2f px)",
+				activeRadius, diameter / 2));
+			return lines;
+		}
+	}
+
+	private ProfileAnalysis() {}
+
+	/**
+	 * The profile of the particle at a point (the Fiji helper: the user clicked it).
+	 *
+	 * @param frame a 2D frame
+	 * @param px x of a point on the particle (px, in the frame's coordinates)
+	 * @param py y of a point on the particle (px)
+	 * @param diameter particle diameter (px): the centre distance at contact; 0 to estimate it from the frame
+	 * @param maxRadius radius to measure out to (px); 0 for {@value #AUTO_RADIUS_DIAMETERS} diameters. It is
+	 *        clipped to the farthest image corner.
+	 * @return the profile and the suggestions
+	 * @throws IllegalArgumentException with a one-line message: bad diameter or radius, point outside the frame,
+	 *         no background ring inside the image, or no particle brighter than the noise at the point
+	 */
+	public static <T extends RealType<T>> Result analyse(final RandomAccessibleInterval<T> frame, final double px,
+		final double py, final double diameter, final double maxRadius)
+	{
+		return run(frame, new double[] { px, py }, diameter, maxRadius);
+	}
+
+	/**
+	 * The profile of the frame's most isolated particles, found without help.
+	 *
+	 * @see #analyse(RandomAccessibleInterval, double, double, double, double)
+	 */
+	public static <T extends RealType<T>> Result analyse(final RandomAccessibleInterval<T> frame,
+		final double diameter, final double maxRadius)
+	{
+		return run(frame, null, diameter, maxRadius);
+	}
+
+	private static <T extends RealType<T>> Result run(final RandomAccessibleInterval<T> frame, final double[] point,
+		final double diameterGiven, final double maxRadiusGiven)
+	{
+		if (!(diameterGiven >= 0) || !Double.isFinite(diameterGiven))
+			throw new InvalidInputException("diameter must be the particle diameter in pixels (> 0; 0 = estimate " +
+				"it), not " + fmt(diameterGiven));
+		if (!(maxRadiusGiven >= 0) || !Double.isFinite(maxRadiusGiven))
+			throw new InvalidInputException("max_radius must be >= 0 pixels (0 = automatic), not " + fmt(
+				maxRadiusGiven));
+		final Plane plane = Plane.of(frame);
+		final int w = plane.width(), h = plane.height();
+		double lx = Double.NaN, ly = Double.NaN;
+		if (point != null) {
+			lx = point[0] - plane.minX();
+			ly = point[1] - plane.minY();
+			if (!(lx >= -0.5 && lx < w - 0.5 && ly >= -0.5 && ly < h - 0.5))
+				throw new InvalidInputException("point (" + fmt(point[0]) + ", " + fmt(point[1]) + ") is outside the " +
+					"image");
+		}
+		final List<String> warnings = new ArrayList<>();
+
+		// 1. the spots, at half height
+		final double[] sample = sample(plane);
+		final double median0 = quantile(sample, 0.5);
+		final double noise0 = Math.max(NoiseEstimate.sigma(plane), 1e-6);
+		final double near = diameterGiven > 0 ? Math.max(2, diameterGiven / 4) : 5;
+		final double top = point != null ? peak(plane, lx, ly, near) : quantile(sample, 1 - Math.max(1e-4, 20.0 /
+			sample.length));
+		if (!(top - median0 > THRESHOLD_MARGIN_SIGMAS * noise0)) {
+			if (point != null) throw new InvalidInputException(String.format(Locale.ROOT, "no bright particle at " +
+				"(%s, %s): the brightest pixel within %s px is %s, within %s noise sigmas (%s) of the background %s", fmt(
+					point[0]), fmt(point[1]), fmt(near), fmt(top), fmt(THRESHOLD_MARGIN_SIGMAS), fmt(noise0), fmt(
+						median0)));
+			throw new InvalidInputException("no particle brighter than the noise in the frame");
+		}
+		final TrackerParameters find = new TrackerParameters(median0 + 0.5 * (top - median0), 10, 5,
+			Connectivity.EIGHT, TrackerParameters.DEFAULT_MIN_SECOND_AREA, Method.FIRST);
+		final List<Localization> spots = new ContactTracker(find).analyse(plane, 0, false).spots();
+		final double[][] xy = new double[spots.size()][];
+		for (int k = 0; k < xy.length; k++)
+			xy[k] = new double[] { spots.get(k).x() - plane.minX(), spots.get(k).y() - plane.minY() };
+		final double[] nn = nearestNeighbourDistances(xy);
+
+		// 2. the diameter: given; or where the particles' own image ends, unless the spots sit closer than that. It is
+		// measured on a profile taken out to a provisional diameter: the spots' spacing, but no more than
+		// PROVISIONAL_CORE_RADII times their half-height radius (isolated particles sit far apart: their spacing would
+		// take the profile far out, over the background's texture and every neighbour)
+		double diameter = diameterGiven;
+		final boolean estimated = diameter == 0;
+		final double fromSpots = xy.length >= 2 ? quantile(nn.clone(), DIAMETER_PERCENTILE / 100) : Double.NaN;
+		if (estimated) {
+			final double[] radii = new double[spots.size()];
+			for (int k = 0; k < radii.length; k++)
+				radii[k] = Math.sqrt(spots.get(k).activeArea() / Math.PI);
+			final double fromCores = PROVISIONAL_CORE_RADII * quantile(radii, 0.5);
+			diameter = Double.isFinite(fromSpots) ? Math.min(fromSpots, fromCores) : fromCores;
+		}
+		final double[] at = point == null ? null : new double[] { lx, ly };
+		Measured m = measure(plane, spots, xy, nn, at, near, diameter, maxRadiusGiven);
+		if (estimated) {
+			final double own = 2 * m.imageEdge();
+			final boolean fromImage = !(fromSpots < own);
+			final double provisional = diameter;
+			diameter = fromImage ? own : fromSpots;
+			if (Math.abs(diameter - provisional) > 0.01 * provisional)
+				m = measure(plane, spots, xy, nn, at, near, diameter, maxRadiusGiven);
+			warnings.add(String.format(Locale.ROOT, "the diameter (%s px) is estimated as %s: give it if you know it",
+				fmt(round2(diameter)), fromImage ? String.format(Locale.ROOT, "twice the radius where the particles' " +
+					"image returns to the background (%s px)", fmt(round2(own / 2))) : String.format(Locale.ROOT, "the " +
+						"%s-th percentile of the %d spots' nearest-neighbour distances, closer than the particles' image " +
+						"reaches (%s px across)", fmt(DIAMETER_PERCENTILE), xy.length, fmt(round2(own)))));
+		}
+		warnings.addAll(m.warnings());
+		final List<double[]> centres = m.centres();
+		final boolean refined = m.refined();
+		final double cx = centres.get(0)[0], cy = centres.get(0)[1];
+		final double radiusCap = m.radiusCap();
+		final Pooled pooled = m.pooled();
+		final double reach = m.reach();
+		final double rOut = reach + R_OUT_MARGIN_PX;
+		final double noise = pooled.noise;
+
+		// 7. the bridge between particles at contact
+		final double bridge = pooled.background + Math.max(0, brightestBetween(pooled, diameter, reach));
+		final double atContact = bridge + THRESHOLD_MARGIN_SIGMAS * noise;
+		// 8. clear of the background's texture (halos, rings, their sums between particles)
+		final double[] gap = textureGap(plane, atContact, pooled.background);
+		final double clear = Math.max(atContact, Double.isNaN(gap[0]) ? atContact : pooled.background + (gap[0] +
+			gap[1]) / 2);
+		if (clear > atContact)
+			warnings.add(String.format(Locale.ROOT, "at %s, %d bright spots of the background (halos, rings; up to %s " +
+				"above it) would be taken for particles, whose cores rise at least %s above it: the threshold is raised to " +
+				"the middle of that gap", fmt(round2(atContact)), (int) gap[2], fmt(round2(gap[0])), fmt(round2(gap[1]))));
+		// 9. and where every active area has the shape of one particle (bright fringes between touching particles
+		// in bright field are brighter than the sum of two profiles), up to half the cores' height
+		final double peak = peak(plane, cx, cy, Math.max(2, diameter / 4));
+		final double ceiling = pooled.background + 0.5 * (peak - pooled.background);
+		final double[] shaped = roundFrom(plane, clear, ceiling, Math.max(0.5, noise / 2));
+		final double threshold = shaped[0];
+		if (threshold > clear)
+			warnings.add(String.format(Locale.ROOT, "at %s, %d of the frame's %d active areas have the shape of no " +
+				"single particle (bright fringes between touching particles, or particles merged): the threshold is raised " +
+				"until they are round", fmt(round2(clear)), (int) shaped[1], (int) shaped[2]));
+		else if (shaped[1] > 0)
+			warnings.add(String.format(Locale.ROOT, "%d of the frame's %d active areas have the shape of no single " +
+				"particle up to %s (half the cores' height): they will be flagged MERGED", (int) shaped[1], (int) shaped[2],
+				fmt(round2(ceiling))));
+		final int used = pooled.radius.length;
+		final double[] level = new double[used];
+		for (int k = 0; k < used; k++)
+			level[k] = pooled.count[k] > 0 ? pooled.background + pooled.height[k] : Double.NaN;
+		double activeRadius = 0;
+		int previous = -1;
+		for (int k = 0; k < used; k++) {
+			if (pooled.count[k] == 0) continue;
+			if (level[k] < threshold) {
+				if (previous >= 0) activeRadius = pooled.radius[previous] + (pooled.radius[k] - pooled.radius[previous]) *
+					(level[previous] - threshold) / (level[previous] - level[k]);
+				break;
+			}
+			activeRadius = pooled.radius[k];
+			previous = k;
+		}
+		if (activeRadius == 0)
+			warnings.add("the suggested threshold is above the particle's centre: at contact no threshold separates " +
+				"two such particles (the profile is too long-ranged for the method)");
+		if (rOut > diameter)
+			warnings.add(String.format(Locale.ROOT, "r_out (%s px) is larger than the diameter (%s px): at contact " +
+				"little undistorted active area is left for the paper's second pass (the paper needs r_out <= D; the " +
+				"deblend and fit methods do not)", fmt(round2(rOut)), fmt(round2(diameter))));
+		final List<double[]> inFrame = new ArrayList<>();
+		for (final double[] c : centres)
+			inFrame.add(new double[] { c[0] + plane.minX(), c[1] + plane.minY() });
+		return new Result(cx + plane.minX(), cy + plane.minY(), refined, diameter, estimated, centres.size(), radiusCap,
+			pooled.radius, level, pooled.count, pooled.background, noise, peak, reach, rOut, bridge, atContact, threshold,
+			activeRadius, inFrame, warnings);
+	}
+
+	/**
+	 * The profile of the particles chosen for a diameter: their centres, how far out it is measured, the pooled
+	 * profile, its reach and where the particles' own image ends ({@link #imageEdge(Pooled, double)}).
+	 */
+	private record Measured(List<double[]> centres, boolean refined, double radiusCap, Pooled pooled, double reach,
+		double imageEdge, List<String> warnings) {}
+
+	/**
+	 * Steps 3-6: picks the particles (the one at {@code point}, else the most isolated), masks their neighbours and
+	 * pools their profile, twice (the masks widened to the measured reach the second time).
+	 */
+	private static Measured measure(final Plane plane, final List<Localization> spots, final double[][] xy,
+		final double[] nn, final double[] point, final double near, final double diameter, final double maxRadiusGiven)
+	{
+		final int w = plane.width(), h = plane.height();
+		final List<String> warnings = new ArrayList<>();
+		final double wanted = maxRadiusGiven > 0 ? maxRadiusGiven : AUTO_RADIUS_DIAMETERS * diameter;
+		final List<Integer> chosen = new ArrayList<>();
+		boolean refined = true;
+		double[] own = null;
+		if (point != null) {
+			int best = -1;
+			for (int k = 0; k < xy.length; k++) {
+				final double d = Math.hypot(xy[k][0] - point[0], xy[k][1] - point[1]);
+				if (d <= Math.max(near, diameter / 2) && (best < 0 || d < Math.hypot(xy[best][0] - point[0], xy[best][1] -
+					point[1]))) best = k;
+			}
+			if (best >= 0) {
+				chosen.add(best);
+				if (spots.get(best).has(Flag.MERGED))
+					warnings.add("the particle's active area looks merged with a neighbour's: pick an isolated particle");
+			}
+			else {
+				refined = false;
+				own = point;
+				warnings.add("could not refine the centre; the profile is taken around the point given");
+			}
+		}
+		else {
+			final Integer[] order = new Integer[xy.length];
+			for (int k = 0; k < order.length; k++)
+				order[k] = k;
+			Arrays.sort(order, Comparator.comparingDouble(k -> -nn[k]));
+			for (final int k : order) {
+				final Localization s = spots.get(k);
+				if (s.has(Flag.MERGED) || s.has(Flag.AT_BORDER) || s.has(Flag.DEGENERATE)) continue;
+				if (xy[k][0] < diameter / 2 || xy[k][1] < diameter / 2 || xy[k][0] > w - 1 - diameter / 2 || xy[k][1] > h -
+					1 - diameter / 2) continue;
+				if (!chosen.isEmpty() && nn[k] < Math.min(wanted, 0.5 * nn[chosen.get(0)])) break;
+				chosen.add(k);
+				if (chosen.size() == MAX_PARTICLES) break;
+			}
+			if (chosen.isEmpty()) throw new InvalidInputException("no single particle away from the border found in " +
+				"the frame: give a point on one");
+			if (nn.length > 1 && nn[chosen.get(0)] < 2 * diameter)
+				warnings.add(String.format(Locale.ROOT, "no particle is isolated: the most isolated has a neighbour at %s " +
+					"px (%s diameters); the profile's outer part may show neighbours", fmt(round2(nn[chosen.get(0)])), fmt(
+						round2(nn[chosen.get(0)] / diameter))));
+		}
+		final List<double[]> centres = new ArrayList<>();
+		if (own != null) centres.add(own);
+		for (final int k : chosen)
+			centres.add(xy[k]);
+		final double radiusCap = Math.min(wanted, farthestCorner(centres.get(0)[0], centres.get(0)[1], w, h));
+		Pooled pooled = pool(plane, centres, xy, diameter, radiusCap);
+		double reach = reach(pooled, radiusCap, null);
+		pooled = pool(plane, centres, xy, Math.max(diameter, reach + R_OUT_MARGIN_PX), radiusCap);
+		reach = reach(pooled, radiusCap, warnings);
+		return new Measured(pooled.centres(), refined, radiusCap, pooled, reach, imageEdge(pooled, reach), warnings);
+	}
+
+	/**
+	 * Where the particle's own image ends: the outer edge of its dark ring (where the profile, past its minimum,
+	 * comes back within the noise of the background) when it has one deeper than {@value #THRESHOLD_MARGIN_SIGMAS}
+	 * noise sigmas, as bright-field particles do; otherwise the reach. A faint halo beyond the ring is light the
+	 * particle scatters, not the particle: on the paper authors' bright-field movie the ring ends at 21 px and the
+	 * halo at 40 px, for particles about 34 px apart at contact.
+	 */
+	private static double imageEdge(final Pooled p, final double reach) {
+		int deepest = -1;
+		for (int k = 0; k < p.radius.length && p.radius[k] < reach; k++)
+			if (p.count[k] > 0 && (deepest < 0 || p.height[k] < p.height[deepest])) deepest = k;
+		if (deepest < 0 || !(p.height[deepest] < -THRESHOLD_MARGIN_SIGMAS * p.noise)) return reach;
+		int previous = deepest;
+		for (int k = deepest + 1; k < p.radius.length; k++) {
+			if (p.count[k] == 0) continue;
+			if (p.height[k] >= -p.noise) return p.radius[previous] + (p.radius[k] - p.radius[previous]) * (-p.noise -
+				p.height[previous]) / (p.height[k] - p.height[previous]);
+			previous = k;
+		}
+		return reach;
+	}
+
+	/**
+	 * Components of the frame at a threshold, split by their peak height above the background at the largest gap
+	 * (a ratio of at least {@value #TEXTURE_GAP_RATIO}) below half the highest peak: below it the background's
+	 * texture (bright-field halos and rings, their sums between particles, an uneven background), above it the
+	 * particles' cores. On the authors' movies such texture rises 10-14 grey levels above the background and the
+	 * cores 120-140; a threshold just above the sum of two profiles at contact picks up dozens of texture spots.
+	 *
+	 * @return {@code {highest texture peak, lowest core peak, texture components}} above the background, or NaNs
+	 *         when there is no such gap
+	 */
+	static double[] textureGap(final Plane plane, final double threshold, final double background) {
+		final List<Region> regions = ComponentLabeling.label(plane, threshold, Connectivity.EIGHT);
+		final DoubleList heights = new DoubleList();
+		for (final Region r : regions) {
+			if (r.area() < TrackerParameters.DEFAULT_MIN_AREA) continue;
+			double peak = Double.NEGATIVE_INFINITY;
+			for (int k = 0; k < r.runCount(); k++)
+				for (int x = r.runStart(k); x <= r.runEnd(k); x++)
+					peak = Math.max(peak, plane.get(x, r.runY(k)));
+			heights.add(peak - background);
+		}
+		final double[] hs = heights.toArray();
+		Arrays.sort(hs);
+		int cut = -1;
+		double best = TEXTURE_GAP_RATIO;
+		for (int i = 0; i + 1 < hs.length && hs[i] < hs[hs.length - 1] / 2; i++) {
+			final double ratio = hs[i + 1] / Math.max(hs[i], 1e-9);
+			if (ratio >= best) {
+				best = ratio;
+				cut = i;
+			}
+		}
+		return cut < 0 ? new double[] { Double.NaN, Double.NaN, 0 } : new double[] { hs[cut], hs[cut + 1], cut + 1 };
+	}
+
+	/**
+	 * The lowest threshold from {@code from} up to {@code ceiling} (in steps of {@code step}) at which at most
+	 * {@value #MAX_NOT_ROUND_PERCENT}% of the frame's active areas (of at least the default {@code min_area}, away from
+	 * the border) fail the outline tests of merge detection ({@link ComponentShape}: elongated, or with a bay).
+	 *
+	 * @return {@code {threshold, active areas that fail at the threshold from, active areas there}}; the threshold
+	 *         is {@code from} when no step up to the ceiling does better
+	 */
+	static double[] roundFrom(final Plane plane, final double from, final double ceiling, final double step) {
+		final int[] first = notRound(plane, from);
+		for (double t = from; t <= ceiling; t += step) {
+			final int[] n = t == from ? first : notRound(plane, t);
+			if (n[0] * 100 <= MAX_NOT_ROUND_PERCENT * n[1]) return new double[] { t, first[0], first[1] };
+		}
+		return new double[] { from, first[0], first[1] };
+	}
+
+	/** @return {@code {active areas that fail the outline tests, active areas}} at a threshold */
+	private static int[] notRound(final Plane plane, final double threshold) {
+		int bad = 0, all = 0;
+		for (final Region r : ComponentLabeling.label(plane, threshold, Connectivity.EIGHT)) {
+			if (r.area() < TrackerParameters.DEFAULT_MIN_AREA || r.minX() == 0 || r.minY() == 0 || r.maxX() == plane
+				.width() - 1 || r.maxY() == plane.height() - 1) continue;
+			all++;
+			if (ComponentShape.of(r).outlineMerged(false)) bad++;
+		}
+		return new int[] { bad, all };
+	}
+
+	/** The profile pooled over particles: ring heights above the local background, and the noise. */
+	private record Pooled(double[] radius, double[] height, int[] count, double background, double noise,
+		List<double[]> centres) {}
+
+	/**
+	 * Pools the pixels around {@code centres} within {@code radiusCap}, masking pixels within {@code mask} of every
+	 * other spot of {@code spots}; each particle's local background is a plane fitted robustly to its annulus.
+	 */
+	private static Pooled pool(final Plane plane, final List<double[]> centres, final double[][] spots,
+		final double mask, final double radiusCap)
+	{
+		final int bins = (int) Math.floor(radiusCap + 0.5) + 1;
+		final DoubleList[] rings = new DoubleList[bins];
+		for (int k = 0; k < bins; k++)
+			rings[k] = new DoubleList();
+		final double[] sumR = new double[bins];
+		final DoubleList residuals = new DoubleList();
+		final double inner = innerBackgroundRadius(radiusCap);
+		final int w = plane.width(), h = plane.height();
+		double backgroundSum = 0;
+		String failure = null;
+		final List<double[]> used = new ArrayList<>();
+		for (final double[] c : centres) {
+			final int x0 = (int) Math.max(0, Math.floor(c[0] - radiusCap)), x1 = (int) Math.min(w - 1, Math.ceil(c[0] +
+				radiusCap));
+			final int y0 = (int) Math.max(0, Math.floor(c[1] - radiusCap)), y1 = (int) Math.min(h - 1, Math.ceil(c[1] +
+				radiusCap));
+			// the other spots that can reach into this window
+			final List<double[]> others = new ArrayList<>();
+			for (final double[] s : spots)
+				if (Math.hypot(s[0] - c[0], s[1] - c[1]) > 1 && Math.hypot(s[0] - c[0], s[1] - c[1]) < radiusCap + mask)
+					others.add(s);
+			final DoubleList ax = new DoubleList(), ay = new DoubleList(), av = new DoubleList();
+			for (int y = y0; y <= y1; y++)
+				for (int x = x0; x <= x1; x++) {
+					final double r = Math.hypot(x - c[0], y - c[1]);
+					if (r < inner || r > radiusCap || masked(others, x, y, mask)) continue;
+					ax.add(x - c[0]);
+					ay.add(y - c[1]);
+					av.add(plane.get(x, y));
+				}
+			if (ax.size < MIN_BACKGROUND_PIXELS) {
+				// neighbours all round (a dense monolayer) or the border: the next particle may do
+				if (failure == null) failure = String.format(Locale.ROOT, "only %d background pixels lie between %s and " +
+					"%s px from the particle at (%s, %s) inside the image and away from its neighbours: too few to " +
+					"measure the background; use a larger max_radius or another particle", ax.size, fmt(round2(inner)),
+					fmt(round2(radiusCap)), fmt(round2(c[0] + plane.minX())), fmt(round2(c[1] + plane.minY())));
+				continue;
+			}
+			used.add(c);
+			final double[] plane3 = robustPlane(ax, ay, av);
+			backgroundSum += plane3[0];
+			for (int i = 0; i < ax.size; i++)
+				residuals.add(av.get(i) - plane3[0] - plane3[1] * ax.get(i) - plane3[2] * ay.get(i));
+			for (int y = y0; y <= y1; y++)
+				for (int x = x0; x <= x1; x++) {
+					final double r = Math.hypot(x - c[0], y - c[1]);
+					final int k = (int) Math.floor(r + 0.5);
+					if (r > radiusCap || k >= bins || masked(others, x, y, mask)) continue;
+					rings[k].add(plane.get(x, y) - plane3[0] - plane3[1] * (x - c[0]) - plane3[2] * (y - c[1]));
+					sumR[k] += r;
+				}
+		}
+		if (used.isEmpty()) throw new InvalidInputException(failure);
+		final double noise = clippedSigma(residuals.toArray());
+		int filled = bins;
+		while (filled > 0 && rings[filled - 1].size == 0)
+			filled--;
+		final double[] radius = new double[filled], height = new double[filled];
+		final int[] count = new int[filled];
+		for (int k = 0; k < filled; k++) {
+			count[k] = rings[k].size;
+			radius[k] = count[k] > 0 ? sumR[k] / count[k] : k;
+			height[k] = count[k] > 0 ? interquartileMean(rings[k].toArray()) : Double.NaN;
+		}
+		return new Pooled(radius, height, count, backgroundSum / used.size(), noise, used);
+	}
+
+	/**
+	 * A robust standard deviation: started from 1.4826 x the median absolute deviation, then the RMS of the values
+	 * within {@value #CLIP_SIGMAS} sigmas of their mean, twice. Unlike the MAD alone it does not jump with the
+	 * integer steps of 8-bit data (MAD of uniform noise of amplitude 5 rounded: 3.7 or 4.4 instead of 2.9), and
+	 * clipping drops a neighbour's light in part of the annulus. Clipping a normal distribution at 3.5 sigmas
+	 * lowers its RMS by 0.3%.
+	 */
+	static double clippedSigma(final double[] values) {
+		if (values.length == 0) return Double.NaN;
+		final double[] dev = values.clone();
+		final double med = quantile(dev, 0.5);
+		for (int i = 0; i < dev.length; i++)
+			dev[i] = Math.abs(values[i] - med);
+		double centre = med, sigma = Math.max(MAD_TO_SIGMA * quantile(dev, 0.5), 0.5);
+		for (int pass = 0; pass < 2; pass++) {
+			double n = 0, sum = 0, sum2 = 0;
+			for (final double v : values)
+				if (Math.abs(v - centre) <= CLIP_SIGMAS * sigma) {
+					n++;
+					sum += v;
+					sum2 += v * v;
+				}
+			if (n < 2) break;
+			centre = sum / n;
+			sigma = Math.sqrt(Math.max(0, sum2 / n - centre * centre));
+		}
+		return sigma;
+	}
+
+	private static boolean masked(final List<double[]> others, final int x, final int y, final double mask) {
+		for (final double[] s : others)
+			if (Math.hypot(x - s[0], y - s[1]) < mask) return true;
+		return false;
+	}
+
+	/**
+	 * The plane {@code a + b x + c y} through the points by least squares, refitted once without the points more
+	 * than 3 robust sigmas off (a neighbour's light in part of the annulus).
+	 */
+	static double[] robustPlane(final DoubleList x, final DoubleList y, final DoubleList v) {
+		final boolean[] use = new boolean[x.size];
+		Arrays.fill(use, true);
+		double[] p = fitPlane(x, y, v, use);
+		final double[] dev = new double[x.size];
+		for (int i = 0; i < dev.length; i++)
+			dev[i] = Math.abs(v.get(i) - p[0] - p[1] * x.get(i) - p[2] * y.get(i));
+		final double cut = 3 * MAD_TO_SIGMA * quantile(dev.clone(), 0.5);
+		int kept = 0;
+		for (int i = 0; i < dev.length; i++)
+			if (use[i] = dev[i] <= cut) kept++;
+		if (kept >= MIN_BACKGROUND_PIXELS) p = fitPlane(x, y, v, use);
+		return p;
+	}
+
+	private static double[] fitPlane(final DoubleList x, final DoubleList y, final DoubleList v, final boolean[] use) {
+		double n = 0, sx = 0, sy = 0, sv = 0, sxx = 0, sxy = 0, syy = 0, sxv = 0, syv = 0;
+		for (int i = 0; i < x.size; i++) {
+			if (!use[i]) continue;
+			final double a = x.get(i), b = y.get(i), c = v.get(i);
+			n++;
+			sx += a;
+			sy += b;
+			sv += c;
+			sxx += a * a;
+			sxy += a * b;
+			syy += b * b;
+			sxv += a * c;
+			syv += b * c;
+		}
+		final double[][] m = { { n, sx, sy }, { sx, sxx, sxy }, { sy, sxy, syy } };
+		final double[] rhs = { sv, sxv, syv };
+		final double det = det3(m);
+		if (!(Math.abs(det) > 1e-9 * Math.max(1, n * sxx * syy))) {
+			// points on a line (an annulus cut to a sliver by the border): a constant
+			return new double[] { sv / Math.max(n, 1), 0, 0 };
+		}
+		final double[] p = new double[3];
+		for (int j = 0; j < 3; j++) {
+			final double[][] mj = { m[0].clone(), m[1].clone(), m[2].clone() };
+			for (int i = 0; i < 3; i++)
+				mj[i][j] = rhs[i];
+			p[j] = det3(mj) / det;
+		}
+		return p;
+	}
+
+	private static double det3(final double[][] m) {
+		return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+			m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+	}
+
+	/** The reach: scanning inwards from the background annulus, the first ring off the background by more than s. */
+	private static double reach(final Pooled p, final double radiusCap, final List<String> warnings) {
+		final double inner = innerBackgroundRadius(radiusCap);
+		int last = -1;
+		for (int k = 0; k < p.radius.length; k++)
+			if (p.radius[k] < inner && p.count[k] > 0) last = k;
+		for (int k = last; k >= 0; k--) {
+			if (p.count[k] == 0 || !(Math.abs(p.height[k]) > p.noise)) continue;
+			if (k == last) {
+				if (warnings != null) warnings.add(String.format(Locale.ROOT, "the profile has not returned to the " +
+					"background by %s px: increase max_radius (r_out is a lower bound)", fmt(round2(inner))));
+				return p.radius[k];
+			}
+			int j = k + 1;
+			while (j < last && p.count[j] == 0)
+				j++;
+			final double a = Math.abs(p.height[k]), b = Math.abs(p.height[j]);
+			return p.radius[k] + (p.radius[j] - p.radius[k]) * (a - p.noise) / (a - b);
+		}
+		return 0;
+	}
+
+	/**
+	 * The brightest height above background, at points at least {@code D/2} from every centre, of two particles
+	 * at contact and of three in a touching triangle (0 where nothing reaches).
+	 */
+	private static double brightestBetween(final Pooled p, final double diameter, final double reach) {
+		final double[][][] configurations = { { { 0, 0 }, { diameter, 0 } }, { { 0, 0 }, { diameter, 0 }, { diameter /
+			2, diameter * Math.sqrt(3) / 2 } } };
+		double best = Double.NEGATIVE_INFINITY;
+		final double half2 = diameter * diameter / 4;
+		for (final double[][] conf : configurations) {
+			final double x0 = -reach, x1 = diameter + reach, y0 = -reach, y1 = diameter + reach;
+			for (double y = y0; y <= y1; y += BRIDGE_STEP_PX)
+				for (double x = x0; x <= x1; x += BRIDGE_STEP_PX) {
+					boolean outside = true;
+					double sum = 0;
+					for (final double[] c : conf) {
+						final double d2 = (x - c[0]) * (x - c[0]) + (y - c[1]) * (y - c[1]);
+						if (d2 < half2) {
+							outside = false;
+							break;
+						}
+						sum += height(p, Math.sqrt(d2), reach);
+					}
+					if (outside) best = Math.max(best, sum);
+				}
+		}
+		return best;
+	}
+
+	/** The pooled profile at radius {@code r}, linearly interpolated; 0 beyond the reach. */
+	private static double height(final Pooled p, final double r, final double reach) {
+		if (r > reach) return 0;
+		int below = -1, above = -1;
+		for (int k = 0; k < p.radius.length; k++) {
+			if (p.count[k] == 0) continue;
+			if (p.radius[k] <= r) below = k;
+			else {
+				above = k;
+				break;
+			}
+		}
+		if (below < 0) return above < 0 ? 0 : p.height[above];
+		if (above < 0) return p.height[below];
+		return p.height[below] + (p.height[above] - p.height[below]) * (r - p.radius[below]) / (p.radius[above] -
+			p.radius[below]);
+	}
+
+	/** Distance of each point to its nearest other point (infinite for a lone point). */
+	static double[] nearestNeighbourDistances(final double[][] xy) {
+		final double[] nn = new double[xy.length];
+		Arrays.fill(nn, Double.POSITIVE_INFINITY);
+		for (int i = 0; i < xy.length; i++)
+			for (int j = i + 1; j < xy.length; j++) {
+				final double d = Math.hypot(xy[i][0] - xy[j][0], xy[i][1] - xy[j][1]);
+				nn[i] = Math.min(nn[i], d);
+				nn[j] = Math.min(nn[j], d);
+			}
+		return nn;
+	}
+
+	/** Up to about a million pixels of the frame on a regular grid. */
+	private static double[] sample(final Plane plane) {
+		final long n = (long) plane.width() * plane.height();
+		final int stride = (int) Math.max(1, Math.ceil(Math.sqrt(n / 1e6)));
+		final DoubleList s = new DoubleList();
+		for (int y = 0; y < plane.height(); y += stride)
+			for (int x = 0; x < plane.width(); x += stride)
+				s.add(plane.get(x, y));
+		return s.toArray();
+	}
+
+	/**
+	 * The mean of the middle half of the values (sorted in place): as robust as the median to a neighbour covering
+	 * up to a quarter of a ring, but not stuck on the integer steps of 8-bit data as a median is.
+	 */
+	static double interquartileMean(final double[] values) {
+		Arrays.sort(values);
+		final int n = values.length, lo = n / 4, hi = n - n / 4;
+		double sum = 0;
+		for (int i = lo; i < hi; i++)
+			sum += values[i];
+		return sum / (hi - lo);
+	}
+
+	/** The {@code q}-quantile (0..1) of the values (sorted in place), by linear interpolation. */
+	static double quantile(final double[] values, final double q) {
+		if (values.length == 0) return Double.NaN;
+		Arrays.sort(values);
+		final double pos = q * (values.length - 1);
+		final int i = (int) Math.floor(pos);
+		if (i >= values.length - 1) return values[values.length - 1];
+		return values[i] + (pos - i) * (values[i + 1] - values[i]);
+	}
+
+	private static double innerBackgroundRadius(final double radiusCap) {
+		return radiusCap * (1 - BACKGROUND_ANNULUS_PERCENT / 100.0);
+	}
+
+	private static double peak(final Plane plane, final double cx, final double cy, final double within) {
+		double peak = Double.NEGATIVE_INFINITY;
+		final int x0 = (int) Math.max(0, Math.floor(cx - within)), x1 = (int) Math.min(plane.width() - 1, Math.ceil(cx +
+			within));
+		final int y0 = (int) Math.max(0, Math.floor(cy - within)), y1 = (int) Math.min(plane.height() - 1, Math.ceil(
+			cy + within));
+		for (int y = y0; y <= y1; y++)
+			for (int x = x0; x <= x1; x++)
+				if (Math.hypot(x - cx, y - cy) <= within) peak = Math.max(peak, plane.get(x, y));
+		return peak;
+	}
+
+	private static double farthestCorner(final double x, final double y, final int w, final int h) {
+		final double dx = Math.max(x, w - 1 - x), dy = Math.max(y, h - 1 - y);
+		return Math.hypot(dx, dy);
+	}
+
+	private static double round2(final double v) {
+		return Math.round(v * 100) / 100.0;
+	}
+
+	private static String fmt(final double v) {
+		if (v == Math.rint(v) && Math.abs(v) < 1e15) return Long.toString((long) v);
+		return String.format(Locale.ROOT, "%.4g", v);
+	}
+
+	/** A growable array of doubles. */
+	static final class DoubleList {
+		private double[] a = new double[64];
+		int size;
+
+		void add(final double v) {
+			if (size == a.length) a = Arrays.copyOf(a, 2 * size);
+			a[size++] = v;
+		}
+
+		double get(final int i) {
+			return a[i];
+		}
+
+		double[] toArray() {
+			return Arrays.copyOf(a, size);
+		}
+	}
+}

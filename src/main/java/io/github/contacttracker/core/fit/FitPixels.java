@@ -1,0 +1,357 @@
+/*-
+ * #%L
+ * Contact Tracker: sub-pixel localization of colloidal particles, also when they touch.
+ * %%
+ * Copyright (C) 2026 Contact Tracker developers
+ * %%
+ * This program is free software: you can redistribute it and/or modify
+ * it under the terms of the GNU General Public License as
+ * published by the Free Software Foundation, either version 3 of the
+ * License, or (at your option) any later version.
+ * 
+ * This program is distributed in the hope that it will be useful,
+ * but WITHOUT ANY WARRANTY; without even the implied warranty of
+ * MERCHANTABILITY or FITNESS FOR A PARTICULAR PURPOSE.  See the
+ * GNU General Public License for more details.
+ * 
+ * You should have received a copy of the GNU General Public
+ * License along with this program.  If not, see
+ * <http://www.gnu.org/licenses/gpl-3.0.html>.
+ * #L%
+ */
+package io.github.contacttracker.core.fit;
+
+import io.github.contacttracker.core.image.Censoring;
+import io.github.contacttracker.core.image.Plane;
+import io.github.contacttracker.core.profile.EmpiricalProfile;
+import io.github.contacttracker.core.radial.Estimate;
+import io.github.contacttracker.core.radial.Particle;
+
+/**
+ * The pixels of a group's fit: positions, values, other groups' light, their coordinates {@code u, v} in the
+ * background plane's frame (origin and unit of the group's box) and the plane's block of J^T J, computed once
+ * for every iteration.
+ * <p>
+ * Also where they come from ({@link #gather}) and which of them a fit uses where the pixel type clips
+ * ({@link #select}): the pixels of {@link GroupFit}'s least squares, whose passes are {@link NormalEquations}.
+ */
+record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, double[] u, double[] v,
+	double[] backgroundBlock, double[] extent, int[] candidates)
+{
+
+	FitPixels(final int[] x, final int[] y, final double[] value, final double[] fixed, final int count,
+		final double mx, final double my, final double unit)
+	{
+		this(x, y, value, fixed, count, planeCoordinate(x, count, mx, unit), planeCoordinate(y, count, my, unit),
+			null);
+	}
+
+	/** @return the index among the candidates of pixel {@code j} (a subset's; the candidates' own: j) */
+	int candidate(final int j) {
+		return candidates == null ? j : candidates[j];
+	}
+
+	private FitPixels(final int[] x, final int[] y, final double[] value, final double[] fixed, final int count,
+		final double[] u, final double[] v, final int[] candidates)
+	{
+		this(x, y, value, fixed, count, u, v, summary(u, v, fixed, count), candidates);
+	}
+
+	private FitPixels(final int[] x, final int[] y, final double[] value, final double[] fixed, final int count,
+		final double[] u, final double[] v, final double[] summary, final int[] candidates)
+	{
+		this(x, y, value, fixed, count, u, v, java.util.Arrays.copyOf(summary, 9), java.util.Arrays.copyOfRange(
+			summary, 9, 15), candidates);
+	}
+
+	/**
+	 * In one pass: the background plane's block of J^T J, {1, u, v} x {1, u, v} row by row (the same at every
+	 * step), then the least and greatest u, v and other groups' light ({@link #extent}).
+	 */
+	private static double[] summary(final double[] u, final double[] v, final double[] fixed, final int count) {
+		double su = 0, sv = 0, suu = 0, suv = 0, svv = 0;
+		double u0 = Double.POSITIVE_INFINITY, u1 = Double.NEGATIVE_INFINITY, v0 = u0, v1 = u1, f0 = u0, f1 = u1;
+		for (int i = 0; i < count; i++) {
+			final double ui = u[i], vi = v[i], fi = fixed[i];
+			su += ui;
+			sv += vi;
+			suu += ui * ui;
+			suv += ui * vi;
+			svv += vi * vi;
+			// comparisons, not Math.min/max: no NaN here, and the client compiler calls those
+			if (ui < u0) u0 = ui;
+			if (ui > u1) u1 = ui;
+			if (vi < v0) v0 = vi;
+			if (vi > v1) v1 = vi;
+			if (fi < f0) f0 = fi;
+			if (fi > f1) f1 = fi;
+		}
+		return new double[] { count, su, sv, su, suu, suv, sv, suv, svv, u0, u1, v0, v1, f0, f1 };
+	}
+
+	/** @return the pixels marked in {@code keep}, in the same order (these pixels if all are) */
+	FitPixels subset(final boolean[] keep) {
+		int m = 0;
+		for (int i = 0; i < count; i++)
+			if (keep[i]) m++;
+		if (m == count) return this;
+		final int[] sx = new int[m], sy = new int[m];
+		final double[] sv = new double[m], sf = new double[m], su = new double[m], sw = new double[m];
+		final int[] from = new int[m];
+		for (int i = 0, j = 0; i < count; i++) {
+			if (!keep[i]) continue;
+			from[j] = candidate(i);
+			sx[j] = x[i];
+			sy[j] = y[i];
+			sv[j] = value[i];
+			sf[j] = fixed[i];
+			su[j] = u[i];
+			sw[j++] = v[i];
+		}
+		return new FitPixels(sx, sy, sv, sf, m, su, sw, from);
+	}
+
+	private static double[] planeCoordinate(final int[] c, final int count, final double origin, final double unit) {
+		// one division per distinct coordinate (a row or column of the group's box), not one per pixel
+		int lo = Integer.MAX_VALUE, hi = Integer.MIN_VALUE;
+		for (int i = 0; i < count; i++) {
+			if (c[i] < lo) lo = c[i];
+			if (c[i] > hi) hi = c[i];
+		}
+		final double[] table = new double[count == 0 ? 0 : hi - lo + 1];
+		for (int k = 0; k < table.length; k++)
+			table[k] = (lo + k - origin) / unit;
+		final double[] out = new double[count];
+		for (int i = 0; i < count; i++)
+			out[i] = table[c[i] - lo];
+		return out;
+	}
+
+	/**
+	 * The pixels a group's fit may use: within each member's window (at its starting centre and scale), not clipped,
+	 * with the light of the reliable particles outside the group at their current centres, amplitudes and scales.
+	 * Read row by row, each row as the spans the members' windows cover: no membership test per pixel.
+	 * (Apart from the fit's loop, so that the compiler sees small methods, each with its own pixel loop.)
+	 */
+	static FitPixels gather(final Plane plane, final Particle[] ps, final Estimate[] e, final int[] group,
+		final EmpiricalProfile profile, final double window, final Censoring censoring)
+	{
+		final double R = profile.radius(), W = Math.min(R, window);
+		// The pixels: within each member's window (at its starting centre and scale), not clipped.
+		int x0 = Integer.MAX_VALUE, y0 = Integer.MAX_VALUE, x1 = Integer.MIN_VALUE, y1 = Integer.MIN_VALUE;
+		for (final int k : group) {
+			final double reach = W * GroupFit.scaleOf(e[k]);
+			x0 = Math.min(x0, (int) Math.floor(e[k].x() - reach));
+			x1 = Math.max(x1, (int) Math.ceil(e[k].x() + reach));
+			y0 = Math.min(y0, (int) Math.floor(e[k].y() - reach));
+			y1 = Math.max(y1, (int) Math.ceil(e[k].y() + reach));
+		}
+		x0 = Math.max(0, x0);
+		y0 = Math.max(0, y0);
+		x1 = Math.min(plane.width() - 1, x1);
+		y1 = Math.min(plane.height() - 1, y1);
+		final double mx = 0.5 * (x0 + x1), my = 0.5 * (y0 + y1), unit = Math.max(1, 0.5 * (x1 - x0));
+		final int n = group.length;
+		final double[] gx = new double[n], gy = new double[n], reach2 = new double[n];
+		for (int q = 0; q < n; q++) {
+			final Estimate m = e[group[q]];
+			final double reach = W * GroupFit.scaleOf(m);
+			gx[q] = m.x();
+			gy[q] = m.y();
+			reach2[q] = reach * reach;
+		}
+		final int cap = Math.max(0, (x1 - x0 + 1) * (y1 - y0 + 1));
+		final int[] px = new int[cap], py = new int[cap];
+		final double[] pv = new double[cap];
+		final int[] spans = new int[2 * n];
+		final int[] rowStart = new int[Math.max(0, y1 - y0 + 2)]; // the first pixel of each row, and the end
+		int count = 0;
+		for (int y = y0; y <= y1; y++) {
+			rowStart[y - y0] = count;
+			final int m = spans(y, x0, x1, gx, gy, reach2, spans);
+			for (int s = 0; s < m; s += 2) {
+				final int a = spans[s], b = spans[s + 1];
+				plane.read(a, b, y, y, pv, count);
+				count = keep(censoring, y, a, b, px, py, pv, count);
+			}
+		}
+		if (count == 0) return new FitPixels(px, py, pv, new double[0], 0, mx, my, unit); // (none: not fitted)
+		rowStart[rowStart.length - 1] = count;
+		// The light of reliable particles outside the group, at their current centres, amplitudes and scales: on
+		// the rows within their reach only.
+		final double[] fixed = new double[count];
+		for (int k = 0; k < ps.length; k++) {
+			if (!ps[k].reliable() || GroupFit.contains(group, k)) continue;
+			final double kx = e[k].x(), ky = e[k].y(), ks = GroupFit.scaleOf(e[k]), ka = GroupFit.amplitudeOf(e[k]);
+			final double reach = R * ks;
+			if (kx < x0 - reach || kx > x1 + reach || ky < y0 - reach || ky > y1 + reach) continue;
+			final int rows = rowStart.length - 1;
+			final int from = rowStart[Math.max(0, Math.min(rows, (int) Math.floor(ky - reach) - y0))];
+			final int to = rowStart[Math.max(0, Math.min(rows, (int) Math.ceil(ky + reach) - y0 + 1))];
+			addLight(px, py, fixed, from, to, kx, ky, ks, ka, reach, profile);
+		}
+		return new FitPixels(px, py, pv, fixed, count, mx, my, unit);
+	}
+
+	/** Adds to {@code fixed} over pixels {@code from} to {@code to} the light of a particle outside the group. */
+	private static void addLight(final int[] px, final int[] py, final double[] fixed, final int from, final int to,
+		final double kx, final double ky, final double ks, final double ka, final double reach,
+		final EmpiricalProfile profile)
+	{
+		for (int i = from; i < to; i++) {
+			final double dx = px[i] - kx, dy = py[i] - ky, d2 = dx * dx + dy * dy;
+			if (d2 < reach * reach) fixed[i] += ka * profile.lookup(Math.sqrt(d2) / ks);
+		}
+	}
+
+	/**
+	 * The x ranges of row {@code y} within {@code [x0, x1]} where some member's window holds a pixel ({@code (x -
+	 * gx)^2 + (y - gy)^2 < reach2}, the very test of a pixel), merged and in increasing order, as pairs of inclusive
+	 * ends in {@code out}; returns twice their number.
+	 */
+	private static int spans(final int y, final int x0, final int x1, final double[] gx, final double[] gy,
+		final double[] reach2, final int[] out)
+	{
+		int m = 0;
+		for (int q = 0; q < gx.length; q++) {
+			final double dy = y - gy[q], dy2 = dy * dy;
+			// the pixel nearest the centre: if it is out, the whole row is (the test grows with |x - gx|)
+			final int c = (int) Math.max(x0, Math.min(x1, Math.rint(gx[q])));
+			if (!within(c, y, gx[q], dy2, reach2[q])) continue;
+			final double half = Math.sqrt(Math.max(0, reach2[q] - dy2));
+			// the ends from the root, then made exact by the test itself
+			int a = (int) Math.max(x0, Math.min(c, Math.ceil(gx[q] - half)));
+			while (a > x0 && within(a - 1, y, gx[q], dy2, reach2[q]))
+				a--;
+			while (!within(a, y, gx[q], dy2, reach2[q]))
+				a++;
+			int b = (int) Math.min(x1, Math.max(c, Math.floor(gx[q] + half)));
+			while (b < x1 && within(b + 1, y, gx[q], dy2, reach2[q]))
+				b++;
+			while (!within(b, y, gx[q], dy2, reach2[q]))
+				b--;
+			// insert [a, b] in order of start, merging overlapping or adjacent spans
+			int i = 0;
+			while (i < m && out[i + 1] < a - 1)
+				i += 2;
+			int j = i;
+			while (j < m && out[j] <= b + 1) {
+				a = Math.min(a, out[j]);
+				b = Math.max(b, out[j + 1]);
+				j += 2;
+			}
+			// spans i .. j-2 are merged into [a, b]
+			System.arraycopy(out, j, out, i + 2, m - j);
+			m += i + 2 - j;
+			out[i] = a;
+			out[i + 1] = b;
+		}
+		return m;
+	}
+
+	private static boolean within(final int x, final int y, final double gx, final double dy2, final double reach2) {
+		final double dx = x - gx;
+		return dx * dx + dy2 < reach2;
+	}
+
+	/**
+	 * Keeps, of the values just read into {@code pv} from index {@code count} (row {@code y}, x from {@code a} to
+	 * {@code b}), the unclipped ones with their positions, in order; returns the new count.
+	 */
+	private static int keep(final Censoring censoring, final int y, final int a, final int b, final int[] px,
+		final int[] py, final double[] pv, int count)
+	{
+		for (int x = a, i = count; x <= b; x++, i++) {
+			final double v = pv[i];
+			if (censoring.clipped(v)) continue; // censored: its true value is unknown
+			px[count] = x;
+			py[count] = y;
+			pv[count++] = v;
+		}
+		return count;
+	}
+
+	/**
+	 * Marks every candidate used and returns true if cheap bounds on the model show that all are usable; else returns
+	 * false and leaves {@code use} unchanged (the caller chooses from the model itself).
+	 */
+	static boolean allUsable(final FitPixels candidates, final double[] p, final int n,
+		final EmpiricalProfile profile, final Censoring censoring, final boolean[] use)
+	{
+		if (!withinBounds(candidates, p, n, profile, censoring)) return false;
+		java.util.Arrays.fill(use, true);
+		return true;
+	}
+
+	/**
+	 * Marks in {@code use} the candidates whose model value at parameters {@code p} the censoring rule keeps. Where
+	 * the model at {@code p} is already known, on the pixels {@code known} (a subset of the candidates; {@code
+	 * knownModels} in its order) from the fit's latest pass, only the other candidates are evaluated; both null: none
+	 * known.
+	 *
+	 * @return whether any mark changed
+	 */
+	static boolean select(final FitPixels candidates, final double[] p, final int n,
+		final EmpiricalProfile profile, final Censoring censoring, final boolean[] use, final FitPixels known,
+		final double[] knownModels)
+	{
+		final int b0 = GroupFit.PER_PARTICLE * n;
+		boolean changed = false;
+		// usually no model value comes near a clip level (a shortcut where the model is not known already)
+		if (known == null && withinBounds(candidates, p, n, profile, censoring)) {
+			for (int i = 0; i < candidates.count(); i++) {
+				changed |= !use[i];
+				use[i] = true;
+			}
+			return changed;
+		}
+		final double[] models;
+		if (known != null && known.count() == candidates.count()) models = knownModels; // known everywhere
+		else {
+			models = new double[candidates.count()];
+			java.util.Arrays.fill(models, Double.NaN);
+			if (known != null) for (int j = 0; j < known.count(); j++)
+				models[known.candidate(j)] = knownModels[j];
+		}
+		for (int i = 0; i < candidates.count(); i++) {
+			if (!Double.isNaN(models[i])) {
+				final boolean usable = censoring.usable(models[i]);
+				changed |= usable != use[i];
+				use[i] = usable;
+				continue;
+			}
+			double model = p[b0] + p[b0 + 1] * candidates.u()[i] + p[b0 + 2] * candidates.v()[i] + candidates.fixed()[i];
+			for (int q = 0; q < n; q++) {
+				final int b = GroupFit.PER_PARTICLE * q;
+				final double dx = candidates.x()[i] - p[b], dy = candidates.y()[i] - p[b + 1];
+				model += p[b + 2] * profile.lookup(Math.sqrt(dx * dx + dy * dy) / p[b + 3]);
+			}
+			final boolean usable = censoring.usable(model);
+			changed |= usable != use[i];
+			use[i] = usable;
+		}
+		return changed;
+	}
+
+	/**
+	 * @return whether bounds on the model over all candidates, at no cost per pixel, lie where the censoring rule
+	 *         keeps every pixel: the background plane at its extremes over the pixels' extent plus other groups'
+	 *         light at its extremes, each member's light between its amplitude times the profile's least and
+	 *         greatest values (or 0). Looser than the extremes of their sum; where they do not settle it, the caller
+	 *         chooses from the model itself, with the same result.
+	 */
+	private static boolean withinBounds(final FitPixels candidates, final double[] p, final int n,
+		final EmpiricalProfile profile, final Censoring censoring)
+	{
+		final int b0 = GroupFit.PER_PARTICLE * n;
+		final double[] x = candidates.extent(); // u0, u1, v0, v1, f0, f1
+		final double pu = p[b0 + 1], pv = p[b0 + 2];
+		double lo = p[b0] + Math.min(pu * x[0], pu * x[1]) + Math.min(pv * x[2], pv * x[3]) + x[4];
+		double hi = p[b0] + Math.max(pu * x[0], pu * x[1]) + Math.max(pv * x[2], pv * x[3]) + x[5];
+		for (int q = 0; q < n; q++) {
+			lo += profile.leastLight(p[GroupFit.PER_PARTICLE * q + 2]);
+			hi += profile.greatestLight(p[GroupFit.PER_PARTICLE * q + 2]);
+		}
+		return censoring.usableBetween(lo, hi);
+	}
+}

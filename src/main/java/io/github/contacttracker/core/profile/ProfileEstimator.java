@@ -1,0 +1,395 @@
+/*-
+ * #%L
+ * Contact Tracker: sub-pixel localization of colloidal particles, also when they touch.
+ * %%
+ * Copyright (C) 2026 Contact Tracker developers
+ * %%
+ * This program is free software: you can redistribute it and/or modify
+ * it under the terms of the GNU General Public License as
+ * published by the Free Software Foundation, either version 3 of the
+ * License, or (at your option) any later version.
+ * 
+ * This program is distributed in the hope that it will be useful,
+ * but WITHOUT ANY WARRANTY; without even the implied warranty of
+ * MERCHANTABILITY or FITNESS FOR A PARTICULAR PURPOSE.  See the
+ * GNU General Public License for more details.
+ * 
+ * You should have received a copy of the GNU General Public
+ * License along with this program.  If not, see
+ * <http://www.gnu.org/licenses/gpl-3.0.html>.
+ * #L%
+ */
+package io.github.contacttracker.core.profile;
+
+import java.util.List;
+
+import io.github.contacttracker.core.Flag;
+import io.github.contacttracker.core.Localization;
+import io.github.contacttracker.core.image.Censoring;
+import io.github.contacttracker.core.image.Plane;
+import io.github.contacttracker.core.math.SymmetricSolver;
+import net.imglib2.RandomAccessibleInterval;
+import net.imglib2.type.numeric.RealType;
+
+/**
+ * Estimates a particle's radial profile from frames whose particle centres are (approximately) known: every
+ * pixel within {@code radius} of a particle is modelled as background plus the sum of the profiles of all
+ * particles reaching it, {@code I(x) = B + sum_k P(|x - c_k|)}, and the profile's spline coefficients and
+ * {@code B} are found by linear least squares. Overlaps are modelled, not avoided, so the profile can be
+ * measured even where no particle has an undistorted side (long-range profiles at contact).
+ * <p>
+ * A light penalty on the coefficients' second differences keeps sparsely sampled knots (near r = 0) stable.
+ * Pixels near spots flagged as merged or degenerate are left out, since their centres do not describe them; so
+ * are clipped pixels and, given the previous estimate, those near a clip level ({@link Censoring}).
+ * Not thread-safe.
+ */
+public final class ProfileEstimator {
+
+	/**
+	 * The profile is measured out to this multiple of {@code r_out}: {@code r_out} marks where the light falls
+	 * below the noise, but the faint tail beyond still tilts a neighbour's gradients at the nanometre level, so
+	 * the model must carry it.
+	 */
+	public static final double REACH_FACTOR = 1.5;
+	/** Knot spacing of the profile spline (px). */
+	public static final double SPACING = 1.0;
+	/** Weight of the smoothness penalty, relative to the mean diagonal of the normal matrix. */
+	static final double SMOOTHNESS = 1e-4;
+
+	private final double radius;
+	private final int count;
+	private final double[][] ata;
+	private final double[] atb;
+	private int samples;
+	private int profileSamples;
+
+	/** @param radius the profile's reach (px): use {@code r_out} */
+	public ProfileEstimator(final double radius) {
+		if (!(radius > 3 * SPACING)) throw new IllegalArgumentException("profile radius must exceed " + 3 * SPACING +
+			" px, not " + radius);
+		this.count = (int) Math.round(radius / SPACING) - 1;
+		this.radius = (count + 1) * SPACING;
+		ata = new double[count + 3][count + 3];
+		atb = new double[count + 3];
+	}
+
+	/** @return an estimator reaching {@link #REACH_FACTOR} times {@code rOut} */
+	public static ProfileEstimator forROut(final double rOut) {
+		return new ProfileEstimator(REACH_FACTOR * rOut);
+	}
+
+	/** @return the number of pixel values added so far */
+	public int samples() {
+		return samples;
+	}
+
+	/** @return the number of pixel values added so far that lie within reach of a particle */
+	public int profileSamples() {
+		return profileSamples;
+	}
+
+	/**
+	 * Adds a frame with its spots (positions in the frame's coordinates). Spots flagged merged or degenerate
+	 * are masked out. Each spot's fitted amplitude and radial scale are used where known (divided by their means
+	 * {@code amplitudeNorm} and {@code scaleNorm}, which fix the profile's own height and size).
+	 */
+	public <T extends RealType<T>> void add(final RandomAccessibleInterval<T> frame, final List<Localization> spots,
+		final double amplitudeNorm, final double scaleNorm)
+	{
+		add(frame, spots, amplitudeNorm, scaleNorm, null, 0);
+	}
+
+	/**
+	 * As {@link #add(RandomAccessibleInterval, List, double, double)}, the spots fitted with {@code previous}: where
+	 * its model comes near a clip level of the frame (of noise {@code noise}), pixels are left out (see
+	 * {@link Censoring}); with {@code previous} null only the clipped pixels are.
+	 */
+	public <T extends RealType<T>> void add(final RandomAccessibleInterval<T> frame, final List<Localization> spots,
+		final double amplitudeNorm, final double scaleNorm, final EmpiricalProfile previous, final double noise)
+	{
+		final Plane plane = Plane.of(frame);
+		final int n = spots.size();
+		final double[] cx = new double[n], cy = new double[n], amp = new double[n], scale = new double[n];
+		final boolean[] masked = new boolean[n];
+		for (int k = 0; k < n; k++) {
+			final Localization s = spots.get(k);
+			cx[k] = s.x() - plane.minX();
+			cy[k] = s.y() - plane.minY();
+			amp[k] = Double.isFinite(s.amplitude()) ? s.amplitude() / amplitudeNorm : 1;
+			scale[k] = Double.isFinite(s.scale()) && s.scale() > 0 ? s.scale() / scaleNorm : 1;
+			masked[k] = s.has(Flag.MERGED) || s.has(Flag.DEGENERATE);
+		}
+		add(plane, cx, cy, amp, scale, masked, previous == null ? null : new Previous(previous, Censoring.of(plane,
+			noise), amplitudeNorm, scaleNorm));
+	}
+
+	/**
+	 * The previous estimate's model, which chooses the pixels left out near the clip levels: its profile, the rule,
+	 * and the norms that turn the spots' amplitudes and scales given to {@code add} back into those fitted with it.
+	 */
+	public record Previous(EmpiricalProfile profile, Censoring censoring, double amplitudeNorm, double scaleNorm) {}
+
+	/** Adds a frame with its spots, taken as alike (amplitude and scale 1 for spots without fitted ones). */
+	public <T extends RealType<T>> void add(final RandomAccessibleInterval<T> frame, final List<Localization> spots) {
+		add(frame, spots, 1, 1);
+	}
+
+	/**
+	 * @return {mean amplitude, geometric mean scale} of the spots' fitted values (1 where none is known), over
+	 *         spots that are neither merged nor degenerate
+	 */
+	public static double[] norms(final List<Localization> spots) {
+		double a = 0, s = 0;
+		int n = 0;
+		for (final Localization l : spots) {
+			if (l.has(Flag.MERGED) || l.has(Flag.DEGENERATE) || !Double.isFinite(l.amplitude()) || !(l.scale() > 0))
+				continue;
+			a += l.amplitude();
+			s += Math.log(l.scale());
+			n++;
+		}
+		return n == 0 || !(a > 0) ? new double[] { 1, 1 } : new double[] { a / n, Math.exp(s / n) };
+	}
+
+	/** Adds a plane with centres in its local coordinates, particles alike; pixels near masked centres are skipped. */
+	void add(final Plane plane, final double[] cx, final double[] cy, final boolean[] masked) {
+		final double[] ones = new double[cx.length];
+		java.util.Arrays.fill(ones, 1);
+		add(plane, cx, cy, ones, ones, masked);
+	}
+
+	/** As {@link #add(Plane, double[], double[], double[], double[], boolean[], Previous)} without a previous model. */
+	void add(final Plane plane, final double[] cx, final double[] cy, final double[] amp, final double[] scale,
+		final boolean[] masked)
+	{
+		add(plane, cx, cy, amp, scale, masked, null);
+	}
+
+	/**
+	 * Adds a plane with centres in its local coordinates, each particle drawn as {@code amp_k P(r / scale_k)};
+	 * pixels near masked centres, and clipped pixels (saturated, or at 0 where a dark ring falls below it), are
+	 * skipped, and so are those where the {@code previous} model (if not null) comes near a clip level.
+	 */
+	public void add(final Plane plane, final double[] cx, final double[] cy, final double[] amp, final double[] scale,
+		final boolean[] masked, final Previous previous)
+	{
+		final int n = cx.length, w = plane.width(), h = plane.height();
+		final double saturation = plane.saturation(), floor = plane.floor();
+		final int[] near = new int[n];
+		final int[] idx = new int[4 * n + 3];
+		final double[] val = new double[4 * n + 3];
+		final int bIndex = count;
+		double maxScale = 1;
+		for (int k = 0; k < n; k++)
+			maxScale = Math.max(maxScale, scale[k]);
+		final double mx = 0.5 * (w - 1), my = 0.5 * (h - 1);
+		// The previous model decides which pixels are too near a clip level. Where a pixel is within reach of one
+		// particle alone whose whole range of light keeps the model usable (or of none, and the background is), the
+		// decision is known without evaluating it.
+		final boolean[] aloneUsable = new boolean[n];
+		final int[] inReach = new int[n];
+		final double[] inReachR = new double[n];
+		final boolean backgroundUsable = previous == null || previous.censoring().usable(previous.profile()
+			.background());
+		if (previous != null) for (int k = 0; k < n; k++) {
+			final double a = previous.amplitudeNorm() * amp[k], b = previous.profile().background();
+			aloneUsable[k] = previous.censoring().usableBetween(b + previous.profile().leastLight(a), b + previous
+				.profile().greatestLight(a));
+		}
+		final double[] values = new double[w]; // each row read once (Plane.read), not pixel by pixel
+		for (int y = 0; y < h; y++) {
+			plane.read(0, w - 1, y, y, values, 0);
+			int nn = 0;
+			for (int k = 0; k < n; k++)
+				if (Math.abs(y - cy[k]) < radius * maxScale) near[nn++] = k;
+			for (int x = 0; x < w; x++) {
+				final double v = values[x];
+				if (v >= saturation || v <= floor) continue;
+				int len = 0, reached = 0;
+				boolean skip = false;
+				for (int q = 0; q < nn && !skip; q++) {
+					final int k = near[q];
+					final double dx = x - cx[k], dy = y - cy[k], d2 = dx * dx + dy * dy, reach = radius * scale[k];
+					if (d2 >= reach * reach) continue;
+					if (masked[k]) {
+						skip = true;
+						break;
+					}
+					final double r = Math.sqrt(d2), u = r / (SPACING * scale[k]);
+					inReach[reached] = k;
+					inReachR[reached++] = r;
+					final int i = (int) u;
+					// the four cubic B-spline weights of knots i-1..i+2 (EmpiricalProfile.bspline at u - j)
+					final double f = u - i, g = 1 - f, f3 = f * f * f, g3 = g * g * g;
+					final double a = amp[k];
+					len = term(idx, val, len, i - 1, a * g3 / 6);
+					len = term(idx, val, len, i, a * (2.0 / 3 - f * f + 0.5 * f3));
+					len = term(idx, val, len, i + 1, a * (2.0 / 3 - g * g + 0.5 * g3));
+					len = term(idx, val, len, i + 2, a * f3 / 6);
+				}
+				if (skip || previous != null && !usable(previous, reached, inReach, inReachR, amp, scale, aloneUsable,
+					backgroundUsable)) continue;
+				if (len == 0 || len == 4 && idx[1] == idx[0] + 1 && idx[2] == idx[1] + 1 && idx[3] == idx[2] + 1) {
+					// The common cases without the general outer product: the background alone, or one particle's
+					// four distinct knots; every sum receives the same products as there.
+					final double bu = (x - mx) / RAMP_UNIT, bv = (y - my) / RAMP_UNIT;
+					atb[bIndex] += v;
+					atb[bIndex + 1] += bu * v;
+					atb[bIndex + 2] += bv * v;
+					ata[bIndex][bIndex] += 1;
+					ata[bIndex + 1][bIndex] += bu;
+					ata[bIndex + 1][bIndex + 1] += bu * bu;
+					ata[bIndex + 2][bIndex] += bv;
+					ata[bIndex + 2][bIndex + 1] += bv * bu;
+					ata[bIndex + 2][bIndex + 2] += bv * bv;
+					samples++;
+					if (len == 0) continue;
+					addOneParticle(idx[0], val, v, bu, bv);
+					profileSamples++;
+					continue;
+				}
+				// the background plane B + bx u + by v, about the frame's centre (u, v in hundreds of px)
+				idx[len] = bIndex;
+				val[len++] = 1;
+				idx[len] = bIndex + 1;
+				val[len++] = (x - mx) / RAMP_UNIT;
+				idx[len] = bIndex + 2;
+				val[len++] = (y - my) / RAMP_UNIT;
+				// The outer product, lower triangle only (by index: mirrored in estimate()), each unordered pair of
+				// terms once; two terms on one coefficient (the mirror at r = 0, two particles) add twice.
+				for (int a = 0; a < len; a++) {
+					final int ia = idx[a];
+					final double va = val[a];
+					final double[] row = ata[ia];
+					atb[ia] += va * v;
+					row[ia] += va * va;
+					for (int b = 0; b < a; b++) {
+						final int ib = idx[b];
+						final double pv = va * val[b];
+						if (ib < ia) row[ib] += pv;
+						else if (ib > ia) ata[ib][ia] += pv;
+						else row[ia] += 2 * pv;
+					}
+				}
+				samples++;
+				if (len > 3) profileSamples++;
+			}
+		}
+	}
+
+	/**
+	 * Adds one pixel's products of four consecutive coefficients from {@code c} (weights {@code wt[0..3]}) with
+	 * themselves, with the background's terms {@code 1, bu, bv} and with the value {@code v}.
+	 */
+	private void addOneParticle(final int c, final double[] wt, final double v, final double bu, final double bv) {
+		final double w0 = wt[0], w1 = wt[1], w2 = wt[2], w3 = wt[3];
+		atb[c] += w0 * v;
+		atb[c + 1] += w1 * v;
+		atb[c + 2] += w2 * v;
+		atb[c + 3] += w3 * v;
+		final double[] r0 = ata[c], r1 = ata[c + 1], r2 = ata[c + 2], r3 = ata[c + 3];
+		r0[c] += w0 * w0;
+		r1[c] += w1 * w0;
+		r1[c + 1] += w1 * w1;
+		r2[c] += w2 * w0;
+		r2[c + 1] += w2 * w1;
+		r2[c + 2] += w2 * w2;
+		r3[c] += w3 * w0;
+		r3[c + 1] += w3 * w1;
+		r3[c + 2] += w3 * w2;
+		r3[c + 3] += w3 * w3;
+		final double[] b0 = ata[count], b1 = ata[count + 1], b2 = ata[count + 2];
+		b0[c] += 1 * w0;
+		b0[c + 1] += 1 * w1;
+		b0[c + 2] += 1 * w2;
+		b0[c + 3] += 1 * w3;
+		b1[c] += bu * w0;
+		b1[c + 1] += bu * w1;
+		b1[c + 2] += bu * w2;
+		b1[c + 3] += bu * w3;
+		b2[c] += bv * w0;
+		b2[c + 1] += bv * w1;
+		b2[c + 2] += bv * w2;
+		b2[c + 3] += bv * w3;
+	}
+
+	/**
+	 * @return whether the {@code previous} model keeps a pixel within reach of the {@code reached} particles
+	 *         {@code inReach} (at distances {@code inReachR}); evaluated only when the particle alone, or the
+	 *         background, does not settle it
+	 */
+	private static boolean usable(final Previous previous, final int reached, final int[] inReach,
+		final double[] inReachR, final double[] amp, final double[] scale, final boolean[] aloneUsable,
+		final boolean backgroundUsable)
+	{
+		if (reached == 0 && backgroundUsable || reached == 1 && aloneUsable[inReach[0]]) return true;
+		double model = previous.profile().background();
+		for (int q = 0; q < reached; q++) {
+			final int k = inReach[q];
+			model += previous.amplitudeNorm() * amp[k] * previous.profile().lookup(inReachR[q] / (previous.scaleNorm() *
+				scale[k]));
+		}
+		return previous.censoring().usable(model);
+	}
+
+	/** Appends knot {@code j}'s term {@code value} (if it has a coefficient and is not zero); returns the length. */
+	private int term(final int[] idx, final double[] val, final int len, final int j, final double value) {
+		final int c = EmpiricalProfile.coefficientIndex(j, count);
+		if (c < 0 || value == 0) return len;
+		idx[len] = c;
+		val[len] = value;
+		return len + 1;
+	}
+
+	/** Unit of the background plane's coordinates (px): keeps its columns of the size of the others. */
+	static final double RAMP_UNIT = 100;
+
+	/** Adds what {@code other} (of the same radius) has accumulated, so frames can be measured in parallel. */
+	public void merge(final ProfileEstimator other) {
+		if (other.count != count) throw new IllegalArgumentException("profile radii differ");
+		for (int i = 0; i < atb.length; i++) {
+			atb[i] += other.atb[i];
+			for (int j = 0; j < atb.length; j++)
+				ata[i][j] += other.ata[i][j];
+		}
+		samples += other.samples;
+		profileSamples += other.profileSamples;
+	}
+
+	/**
+	 * @return the profile
+	 * @throws IllegalStateException when the data cannot determine it
+	 */
+	public EmpiricalProfile estimate() {
+		final int m = count + 3;
+		final double[][] a = new double[m][m];
+		double trace = 0;
+		for (int i = 0; i < m; i++) {
+			for (int j = 0; j <= i; j++)
+				a[i][j] = a[j][i] = ata[i][j];
+			if (i <= count) trace += ata[i][i];
+		}
+		// A background without a ramp (one frame: no pixel off its centre row) leaves the plane's slopes free
+		for (int i = count + 1; i < m; i++)
+			if (a[i][i] == 0) a[i][i] = 1;
+		// Penalty on second differences d_j = c_{j-1} - 2 c_j + c_{j+1}, j = 0..count, with c_-1 = c_1 and
+		// c_count = 0 (beyond the last coefficient).
+		final double lambda = SMOOTHNESS * trace / (count + 1);
+		for (int j = 0; j <= count; j++) {
+			final int[] ci = { EmpiricalProfile.coefficientIndex(j - 1, count), EmpiricalProfile.coefficientIndex(j,
+				count), EmpiricalProfile.coefficientIndex(j + 1, count) };
+			final double[] cw = { 1, -2, 1 };
+			for (int p = 0; p < 3; p++)
+				for (int q = 0; q < 3; q++)
+					if (ci[p] >= 0 && ci[q] >= 0) a[ci[p]][ci[q]] += lambda * cw[p] * cw[q];
+		}
+		final double[] x = SymmetricSolver.solve(a, atb);
+		// pixels of the background alone determine no profile: the smoothness penalty would make one up
+		if (x == null || samples < 4 * (count + 1) || profileSamples < 4 * count)
+			throw new IllegalStateException("too few pixels (" + samples + ", " + profileSamples + " within reach of a " +
+				"usable particle) to estimate the particles' profile");
+		final double[] coefficients = new double[count];
+		System.arraycopy(x, 0, coefficients, 0, count);
+		return new EmpiricalProfile(SPACING, coefficients, x[count], samples);
+	}
+}

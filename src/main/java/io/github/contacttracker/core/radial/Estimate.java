@@ -1,0 +1,72 @@
+/*-
+ * #%L
+ * Contact Tracker: sub-pixel localization of colloidal particles, also when they touch.
+ * %%
+ * Copyright (C) 2026 Contact Tracker developers
+ * %%
+ * This program is free software: you can redistribute it and/or modify
+ * it under the terms of the GNU General Public License as
+ * published by the Free Software Foundation, either version 3 of the
+ * License, or (at your option) any later version.
+ * 
+ * This program is distributed in the hope that it will be useful,
+ * but WITHOUT ANY WARRANTY; without even the implied warranty of
+ * MERCHANTABILITY or FITNESS FOR A PARTICULAR PURPOSE.  See the
+ * GNU General Public License for more details.
+ * 
+ * You should have received a copy of the GNU General Public
+ * License along with this program.  If not, see
+ * <http://www.gnu.org/licenses/gpl-3.0.html>.
+ * #L%
+ */
+package io.github.contacttracker.core.radial;
+
+import io.github.contacttracker.core.Flag;
+
+/**
+ * A particle's centre as a method leaves it, immutable.
+ *
+ * @param x centre x (frame pixels)
+ * @param y centre y
+ * @param flags {@link Flag} bits
+ * @param secondArea pixels used by the last radial-symmetry pass (the whole active area if none excluded)
+ * @param iterations solves (radial-symmetry methods) or fit iterations behind the centre
+ * @param solve the radial-symmetry solve behind (x, y), for its error propagation; {@code null} if none
+ * @param sigmaX standard error the method estimated itself (the joint fit); NaN to propagate it from
+ *        {@code solve}
+ * @param sigmaY likewise along y
+ * @param amplitude the joint fit's amplitude relative to the profile, NaN if none
+ * @param scale the joint fit's radial scale relative to the profile, NaN if none
+ */
+public record Estimate(double x, double y, int flags, int secondArea, int iterations, Solve solve, double sigmaX,
+	double sigmaY, double amplitude, double scale)
+{
+	/** An estimate without amplitude and scale. */
+	public Estimate(final double x, final double y, final int flags, final int secondArea, final int iterations,
+		final Solve solve, final double sigmaX, final double sigmaY)
+	{
+		this(x, y, flags, secondArea, iterations, solve, sigmaX, sigmaY, Double.NaN, Double.NaN);
+	}
+
+	/** A first-pass estimate: one solve, no self-estimated error. */
+	static Estimate first(final double x, final double y, final int flags, final int area, final Solve solve) {
+		return new Estimate(x, y, flags, area, 1, solve, Double.NaN, Double.NaN);
+	}
+
+	public Estimate withFlags(final int newFlags) {
+		return new Estimate(x, y, newFlags, secondArea, iterations, solve, sigmaX, sigmaY, amplitude, scale);
+	}
+
+	Estimate withIterations(final int newIterations) {
+		return new Estimate(x, y, flags, secondArea, newIterations, solve, sigmaX, sigmaY, amplitude, scale);
+	}
+
+	public boolean has(final Flag flag) {
+		return flag.isSet(flags);
+	}
+
+	/** @return the distance from this centre to {@code other}'s */
+	public double distanceTo(final Estimate other) {
+		return Math.hypot(x - other.x, y - other.y);
+	}
+}

@@ -1,0 +1,260 @@
+/*-
+ * #%L
+ * Contact Tracker: sub-pixel localization of colloidal particles, also when they touch.
+ * %%
+ * Copyright (C) 2026 Contact Tracker developers
+ * %%
+ * This program is free software: you can redistribute it and/or modify
+ * it under the terms of the GNU General Public License as
+ * published by the Free Software Foundation, either version 3 of the
+ * License, or (at your option) any later version.
+ * 
+ * This program is distributed in the hope that it will be useful,
+ * but WITHOUT ANY WARRANTY; without even the implied warranty of
+ * MERCHANTABILITY or FITNESS FOR A PARTICULAR PURPOSE.  See the
+ * GNU General Public License for more details.
+ * 
+ * You should have received a copy of the GNU General Public
+ * License along with this program.  If not, see
+ * <http://www.gnu.org/licenses/gpl-3.0.html>.
+ * #L%
+ */
+package io.github.contacttracker.core.track;
+
+import java.util.ArrayList;
+import java.util.List;
+
+import io.github.contacttracker.core.Flag;
+import io.github.contacttracker.core.Localization;
+import io.github.contacttracker.core.Method;
+import io.github.contacttracker.core.TrackerParameters;
+import io.github.contacttracker.core.fit.ProfileRefinement;
+import io.github.contacttracker.core.image.ComponentLabeling;
+import io.github.contacttracker.core.image.NoiseEstimate;
+import io.github.contacttracker.core.image.Plane;
+import io.github.contacttracker.core.image.Region;
+import io.github.contacttracker.core.profile.EmpiricalProfile;
+import io.github.contacttracker.core.profile.ProfileEstimator;
+import io.github.contacttracker.core.radial.CentreUncertainty;
+import io.github.contacttracker.core.radial.ComponentShape;
+import io.github.contacttracker.core.radial.Estimate;
+import io.github.contacttracker.core.radial.Particle;
+import io.github.contacttracker.core.radial.Refinement;
+import io.github.contacttracker.core.radial.SecondPass;
+import io.github.contacttracker.core.radial.Solve;
+import net.imglib2.RandomAccessibleInterval;
+import net.imglib2.type.numeric.RealType;
+
+/**
+ * Localizes the particles of one 2D frame with the close-contact radial-symmetry method of Yucel and
+ * Okumusoglu (J. Phys.: Condens. Matter 29, 465101, 2017):
+ * <ol>
+ * <li>active areas: pixels {@code >= threshold}, labelled into components; components smaller than
+ * {@code min_area} are dropped as noise;</li>
+ * <li>first pass: each particle's radial-symmetry centre on its whole active area;</li>
+ * <li>effective discs of radius {@code r_out} around the first centres;</li>
+ * <li>second pass: each particle's centre again on its active area minus the other particles' discs.</li>
+ * </ol>
+ * Stateless and thread-safe: one instance can serve many threads.
+ */
+public final class ContactTracker {
+
+
+	private final TrackerParameters params;
+
+	public ContactTracker(final TrackerParameters params) {
+		if (params == null) throw new IllegalArgumentException("parameters must be given");
+		this.params = params;
+	}
+
+	/** @return the parameters */
+	public TrackerParameters parameters() {
+		return params;
+	}
+
+	/**
+	 * Localizes the particles of a 2D frame.
+	 *
+	 * @param frame the frame; positions are returned in its coordinates (its interval minimum included)
+	 * @param frameIndex the frame index written into the spots
+	 * @return the spots, in raster order of their active areas' first pixels
+	 * @throws IllegalArgumentException if the frame is not 2D or holds NaN or infinite pixels
+	 */
+	public <T extends RealType<T>> List<Localization> track(final RandomAccessibleInterval<T> frame,
+		final int frameIndex)
+	{
+		return analyse(Plane.of(frame), frameIndex, false).spots();
+	}
+
+	/**
+	 * Localizes the particles of a 2D frame and keeps each spot's active and second active areas.
+	 *
+	 * @see #track(RandomAccessibleInterval, int)
+	 */
+	public <T extends RealType<T>> FrameResult analyse(final RandomAccessibleInterval<T> frame,
+		final int frameIndex)
+	{
+		return analyse(Plane.of(frame), frameIndex, true);
+	}
+
+	/**
+	 * Localizes the particles of a 2D frame with a radial profile measured beforehand (for instance over a whole
+	 * stack, see {@link ProfileEstimator}); used by the {@code deblend} and {@code fit} methods, ignored by the
+	 * others. With {@code profile == null} those methods measure the profile on this frame alone.
+	 */
+	public <T extends RealType<T>> FrameResult analyse(final RandomAccessibleInterval<T> frame,
+		final int frameIndex, final EmpiricalProfile profile)
+	{
+		return analyse(Plane.of(frame), frameIndex, true, profile);
+	}
+
+	/** The whole pipeline on a plane; regions are kept only when asked for. */
+	public FrameResult analyse(final Plane plane, final int frameIndex, final boolean keepRegions) {
+		return analyse(plane, frameIndex, keepRegions, null);
+	}
+
+	/** The first pass with shape flags: the particles every refinement starts from (package-private for tests). */
+	static Particle[] particles(final Plane plane, final TrackerParameters params) {
+		final int[] discarded = new int[1];
+		return withShapeFlags(firstPasses(plane, params, discarded), NoiseEstimate.sigma(plane), params, discarded);
+	}
+
+	/**
+	 * Labels the active areas and runs the first pass on each; components below {@code min_area}, or without any
+	 * gradient line (a flat plateau: nothing to localize), are counted in {@code discarded[0]}.
+	 */
+	private static List<Particle> firstPasses(final Plane plane, final TrackerParameters params,
+		final int[] discarded)
+	{
+		final List<Particle> found = new ArrayList<>();
+		for (final Region r : ComponentLabeling.label(plane, params.threshold(), params.connectivity())) {
+			final Particle p = r.area() >= params.minArea() ? Particle.firstPass(plane, r, params.threshold()) : null;
+			if (p != null) found.add(p);
+			else discarded[0]++;
+		}
+		return found;
+	}
+
+	FrameResult analyse(final Plane plane, final int frameIndex, final boolean keepRegions,
+		final EmpiricalProfile profile)
+	{
+		final int[] discarded = new int[1];
+		final List<Particle> found = firstPasses(plane, params, discarded);
+		final double noise = NoiseEstimate.sigma(plane);
+		final Particle[] ps = withShapeFlags(found, noise, params, discarded);
+		final Refinement.Outcome outcome = refinement(params.method()).refine(plane, ps, params, profile,
+			noise);
+		final Estimate[] est = outcome.estimates();
+		final List<Localization> spots = new ArrayList<>(ps.length);
+		final List<Region> active = new ArrayList<>(), second = new ArrayList<>();
+		final int dx = (int) plane.minX(), dy = (int) plane.minY();
+		for (int k = 0; k < ps.length; k++) {
+			final Particle p = ps[k];
+			final Estimate e = est[k];
+			double sx = e.sigmaX(), sy = e.sigmaY();
+			if (Double.isNaN(sx) && e.solve() != null) {
+				final Solve c = e.solve();
+				final double[] cov = CentreUncertainty.covariancePerUnitNoise(c.field(), c.used(), e.x() - c.originX(),
+					e.y() - c.originY(), c.matrix());
+				sx = noise * Math.sqrt(cov[0]);
+				sy = noise * Math.sqrt(cov[1]);
+			}
+			spots.add(new Localization(frameIndex, e.x() + dx, e.y() + dy, p.first.x() + dx, p.first.y() + dy,
+				p.region.area(), e.secondArea(), quality(p.quality, p.region.area(), noise), Math.sqrt(p.region.area() /
+					Math.PI), e.flags(),
+				e.iterations(), sx, sy, e.amplitude(), e.scale()));
+			if (keepRegions) {
+				active.add(p.region.translate(dx, dy));
+				second.add(SecondPass.secondRegion(p.region, k, outcome.discs(), params.rOut()).translate(dx, dy));
+			}
+		}
+		return new FrameResult(spots, active, second, noise, discarded[0], profile == null && params.method()
+			.needsProfile());
+	}
+
+	/** The significance at and above which a spot's {@code QUALITY} is 1: certainly a particle, not noise. */
+	static final double FULL_SIGNIFICANCE = 50;
+
+	/**
+	 * A spot's {@code QUALITY}: how clearly its active area stands out of the noise, in [0, 1]. The significance is
+	 * the summed intensity above the threshold in units of its noise, {@code z = sum(v - T) / (sigma sqrt(A))};
+	 * the quality is {@code min(1, z / FULL_SIGNIFICANCE)}. Real particles all reach 1, so TrackMate's automatic
+	 * (Otsu) quality threshold, which splits any two groups of values, keeps them all and cuts only weaker
+	 * components; the summed intensity alone split particles of two brightnesses (two focus planes).
+	 *
+	 * @param excess the summed intensity above the threshold over the active area
+	 * @param area the active area (pixels)
+	 * @param noise the frame's noise (grey levels; 0 for a noiseless image: every spot is certain)
+	 */
+	static double quality(final double excess, final int area, final double noise) {
+		if (!(noise > 0)) return 1;
+		return Math.min(1, excess / (noise * Math.sqrt(area)) / FULL_SIGNIFICANCE);
+	}
+
+	/** Fewest round active areas in a frame for their sizes to tell what a merge must hold. */
+	static final int MIN_ROUND_FOR_SIZES = 5;
+
+	/**
+	 * Flags particles at the border and components whose shape is that of several particles merged
+	 * ({@link ComponentShape}: elongated, or with a bay as deep as a waist between two lobes). Size does not make a
+	 * merge: particles in and out of focus differ in size, not in shape. But a merge holds two particles' active
+	 * areas: a component of the wrong outline (elongated, or with a bay) smaller than twice the frame's small round
+	 * ones (their 10th percentile, given {@value #MIN_ROUND_FOR_SIZES} or more) is no particle at all. In bright field such components are the
+	 * bright fringes between touching particles; they are dropped and counted in {@code discarded[0]}, as the
+	 * noise blobs below {@code min_area} are.
+	 */
+	private static Particle[] withShapeFlags(final List<Particle> particles, final double noise,
+		final TrackerParameters params, final int[] discarded)
+	{
+		final Particle[] ps = new Particle[particles.size()];
+		final boolean[] merged = new boolean[ps.length];
+		final List<Integer> roundAreas = new ArrayList<>();
+		for (int k = 0; k < ps.length; k++) {
+			final Particle p = particles.get(k);
+			merged[k] = p.shape.merged(p.atBorder, noise, alone(particles, k, params.rOut()), params.diameter());
+			if (!merged[k] && !p.atBorder) roundAreas.add(p.region.area());
+		}
+		int smallestMerge = 0;
+		if (roundAreas.size() >= MIN_ROUND_FOR_SIZES) {
+			roundAreas.sort(null);
+			smallestMerge = 2 * roundAreas.get(roundAreas.size() / 10);
+		}
+		int n = 0;
+		for (int k = 0; k < ps.length; k++) {
+			final Particle p = particles.get(k);
+			// (by outline only: a particle flagged for its gradient lines has the shape of one)
+			if (merged[k] && p.region.area() < smallestMerge && p.shape.outlineMerged(p.atBorder)) {
+				discarded[0]++;
+				continue;
+			}
+			ps[n++] = p.withShapeFlags((p.atBorder ? Flag.AT_BORDER.bit() : 0) | (merged[k] ? Flag.MERGED.bit() : 0));
+		}
+		return java.util.Arrays.copyOf(ps, n);
+	}
+
+	/**
+	 * @return whether no other particle's image (reaching {@code r_out} from its first-pass centre) reaches particle
+	 *         {@code k}'s active area: only then do its gradient lines owe nothing to a neighbour's light, so that
+	 *         their failing to meet in one point means several particles
+	 */
+	private static boolean alone(final List<Particle> particles, final int k, final double rOut) {
+		final Particle p = particles.get(k);
+		final double reach = rOut + Math.sqrt(p.region.area() / Math.PI);
+		for (int q = 0; q < particles.size(); q++)
+			if (q != k && Math.hypot(particles.get(q).first.x() - p.first.x(), particles.get(q).first.y() - p.first
+				.y()) < reach) return false;
+		return true;
+	}
+
+	/** @return the strategy that computes the method's centres from the first pass */
+	private static Refinement refinement(final Method method) {
+		switch (method) {
+			case FIRST: return Refinement.FIRST_PASS;
+			case PAPER: return SecondPass.PAPER;
+			case ITERATIVE: return SecondPass.ITERATIVE;
+			case DEBLEND: return ProfileRefinement.DEBLEND;
+			case FIT: return ProfileRefinement.FIT;
+			default: throw new AssertionError(method);
+		}
+	}
+}

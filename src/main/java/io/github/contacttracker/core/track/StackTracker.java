@@ -1,0 +1,471 @@
+/*-
+ * #%L
+ * Contact Tracker: sub-pixel localization of colloidal particles, also when they touch.
+ * %%
+ * Copyright (C) 2026 Contact Tracker developers
+ * %%
+ * This program is free software: you can redistribute it and/or modify
+ * it under the terms of the GNU General Public License as
+ * published by the Free Software Foundation, either version 3 of the
+ * License, or (at your option) any later version.
+ * 
+ * This program is distributed in the hope that it will be useful,
+ * but WITHOUT ANY WARRANTY; without even the implied warranty of
+ * MERCHANTABILITY or FITNESS FOR A PARTICULAR PURPOSE.  See the
+ * GNU General Public License for more details.
+ * 
+ * You should have received a copy of the GNU General Public
+ * License along with this program.  If not, see
+ * <http://www.gnu.org/licenses/gpl-3.0.html>.
+ * #L%
+ */
+package io.github.contacttracker.core.track;
+
+import java.io.Serializable;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.CancellationException;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.function.BooleanSupplier;
+import java.util.function.IntFunction;
+import java.util.function.Supplier;
+
+import io.github.contacttracker.core.Flag;
+import io.github.contacttracker.core.InvalidInputException;
+import io.github.contacttracker.core.Localization;
+import io.github.contacttracker.core.Method;
+import io.github.contacttracker.core.TrackerParameters;
+import io.github.contacttracker.core.fit.GroupFit;
+import io.github.contacttracker.core.fit.ProfileRefinement;
+import io.github.contacttracker.core.image.Plane;
+import io.github.contacttracker.core.profile.EmpiricalProfile;
+import io.github.contacttracker.core.profile.ProfileEstimator;
+import net.imglib2.RandomAccessibleInterval;
+import net.imglib2.parallel.Parallelization;
+import net.imglib2.parallel.TaskExecutor;
+import net.imglib2.type.numeric.RealType;
+
+/**
+ * Localizes every frame of a time series, frames in parallel. Results come back in frame order whatever the
+ * number of threads, so a run is reproducible.
+ * <p>
+ * The threads are the caller's: every pass runs on {@link Parallelization#getTaskExecutor()} of the calling thread
+ * (the imglib2 idiom), so a front end decides once, e.g. {@code Parallelization.runWithNumThreads(n, () ->
+ * stackTracker.track(...))}; without that, imglib2's default is one thread. No thread pool is created here.
+ */
+public final class StackTracker {
+
+	/** Hears about progress; called from worker threads. */
+	@FunctionalInterface
+	public interface ProgressListener {
+		/** @param framesDone frames finished so far, of {@code frames} */
+		void progress(int framesDone, int frames);
+	}
+
+	private final ContactTracker tracker;
+
+	/** @param params the localizer's parameters */
+	public StackTracker(final TrackerParameters params) {
+		this.tracker = new ContactTracker(params);
+	}
+
+	/**
+	 * @param requested a number of threads asked for; below 1 means "all available processors"
+	 * @return the number of threads to run with
+	 */
+	public static int threads(final int requested) {
+		return requested < 1 ? Runtime.getRuntime().availableProcessors() : requested;
+	}
+
+	/**
+	 * Runs {@code work} with {@code threads} threads as imglib2's task executor of this thread (below 1: all
+	 * processors), the way a front end owns the threads of a run. Unlike {@code Parallelization.runWithNumThreads
+	 * (int, Callable)}, exceptions pass unchanged (a user error stays an {@code IllegalArgumentException}). One
+	 * thread is the calling thread itself (imglib2's sequential executor), not a pool of one that it waits for: a
+	 * Spark task's work then runs on the task's thread, and Spark's metrics count its CPU time.
+	 */
+	public static <R> R withThreads(final int threads, final Supplier<R> work) {
+		final List<R> out = new ArrayList<>(1);
+		final Runnable run = () -> out.add(work.get()); // a Runnable: it does not wrap exceptions
+		if (threads(threads) == 1) Parallelization.runSingleThreaded(run);
+		else Parallelization.runWithNumThreads(threads(threads), run);
+		return out.get(0);
+	}
+
+	/** Localizes all frames of a list. */
+	public <T extends RealType<T>> List<FrameResult> track(final List<? extends RandomAccessibleInterval<T>> frames,
+		final boolean keepRegions)
+	{
+		return track(frames.size(), frames::get, keepRegions, null, () -> false);
+	}
+
+	/**
+	 * Localizes {@code count} frames supplied by index (so a long stack need not be held as views at once).
+	 *
+	 * @param count number of frames
+	 * @param frame supplies frame {@code t}, 2D; called from the worker threads, so it must be thread-safe, and
+	 *        may be called more than once for a frame (the profile methods read their sample frames twice)
+	 * @param keepRegions whether to keep the active and second areas (for overlays; costs memory)
+	 * @param listener progress, or null (for deblend and fit the progress also counts the iterative pass and the
+	 *        rounds of profile and centres on the frames the profile is measured on)
+	 * @param cancelled polled before each frame; when it turns true the run stops with a
+	 *        {@link CancellationException}
+	 * @return one result per frame, in frame order
+	 * @throws IllegalArgumentException if a frame is not 2D or holds NaN/infinite pixels (naming the first such
+	 *         frame, counted from 1)
+	 */
+	public <T extends RealType<T>> List<FrameResult> track(final int count,
+		final IntFunction<? extends RandomAccessibleInterval<T>> frame, final boolean keepRegions,
+		final ProgressListener listener, final BooleanSupplier cancelled)
+	{
+		final TrackerParameters params = tracker.parameters();
+		final int[] all = range(count);
+		if (!params.method().needsProfile() || count == 0)
+			return pass(tracker, null, all, frame, keepRegions, new Progress(listener, count), cancelled);
+		// deblend and fit: iterative centres on a spread of frames; the profile measured on them; those frames
+		// refined with it and the profile measured again around the refined centres; then every frame.
+		final int[] sample = profileFrames(count, frame);
+		// the iterative pass and the first round on the sample; all frames at the end, but without regions to keep
+		// the sample frames are done by then (see below)
+		final Progress progress = new Progress(listener, 2 * sample.length + count - (keepRegions ? 0 : sample.length));
+		final ProfileStage stage = profileStage(sample, frame, progress, cancelled);
+		if (keepRegions) return flagged(pass(tracker, stage.profile, all, frame, true, progress, cancelled),
+			stage.settled);
+		progress.total += sample.length - stage.sample.length; // frames left to the last pass
+		final boolean[] done = new boolean[count];
+		for (final int t : stage.sample)
+			done[t] = true;
+		final List<FrameResult> others = pass(tracker, stage.profile, stage.others(count), frame, false, progress,
+			cancelled);
+		final List<FrameResult> results = new ArrayList<>(count);
+		for (int t = 0, s = 0, o = 0; t < count; t++)
+			results.add(done[t] ? stage.round.get(s++) : others.get(o++));
+		return flagged(results, stage.settled);
+	}
+
+	/**
+	 * The first stage of the profile methods on a movie, which a distributed front end runs once per movie before
+	 * the frames are shared out: the profile measured on {@link #profileFrames sample frames} (null when it could
+	 * not be, and each frame then measures its own), whether its rounds settled, and the sample frames' results.
+	 * {@link #track(int, IntFunction, boolean, ProgressListener, BooleanSupplier)} is this stage followed by
+	 * {@link #trackWith} on the other frames, so the two ways give the same spots.
+	 */
+	public static final class ProfileStage implements Serializable {
+
+		private static final long serialVersionUID = 1L;
+
+		private final int[] sample;
+		private final EmpiricalProfile profile;
+		private final boolean settled;
+		private final transient List<FrameResult> round;
+		private final List<FrameResult> sampleResults;
+
+		ProfileStage(final int[] sample, final EmpiricalProfile profile, final boolean settled,
+			final List<FrameResult> round)
+		{
+			this.sample = sample;
+			this.profile = profile;
+			this.settled = settled;
+			this.round = round;
+			this.sampleResults = new ArrayList<>(flagged(round, settled));
+		}
+
+		/** @return the sample frames (0-based, ascending) */
+		public int[] sample() {
+			return sample.clone();
+		}
+
+		/** @return the profile every frame is refined with, or {@code null} when each frame measures its own */
+		public EmpiricalProfile profile() {
+			return profile;
+		}
+
+		/** @return whether the profile rounds settled (if not, every spot is flagged {@code NOT_CONVERGED}) */
+		public boolean settled() {
+			return settled;
+		}
+
+		/** @return the final result of sample frame {@code i} (of {@link #sample()}), flags included */
+		public FrameResult sampleResult(final int i) {
+			return sampleResults.get(i);
+		}
+
+		/** @return the frames of a movie of {@code count} frames that are not sample frames, ascending */
+		public int[] others(final int count) {
+			final boolean[] done = new boolean[count];
+			for (final int t : sample)
+				done[t] = true;
+			final int[] rest = new int[count - sample.length];
+			for (int t = 0, k = 0; t < count; t++)
+				if (!done[t]) rest[k++] = t;
+			return rest;
+		}
+	}
+
+	/**
+	 * Runs the {@link ProfileStage} of a movie (profile methods only), one thread per task of the caller's executor.
+	 *
+	 * @param count number of frames
+	 * @param frame supplies frame {@code t} (thread-safe; read twice for the sample frames)
+	 * @return the stage, or {@code null} when the method needs no profile
+	 */
+	public <T extends RealType<T>> ProfileStage profileStage(final int count,
+		final IntFunction<? extends RandomAccessibleInterval<T>> frame, final BooleanSupplier cancelled)
+	{
+		if (!tracker.parameters().method().needsProfile() || count == 0) return null;
+		return profileStage(profileFrames(count, frame), frame, new Progress(null, 0), cancelled);
+	}
+
+	/**
+	 * Localizes frames {@code indices} (not sample frames) with a movie's {@link ProfileStage}, exactly as
+	 * {@link #track(int, IntFunction, boolean, ProgressListener, BooleanSupplier)} does them.
+	 *
+	 * @param stage the movie's stage, or {@code null} for a method that needs no profile
+	 * @return one result per index, in that order, regions not kept
+	 */
+	public <T extends RealType<T>> List<FrameResult> trackWith(final ProfileStage stage, final int[] indices,
+		final IntFunction<? extends RandomAccessibleInterval<T>> frame, final BooleanSupplier cancelled)
+	{
+		final Progress none = new Progress(null, 0);
+		if (stage == null) return pass(tracker, null, indices, frame, false, none, cancelled);
+		return flagged(pass(tracker, stage.profile, indices, frame, false, none, cancelled), stage.settled);
+	}
+
+	private <T extends RealType<T>> ProfileStage profileStage(int[] sample,
+		final IntFunction<? extends RandomAccessibleInterval<T>> frame, final Progress progress,
+		final BooleanSupplier cancelled)
+	{
+		final TrackerParameters params = tracker.parameters();
+		final List<FrameResult> first = pass(new ContactTracker(params.withMethod(Method.ITERATIVE)), null, sample,
+			frame, false, progress, cancelled);
+		// a dense field needs fewer frames for as many particles: the rounds' cost follows the frames
+		final int[] kept = fewer(first);
+		final List<FrameResult> iterative = new ArrayList<>(kept.length);
+		final int[] chosen = new int[kept.length];
+		for (int i = 0; i < kept.length; i++) {
+			iterative.add(first.get(kept[i]));
+			chosen[i] = sample[kept[i]];
+		}
+		progress.total -= sample.length - chosen.length; // the first round's frames
+		sample = chosen;
+		// The profile is measured around estimated centres, and in a configuration that never changes (every frame
+		// the same cluster) it absorbs part of their error; so profile and centres are alternated on the sample
+		// frames until the centres stop moving (the joint least-squares fixed point, to a tenth of the centres' errors).
+		List<FrameResult> previous = iterative;
+		EmpiricalProfile used = profile(previous, null, sample, frame, params.rOut());
+		List<FrameResult> round = pass(tracker, used, sample, frame, false, progress, cancelled);
+		double move = unsettled(previous, round);
+		for (int r = 1; r < ProfileRefinement.PROFILE_ROUNDS && move > 1; r++) {
+			progress.total += sample.length;
+			previous = round;
+			used = profile(round, used, sample, frame, params.rOut());
+			round = pass(tracker, used, sample, frame, false, progress, cancelled);
+			move = unsettled(previous, round);
+		}
+		// no fixed point within the rounds: every centre rests on a profile that was still moving. Settled: the
+		// profile of the last round is the fixed point's (to within the tolerance), and the sample frames were just
+		// refined with that very profile: without regions to keep, their results are the final ones.
+		return new ProfileStage(sample, used, move <= 1, round);
+	}
+
+	/** @return the results, every spot flagged {@code NOT_CONVERGED} unless the profile rounds {@code settled} */
+	private static List<FrameResult> flagged(final List<FrameResult> results, final boolean settled) {
+		if (settled) return results;
+		final List<FrameResult> out = new ArrayList<>(results.size());
+		for (final FrameResult r : results) {
+			final List<Localization> spots = new ArrayList<>(r.spots().size());
+			for (final Localization l : r.spots())
+				spots.add(l.withFlags(l.flags() | Flag.NOT_CONVERGED.bit()));
+			out.add(new FrameResult(spots, r.activeAreas(), r.secondAreas(), r.noiseSigma(), r.discarded(), r
+				.ownProfile()));
+		}
+		return out;
+	}
+
+	/**
+	 * How far two results of the same frames (spots in the same order) are from settled: the largest move of a
+	 * fitted spot between them, in units of its {@link GroupFit#settled tolerance}; settled at 1 or less.
+	 */
+	static double unsettled(final List<FrameResult> before, final List<FrameResult> after) {
+		double move = 0;
+		for (int t = 0; t < before.size(); t++) {
+			final List<Localization> a = before.get(t).spots(), b = after.get(t).spots();
+			if (a.size() != b.size()) return Double.POSITIVE_INFINITY;
+			for (int k = 0; k < a.size(); k++)
+				if (fitted(b.get(k))) move = Math.max(move, Math.hypot(a.get(k).x() - b.get(k).x(), a
+					.get(k).y() - b.get(k).y()) / GroupFit.settled(b.get(k).sigmaX(), b.get(k).sigmaY()));
+		}
+		return move;
+	}
+
+	/**
+	 * Whether a spot's centre is the fit's own: not one kept from the first pass because the fit could not be made
+	 * ({@code FELL_BACK}), nor a particle left out of the model; only those take part in the profile's fixed point
+	 * (the spot in the newer result: the older may be the iterative pass's).
+	 */
+	private static boolean fitted(final Localization l) {
+		return !l.has(Flag.FELL_BACK) && !l.has(Flag.MERGED) && !l.has(Flag.DEGENERATE);
+	}
+
+	/** Frames done over frames to do, across the passes of one run. */
+	private static final class Progress {
+		final ProgressListener listener;
+		final AtomicInteger done = new AtomicInteger();
+		int total;
+
+		Progress(final ProgressListener listener, final int total) {
+			this.listener = listener;
+			this.total = total;
+		}
+
+		void frameDone() {
+			if (listener != null) listener.progress(done.incrementAndGet(), total);
+		}
+	}
+
+	/** At most this many frames, evenly spread over the stack, go into a profile measurement... */
+	public static final int PROFILE_FRAMES = 64;
+	/**
+	 * ...and at most this many pixels in all: plenty for the profile's spline (15 frames of 512x512 with 12
+	 * particles; the centres of the bench stack moved by 0.009 nm rms against 30 frames), and the profile rounds cost
+	 * in proportion.
+	 */
+	public static final long PROFILE_PIXELS = 4_000_000;
+
+	/**
+	 * @return the frames the profile is measured on: evenly spread, within both limits (read: frame 0, for its size)
+	 */
+	public static <T extends RealType<T>> int[] profileFrames(final int count,
+		final IntFunction<? extends RandomAccessibleInterval<T>> frame)
+	{
+		final RandomAccessibleInterval<T> first = frame.apply(0);
+		final long pixels = Math.max(1, first.dimension(0) * first.dimension(1));
+		final int n = (int) Math.max(1, Math.min(Math.min(count, PROFILE_FRAMES), PROFILE_PIXELS / pixels));
+		final int[] frames = new int[n];
+		for (int i = 0; i < n; i++)
+			frames[i] = (int) ((long) i * count / n);
+		return frames;
+	}
+
+	/**
+	 * Enough particles for the profile: past {@value #PROFILE_PARTICLES} usable particles the profile's spline is
+	 * as well determined as the centres need (the bench stack's 15 frames hold 180), and more frames only multiply
+	 * the cost of the profile rounds.
+	 *
+	 * @return the positions in {@code results} (evenly spread) of the frames kept
+	 */
+	private static int[] fewer(final List<FrameResult> results) {
+		int particles = 0;
+		for (final FrameResult r : results)
+			for (final Localization l : r.spots())
+				if (fitted(l)) particles++;
+		final int n = results.size();
+		final int m = particles <= PROFILE_PARTICLES ? n : (int) Math.max(1, Math.min(n, Math.ceil((double) PROFILE_PARTICLES *
+			n / particles)));
+		final int[] kept = new int[m];
+		for (int i = 0; i < m; i++)
+			kept[i] = (int) ((long) i * n / m);
+		return kept;
+	}
+
+	/** The profile rounds use frames holding about this many particles, if the sample frames hold more. */
+	public static final int PROFILE_PARTICLES = 300;
+
+	private static int[] range(final int count) {
+		final int[] r = new int[count];
+		for (int i = 0; i < count; i++)
+			r[i] = i;
+		return r;
+	}
+
+	private static List<Integer> positions(final int n) {
+		final List<Integer> list = new ArrayList<>(n);
+		for (int i = 0; i < n; i++)
+			list.add(i);
+		return list;
+	}
+
+	/**
+	 * Measures the radial profile on frames {@code indices} (with their results, in the same order), the frames
+	 * shared among the threads; null (each frame then measures its own) when they hold too few usable pixels. The
+	 * profile the results were refined with, if any, chooses the pixels left out near clip levels.
+	 */
+	private static <T extends RealType<T>> EmpiricalProfile profile(final List<FrameResult> results,
+		final EmpiricalProfile fittedWith, final int[] indices,
+		final IntFunction<? extends RandomAccessibleInterval<T>> frame, final double rOut)
+	{
+		// One estimator per frame, merged in frame order: the sums, and so the results, do not depend on the
+		// number of threads.
+		final double[] norms = ProfileEstimator.norms(spots(results));
+		final List<ProfileEstimator> parts = Parallelization.getTaskExecutor().forEachApply(positions(indices.length),
+			i -> {
+				final ProfileEstimator part = ProfileEstimator.forROut(rOut);
+				part.add(frame.apply(indices[i]), results.get(i).spots(), norms[0], norms[1], fittedWith, results.get(i)
+					.noiseSigma());
+				return part;
+			});
+		final ProfileEstimator all = parts.get(0);
+		for (int i = 1; i < parts.size(); i++)
+			all.merge(parts.get(i));
+		try {
+			return all.estimate();
+		}
+		catch (final IllegalStateException e) {
+			return null;
+		}
+	}
+
+	/**
+	 * Localizes frames {@code indices} on the caller's task executor; results in that order. A frame's failure
+	 * (an exception or running out of memory) is caught in its task and the first failure in frame order rethrown
+	 * as it was, so the error a user sees does not depend on the threads.
+	 */
+	private static <T extends RealType<T>> List<FrameResult> pass(final ContactTracker tracker,
+		final EmpiricalProfile profile, final int[] indices,
+		final IntFunction<? extends RandomAccessibleInterval<T>> frame, final boolean keepRegions,
+		final Progress progress, final BooleanSupplier cancelled)
+	{
+		final TaskExecutor executor = Parallelization.getTaskExecutor();
+		final Throwable[] failures = new Throwable[indices.length];
+		final List<FrameResult> results = executor.forEachApply(positions(indices.length), i -> {
+			try {
+				// counted in passes over a frame: the profile methods track their sample frames once per profile round,
+				// so a count of "frames" could exceed the movie's (117 on a 30-frame movie, seen in Fiji)
+				if (cancelled.getAsBoolean()) throw new CancellationException("cancelled after " + progress.done.get() +
+					" of " + progress.total + " passes over a frame");
+				final FrameResult r = one(tracker, profile, frame, indices[i], keepRegions);
+				progress.frameDone();
+				return r;
+			}
+			catch (final RuntimeException | OutOfMemoryError e) {
+				// out of memory too: the executor would wrap it in a RuntimeException, hiding it from the front ends
+				failures[i] = e;
+				return null;
+			}
+		});
+		for (final Throwable e : failures)
+			if (e instanceof OutOfMemoryError oom) throw oom;
+			else if (e != null) throw (RuntimeException) e;
+		return results;
+	}
+
+	private static <T extends RealType<T>> FrameResult one(final ContactTracker tracker,
+		final EmpiricalProfile profile, final IntFunction<? extends RandomAccessibleInterval<T>> frame, final int t,
+		final boolean keepRegions)
+	{
+		try {
+			return tracker.analyse(Plane.of(frame.apply(t)), t, keepRegions, profile);
+		}
+		catch (final InvalidInputException e) {
+			throw new InvalidInputException("frame " + (t + 1) + ": " + e.getMessage(), e);
+		}
+	}
+
+	/** @return all spots of {@code results}, in frame order */
+	public static List<Localization> spots(final List<FrameResult> results) {
+		final List<Localization> all = new ArrayList<>();
+		for (final FrameResult r : results)
+			all.addAll(r.spots());
+		return all;
+	}
+}

@@ -1,0 +1,55 @@
+/*-
+ * #%L
+ * Contact Tracker: sub-pixel localization of colloidal particles, also when they touch.
+ * %%
+ * Copyright (C) 2026 Contact Tracker developers
+ * %%
+ * This program is free software: you can redistribute it and/or modify
+ * it under the terms of the GNU General Public License as
+ * published by the Free Software Foundation, either version 3 of the
+ * License, or (at your option) any later version.
+ * 
+ * This program is distributed in the hope that it will be useful,
+ * but WITHOUT ANY WARRANTY; without even the implied warranty of
+ * MERCHANTABILITY or FITNESS FOR A PARTICULAR PURPOSE.  See the
+ * GNU General Public License for more details.
+ * 
+ * You should have received a copy of the GNU General Public
+ * License along with this program.  If not, see
+ * <http://www.gnu.org/licenses/gpl-3.0.html>.
+ * #L%
+ */
+package io.github.contacttracker.core.math;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNull;
+
+import org.junit.jupiter.api.Test;
+
+class SymmetricSolverTest {
+
+	@Test
+	void solvesAndInverts() {
+		final double[][] a = { { 4, 1, 0.5 }, { 1, 3, 0.2 }, { 0.5, 0.2, 2 } };
+		final double[] x = { 1, -2, 3 };
+		final double[] b = new double[3];
+		for (int i = 0; i < 3; i++)
+			for (int j = 0; j < 3; j++)
+				b[i] += a[i][j] * x[j];
+		assertArrayEquals(x, SymmetricSolver.solve(a, b), 1e-12);
+		final double[][] inv = SymmetricSolver.invert(a);
+		for (int i = 0; i < 3; i++)
+			for (int j = 0; j < 3; j++) {
+				double s = 0;
+				for (int k = 0; k < 3; k++)
+					s += a[i][k] * inv[k][j];
+				assertEquals(i == j ? 1 : 0, s, 1e-12);
+			}
+	}
+
+	@Test
+	void singularMatrixIsReported() {
+		assertNull(SymmetricSolver.solve(new double[][] { { 1, 2 }, { 2, 4 } }, new double[] { 1, 2 }));
+	}
+}

@@ -1,0 +1,36 @@
+/*-
+ * #%L
+ * Contact Tracker: sub-pixel localization of colloidal particles, also when they touch.
+ * %%
+ * Copyright (C) 2026 Contact Tracker developers
+ * %%
+ * This program is free software: you can redistribute it and/or modify
+ * it under the terms of the GNU General Public License as
+ * published by the Free Software Foundation, either version 3 of the
+ * License, or (at your option) any later version.
+ * 
+ * This program is distributed in the hope that it will be useful,
+ * but WITHOUT ANY WARRANTY; without even the implied warranty of
+ * MERCHANTABILITY or FITNESS FOR A PARTICULAR PURPOSE.  See the
+ * GNU General Public License for more details.
+ * 
+ * You should have received a copy of the GNU General Public
+ * License along with this program.  If not, see
+ * <http://www.gnu.org/licenses/gpl-3.0.html>.
+ * #L%
+ */
+package io.github.contacttracker.core.track;
+
+import io.github.contacttracker.core.TrackerParameters;
+import io.github.contacttracker.core.image.Plane;
+import io.github.contacttracker.core.radial.Particle;
+
+/** For the tests of the rooms below: a frame's first passes as the tracker makes them (package-private in the core). */
+public final class TrackAccess {
+
+	private TrackAccess() {}
+
+	public static Particle[] particles(final Plane plane, final TrackerParameters params) {
+		return ContactTracker.particles(plane, params);
+	}
+}
