@@ -21,6 +21,8 @@
  */
 package io.github.contacttracker.core.fit;
 
+import io.github.contacttracker.core.math.UnionFind;
+
 import java.util.ArrayList;
 import java.util.List;
 
@@ -191,25 +193,20 @@ public final class GroupFit {
 	/** Groups of reliable particles closer than {@code distance} (transitively), at centres {@code e}. */
 	static List<int[]> groups(final Particle[] ps, final Estimate[] e, final double distance) {
 		final int n = ps.length;
-		final int[] parent = new int[n];
-		for (int i = 0; i < n; i++)
-			parent[i] = i;
+		final int[] parent = UnionFind.singletons(n);
 		for (int i = 0; i < n; i++)
 			for (int j = i + 1; j < n; j++)
-				if (ps[i].reliable() && ps[j].reliable() && e[i].distanceTo(e[j]) < distance) {
-					final int ri = root(parent, i), rj = root(parent, j);
-					if (ri != rj) parent[Math.max(ri, rj)] = Math.min(ri, rj);
-				}
+				if (ps[i].reliable() && ps[j].reliable() && e[i].distanceTo(e[j]) < distance) UnionFind.union(parent, i, j);
 		final List<int[]> groups = new ArrayList<>();
 		for (int r = 0; r < n; r++) {
-			if (root(parent, r) != r || !ps[r].reliable()) continue;
+			if (UnionFind.find(parent, r) != r || !ps[r].reliable()) continue;
 			int size = 0;
 			for (int i = 0; i < n; i++)
-				if (root(parent, i) == r) size++;
+				if (UnionFind.find(parent, i) == r) size++;
 			final int[] g = new int[size];
 			int f = 0;
 			for (int i = 0; i < n; i++)
-				if (root(parent, i) == r) g[f++] = i;
+				if (UnionFind.find(parent, i) == r) g[f++] = i;
 			groups.add(g);
 		}
 		return groups;
@@ -221,11 +218,6 @@ public final class GroupFit {
 		return false;
 	}
 
-	private static int root(final int[] parent, int i) {
-		while (parent[i] != i)
-			i = parent[i];
-		return i;
-	}
 
 	/** Parameters per particle: x, y, amplitude, radial scale. */
 	static final int PER_PARTICLE = 4;

@@ -21,6 +21,8 @@
  */
 package io.github.contacttracker.core.image;
 
+import io.github.contacttracker.core.math.UnionFind;
+
 import java.util.ArrayList;
 import java.util.List;
 
@@ -87,9 +89,7 @@ public final class ComponentLabeling {
 	/** Groups runs in raster order into components. */
 	static List<Region> label(final RunList runs, final Connectivity connectivity) {
 		final int n = runs.size;
-		final int[] parent = new int[n];
-		for (int i = 0; i < n; i++)
-			parent[i] = i;
+		final int[] parent = UnionFind.singletons(n);
 		final int slack = connectivity == Connectivity.EIGHT ? 1 : 0;
 		final int[] ys = runs.y, a = runs.x0, b = runs.x1;
 		int prevStart = 0, prevEnd = 0; // runs of the previous row: [prevStart, prevEnd)
@@ -102,7 +102,7 @@ public final class ComponentLabeling {
 			if (prevEnd > prevStart && ys[prevStart] == row - 1) {
 				int p = prevStart, c = i;
 				while (p < prevEnd && c < end) {
-					if (a[p] <= b[c] + slack && a[c] <= b[p] + slack) union(parent, p, c);
+					if (a[p] <= b[c] + slack && a[c] <= b[p] + slack) UnionFind.union(parent, p, c);
 					// The run that ends first cannot touch any later run of the other row.
 					if (b[p] < b[c]) p++;
 					else c++;
@@ -118,7 +118,7 @@ public final class ComponentLabeling {
 		final int[] componentOfRun = new int[n];
 		int count = 0;
 		for (int r = 0; r < n; r++) {
-			final int root = find(parent, r);
+			final int root = UnionFind.find(parent, r);
 			if (componentOfRoot[root] < 0) componentOfRoot[root] = count++;
 			componentOfRun[r] = componentOfRoot[root];
 		}
@@ -144,21 +144,6 @@ public final class ComponentLabeling {
 		for (int k = 0; k < count; k++)
 			regions.add(new Region(cy[k], c0[k], c1[k], area[k]));
 		return regions;
-	}
-
-	private static int find(final int[] parent, int i) {
-		while (parent[i] != i) {
-			parent[i] = parent[parent[i]]; // path halving
-			i = parent[i];
-		}
-		return i;
-	}
-
-	private static void union(final int[] parent, final int i, final int j) {
-		final int ri = find(parent, i), rj = find(parent, j);
-		// Keep the smaller index as root so numbering stays in raster order of first runs.
-		if (ri < rj) parent[rj] = ri;
-		else if (rj < ri) parent[ri] = rj;
 	}
 
 	private static List<Region> translate(final List<Region> regions, final long dx, final long dy) {
