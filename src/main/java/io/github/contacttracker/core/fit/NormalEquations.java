@@ -26,7 +26,8 @@ import io.github.contacttracker.core.profile.EmpiricalProfile;
 /**
  * The passes of {@link GroupFit}'s least squares over a group's pixels ({@link FitPixels}): J^T J, J^T r and the
  * residuals at given parameters, in the layout per member x, y, amplitude, scale, then the background plane. The
- * general pass and a fast path for a group of one, identical to it bit for bit ({@code NormalEquationsTest}).
+ * general pass and fast paths for a group of one and of two, identical to it bit for bit
+ * ({@code NormalEquationsTest}).
  */
 final class NormalEquations {
 

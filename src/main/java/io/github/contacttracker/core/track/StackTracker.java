@@ -51,7 +51,8 @@ import net.imglib2.type.numeric.RealType;
  * <p>
  * The threads are the caller's: every pass runs on {@link Parallelization#getTaskExecutor()} of the calling thread
  * (the imglib2 idiom), so a front end decides once, e.g. {@code Parallelization.runWithNumThreads(n, () ->
- * stackTracker.track(...))}; without that, imglib2's default is one thread. No thread pool is created here.
+ * stackTracker.track(...))}; without that, imglib2's default task executor runs on the common ForkJoinPool (all
+ * processors). No thread pool is created here.
  */
 public final class StackTracker {
 
