@@ -29,6 +29,7 @@ import java.util.Locale;
 import java.util.Map;
 
 import io.github.contacttracker.core.InvalidInputException;
+import io.github.contacttracker.core.Numbers;
 import io.github.contacttracker.io.SpotTableCsv;
 import io.github.contacttracker.potential.SpotSet;
 import io.github.contacttracker.potential.StaticError;
@@ -71,8 +72,8 @@ final class StaticErrorCommand extends ContactTrackerCli.Subcommand {
 			throw new InvalidInputException(input + ": " + e.getMessage());
 		}
 		final String unit = table.unit().isEmpty() ? "px" : table.unit();
-		out.println(input + ": " + r.tracks() + " tracks, " + r.steps() + " steps linked within " + fmt(step) + " " +
-			unit + " (" + spots.flaggedLeftOut() + " flagged spots left out)");
+		out.println(input + ": " + r.tracks() + " tracks, " + r.steps() + " steps linked within " + Numbers.fmt(step,
+			4) + " " + unit + " (" + spots.flaggedLeftOut() + " flagged spots left out)");
 		for (int k = 0; k < r.msdX().length; k++)
 			out.println(String.format(Locale.ROOT, "  lag %d: MSD x %.6g, y %.6g %s^2 (%d displacements)", k + 1, r
 				.msdX()[k], r.msdY()[k], unit, r.pairs()[k]));
@@ -80,12 +81,12 @@ final class StaticErrorCommand extends ContactTrackerCli.Subcommand {
 		out.println(String.format(Locale.ROOT, "  static error variance from the intercept: x %.3g, y %.3g %s^2, " +
 			"standard error %.2g%s", r.varianceX(), r.varianceY(), unit, r.varianceError(), resolved(r) ? "" :
 				" (not resolved: the intercept is within two standard errors of 0)"));
-		if (resolved(r)) out.println("  static error: sigma_x " + fmt(r.sigmaX()) + ", sigma_y " + fmt(r.sigmaY()) +
-			" " + unit);
+		if (resolved(r)) out.println("  static error: sigma_x " + Numbers.fmt(r.sigmaX(), 4) + ", sigma_y " + Numbers
+			.fmt(r.sigmaY(), 4) + " " + unit);
 		final Map<String, double[]> c = table.columns();
 		if (c.containsKey("SIGMA_X") && c.containsKey("SIGMA_Y")) out.println("  reported, median over the spots: " +
-			"SIGMA_X " + fmt(median(c.get("SIGMA_X"))) + ", SIGMA_Y " + fmt(median(c.get("SIGMA_Y"))) + " " + unit +
-			" (all spots)");
+			"SIGMA_X " + Numbers.fmt(median(c.get("SIGMA_X")), 4) + ", SIGMA_Y " + Numbers.fmt(median(c.get("SIGMA_Y")), 4) +
+			" " + unit + " (all spots)");
 		out.println("  (motion during the exposure lowers the intercept: then the static error is at least this)");
 		return 0;
 	}
@@ -93,10 +94,6 @@ final class StaticErrorCommand extends ContactTrackerCli.Subcommand {
 	/** @return whether both variances lie more than two standard errors above 0 */
 	private static boolean resolved(final StaticError.Result r) {
 		return Double.isFinite(r.varianceError()) && Math.min(r.varianceX(), r.varianceY()) > 2 * r.varianceError();
-	}
-
-	private static String fmt(final double v) {
-		return String.format(Locale.ROOT, "%.4g", v);
 	}
 
 	private static double median(final double[] v) {

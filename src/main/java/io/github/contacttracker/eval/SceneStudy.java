@@ -256,19 +256,11 @@ public final class SceneStudy {
 	/**
 	 * Runs every scene for every particle type and prints the table.
 	 *
-	 * @param particles comma-separated particle keys ({@link #particle})
+	 * @param types the particle types (e.g. {@link #particle} of a key)
 	 * @param scenes comma-separated scene keys ({@link #sceneKeys})
 	 * @param images frames per scene
 	 * @return the table's rows, in order (as CSV: {@link #CSV_HEADER}, then {@link #csv} of each)
 	 */
-	public List<Result> report(final PrintStream out, final String particles, final String scenes, final int images) {
-		final List<ParticleType> types = new ArrayList<>();
-		for (final String p : particles.split(","))
-			types.add(particle(p));
-		return report(out, types, scenes, images);
-	}
-
-	/** As {@link #report(PrintStream, String, String, int)}, for particle types given. */
 	public List<Result> report(final PrintStream out, final List<ParticleType> types, final String scenes,
 		final int images)
 	{
