@@ -79,6 +79,7 @@ public final class ProfileRefinement implements Refinement {
 		EmpiricalProfile profile = given;
 		final int clear = Flag.SECOND_PASS.bit() | Flag.FELL_BACK.bit() | Flag.NOT_CONVERGED.bit();
 		boolean settled = given != null;
+		final Rounds settling = new Rounds();
 		for (int round = 0; round < rounds; round++) {
 			if (given == null) {
 				profile = measure(plane, ps, e, params.rOut(), round == 0 ? null : profile, censoring);
@@ -106,15 +107,18 @@ public final class ProfileRefinement implements Refinement {
 				next[k] = new Estimate(next[k].x(), next[k].y(), flags, next[k].secondArea(), Math.abs(r.iterations()),
 					next[k].solve(), next[k].sigmaX(), next[k].sigmaY(), next[k].amplitude(), next[k].scale());
 			}
-			double move = 0;
+			final double[] moves = new double[next.length];
 			for (int k = 0; k < next.length; k++)
-				if (ps[k].reliable() && !next[k].has(Flag.FELL_BACK) && !e[k].has(Flag.FELL_BACK)) move = Math.max(move,
-					next[k].distanceTo(e[k]) / GroupFit.settled(next[k].sigmaX(), next[k].sigmaY()));
+				moves[k] = ps[k].reliable() && !next[k].has(Flag.FELL_BACK) && !e[k].has(Flag.FELL_BACK) ? next[k]
+					.distanceTo(e[k]) / GroupFit.settled(next[k].sigmaX(), next[k].sigmaY()) : Double.NaN;
 			e = next;
-			if (round > 0 && move <= 1) {
-				settled = true;
-				break;
-			}
+			// (the first round's moves are from the iterative centres; a verdict needs a round on a measured profile)
+			final Rounds.Verdict verdict = round == 0 ? Rounds.Verdict.GOING_ON : settling.next(moves);
+			if (verdict == Rounds.Verdict.GOING_ON) continue;
+			if (verdict == Rounds.Verdict.CYCLING) for (int k = 0; k < e.length; k++)
+				if (settling.stillMoving(k)) e[k] = e[k].withFlags(e[k].flags() | Flag.NOT_CONVERGED.bit());
+			settled = true;
+			break;
 		}
 		// profile and centres still moving at the last round: no fixed point, the centres can be off by that much
 		if (!settled) for (int k = 0; k < e.length; k++)

@@ -52,4 +52,9 @@ public record FrameResult(List<Localization> spots, List<Region> activeAreas, Li
 		activeAreas = List.copyOf(activeAreas);
 		secondAreas = List.copyOf(secondAreas);
 	}
+
+	/** @return this result with other spots (the same particles, e.g. flagged) */
+	public FrameResult withSpots(final List<Localization> newSpots) {
+		return new FrameResult(newSpots, activeAreas, secondAreas, noiseSigma, discarded, ownProfile);
+	}
 }

@@ -37,6 +37,7 @@ import io.github.contacttracker.core.Method;
 import io.github.contacttracker.core.TrackerParameters;
 import io.github.contacttracker.core.fit.GroupFit;
 import io.github.contacttracker.core.fit.ProfileRefinement;
+import io.github.contacttracker.core.fit.Rounds;
 import io.github.contacttracker.core.image.Plane;
 import io.github.contacttracker.core.profile.EmpiricalProfile;
 import io.github.contacttracker.core.profile.ProfileEstimator;
@@ -255,18 +256,34 @@ public final class StackTracker {
 		List<FrameResult> previous = iterative;
 		EmpiricalProfile used = profile(previous, null, sample, frame, params.rOut());
 		List<FrameResult> round = pass(tracker, used, sample, frame, false, progress, cancelled);
-		double move = unsettled(previous, round);
-		for (int r = 1; r < ProfileRefinement.PROFILE_ROUNDS && move > 1; r++) {
+		final Rounds rounds = new Rounds();
+		Rounds.Verdict verdict = rounds.next(moves(previous, round));
+		for (int r = 1; r < ProfileRefinement.PROFILE_ROUNDS && verdict == Rounds.Verdict.GOING_ON; r++) {
 			progress.total += sample.length;
 			previous = round;
 			used = profile(round, used, sample, frame, params.rOut());
 			round = pass(tracker, used, sample, frame, false, progress, cancelled);
-			move = unsettled(previous, round);
+			verdict = rounds.next(moves(previous, round));
 		}
 		// no fixed point within the rounds: every centre rests on a profile that was still moving. Settled: the
 		// profile of the last round is the fixed point's (to within the tolerance), and the sample frames were just
-		// refined with that very profile: without regions to keep, their results are the final ones.
-		return new ProfileStage(sample, used, move <= 1, round);
+		// refined with that very profile: without regions to keep, their results are the final ones. Cycling: so
+		// is the profile, but a few centres of the sample frames went back and forth between two fits; they are flagged.
+		if (verdict == Rounds.Verdict.CYCLING) round = stillMovingFlagged(round, rounds);
+		return new ProfileStage(sample, used, verdict != Rounds.Verdict.GOING_ON, round);
+	}
+
+	/** @return the results, the spots {@code rounds} saw still moving flagged {@code NOT_CONVERGED} */
+	private static List<FrameResult> stillMovingFlagged(final List<FrameResult> results, final Rounds rounds) {
+		final List<FrameResult> out = new ArrayList<>(results.size());
+		int i = 0;
+		for (final FrameResult r : results) {
+			final List<Localization> spots = new ArrayList<>(r.spots().size());
+			for (final Localization l : r.spots())
+				spots.add(rounds.stillMoving(i++) ? l.withFlags(l.flags() | Flag.NOT_CONVERGED.bit()) : l);
+			out.add(r.withSpots(spots));
+		}
+		return out;
 	}
 
 	/** @return the results, every spot flagged {@code NOT_CONVERGED} unless the profile rounds {@code settled} */
@@ -277,26 +294,33 @@ public final class StackTracker {
 			final List<Localization> spots = new ArrayList<>(r.spots().size());
 			for (final Localization l : r.spots())
 				spots.add(l.withFlags(l.flags() | Flag.NOT_CONVERGED.bit()));
-			out.add(new FrameResult(spots, r.activeAreas(), r.secondAreas(), r.noiseSigma(), r.discarded(), r
-				.ownProfile()));
+			out.add(r.withSpots(spots));
 		}
 		return out;
 	}
 
 	/**
-	 * How far two results of the same frames (spots in the same order) are from settled: the largest move of a
-	 * fitted spot between them, in units of its {@link GroupFit#settled tolerance}; settled at 1 or less.
+	 * The moves of the spots between two results of the same frames (spots in the same order), in frame order, each
+	 * in units of its {@link GroupFit#settled tolerance}; NaN for a spot whose centre is not the fit's own. Frames
+	 * whose spots differ in number: every move infinite.
 	 */
-	static double unsettled(final List<FrameResult> before, final List<FrameResult> after) {
-		double move = 0;
+	static double[] moves(final List<FrameResult> before, final List<FrameResult> after) {
+		int n = 0;
+		for (final FrameResult r : after)
+			n += r.spots().size();
+		final double[] moves = new double[n];
+		int i = 0;
 		for (int t = 0; t < before.size(); t++) {
 			final List<Localization> a = before.get(t).spots(), b = after.get(t).spots();
-			if (a.size() != b.size()) return Double.POSITIVE_INFINITY;
-			for (int k = 0; k < a.size(); k++)
-				if (fitted(b.get(k))) move = Math.max(move, Math.hypot(a.get(k).x() - b.get(k).x(), a
-					.get(k).y() - b.get(k).y()) / GroupFit.settled(b.get(k).sigmaX(), b.get(k).sigmaY()));
+			if (a.size() != b.size()) {
+				java.util.Arrays.fill(moves, Double.POSITIVE_INFINITY);
+				return moves;
+			}
+			for (int k = 0; k < a.size(); k++, i++)
+				moves[i] = fitted(b.get(k)) ? Math.hypot(a.get(k).x() - b.get(k).x(), a.get(k).y() - b.get(k).y()) /
+					GroupFit.settled(b.get(k).sigmaX(), b.get(k).sigmaY()) : Double.NaN;
 		}
-		return move;
+		return moves;
 	}
 
 	/**
@@ -359,7 +383,7 @@ public final class StackTracker {
 		int particles = 0;
 		for (final FrameResult r : results)
 			for (final Localization l : r.spots())
-				if (fitted(l)) particles++;
+				if (!l.has(Flag.MERGED) && !l.has(Flag.DEGENERATE)) particles++; // as the profile counts them
 		final int n = results.size();
 		final int m = particles <= PROFILE_PARTICLES ? n : (int) Math.max(1, Math.min(n, Math.ceil((double) PROFILE_PARTICLES *
 			n / particles)));
