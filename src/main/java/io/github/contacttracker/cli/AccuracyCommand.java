@@ -63,7 +63,7 @@ final class AccuracyCommand extends ContactTrackerCli.Subcommand {
 	private final Option<String> methodsOption = options.add(Option.text("--methods", "M,...", "Methods. Default: " +
 		"every method for the paper's protocol, fit for --scene."));
 	private final Option<String> sceneOption = options.add(Option.text("--scene", "S,...", "Instead of the paper's " +
-		"protocol, the harder scenes at contact (eval.SceneStudy): pair, chain4, triple, hex7, unlike, unlike13, " +
+		"protocol, the harder scenes at contact (eval.SceneStudy): pair, chain4, triple, hex7, hex19, unlike, unlike13, " +
 		"ramp, saturated, photon, or all."));
 	private final Option<String> separationsOption = options.add(Option.text("--separations", "R,...", "Separations " +
 		"over the diameter (1 = contact). Default: 2 down to 1."));

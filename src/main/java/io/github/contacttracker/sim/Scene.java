@@ -49,8 +49,8 @@ public record Scene(String key, ParticleType type, List<Particle> particles, dou
 {
 
 	/** The scenes {@link #of} knows, in order. */
-	public static final List<String> KEYS = List.of("pair", "chain4", "triple", "hex7", "unlike", "unlike13", "ramp",
-		"saturated", "photon");
+	public static final List<String> KEYS = List.of("pair", "chain4", "triple", "hex7", "hex19", "unlike", "unlike13",
+		"ramp", "saturated", "photon");
 
 	/** Grey levels per photon of the photon-noise scenes: about 300 photons at a background of 60. */
 	public static final double PHOTON_GAIN = 0.2;
@@ -88,6 +88,8 @@ public record Scene(String key, ParticleType type, List<Particle> particles, dou
 			case "chain4" -> plain("chain4", type, line(4, d));
 			case "triple" -> plain("triple", type, triangle(d));
 			case "hex7" -> plain("hex7", type, hexagon(d));
+			// more than the fit joins (16): fitted member by member, as a dense field is
+			case "hex19" -> plain("hex19", type, hexPatch(d, 2));
 			case "unlike" -> plain("unlike", type, unlike(d, 1.2, 1.1));
 			case "unlike13" -> plain("unlike13", type, unlike(d, 1.3, 1.15));
 			case "ramp" -> new Scene("ramp", type, line(2, d), 0.05, 0.03, PHOTON_GAIN, READ_NOISE, th);
@@ -138,6 +140,20 @@ public record Scene(String key, ParticleType type, List<Particle> particles, dou
 			final double a = Math.toRadians(10 + 60 * k);
 			ps.add(new Particle(d * Math.cos(a), d * Math.sin(a), 1, 1));
 		}
+		return ps;
+	}
+
+	/**
+	 * A patch of a hexagonal monolayer at contact: a particle and its neighbours out to {@code rings} rings (two: 19
+	 * particles), tilted by 10 degrees as {@link #hexagon} is.
+	 */
+	private static List<Particle> hexPatch(final double d, final int rings) {
+		final List<Particle> ps = new ArrayList<>();
+		final double a = Math.toRadians(10), b = a + Math.toRadians(60);
+		for (int i = -rings; i <= rings; i++)
+			for (int j = -rings; j <= rings; j++)
+				if (Math.abs(i + j) <= rings) ps.add(new Particle(d * (i * Math.cos(a) + j * Math.cos(b)), d * (i * Math.sin(
+					a) + j * Math.sin(b)), 1, 1));
 		return ps;
 	}
 

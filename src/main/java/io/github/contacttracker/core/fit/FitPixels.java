@@ -164,10 +164,8 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 		final int[] px = new int[cap], py = new int[cap];
 		final double[] pv = new double[cap];
 		final int[] spans = new int[2 * n];
-		final int[] rowStart = new int[Math.max(0, y1 - y0 + 2)]; // the first pixel of each row, and the end
 		int count = 0;
 		for (int y = y0; y <= y1; y++) {
-			rowStart[y - y0] = count;
 			final int m = spans(y, x0, x1, gx, gy, reach2, spans);
 			for (int s = 0; s < m; s += 2) {
 				final int a = spans[s], b = spans[s + 1];
@@ -176,21 +174,56 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 			}
 		}
 		if (count == 0) return new FitPixels(px, py, pv, new double[0], 0, mx, my, unit); // (none: not fitted)
-		rowStart[rowStart.length - 1] = count;
-		// The light of reliable particles outside the group, at their current centres, amplitudes and scales: on
-		// the rows within their reach only.
+		return new FitPixels(px, py, pv, otherLight(px, py, count, x0, x1, ps, e, group, profile), count, mx, my,
+			unit);
+	}
+
+	/**
+	 * @return these pixels with the light of the particles outside {@code group} at their estimates {@code e} now
+	 *         (the candidates of a member fitted in turn, from one sweep to the next)
+	 */
+	FitPixels relit(final Particle[] ps, final Estimate[] e, final int[] group, final EmpiricalProfile profile) {
+		int x0 = Integer.MAX_VALUE, x1 = Integer.MIN_VALUE;
+		for (int i = 0; i < count; i++) {
+			if (x[i] < x0) x0 = x[i];
+			if (x[i] > x1) x1 = x[i];
+		}
+		return new FitPixels(x, y, value, otherLight(x, y, count, x0, x1, ps, e, group, profile), count, u, v,
+			candidates);
+	}
+
+	/**
+	 * The light of the reliable particles outside the group, at their current centres, amplitudes and scales, on
+	 * pixels in row order (x within {@code [x0, x1]}): each particle on the rows within its reach only.
+	 */
+	private static double[] otherLight(final int[] px, final int[] py, final int count, final int x0, final int x1,
+		final Particle[] ps, final Estimate[] e, final int[] group, final EmpiricalProfile profile)
+	{
 		final double[] fixed = new double[count];
+		if (count == 0) return fixed;
+		final double R = profile.radius();
+		final int y0 = py[0], y1 = py[count - 1];
 		for (int k = 0; k < ps.length; k++) {
 			if (!ps[k].reliable() || GroupFit.contains(group, k)) continue;
 			final double kx = e[k].x(), ky = e[k].y(), ks = GroupFit.scaleOf(e[k]), ka = GroupFit.amplitudeOf(e[k]);
 			final double reach = R * ks;
 			if (kx < x0 - reach || kx > x1 + reach || ky < y0 - reach || ky > y1 + reach) continue;
-			final int rows = rowStart.length - 1;
-			final int from = rowStart[Math.max(0, Math.min(rows, (int) Math.floor(ky - reach) - y0))];
-			final int to = rowStart[Math.max(0, Math.min(rows, (int) Math.ceil(ky + reach) - y0 + 1))];
+			final int from = firstOfRow(py, count, (int) Math.floor(ky - reach));
+			final int to = firstOfRow(py, count, (int) Math.ceil(ky + reach) + 1);
 			addLight(px, py, fixed, from, to, kx, ky, ks, ka, reach, profile);
 		}
-		return new FitPixels(px, py, pv, fixed, count, mx, my, unit);
+		return fixed;
+	}
+
+	/** @return the index of the first pixel at row {@code row} or below it (rows ascending), {@code count} if none */
+	private static int firstOfRow(final int[] py, final int count, final int row) {
+		int lo = 0, hi = count;
+		while (lo < hi) {
+			final int mid = (lo + hi) >>> 1;
+			if (py[mid] < row) lo = mid + 1;
+			else hi = mid;
+		}
+		return lo;
 	}
 
 	/** Adds to {@code fixed} over pixels {@code from} to {@code to} the light of a particle outside the group. */
