@@ -42,6 +42,7 @@ import ij.gui.Roi;
 import ij.measure.ResultsTable;
 import io.github.contacttracker.advisor.ProfileAnalysis;
 import io.github.contacttracker.io.ProfilePlots;
+import io.github.contacttracker.io.ProfileReport;
 import io.github.contacttracker.io.ShownFrameProfile;
 
 /**
@@ -181,10 +182,8 @@ public class ContactTrackerProfileCommand extends OwnCommand {
 		b.append(String.format(Locale.ROOT, "%s: '%s'%s, particle at (%.2f, %.2f) px%s%n", PLOT_TITLE, imp.getTitle(),
 			p.frameCount() > 1 ? ", frame " + (p.frame() + 1) : "", r.x(), r.y(), r.refined() ? String.format(
 				Locale.ROOT, " (point given: %.0f, %.0f)", point[0], point[1]) : " (not refined)"));
-		for (final String line : r.report(p.integerData()))
+		for (final String line : ProfileReport.lines(r, p.integerData()))
 			b.append(ShownFrameProfile.wrap(line, ShownFrameProfile.LOG_WIDTH, "    ")).append('\n');
-		for (final String w : r.warnings())
-			b.append(ShownFrameProfile.wrap("  warning: " + w, ShownFrameProfile.LOG_WIDTH, "    ")).append('\n');
 		b.append(String.format(Locale.ROOT, "  macro: run(\"Contact Tracker\", \"threshold=%s r_out=%.0f diameter=%s\");",
 			fmt(suggested_threshold), suggested_r_out, fmt(p.diameter())));
 		IJ.log(b.toString());
