@@ -41,6 +41,7 @@ import ij.gui.PointRoi;
 import ij.gui.Roi;
 import ij.measure.ResultsTable;
 import io.github.contacttracker.advisor.ProfileAnalysis;
+import io.github.contacttracker.core.Numbers;
 import io.github.contacttracker.io.ProfilePlots;
 import io.github.contacttracker.io.ProfileReport;
 import io.github.contacttracker.io.ShownFrameProfile;
@@ -185,7 +186,7 @@ public class ContactTrackerProfileCommand extends OwnCommand {
 		for (final String line : ProfileReport.lines(r, p.integerData()))
 			b.append(ShownFrameProfile.wrap(line, ShownFrameProfile.LOG_WIDTH, "    ")).append('\n');
 		b.append(String.format(Locale.ROOT, "  macro: run(\"Contact Tracker\", \"threshold=%s r_out=%.0f diameter=%s\");",
-			fmt(suggested_threshold), suggested_r_out, fmt(p.diameter())));
+			Numbers.fmt(suggested_threshold, 3), suggested_r_out, Numbers.fmt(p.diameter(), 3)));
 		IJ.log(b.toString());
 	}
 
@@ -200,11 +201,6 @@ public class ContactTrackerProfileCommand extends OwnCommand {
 			rt.addValue(RESULT_COLUMNS.get(i), values[i]);
 		rt.setDecimalPlaces(rt.getColumnIndex("FRAME"), 0);
 		if (!GraphicsEnvironment.isHeadless() && ij.WindowManager.getWindow("Results") != null) rt.show("Results");
-	}
-
-	private static String fmt(final double v) {
-		return v == Math.rint(v) && Math.abs(v) < 1e15 ? Long.toString((long) v) : String.format(Locale.ROOT, "%.3f",
-			v);
 	}
 
 }
