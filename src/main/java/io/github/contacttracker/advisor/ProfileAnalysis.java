@@ -32,6 +32,7 @@ import io.github.contacttracker.core.Flag;
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.core.Localization;
 import io.github.contacttracker.core.Method;
+import io.github.contacttracker.core.Numbers;
 import io.github.contacttracker.core.TrackerParameters;
 import io.github.contacttracker.core.image.ComponentLabeling;
 import io.github.contacttracker.core.image.NoiseEstimate;
@@ -111,6 +112,8 @@ public final class ProfileAnalysis {
 	static final int MAX_NOT_ROUND_PERCENT = 1;
 	/** Grid step (px) of the bridge search. */
 	static final double BRIDGE_STEP_PX = 0.5;
+	/** Significant digits of the numbers in the helper's messages and warnings ({@link Numbers#significant}). */
+	public static final int SIGNIFICANT_DIGITS = 4;
 
 	/**
 	 * What the profile shows.
@@ -139,16 +142,17 @@ public final class ProfileAnalysis {
 	 * @param activeRadius radius of the particle's active area at the suggested threshold (px; 0 when even the
 	 *        centre is below it)
 	 * @param centres the profiled particles' centres {@code {x, y}} (px)
-	 * @param warnings things the user should know, one sentence each (empty when all is well)
+	 * @param findings things the user should know (empty when all is well), in the order they were found; the front
+	 *        ends put them into words ({@code io.ProfileReport})
 	 */
 	public record Result(double x, double y, boolean refined, double diameter, boolean diameterEstimated,
 		int particles, double maxRadius, double[] radius, double[] level, int[] count, double background,
 		double noise, double peak, double reach, double rOut, double bridge, double atContact, double threshold,
 		double activeRadius,
-		List<double[]> centres, List<String> warnings)
+		List<double[]> centres, List<Finding> findings)
 	{
 		public Result {
-			warnings = List.copyOf(warnings);
+			findings = List.copyOf(findings);
 			centres = List.copyOf(centres);
 		}
 
@@ -165,25 +169,6 @@ public final class ProfileAnalysis {
 		/** @return {@link #rOut} rounded up to whole pixels */
 		public double suggestedROut() {
 			return Math.ceil(rOut - 1e-9);
-		}
-
-		/** @return the lines that explain the numbers (no trailing newline), the same in Fiji and on the command line */
-		public List<String> report(final boolean integerData) {
-			final List<String> lines = new ArrayList<>();
-			lines.add(String.format(Locale.ROOT, "  background %.2f, noise sigma %.2f (robust, around the particles), " +
-				"peak %.2f (grey levels)", background, noise, peak));
-			lines.add(String.format(Locale.ROOT, "  diameter %.2f px%s; profile of %d particle%s", diameter,
-				diameterEstimated ? " (estimated)" : "", particles, particles == 1 ? "" : "s"));
-			lines.add(String.format(Locale.ROOT,
-				"  profile within the noise of the background beyond %.2f px; + %.0f px = %.2f -> r_out = %.0f px", reach,
-				R_OUT_MARGIN_PX, rOut, suggestedROut()));
-			lines.add(String.format(Locale.ROOT, "  brightest point between two or three particles at contact " +
-				"(D = %.2f px): %.2f; + %.0f sigma = %.2f%s -> threshold = %s", diameter, bridge,
-				THRESHOLD_MARGIN_SIGMAS, atContact, threshold > atContact ? String.format(Locale.ROOT, ", raised to %.2f " +
-					"(see the warnings)", threshold) : "", fmt(suggestedThreshold(integerData))));
-			lines.add(String.format(Locale.ROOT, "  active area radius at this threshold: %.2f px (D/2 = %.2f px)",
-				activeRadius, diameter / 2));
-			return lines;
 		}
 	}
 
@@ -222,30 +207,75 @@ public final class ProfileAnalysis {
 	private static <T extends RealType<T>> Result run(final RandomAccessibleInterval<T> frame, final double[] point,
 		final double diameterGiven, final double maxRadiusGiven)
 	{
+		checkArguments(diameterGiven, maxRadiusGiven);
+		final Plane plane = Plane.of(frame);
+		final double[] at = point == null ? null : local(plane, point);
+		final Spots spots = findSpots(plane, point, at, diameterGiven);
+		final List<Finding> findings = new ArrayList<>();
+		final Sized sized = sizeAndMeasure(plane, spots, at, diameterGiven, maxRadiusGiven, findings);
+		final double diameter = sized.diameter();
+		final Measured m = sized.measured();
+		final Pooled pooled = m.pooled();
+		final double[] centre = m.centres().get(0);
+		final double rOut = m.reach() + R_OUT_MARGIN_PX;
+		final Threshold t = threshold(plane, pooled, diameter, m.reach(), centre, findings);
+		final double[] level = levels(pooled);
+		final double activeRadius = activeRadius(pooled, level, t.threshold());
+		if (activeRadius == 0) findings.add(new Finding.ThresholdAboveCentre());
+		if (rOut > diameter) findings.add(new Finding.ROutAboveDiameter(rOut, diameter));
+		final List<double[]> inFrame = new ArrayList<>();
+		for (final double[] c : m.centres())
+			inFrame.add(new double[] { c[0] + plane.minX(), c[1] + plane.minY() });
+		return new Result(centre[0] + plane.minX(), centre[1] + plane.minY(), m.refined(), diameter, sized.estimated(),
+			m.centres().size(), m.radiusCap(), pooled.radius, level, pooled.count, pooled.background, pooled.noise, t
+				.peak(), m.reach(), rOut, t.bridge(), t.atContact(), t.threshold(), activeRadius, inFrame, findings);
+	}
+
+	/** @throws InvalidInputException for a diameter or radius that is negative or not a number */
+	private static void checkArguments(final double diameterGiven, final double maxRadiusGiven) {
 		if (!(diameterGiven >= 0) || !Double.isFinite(diameterGiven))
 			throw new InvalidInputException("diameter must be the particle diameter in pixels (> 0; 0 = estimate " +
 				"it), not " + fmt(diameterGiven));
 		if (!(maxRadiusGiven >= 0) || !Double.isFinite(maxRadiusGiven))
 			throw new InvalidInputException("max_radius must be >= 0 pixels (0 = automatic), not " + fmt(
 				maxRadiusGiven));
-		final Plane plane = Plane.of(frame);
-		final int w = plane.width(), h = plane.height();
-		double lx = Double.NaN, ly = Double.NaN;
-		if (point != null) {
-			lx = point[0] - plane.minX();
-			ly = point[1] - plane.minY();
-			if (!(lx >= -0.5 && lx < w - 0.5 && ly >= -0.5 && ly < h - 0.5))
-				throw new InvalidInputException("point (" + fmt(point[0]) + ", " + fmt(point[1]) + ") is outside the " +
-					"image");
-		}
-		final List<String> warnings = new ArrayList<>();
+	}
 
-		// 1. the spots, at half height
+	/**
+	 * @return the point in the plane's own coordinates
+	 * @throws InvalidInputException if it is outside the plane
+	 */
+	private static double[] local(final Plane plane, final double[] point) {
+		final double lx = point[0] - plane.minX(), ly = point[1] - plane.minY();
+		if (!(lx >= -0.5 && lx < plane.width() - 0.5 && ly >= -0.5 && ly < plane.height() - 0.5))
+			throw new InvalidInputException("point (" + fmt(point[0]) + ", " + fmt(point[1]) + ") is outside the " +
+				"image");
+		return new double[] { lx, ly };
+	}
+
+	/**
+	 * The frame's spots, in the plane's coordinates, with their nearest-neighbour distances.
+	 *
+	 * @param near how far from a point given its particle's brightest pixel is looked for (px)
+	 */
+	private record Spots(List<Localization> spots, double[][] xy, double[] nn, double near) {}
+
+	/**
+	 * Step 1: the spots at half height between the frame's median and its brightest pixels (or the brightest pixel
+	 * near the point given), by one radial-symmetry pass.
+	 *
+	 * @param point the point given, in the frame's coordinates ({@code null} if none)
+	 * @param at the same point in the plane's coordinates
+	 * @throws InvalidInputException if nothing is brighter than the noise
+	 */
+	private static Spots findSpots(final Plane plane, final double[] point, final double[] at,
+		final double diameterGiven)
+	{
 		final double[] sample = sample(plane);
 		final double median0 = quantile(sample, 0.5);
 		final double noise0 = Math.max(NoiseEstimate.sigma(plane), 1e-6);
 		final double near = diameterGiven > 0 ? Math.max(2, diameterGiven / 4) : 5;
-		final double top = point != null ? peak(plane, lx, ly, near) : quantile(sample, 1 - Math.max(1e-4, 20.0 /
+		final double top = point != null ? peak(plane, at[0], at[1], near) : quantile(sample, 1 - Math.max(1e-4, 20.0 /
 			sample.length));
 		if (!(top - median0 > THRESHOLD_MARGIN_SIGMAS * noise0)) {
 			if (point != null) throw new InvalidInputException(String.format(Locale.ROOT, "no bright particle at " +
@@ -260,79 +290,92 @@ public final class ProfileAnalysis {
 		final double[][] xy = new double[spots.size()][];
 		for (int k = 0; k < xy.length; k++)
 			xy[k] = new double[] { spots.get(k).x() - plane.minX(), spots.get(k).y() - plane.minY() };
-		final double[] nn = nearestNeighbourDistances(xy);
+		return new Spots(spots, xy, nearestNeighbourDistances(xy), near);
+	}
 
-		// 2. the diameter: given; or where the particles' own image ends, unless the spots sit closer than that. It is
-		// measured on a profile taken out to a provisional diameter: the spots' spacing, but no more than
-		// PROVISIONAL_CORE_RADII times their half-height radius (isolated particles sit far apart: their spacing would
-		// take the profile far out, over the background's texture and every neighbour)
-		double diameter = diameterGiven;
-		final boolean estimated = diameter == 0;
-		final double fromSpots = xy.length >= 2 ? quantile(nn.clone(), DIAMETER_PERCENTILE / 100) : Double.NaN;
-		if (estimated) {
-			final double[] radii = new double[spots.size()];
-			for (int k = 0; k < radii.length; k++)
-				radii[k] = Math.sqrt(spots.get(k).activeArea() / Math.PI);
-			final double fromCores = PROVISIONAL_CORE_RADII * quantile(radii, 0.5);
-			diameter = Double.isFinite(fromSpots) ? Math.min(fromSpots, fromCores) : fromCores;
-		}
-		final double[] at = point == null ? null : new double[] { lx, ly };
-		Measured m = measure(plane, spots, xy, nn, at, near, diameter, maxRadiusGiven);
-		if (estimated) {
-			final double own = 2 * m.imageEdge();
-			final boolean fromImage = !(fromSpots < own);
-			final double provisional = diameter;
-			diameter = fromImage ? own : fromSpots;
-			if (Math.abs(diameter - provisional) > 0.01 * provisional)
-				m = measure(plane, spots, xy, nn, at, near, diameter, maxRadiusGiven);
-			warnings.add(String.format(Locale.ROOT, "the diameter (%s px) is estimated as %s: give it if you know it",
-				fmt(round2(diameter)), fromImage ? String.format(Locale.ROOT, "twice the radius where the particles' " +
-					"image returns to the background (%s px)", fmt(round2(own / 2))) : String.format(Locale.ROOT, "the " +
-						"%s-th percentile of the %d spots' nearest-neighbour distances, closer than the particles' image " +
-						"reaches (%s px across)", fmt(DIAMETER_PERCENTILE), xy.length, fmt(round2(own)))));
-		}
-		warnings.addAll(m.warnings());
-		final List<double[]> centres = m.centres();
-		final boolean refined = m.refined();
-		final double cx = centres.get(0)[0], cy = centres.get(0)[1];
-		final double radiusCap = m.radiusCap();
-		final Pooled pooled = m.pooled();
-		final double reach = m.reach();
-		final double rOut = reach + R_OUT_MARGIN_PX;
-		final double noise = pooled.noise;
+	/** The diameter the profile was measured with, whether it was estimated, and the profile. */
+	private record Sized(double diameter, boolean estimated, Measured measured) {}
 
-		// 7. the bridge between particles at contact
+	/**
+	 * Step 2 and the profile (steps 3-6): the diameter given; or where the particles' own image ends, unless the
+	 * spots sit closer than that. It is measured on a profile taken out to a provisional diameter: the spots'
+	 * spacing, but no more than {@link #PROVISIONAL_CORE_RADII} times their half-height radius (isolated particles
+	 * sit far apart: their spacing would take the profile far out, over the background's texture and every
+	 * neighbour), and measured again at the estimate.
+	 */
+	private static Sized sizeAndMeasure(final Plane plane, final Spots s, final double[] at,
+		final double diameterGiven, final double maxRadiusGiven, final List<Finding> findings)
+	{
+		if (diameterGiven != 0) {
+			final Measured m = measure(plane, s, at, diameterGiven, maxRadiusGiven);
+			findings.addAll(m.findings());
+			return new Sized(diameterGiven, false, m);
+		}
+		final double fromSpots = s.xy().length >= 2 ? quantile(s.nn().clone(), DIAMETER_PERCENTILE / 100)
+			: Double.NaN;
+		final double[] radii = new double[s.spots().size()];
+		for (int k = 0; k < radii.length; k++)
+			radii[k] = Math.sqrt(s.spots().get(k).activeArea() / Math.PI);
+		final double fromCores = PROVISIONAL_CORE_RADII * quantile(radii, 0.5);
+		final double provisional = Double.isFinite(fromSpots) ? Math.min(fromSpots, fromCores) : fromCores;
+		Measured m = measure(plane, s, at, provisional, maxRadiusGiven);
+		final double own = 2 * m.imageEdge();
+		final boolean fromImage = !(fromSpots < own);
+		final double diameter = fromImage ? own : fromSpots;
+		if (Math.abs(diameter - provisional) > 0.01 * provisional) m = measure(plane, s, at, diameter, maxRadiusGiven);
+		findings.add(fromImage ? new Finding.DiameterFromImage(diameter, own / 2) : new Finding.DiameterFromSpacing(
+			diameter, DIAMETER_PERCENTILE, s.xy().length, own));
+		findings.addAll(m.findings());
+		return new Sized(diameter, true, m);
+	}
+
+	/**
+	 * The suggested threshold and what it was raised from.
+	 *
+	 * @param bridge the brightest grey level between particles at contact
+	 * @param atContact {@code bridge} plus the noise margin
+	 * @param threshold the suggestion (not rounded)
+	 * @param peak the brightest pixel of the first particle
+	 */
+	private record Threshold(double bridge, double atContact, double threshold, double peak) {}
+
+	/**
+	 * Steps 7-9: the bridge between particles at contact plus the noise margin; raised clear of the background's
+	 * texture (halos, rings, their sums between particles); and raised until every active area has the shape of one
+	 * particle (bright fringes between touching particles in bright field are brighter than the sum of two
+	 * profiles), up to half the cores' height.
+	 */
+	private static Threshold threshold(final Plane plane, final Pooled pooled, final double diameter,
+		final double reach, final double[] centre, final List<Finding> findings)
+	{
 		final double bridge = pooled.background + Math.max(0, brightestBetween(pooled, diameter, reach));
-		final double atContact = bridge + THRESHOLD_MARGIN_SIGMAS * noise;
-		// 8. clear of the background's texture (halos, rings, their sums between particles)
+		final double atContact = bridge + THRESHOLD_MARGIN_SIGMAS * pooled.noise;
 		final double[] gap = textureGap(plane, atContact, pooled.background);
 		final double clear = Math.max(atContact, Double.isNaN(gap[0]) ? atContact : pooled.background + (gap[0] +
 			gap[1]) / 2);
-		if (clear > atContact)
-			warnings.add(String.format(Locale.ROOT, "at %s, %d bright spots of the background (halos, rings; up to %s " +
-				"above it) would be taken for particles, whose cores rise at least %s above it: the threshold is raised to " +
-				"the middle of that gap", fmt(round2(atContact)), (int) gap[2], fmt(round2(gap[0])), fmt(round2(gap[1]))));
-		// 9. and where every active area has the shape of one particle (bright fringes between touching particles
-		// in bright field are brighter than the sum of two profiles), up to half the cores' height
-		final double peak = peak(plane, cx, cy, Math.max(2, diameter / 4));
+		if (clear > atContact) findings.add(new Finding.BackgroundTexture(atContact, (int) gap[2], gap[0], gap[1]));
+		final double peak = peak(plane, centre[0], centre[1], Math.max(2, diameter / 4));
 		final double ceiling = pooled.background + 0.5 * (peak - pooled.background);
-		final double[] shaped = roundFrom(plane, clear, ceiling, Math.max(0.5, noise / 2));
+		final double[] shaped = roundFrom(plane, clear, ceiling, Math.max(0.5, pooled.noise / 2));
 		final double threshold = shaped[0];
-		if (threshold > clear)
-			warnings.add(String.format(Locale.ROOT, "at %s, %d of the frame's %d active areas have the shape of no " +
-				"single particle (bright fringes between touching particles, or particles merged): the threshold is raised " +
-				"until they are round", fmt(round2(clear)), (int) shaped[1], (int) shaped[2]));
-		else if (shaped[1] > 0)
-			warnings.add(String.format(Locale.ROOT, "%d of the frame's %d active areas have the shape of no single " +
-				"particle up to %s (half the cores' height): they will be flagged MERGED", (int) shaped[1], (int) shaped[2],
-				fmt(round2(ceiling))));
-		final int used = pooled.radius.length;
-		final double[] level = new double[used];
-		for (int k = 0; k < used; k++)
+		if (threshold > clear) findings.add(new Finding.RaisedUntilRound(clear, (int) shaped[1], (int) shaped[2]));
+		else if (shaped[1] > 0) findings.add(new Finding.NotRound((int) shaped[1], (int) shaped[2], ceiling));
+		return new Threshold(bridge, atContact, threshold, peak);
+	}
+
+	/** @return each ring's grey level: the background plus its height (NaN for an empty ring) */
+	private static double[] levels(final Pooled pooled) {
+		final double[] level = new double[pooled.radius.length];
+		for (int k = 0; k < level.length; k++)
 			level[k] = pooled.count[k] > 0 ? pooled.background + pooled.height[k] : Double.NaN;
+		return level;
+	}
+
+	/** @return where the profile falls below the threshold (px, interpolated; 0 when even the centre is below) */
+	private static double activeRadius(final Pooled pooled, final double[] level, final double threshold) {
 		double activeRadius = 0;
 		int previous = -1;
-		for (int k = 0; k < used; k++) {
+		for (int k = 0; k < level.length; k++) {
 			if (pooled.count[k] == 0) continue;
 			if (level[k] < threshold) {
 				if (previous >= 0) activeRadius = pooled.radius[previous] + (pooled.radius[k] - pooled.radius[previous]) *
@@ -342,19 +385,7 @@ public final class ProfileAnalysis {
 			activeRadius = pooled.radius[k];
 			previous = k;
 		}
-		if (activeRadius == 0)
-			warnings.add("the suggested threshold is above the particle's centre: at contact no threshold separates " +
-				"two such particles (the profile is too long-ranged for the method)");
-		if (rOut > diameter)
-			warnings.add(String.format(Locale.ROOT, "r_out (%s px) is larger than the diameter (%s px): at contact " +
-				"little undistorted active area is left for the paper's second pass (the paper needs r_out <= D; the " +
-				"deblend and fit methods do not)", fmt(round2(rOut)), fmt(round2(diameter))));
-		final List<double[]> inFrame = new ArrayList<>();
-		for (final double[] c : centres)
-			inFrame.add(new double[] { c[0] + plane.minX(), c[1] + plane.minY() });
-		return new Result(cx + plane.minX(), cy + plane.minY(), refined, diameter, estimated, centres.size(), radiusCap,
-			pooled.radius, level, pooled.count, pooled.background, noise, peak, reach, rOut, bridge, atContact, threshold,
-			activeRadius, inFrame, warnings);
+		return activeRadius;
 	}
 
 	/**
@@ -362,17 +393,21 @@ public final class ProfileAnalysis {
 	 * profile, its reach and where the particles' own image ends ({@link #imageEdge(Pooled, double)}).
 	 */
 	private record Measured(List<double[]> centres, boolean refined, double radiusCap, Pooled pooled, double reach,
-		double imageEdge, List<String> warnings) {}
+		double imageEdge, List<Finding> findings) {}
 
 	/**
 	 * Steps 3-6: picks the particles (the one at {@code point}, else the most isolated), masks their neighbours and
 	 * pools their profile, twice (the masks widened to the measured reach the second time).
 	 */
-	private static Measured measure(final Plane plane, final List<Localization> spots, final double[][] xy,
-		final double[] nn, final double[] point, final double near, final double diameter, final double maxRadiusGiven)
+	private static Measured measure(final Plane plane, final Spots s, final double[] point, final double diameter,
+		final double maxRadiusGiven)
 	{
 		final int w = plane.width(), h = plane.height();
-		final List<String> warnings = new ArrayList<>();
+		final List<Localization> spots = s.spots();
+		final double[][] xy = s.xy();
+		final double[] nn = s.nn();
+		final double near = s.near();
+		final List<Finding> findings = new ArrayList<>();
 		final double wanted = maxRadiusGiven > 0 ? maxRadiusGiven : AUTO_RADIUS_DIAMETERS * diameter;
 		final List<Integer> chosen = new ArrayList<>();
 		boolean refined = true;
@@ -387,12 +422,12 @@ public final class ProfileAnalysis {
 			if (best >= 0) {
 				chosen.add(best);
 				if (spots.get(best).has(Flag.MERGED))
-					warnings.add("the particle's active area looks merged with a neighbour's: pick an isolated particle");
+					findings.add(new Finding.MergedAtPoint());
 			}
 			else {
 				refined = false;
 				own = point;
-				warnings.add("could not refine the centre; the profile is taken around the point given");
+				findings.add(new Finding.NotRefined());
 			}
 		}
 		else {
@@ -401,8 +436,8 @@ public final class ProfileAnalysis {
 				order[k] = k;
 			Arrays.sort(order, Comparator.comparingDouble(k -> -nn[k]));
 			for (final int k : order) {
-				final Localization s = spots.get(k);
-				if (s.has(Flag.MERGED) || s.has(Flag.AT_BORDER) || s.has(Flag.DEGENERATE)) continue;
+				final Localization spot = spots.get(k);
+				if (spot.has(Flag.MERGED) || spot.has(Flag.AT_BORDER) || spot.has(Flag.DEGENERATE)) continue;
 				if (xy[k][0] < diameter / 2 || xy[k][1] < diameter / 2 || xy[k][0] > w - 1 - diameter / 2 || xy[k][1] > h -
 					1 - diameter / 2) continue;
 				if (!chosen.isEmpty() && nn[k] < Math.min(wanted, 0.5 * nn[chosen.get(0)])) break;
@@ -412,9 +447,7 @@ public final class ProfileAnalysis {
 			if (chosen.isEmpty()) throw new InvalidInputException("no single particle away from the border found in " +
 				"the frame: give a point on one");
 			if (nn.length > 1 && nn[chosen.get(0)] < 2 * diameter)
-				warnings.add(String.format(Locale.ROOT, "no particle is isolated: the most isolated has a neighbour at %s " +
-					"px (%s diameters); the profile's outer part may show neighbours", fmt(round2(nn[chosen.get(0)])), fmt(
-						round2(nn[chosen.get(0)] / diameter))));
+				findings.add(new Finding.NotIsolated(nn[chosen.get(0)], diameter));
 		}
 		final List<double[]> centres = new ArrayList<>();
 		if (own != null) centres.add(own);
@@ -424,8 +457,8 @@ public final class ProfileAnalysis {
 		Pooled pooled = pool(plane, centres, xy, diameter, radiusCap);
 		double reach = reach(pooled, radiusCap, null);
 		pooled = pool(plane, centres, xy, Math.max(diameter, reach + R_OUT_MARGIN_PX), radiusCap);
-		reach = reach(pooled, radiusCap, warnings);
-		return new Measured(pooled.centres(), refined, radiusCap, pooled, reach, imageEdge(pooled, reach), warnings);
+		reach = reach(pooled, radiusCap, findings);
+		return new Measured(pooled.centres(), refined, radiusCap, pooled, reach, imageEdge(pooled, reach), findings);
 	}
 
 	/**
@@ -684,7 +717,7 @@ public final class ProfileAnalysis {
 	}
 
 	/** The reach: scanning inwards from the background annulus, the first ring off the background by more than s. */
-	private static double reach(final Pooled p, final double radiusCap, final List<String> warnings) {
+	private static double reach(final Pooled p, final double radiusCap, final List<Finding> findings) {
 		final double inner = innerBackgroundRadius(radiusCap);
 		int last = -1;
 		for (int k = 0; k < p.radius.length; k++)
@@ -692,8 +725,7 @@ public final class ProfileAnalysis {
 		for (int k = last; k >= 0; k--) {
 			if (p.count[k] == 0 || !(Math.abs(p.height[k]) > p.noise)) continue;
 			if (k == last) {
-				if (warnings != null) warnings.add(String.format(Locale.ROOT, "the profile has not returned to the " +
-					"background by %s px: increase max_radius (r_out is a lower bound)", fmt(round2(inner))));
+				if (findings != null) findings.add(new Finding.NotBackToBackground(inner));
 				return p.radius[k];
 			}
 			int j = k + 1;
@@ -824,9 +856,9 @@ public final class ProfileAnalysis {
 		return Math.round(v * 100) / 100.0;
 	}
 
+	/** How the helper's error messages write a number: {@value #SIGNIFICANT_DIGITS} significant digits. */
 	private static String fmt(final double v) {
-		if (v == Math.rint(v) && Math.abs(v) < 1e15) return Long.toString((long) v);
-		return String.format(Locale.ROOT, "%.4g", v);
+		return Numbers.significant(v, SIGNIFICANT_DIGITS);
 	}
 
 	/** A growable array of doubles. */

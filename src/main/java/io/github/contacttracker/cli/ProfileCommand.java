@@ -36,6 +36,7 @@ import io.github.contacttracker.io.AtomicFile;
 import io.github.contacttracker.io.ImageFiles;
 import io.github.contacttracker.io.ImagePlusFrames;
 import io.github.contacttracker.io.ProfilePlots;
+import io.github.contacttracker.io.ProfileReport;
 import io.github.contacttracker.pipeline.MeasuredSettings;
 import net.imglib2.RandomAccessibleInterval;
 
@@ -97,10 +98,8 @@ public final class ProfileCommand extends ContactTrackerCli.Subcommand {
 		for (int k = 0; k < r.radius().length; k++)
 			if (r.count()[k] > 0) out.printf(Locale.ROOT, "%7.2f %8.2f %9.2f %7d%n", r.radius()[k], r.level()[k], r
 				.level()[k] - r.background(), r.count()[k]);
-		for (final String line : r.report(integerData))
+		for (final String line : ProfileReport.lines(r, integerData))
 			out.println(line);
-		for (final String w : r.warnings())
-			out.println("  warning: " + w);
 		final List<Path> targets = new ArrayList<>();
 		if (png != null) {
 			ProfilePlots.writePng(ProfilePlots.plot(r, "Contact Tracker Profile: " + movie.getFileName(), threshold,

@@ -123,13 +123,13 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 
 	// format: the helper fills in 0.01 px (a diameter of 34.06 showed as 34.1: the dialog's format follows the
 	// default's decimals)
-	@Parameter(validater = "validateInputs", label = "r_out (px)", min = "0", stepSize = "0.5", style = LENGTH_FORMAT, description = DialogHelp.TIP + TrackingSettings.HELP_R_OUT)
+	@Parameter(validater = "validateInputs", label = "r_out (px)", min = "" + TrackerParameters.R_OUT_ABOVE, stepSize = "0.5", style = LENGTH_FORMAT, description = DialogHelp.TIP + TrackingSettings.HELP_R_OUT)
 	private double r_out = TrackingSettings.R_OUT.defaultValue();
 
-	@Parameter(validater = "validateInputs", label = "Min area (px)", min = "1", description = DialogHelp.TIP + TrackingSettings.HELP_MIN_AREA)
+	@Parameter(validater = "validateInputs", label = "Min area (px)", min = "" + TrackerParameters.MIN_AREA_AT_LEAST, description = DialogHelp.TIP + TrackingSettings.HELP_MIN_AREA)
 	private int min_area = TrackingSettings.MIN_AREA.defaultValue();
 
-	@Parameter(validater = "validateInputs", label = "Min second area (px)", min = "3", description = DialogHelp.TIP + TrackingSettings.HELP_MIN_SECOND_AREA)
+	@Parameter(validater = "validateInputs", label = "Min second area (px)", min = "" + TrackerParameters.MIN_SECOND_AREA_AT_LEAST, description = DialogHelp.TIP + TrackingSettings.HELP_MIN_SECOND_AREA)
 	private int min_second_area = TrackingSettings.MIN_SECOND_AREA.defaultValue();
 
 	@Parameter(validater = "validateInputs", label = "Connectivity", choices = { "8", "4" }, description = DialogHelp.TIP + TrackingSettings.HELP_CONNECTIVITY)
@@ -140,12 +140,12 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 		description = DialogHelp.TIP + TrackingSettings.HELP_METHOD)
 	private String method = TrackingSettings.METHOD.defaultValue();
 
-	@Parameter(validater = "validateInputs", label = "Particle diameter (px, 0 = not given)", min = "0", stepSize = "0.5",
+	@Parameter(validater = "validateInputs", label = "Particle diameter (px, 0 = not given)", min = "" + TrackerParameters.DIAMETER_AT_LEAST, stepSize = "0.5",
 		style = LENGTH_FORMAT,
 		description = DialogHelp.TIP + TrackingSettings.HELP_DIAMETER)
 	private double diameter = TrackingSettings.DIAMETER.defaultValue();
 
-	@Parameter(validater = "validateInputs", label = "Channel", min = "1", description = DialogHelp.TIP + TrackingSettings.HELP_CHANNEL)
+	@Parameter(validater = "validateInputs", label = "Channel", min = "" + TrackingSettings.CHANNEL_AT_LEAST, description = DialogHelp.TIP + TrackingSettings.HELP_CHANNEL)
 	private int channel = TrackingSettings.CHANNEL.defaultValue();
 
 	// A button, not a setting: optional (a Button), never remembered, not recorded (it holds no value), and Fiji's

@@ -41,7 +41,9 @@ import ij.gui.PointRoi;
 import ij.gui.Roi;
 import ij.measure.ResultsTable;
 import io.github.contacttracker.advisor.ProfileAnalysis;
+import io.github.contacttracker.core.Numbers;
 import io.github.contacttracker.io.ProfilePlots;
+import io.github.contacttracker.io.ProfileReport;
 import io.github.contacttracker.io.ShownFrameProfile;
 
 /**
@@ -181,12 +183,10 @@ public class ContactTrackerProfileCommand extends OwnCommand {
 		b.append(String.format(Locale.ROOT, "%s: '%s'%s, particle at (%.2f, %.2f) px%s%n", PLOT_TITLE, imp.getTitle(),
 			p.frameCount() > 1 ? ", frame " + (p.frame() + 1) : "", r.x(), r.y(), r.refined() ? String.format(
 				Locale.ROOT, " (point given: %.0f, %.0f)", point[0], point[1]) : " (not refined)"));
-		for (final String line : r.report(p.integerData()))
+		for (final String line : ProfileReport.lines(r, p.integerData()))
 			b.append(ShownFrameProfile.wrap(line, ShownFrameProfile.LOG_WIDTH, "    ")).append('\n');
-		for (final String w : r.warnings())
-			b.append(ShownFrameProfile.wrap("  warning: " + w, ShownFrameProfile.LOG_WIDTH, "    ")).append('\n');
 		b.append(String.format(Locale.ROOT, "  macro: run(\"Contact Tracker\", \"threshold=%s r_out=%.0f diameter=%s\");",
-			fmt(suggested_threshold), suggested_r_out, fmt(p.diameter())));
+			Numbers.fmt(suggested_threshold, 3), suggested_r_out, Numbers.fmt(p.diameter(), 3)));
 		IJ.log(b.toString());
 	}
 
@@ -201,11 +201,6 @@ public class ContactTrackerProfileCommand extends OwnCommand {
 			rt.addValue(RESULT_COLUMNS.get(i), values[i]);
 		rt.setDecimalPlaces(rt.getColumnIndex("FRAME"), 0);
 		if (!GraphicsEnvironment.isHeadless() && ij.WindowManager.getWindow("Results") != null) rt.show("Results");
-	}
-
-	private static String fmt(final double v) {
-		return v == Math.rint(v) && Math.abs(v) < 1e15 ? Long.toString((long) v) : String.format(Locale.ROOT, "%.3f",
-			v);
 	}
 
 }

@@ -27,7 +27,7 @@ import java.util.Locale;
 /**
  * How a number is written for people and command lines: messages, suggested option values, report text. (Data
  * files keep their own fixed formats.) The one place for it: a front end or the core that prints a number uses
- * one of these two, not a format of its own.
+ * one of these, not a format of its own.
  */
 public final class Numbers {
 
@@ -50,5 +50,17 @@ public final class Numbers {
 		if (!Double.isFinite(v)) return Double.toString(v);
 		return new BigDecimal(String.format(Locale.ROOT, "%." + decimals + "f", v)).stripTrailingZeros()
 			.toPlainString();
+	}
+
+	/**
+	 * @param digits how many significant digits
+	 * @return a whole {@code v} without a decimal point ({@code 85}), any other with {@code digits} significant
+	 *         digits, trailing zeros kept ({@code 13.98}, {@code 124.0}, {@code 1.750} for 4); for the measured
+	 *         values the profile helper quotes in its warnings and errors, which span grey levels, pixels and
+	 *         ratios and so read best at a fixed precision rather than with a fixed number of decimals
+	 */
+	public static String significant(final double v, final int digits) {
+		if (v == Math.rint(v) && Math.abs(v) < 1e15) return Long.toString((long) v);
+		return String.format(Locale.ROOT, "%." + digits + "g", v);
 	}
 }

@@ -43,19 +43,41 @@ public record TrackerParameters(double threshold, double rOut, int minArea, Conn
 	/** Default {@code min_second_area} (px). */
 	public static final int DEFAULT_MIN_SECOND_AREA = 50;
 
+	// The limits of the parameters, stated here only: the settings descriptor (settings.TrackingSettings), and
+	// through it every front end, takes them from these constants (compile-time constants, so that the Fiji
+	// command's @Parameter annotations can name them too).
+
+	/** What a valid threshold is, for messages. */
+	public static final String THRESHOLD_ALLOWED = "a finite grey level";
+	/** {@code r_out} must be above this (px). */
+	public static final double R_OUT_ABOVE = 0;
+	/** What a valid {@code r_out} is, for messages. */
+	public static final String R_OUT_ALLOWED = "a positive number of pixels";
+	/** Smallest {@code min_area} (px): one pixel. */
+	public static final int MIN_AREA_AT_LEAST = 1;
+	/** What a valid {@code min_area} is, for messages. */
+	public static final String MIN_AREA_ALLOWED = "at least " + MIN_AREA_AT_LEAST + " pixel";
+	/** Smallest {@code min_second_area} (px). */
+	public static final int MIN_SECOND_AREA_AT_LEAST = 3;
+	/** What a valid {@code min_second_area} is, for messages. */
+	public static final String MIN_SECOND_AREA_ALLOWED = "at least " + MIN_SECOND_AREA_AT_LEAST + " pixels";
+	/** Smallest diameter (px); the smallest, 0, means not known. */
+	public static final double DIAMETER_AT_LEAST = 0;
+
 	/** @throws IllegalArgumentException with a one-line message naming the bad parameter */
 	public TrackerParameters {
 		if (!Double.isFinite(threshold))
-			throw new InvalidInputException("threshold must be a finite grey level, not " + threshold);
-		if (!(rOut > 0) || !Double.isFinite(rOut))
-			throw new InvalidInputException("r_out must be a positive number of pixels, not " + rOut);
-		if (minArea < 1)
-			throw new InvalidInputException("min_area must be at least 1 pixel, not " + minArea);
-		if (minSecondArea < 3)
-			throw new InvalidInputException("min_second_area must be at least 3 pixels, not " + minSecondArea);
+			throw new InvalidInputException("threshold must be " + THRESHOLD_ALLOWED + ", not " + threshold);
+		if (!(rOut > R_OUT_ABOVE) || !Double.isFinite(rOut))
+			throw new InvalidInputException("r_out must be " + R_OUT_ALLOWED + ", not " + rOut);
+		if (minArea < MIN_AREA_AT_LEAST)
+			throw new InvalidInputException("min_area must be " + MIN_AREA_ALLOWED + ", not " + minArea);
+		if (minSecondArea < MIN_SECOND_AREA_AT_LEAST)
+			throw new InvalidInputException("min_second_area must be " + MIN_SECOND_AREA_ALLOWED + ", not " +
+				minSecondArea);
 		if (connectivity == null) throw new InvalidInputException("connectivity must be given (4 or 8)");
 		if (method == null) throw new InvalidInputException("method must be given");
-		if (!(diameter >= 0) || !Double.isFinite(diameter))
+		if (!(diameter >= DIAMETER_AT_LEAST) || !Double.isFinite(diameter))
 			throw new InvalidInputException("diameter must be >= 0 pixels (0 = not given), not " + diameter);
 	}
 

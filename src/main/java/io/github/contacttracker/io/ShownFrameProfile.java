@@ -148,7 +148,7 @@ public record ShownFrameProfile(ProfileAnalysis.Result result, String title, int
 
 	/** @return {@link #summary()} and, if the helper warns, how many warnings the Log window holds */
 	public String status() {
-		final int n = result.warnings().size() + (rejectedDiameter > 0 ? 1 : 0);
+		final int n = result.findings().size() + (rejectedDiameter > 0 ? 1 : 0);
 		return summary() + (n == 0 ? "" : "; " + n + " warning" + (n == 1 ? "" : "s") + " in the Log window");
 	}
 
@@ -159,10 +159,10 @@ public record ShownFrameProfile(ProfileAnalysis.Result result, String title, int
 	public String logText(final String who) {
 		final List<String> lines = new ArrayList<>();
 		lines.add(wrap(who + " " + summary(), LOG_WIDTH, "    "));
-		if (rejectedDiameter > 0) lines.add(wrap("  warning: not measured with the diameter given, " + Numbers.fmt(
-			rejectedDiameter, 3) + " px (left from another image?): " + rejection, LOG_WIDTH, "    "));
-		for (final String w : result.warnings())
-			lines.add(wrap("  warning: " + w, LOG_WIDTH, "    "));
+		if (rejectedDiameter > 0) lines.add(wrap(ProfileReport.WARNING + "not measured with the diameter given, " +
+			Numbers.fmt(rejectedDiameter, 3) + " px (left from another image?): " + rejection, LOG_WIDTH, "    "));
+		for (final String w : ProfileReport.warnings(result))
+			lines.add(wrap(ProfileReport.WARNING + w, LOG_WIDTH, "    "));
 		return String.join("\n", lines);
 	}
 

@@ -31,7 +31,8 @@ import io.github.contacttracker.settings.Setting.Unit;
 /**
  * The settings of a tracking run, each described once ({@link Setting}); every front end derives its own form
  * from this list: the command line's options and help, the Fiji command's dialog, the TrackMate settings map, its
- * XML and its panel. {@link SettingValues} holds a set of values.
+ * XML and its panel. {@link SettingValues} holds a set of values. The limits of the core's parameters come from
+ * {@link TrackerParameters}, which checks them again.
  */
 public final class TrackingSettings {
 
@@ -70,6 +71,9 @@ public final class TrackingSettings {
 	public static final String HELP_CHANNEL = "The channel to track, 1-based; single-channel images have only " +
 		"channel 1.";
 
+	/** The first channel: channels count from 1. (The core's parameters state their own limits.) */
+	public static final int CHANNEL_AT_LEAST = 1;
+
 	/**
 	 * Pixels at or above it form the active areas. Its TrackMate key is {@code GREY_THRESHOLD}, not TrackMate's
 	 * {@code THRESHOLD}: the LoG and DoG detectors use that key for a quality cut-off, and TrackMate's wizard carries
@@ -77,22 +81,22 @@ public final class TrackingSettings {
 	 */
 	public static final Setting<Double> THRESHOLD = Setting.decimal("threshold", "Threshold",
 		HELP_THRESHOLD, 100, Double.NEGATIVE_INFINITY,
-		true, "a finite grey level", Unit.GREY_LEVEL).imageSpecific().trackMateKey("GREY_THRESHOLD");
+		true, TrackerParameters.THRESHOLD_ALLOWED, Unit.GREY_LEVEL).imageSpecific().trackMateKey("GREY_THRESHOLD");
 
 	/** How far a particle's image reaches. */
 	public static final Setting<Double> R_OUT = Setting.decimal("r_out", "r_out",
-		HELP_R_OUT, 20, 0,
-		false, "a positive number of pixels", Unit.PIXELS).imageSpecific();
+		HELP_R_OUT, 20, TrackerParameters.R_OUT_ABOVE,
+		false, TrackerParameters.R_OUT_ALLOWED, Unit.PIXELS).imageSpecific();
 
 	/** Smaller active areas are noise. */
 	public static final Setting<Integer> MIN_AREA = Setting.integer("min_area", "Min area",
-		HELP_MIN_AREA, TrackerParameters.DEFAULT_MIN_AREA, 1,
-		"at least 1 pixel", Unit.PIXEL_COUNT, null);
+		HELP_MIN_AREA, TrackerParameters.DEFAULT_MIN_AREA, TrackerParameters.MIN_AREA_AT_LEAST,
+		TrackerParameters.MIN_AREA_ALLOWED, Unit.PIXEL_COUNT, null);
 
 	/** Below it the paper's second pass falls back to the first-pass centre. */
 	public static final Setting<Integer> MIN_SECOND_AREA = Setting.integer("min_second_area", "Min second area",
-		HELP_MIN_SECOND_AREA, TrackerParameters.DEFAULT_MIN_SECOND_AREA, 3,
-		"at least 3 pixels", Unit.PIXEL_COUNT, null);
+		HELP_MIN_SECOND_AREA, TrackerParameters.DEFAULT_MIN_SECOND_AREA, TrackerParameters.MIN_SECOND_AREA_AT_LEAST,
+		TrackerParameters.MIN_SECOND_AREA_ALLOWED, Unit.PIXEL_COUNT, null);
 
 	/** Pixel neighbourhood of the labelling. */
 	public static final Setting<Integer> CONNECTIVITY = Setting.choice("connectivity", "Connectivity",
@@ -105,12 +109,12 @@ public final class TrackingSettings {
 
 	/** The particles' diameter, for RADIUS. */
 	public static final Setting<Double> DIAMETER = Setting.decimal("diameter", "Particle diameter",
-		HELP_DIAMETER, 0, 0, true,
+		HELP_DIAMETER, 0, TrackerParameters.DIAMETER_AT_LEAST, true,
 		"a number of pixels >= 0 (0 = not given)", Unit.PIXELS);
 
 	/** The channel tracked. */
 	public static final Setting<Integer> CHANNEL = Setting.integer("channel", "Channel",
-		HELP_CHANNEL, 1, 1, "at least 1 (1-based)",
+		HELP_CHANNEL, 1, CHANNEL_AT_LEAST, "at least 1 (1-based)",
 		Unit.NONE, "TARGET_CHANNEL");
 
 	/** Every setting, in the order front ends list them. */

@@ -214,7 +214,7 @@ class ProfileSuggestionTest {
 		final ProfileAnalysis.Result auto = ProfileAnalysis.analyse(ArrayImgs.unsignedBytes(stored, w, h), 32, 0);
 		for (int k = 0; k < auto.radius().length; k += 3) 		assertEquals(trueNoise, auto.noise(), 0.25 * trueNoise, "noise");
 		assertEquals(trueROut, auto.rOut(), 2, "r_out within 2 px of the truth " + trueROut);
-		assertEquals(List.of(), auto.warnings().stream().filter(s -> s.contains("returned to the background")).toList());
+		assertEquals(List.of(), auto.findings().stream().filter(f -> f instanceof Finding.NotBackToBackground).toList());
 		// at a point too, and with the diameter estimated
 		final double[] c = centres.get(0);
 		final ProfileAnalysis.Result one = ProfileAnalysis.analyse(ArrayImgs.unsignedBytes(stored, w, h), Math.round(

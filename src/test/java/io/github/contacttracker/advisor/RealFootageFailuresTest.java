@@ -108,13 +108,14 @@ class RealFootageFailuresTest {
 			double edge = at;
 			while (SMALL.value(edge) < -s)
 				edge += 0.01;
-			assertEquals(2 * edge, r.diameter(), 2, "the particles' own size, not their spacing: " + r.report(true) + r
-				.warnings() + java.util.Arrays.toString(r.level()));
+			assertEquals(2 * edge, r.diameter(), 2, "the particles' own size, not their spacing: " + r.findings() +
+				java.util.Arrays.toString(r.level()));
 			final TrackerParameters p = TrackerParameters.of(r.suggestedThreshold(true), r.suggestedROut()).withDiameter(r
 				.diameter());
 			for (final Method m : new Method[] { Method.PAPER, Method.FIT }) {
 				final List<Localization> spots = new ContactTracker(p.withMethod(m)).analyse(plane, 0, false).spots();
-				assertEquals(5, spots.size(), m + ": one spot per particle, none on the background: " + r.report(true));
+				assertEquals(5, spots.size(), m + ": one spot per particle, none on the background: threshold " +
+					r.threshold() + ", " + r.findings());
 				for (final Localization l : spots) {
 					assertEquals(0, l.flags() & ~Flag.SECOND_PASS.bit(), m + ": no flag " + Flag.decode(l.flags()));
 					double best = Double.POSITIVE_INFINITY;

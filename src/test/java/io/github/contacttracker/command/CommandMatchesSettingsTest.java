@@ -23,6 +23,7 @@ package io.github.contacttracker.command;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
@@ -39,8 +40,9 @@ import io.github.contacttracker.settings.TrackingSettings;
 /**
  * The Fiji command's inputs are the settings descriptor's: SciJava reads {@code @Parameter} annotations, which
  * take only compile-time constants, so the command takes its help texts and defaults from
- * {@link TrackingSettings} and this test pins every other property (name, type, default, smallest value, choices)
- * to the descriptor. A setting added to the descriptor without its input here fails this test.
+ * {@link TrackingSettings}, its smallest values from the constants the descriptor takes them from
+ * ({@code TrackerParameters}' limits), and this test pins every property (name, type, default, smallest and largest
+ * value, choices) to the descriptor. A setting added to the descriptor without its input here fails this test.
  */
 class CommandMatchesSettingsTest {
 
@@ -61,6 +63,8 @@ class CommandMatchesSettingsTest {
 				else assertEquals(s.type() == Integer.class ? int.class : double.class, type, s.name());
 				if (s.min() != null) assertEquals(s.min().doubleValue(), Double.parseDouble(String.valueOf(item
 					.getMinimumValue())), 0, s.name());
+				else assertNull(item.getMinimumValue(), s.name());
+				assertNull(item.getMaximumValue(), s.name() + ": the descriptor has no largest value");
 			}
 		}
 	}

@@ -42,9 +42,11 @@ import org.scijava.module.Module;
 import ij.ImagePlus;
 import ij.gui.Plot;
 import ij.gui.PointRoi;
+import io.github.contacttracker.advisor.Finding;
 import io.github.contacttracker.advisor.ProfileAnalysis;
 import io.github.contacttracker.io.Calibration;
 import io.github.contacttracker.io.ImageFiles;
+import io.github.contacttracker.io.ProfileReport;
 import io.github.contacttracker.sim.GaussianBesselProfile;
 import io.github.contacttracker.sim.NoiseModel;
 import io.github.contacttracker.sim.ParticleType;
@@ -129,9 +131,11 @@ class ProfileHelperTest extends WithContext {
 		final ProfileAnalysis.Result r = atCentre(scene(LONG, 3L));
 		assertTrue(r.bridge() > LONG.background() + 20, "the second ring beyond D/2 is bright: " + r.bridge());
 		assertTrue(r.rOut() > LONG.diameterPx());
-		assertTrue(r.warnings().stream().anyMatch(w -> w.contains("r_out <= D")), r.warnings().toString());
+		assertTrue(r.findings().stream().anyMatch(f -> f instanceof Finding.ROutAboveDiameter), r.findings().toString());
+		assertTrue(ProfileReport.warnings(r).stream().anyMatch(w -> w.contains("r_out <= D")), ProfileReport.warnings(r)
+			.toString());
 		final ProfileAnalysis.Result s = atCentre(scene(SHORT, 3L));
-		assertEquals(List.of(), s.warnings());
+		assertEquals(List.of(), s.findings());
 		assertTrue(s.activeRadius() > 0.25 * SHORT.diameterPx(), "a usable active area: " + s.activeRadius());
 	}
 
@@ -156,8 +160,9 @@ class ProfileHelperTest extends WithContext {
 		final double edge = SHORT.profile().reach(sigma);
 		assertEquals(2 * edge, r.diameter(), 2.0, "twice the reach of the true profile " + edge);
 		assertTrue(r.diameterEstimated());
-		assertTrue(r.warnings().stream().anyMatch(w -> w.contains("where the particles' image returns to the " +
-			"background")), r.warnings().toString());
+		assertTrue(r.findings().stream().anyMatch(f -> f instanceof Finding.DiameterFromImage), r.findings().toString());
+		assertTrue(ProfileReport.warnings(r).stream().anyMatch(w -> w.contains("where the particles' image returns to " +
+			"the background")), ProfileReport.warnings(r).toString());
 	}
 
 	@Test

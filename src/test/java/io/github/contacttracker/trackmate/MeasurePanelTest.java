@@ -102,7 +102,7 @@ class MeasurePanelTest {
 			" px)").equals(((JLabel) c).getText())));
 		assertTrue(message.startsWith("Measured 'particles', frame 2: threshold " + (long) r.suggestedThreshold(true) +
 			", r_out " + (long) r.suggestedROut() + " px, diameter "), message);
-		final int warnings = r.warnings().size();
+		final int warnings = r.findings().size();
 		assertTrue(warnings > 0, "the diameter was estimated: a warning says so");
 		assertTrue(message.endsWith("(estimated); " + warnings + " warning" + (warnings == 1 ? "" : "s") +
 			" in the Log window"), message);
@@ -146,7 +146,7 @@ class MeasurePanelTest {
 		assertEquals(r.suggestedThreshold(true), number(panel.getSettings(), "GREY_THRESHOLD"), 0);
 		assertEquals(r.suggestedROut(), number(panel.getSettings(), "R_OUT"), 0);
 		assertTrue(message.contains("(estimated: 100 px given did not fit)"), message);
-		final int warnings = r.warnings().size() + 1;
+		final int warnings = r.findings().size() + 1;
 		assertTrue(message.endsWith(warnings + " warnings in the Log window"), message);
 	}
 

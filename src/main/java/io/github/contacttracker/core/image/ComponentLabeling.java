@@ -27,10 +27,6 @@ import java.util.ArrayList;
 import java.util.List;
 
 import io.github.contacttracker.core.Connectivity;
-import net.imglib2.RandomAccess;
-import net.imglib2.RandomAccessibleInterval;
-import net.imglib2.type.BooleanType;
-import net.imglib2.type.numeric.RealType;
 
 /**
  * Connected-component labelling of a binary image by runs: each row is cut into runs of foreground pixels,
@@ -42,41 +38,6 @@ import net.imglib2.type.numeric.RealType;
 public final class ComponentLabeling {
 
 	private ComponentLabeling() {}
-
-	/**
-	 * Labels the pixels {@code >= threshold} of a 2D image.
-	 *
-	 * @return the components, in the image's coordinates (its interval minimum included)
-	 */
-	public static <T extends RealType<T>> List<Region> label(final RandomAccessibleInterval<T> image,
-		final double threshold, final Connectivity connectivity)
-	{
-		final Plane plane = Plane.of(image);
-		return translate(label(plane, threshold, connectivity), plane.minX(), plane.minY());
-	}
-
-	/**
-	 * Labels the true pixels of a 2D mask.
-	 *
-	 * @return the components, in the mask's coordinates (its interval minimum included)
-	 */
-	public static <B extends BooleanType<B>> List<Region> label(final RandomAccessibleInterval<B> mask,
-		final Connectivity connectivity)
-	{
-		if (mask.numDimensions() != 2)
-			throw new IllegalArgumentException("a mask must be 2D, not " + mask.numDimensions() + "D");
-		final int w = (int) mask.dimension(0), h = (int) mask.dimension(1);
-		final RandomAccess<B> ra = mask.randomAccess();
-		final RunList runs = new RunList();
-		for (int y = 0; y < h; y++) {
-			ra.setPosition(mask.min(1) + y, 1);
-			runs.addWhere(y, 0, w - 1, x -> {
-				ra.setPosition(mask.min(0) + x, 0);
-				return ra.get().get();
-			});
-		}
-		return translate(label(runs, connectivity), mask.min(0), mask.min(1));
-	}
 
 	/** Labels the pixels {@code >= threshold} of a plane, in the plane's local coordinates. */
 	public static List<Region> label(final Plane plane, final double threshold, final Connectivity connectivity) {
@@ -144,13 +105,5 @@ public final class ComponentLabeling {
 		for (int k = 0; k < count; k++)
 			regions.add(new Region(cy[k], c0[k], c1[k], area[k]));
 		return regions;
-	}
-
-	private static List<Region> translate(final List<Region> regions, final long dx, final long dy) {
-		if (dx == 0 && dy == 0) return regions;
-		final List<Region> out = new ArrayList<>(regions.size());
-		for (final Region r : regions)
-			out.add(r.translate((int) dx, (int) dy));
-		return out;
 	}
 }

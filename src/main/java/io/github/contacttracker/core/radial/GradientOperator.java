@@ -23,8 +23,6 @@ package io.github.contacttracker.core.radial;
 
 import io.github.contacttracker.core.Flag;
 import io.github.contacttracker.core.image.Plane;
-import net.imglib2.RandomAccessibleInterval;
-import net.imglib2.type.numeric.RealType;
 
 /**
  * The paper's 5x3 gradient operators (Ma et al. 2012), as a convolution:
@@ -49,25 +47,8 @@ public final class GradientOperator {
 	private GradientOperator() {}
 
 	/** @return whether (x, y) of {@code plane} has a gradient under the border rule */
-	public static boolean hasGradient(final Plane plane, final int x, final int y) {
+	static boolean hasGradient(final Plane plane, final int x, final int y) {
 		return x >= MARGIN && y >= MARGIN && x < plane.width() - MARGIN && y < plane.height() - MARGIN;
-	}
-
-	/**
-	 * The gradient at one pixel, by the direct 5x3 sums.
-	 *
-	 * @return {gx, gy}
-	 * @throws IllegalArgumentException if the pixel has no gradient under the border rule
-	 */
-	public static <T extends RealType<T>> double[] at(final RandomAccessibleInterval<T> image, final long x,
-		final long y)
-	{
-		final Plane plane = Plane.of(image);
-		final int lx = (int) (x - plane.minX()), ly = (int) (y - plane.minY());
-		if (!hasGradient(plane, lx, ly))
-			throw new IllegalArgumentException("pixel (" + x + ", " + y + ") is within " + MARGIN +
-				" px of the border: no gradient there");
-		return new double[] { gx(plane, lx, ly), gy(plane, lx, ly) };
 	}
 
 	static double gx(final Plane p, final int x, final int y) {

@@ -72,7 +72,7 @@ public final class LineFit {
 	 * Adds the line through (px, py) along (gx, gy) with weight {@code weight}. Zero gradients carry no
 	 * direction and are ignored.
 	 */
-	public void add(final double px, final double py, final double gx, final double gy, final double weight) {
+	private void add(final double px, final double py, final double gx, final double gy, final double weight) {
 		final double g2 = gx * gx + gy * gy;
 		if (g2 == 0 || weight == 0) return;
 		final double s = weight / g2;
@@ -89,11 +89,6 @@ public final class LineFit {
 	/** Adds the line with the paper's weight {@code |g|}. */
 	public void addPaperWeighted(final double px, final double py, final double gx, final double gy) {
 		add(px, py, gx, gy, Math.sqrt(gx * gx + gy * gy));
-	}
-
-	/** @return the number of lines added */
-	public int lines() {
-		return lines;
 	}
 
 	/** @return the weighted normal matrix {mxx, mxy, myy} */

@@ -30,10 +30,7 @@ import java.util.Random;
 import io.github.contacttracker.core.Connectivity;
 import io.github.contacttracker.core.TestImages;
 
-import net.imglib2.RandomAccess;
-import net.imglib2.img.Img;
 import net.imglib2.img.array.ArrayImgs;
-import net.imglib2.type.logic.BitType;
 import net.imglib2.view.Views;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -72,13 +69,13 @@ class ComponentLabelingTest {
 	}
 
 	private static void assertSameLabels(final int[] expected, final List<Region> regions, final int w,
-		final int h, final int dx, final int dy)
+		final int h)
 	{
 		final int[] got = new int[w * h];
 		java.util.Arrays.fill(got, -1);
 		for (int k = 0; k < regions.size(); k++) {
 			final int label = k;
-			regions.get(k).forEachPixel((x, y) -> got[(y - dy) * w + (x - dx)] = label);
+			regions.get(k).forEachPixel((x, y) -> got[y * w + x] = label);
 		}
 		int max = -1;
 		for (final int e : expected)
@@ -96,21 +93,19 @@ class ComponentLabelingTest {
 			final int w = 1 + rnd.nextInt(40), h = 1 + rnd.nextInt(40);
 			final double density = rnd.nextDouble();
 			final boolean[] mask = new boolean[w * h];
-			final Img<BitType> img = ArrayImgs.bits(w, h);
-			final RandomAccess<BitType> ra = img.randomAccess();
-			for (int y = 0; y < h; y++)
-				for (int x = 0; x < w; x++) {
-					mask[y * w + x] = rnd.nextDouble() < density;
-					ra.setPosition(new int[] { x, y });
-					ra.get().set(mask[y * w + x]);
-				}
-			assertSameLabels(floodFill(mask, w, h, c), ComponentLabeling.label(img, c), w, h, 0, 0);
+			final byte[] pixels = new byte[w * h];
+			for (int i = 0; i < w * h; i++) {
+				mask[i] = rnd.nextDouble() < density;
+				pixels[i] = (byte) (mask[i] ? 1 : 0);
+			}
+			assertSameLabels(floodFill(mask, w, h, c), ComponentLabeling.label(Plane.of(ArrayImgs.unsignedBytes(pixels, w,
+				h)), 1, c), w, h);
 		}
 	}
 
 	@ParameterizedTest
 	@EnumSource(Connectivity.class)
-	void thresholdedImageEqualsFloodFillAndKeepsIntervalOffset(final Connectivity c) {
+	void thresholdedImageEqualsFloodFillInThePlanesOwnCoordinates(final Connectivity c) {
 		final Random rnd = new Random(7);
 		final int w = 64, h = 48;
 		final double[] img = new double[w * h];
@@ -120,10 +115,12 @@ class ComponentLabelingTest {
 			mask[i] = img[i] >= 140;
 		}
 		final int[] expected = floodFill(mask, w, h, c);
-		assertSameLabels(expected, ComponentLabeling.label(TestImages.bytes(img, w, h), 140, c), w, h, 0, 0);
-		// Same image translated: regions come back in the translated coordinates.
-		assertSameLabels(expected,
-			ComponentLabeling.label(Views.translate(TestImages.floats(img, w, h), 10, -3), 140, c), w, h, 10, -3);
+		assertSameLabels(expected, ComponentLabeling.label(Plane.of(TestImages.bytes(img, w, h)), 140, c), w, h);
+		// Same image translated: the plane keeps the offset, the regions are in its own coordinates (from 0, 0).
+		final Plane translated = Plane.of(Views.translate(TestImages.floats(img, w, h), 10, -3));
+		assertEquals(10, translated.minX());
+		assertEquals(-3, translated.minY());
+		assertSameLabels(expected, ComponentLabeling.label(translated, 140, c), w, h);
 	}
 
 	@Test
@@ -131,7 +128,7 @@ class ComponentLabelingTest {
 		final byte[] px = { 1, 0, 0, //
 			0, 1, 0, //
 			0, 0, 1 };
-		final var img = ArrayImgs.unsignedBytes(px, 3, 3);
+		final Plane img = Plane.of(ArrayImgs.unsignedBytes(px, 3, 3));
 		assertEquals(1, ComponentLabeling.label(img, 1, Connectivity.EIGHT).size());
 		assertEquals(3, ComponentLabeling.label(img, 1, Connectivity.FOUR).size());
 		assertEquals(3, ComponentLabeling.label(img, 1, Connectivity.EIGHT).get(0).area());

@@ -79,7 +79,8 @@ class LineFitTest {
 		final LineFit fit = new LineFit(0, 0);
 		fit.addPaperWeighted(1, 1, 1, 1);
 		fit.addPaperWeighted(3, 3, 0, 0); // zero gradient: ignored
-		assertEquals(1, fit.lines());
-		assertFalse(fit.solve().ok());
+		final LineFit.Solution s = fit.solve();
+		assertEquals(1, s.lines());
+		assertFalse(s.ok());
 	}
 }

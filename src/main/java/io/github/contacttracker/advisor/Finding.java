@@ -1,0 +1,110 @@
+/*-
+ * #%L
+ * Contact Tracker: sub-pixel localization of colloidal particles, also when they touch.
+ * %%
+ * Copyright (C) 2026 Contact Tracker developers
+ * %%
+ * This program is free software: you can redistribute it and/or modify
+ * it under the terms of the GNU General Public License as
+ * published by the Free Software Foundation, either version 3 of the
+ * License, or (at your option) any later version.
+ * 
+ * This program is distributed in the hope that it will be useful,
+ * but WITHOUT ANY WARRANTY; without even the implied warranty of
+ * MERCHANTABILITY or FITNESS FOR A PARTICULAR PURPOSE.  See the
+ * GNU General Public License for more details.
+ * 
+ * You should have received a copy of the GNU General Public
+ * License along with this program.  If not, see
+ * <http://www.gnu.org/licenses/gpl-3.0.html>.
+ * #L%
+ */
+package io.github.contacttracker.advisor;
+
+/**
+ * Something the profile helper ({@link ProfileAnalysis}) found that the user should know, with the numbers it is
+ * about; the front ends put it into words ({@code io.ProfileReport}). Lengths in pixels, levels in grey levels.
+ */
+public sealed interface Finding {
+
+	/**
+	 * The diameter was not given: it is twice the radius where the particles' own image returns to the background.
+	 *
+	 * @param diameter the estimate (px)
+	 * @param imageRadius where the particles' image ends (px)
+	 */
+	record DiameterFromImage(double diameter, double imageRadius) implements Finding {}
+
+	/**
+	 * The diameter was not given: it is a percentile of the spots' nearest-neighbour distances, which is smaller
+	 * than the particles' own image.
+	 *
+	 * @param diameter the estimate (px)
+	 * @param percentile the percentile taken
+	 * @param spots how many spots the distances are of
+	 * @param imageAcross how far across the particles' image reaches (px)
+	 */
+	record DiameterFromSpacing(double diameter, double percentile, int spots, double imageAcross) implements Finding {}
+
+	/** The particle at the point given has an active area that looks merged with a neighbour's. */
+	record MergedAtPoint() implements Finding {}
+
+	/** No spot near the point given: the profile is taken around the point itself. */
+	record NotRefined() implements Finding {}
+
+	/**
+	 * No particle has its nearest neighbour two diameters away or more.
+	 *
+	 * @param neighbour the most isolated particle's nearest neighbour distance (px)
+	 * @param diameter the diameter the particles were chosen with (px)
+	 */
+	record NotIsolated(double neighbour, double diameter) implements Finding {}
+
+	/**
+	 * The profile is still off the background where the background is measured: {@code r_out} is a lower bound.
+	 *
+	 * @param radius where the background annulus starts (px)
+	 */
+	record NotBackToBackground(double radius) implements Finding {}
+
+	/**
+	 * The threshold at contact would take bright spots of the background for particles; it is raised to the middle
+	 * of the gap between them and the particles' cores.
+	 *
+	 * @param atContact the threshold at contact
+	 * @param spots the background's spots above it
+	 * @param textureTop the highest of them above the background
+	 * @param coreBottom the lowest core above the background
+	 */
+	record BackgroundTexture(double atContact, int spots, double textureTop, double coreBottom) implements Finding {}
+
+	/**
+	 * Some active areas have the shape of no single particle; the threshold is raised until they are round.
+	 *
+	 * @param from the threshold before
+	 * @param notRound how many active areas there fail the outline tests
+	 * @param areas how many active areas there are there
+	 */
+	record RaisedUntilRound(double from, int notRound, int areas) implements Finding {}
+
+	/**
+	 * Some active areas have the shape of no single particle at any threshold up to half the cores' height: they
+	 * will be flagged merged.
+	 *
+	 * @param notRound how many active areas fail the outline tests at the suggested threshold
+	 * @param areas how many active areas there are there
+	 * @param ceiling half the cores' height (grey level)
+	 */
+	record NotRound(int notRound, int areas, double ceiling) implements Finding {}
+
+	/** The suggested threshold is above the particle's centre. */
+	record ThresholdAboveCentre() implements Finding {}
+
+	/**
+	 * {@code r_out} is larger than the diameter.
+	 *
+	 * @param rOut the suggested {@code r_out}, not rounded (px)
+	 * @param diameter the diameter (px)
+	 */
+	record ROutAboveDiameter(double rOut, double diameter) implements Finding {}
+}

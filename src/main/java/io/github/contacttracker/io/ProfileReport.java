@@ -1,0 +1,131 @@
+/*-
+ * #%L
+ * Contact Tracker: sub-pixel localization of colloidal particles, also when they touch.
+ * %%
+ * Copyright (C) 2026 Contact Tracker developers
+ * %%
+ * This program is free software: you can redistribute it and/or modify
+ * it under the terms of the GNU General Public License as
+ * published by the Free Software Foundation, either version 3 of the
+ * License, or (at your option) any later version.
+ * 
+ * This program is distributed in the hope that it will be useful,
+ * but WITHOUT ANY WARRANTY; without even the implied warranty of
+ * MERCHANTABILITY or FITNESS FOR A PARTICULAR PURPOSE.  See the
+ * GNU General Public License for more details.
+ * 
+ * You should have received a copy of the GNU General Public
+ * License along with this program.  If not, see
+ * <http://www.gnu.org/licenses/gpl-3.0.html>.
+ * #L%
+ */
+package io.github.contacttracker.io;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+
+import io.github.contacttracker.advisor.Finding;
+import io.github.contacttracker.advisor.ProfileAnalysis;
+import io.github.contacttracker.core.Numbers;
+
+/**
+ * The profile helper's result ({@link ProfileAnalysis.Result}) in words: the lines that explain its numbers and a
+ * sentence for each {@link Finding}. One text for the command line's {@code profile}, Fiji's <i>Contact Tracker
+ * Profile</i> and the "Measure from the image" buttons of Fiji's dialog and TrackMate's panel
+ * ({@link ShownFrameProfile}).
+ */
+public final class ProfileReport {
+
+	/** What starts the line of a warning. */
+	public static final String WARNING = "  warning: ";
+
+	private ProfileReport() {}
+
+	/**
+	 * @param integerData whether the image holds whole grey levels (the threshold is rounded up for them)
+	 * @return the lines that explain the numbers, then a {@link #WARNING} line for each finding (no trailing
+	 *         newlines)
+	 */
+	public static List<String> lines(final ProfileAnalysis.Result r, final boolean integerData) {
+		final List<String> lines = new ArrayList<>();
+		lines.add(String.format(Locale.ROOT, "  background %.2f, noise sigma %.2f (robust, around the particles), " +
+			"peak %.2f (grey levels)", r.background(), r.noise(), r.peak()));
+		lines.add(String.format(Locale.ROOT, "  diameter %.2f px%s; profile of %d particle%s", r.diameter(), r
+			.diameterEstimated() ? " (estimated)" : "", r.particles(), r.particles() == 1 ? "" : "s"));
+		lines.add(String.format(Locale.ROOT,
+			"  profile within the noise of the background beyond %.2f px; + %.0f px = %.2f -> r_out = %.0f px", r
+				.reach(), ProfileAnalysis.R_OUT_MARGIN_PX, r.rOut(), r.suggestedROut()));
+		lines.add(String.format(Locale.ROOT, "  brightest point between two or three particles at contact " +
+			"(D = %.2f px): %.2f; + %.0f sigma = %.2f%s -> threshold = %s", r.diameter(), r.bridge(),
+			ProfileAnalysis.THRESHOLD_MARGIN_SIGMAS, r.atContact(), r.threshold() > r.atContact() ? String.format(
+				Locale.ROOT, ", raised to %.2f (see the warnings)", r.threshold()) : "", fmt(r.suggestedThreshold(
+					integerData))));
+		lines.add(String.format(Locale.ROOT, "  active area radius at this threshold: %.2f px (D/2 = %.2f px)", r
+			.activeRadius(), r.diameter() / 2));
+		for (final String w : warnings(r))
+			lines.add(WARNING + w);
+		return lines;
+	}
+
+	/** @return a sentence for each of the result's findings, in their order */
+	public static List<String> warnings(final ProfileAnalysis.Result r) {
+		final List<String> sentences = new ArrayList<>();
+		for (final Finding f : r.findings())
+			sentences.add(sentence(f));
+		return sentences;
+	}
+
+	/** @return the finding in words: one sentence, no full stop */
+	public static String sentence(final Finding finding) {
+		if (finding instanceof Finding.DiameterFromImage f)
+			return diameterEstimated(f.diameter(), "twice the radius where the particles' image returns to the " +
+				"background (" + fmt2(f.imageRadius()) + " px)");
+		if (finding instanceof Finding.DiameterFromSpacing f)
+			return diameterEstimated(f.diameter(), "the " + fmt(f.percentile()) + "-th percentile of the " + f.spots() +
+				" spots' nearest-neighbour distances, closer than the particles' image reaches (" + fmt2(f
+					.imageAcross()) + " px across)");
+		if (finding instanceof Finding.MergedAtPoint)
+			return "the particle's active area looks merged with a neighbour's: pick an isolated particle";
+		if (finding instanceof Finding.NotRefined)
+			return "could not refine the centre; the profile is taken around the point given";
+		if (finding instanceof Finding.NotIsolated f)
+			return "no particle is isolated: the most isolated has a neighbour at " + fmt2(f.neighbour()) + " px (" +
+				fmt2(f.neighbour() / f.diameter()) + " diameters); the profile's outer part may show neighbours";
+		if (finding instanceof Finding.NotBackToBackground f)
+			return "the profile has not returned to the background by " + fmt2(f.radius()) + " px: increase " +
+				"max_radius (r_out is a lower bound)";
+		if (finding instanceof Finding.BackgroundTexture f)
+			return "at " + fmt2(f.atContact()) + ", " + f.spots() + " bright spots of the background (halos, rings; up " +
+				"to " + fmt2(f.textureTop()) + " above it) would be taken for particles, whose cores rise at least " +
+				fmt2(f.coreBottom()) + " above it: the threshold is raised to the middle of that gap";
+		if (finding instanceof Finding.RaisedUntilRound f)
+			return "at " + fmt2(f.from()) + ", " + f.notRound() + " of the frame's " + f.areas() + " active areas have " +
+				"the shape of no single particle (bright fringes between touching particles, or particles merged): the " +
+				"threshold is raised until they are round";
+		if (finding instanceof Finding.NotRound f)
+			return f.notRound() + " of the frame's " + f.areas() + " active areas have the shape of no single particle " +
+				"up to " + fmt2(f.ceiling()) + " (half the cores' height): they will be flagged MERGED";
+		if (finding instanceof Finding.ThresholdAboveCentre)
+			return "the suggested threshold is above the particle's centre: at contact no threshold separates two such " +
+				"particles (the profile is too long-ranged for the method)";
+		if (finding instanceof Finding.ROutAboveDiameter f)
+			return "r_out (" + fmt2(f.rOut()) + " px) is larger than the diameter (" + fmt2(f.diameter()) + " px): at " +
+				"contact little undistorted active area is left for the paper's second pass (the paper needs r_out <= D; " +
+				"the deblend and fit methods do not)";
+		throw new IllegalArgumentException("no words for " + finding);
+	}
+
+	private static String diameterEstimated(final double diameter, final String how) {
+		return "the diameter (" + fmt2(diameter) + " px) is estimated as " + how + ": give it if you know it";
+	}
+
+	private static String fmt(final double v) {
+		return Numbers.significant(v, ProfileAnalysis.SIGNIFICANT_DIGITS);
+	}
+
+	/** A measured value: rounded to 0.01 first, then written as {@link #fmt} does. */
+	private static String fmt2(final double v) {
+		return fmt(Math.round(v * 100) / 100.0);
+	}
+}
