@@ -21,6 +21,8 @@
  */
 package io.github.contacttracker.core.fit;
 
+import io.github.contacttracker.core.Flag;
+
 import io.github.contacttracker.core.image.DoublePlane;
 import io.github.contacttracker.core.image.Plane;
 import io.github.contacttracker.core.image.Region;
@@ -101,6 +103,9 @@ final class Deblender {
 			}
 			if (move < TOLERANCE) return new ProfileRefinement.Refined(e, it);
 		}
+		// the centres move together, so none of them has settled
+		for (int k = 0; k < e.length; k++)
+			e[k] = e[k].withFlags(e[k].flags() | Flag.NOT_CONVERGED.bit());
 		return new ProfileRefinement.Refined(e, -MAX_ITERATIONS);
 	}
 

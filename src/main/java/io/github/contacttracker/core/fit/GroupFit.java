@@ -94,20 +94,25 @@ public final class GroupFit {
 		int worst = 0;
 		for (final int[] group : groups) {
 			final int it = group.length <= MAX_JOINT ? fitJointly(plane, particles, e, group, profile, window, censoring)
-				: fitInTurn(plane, particles, e, group, profile, window, censoring);
+				: fitInTurn(plane, particles, e, group, profile, window, censoring, MAX_SWEEPS);
 			if (it < 0) worst = Math.min(worst, it);
 			else if (worst >= 0) worst = Math.max(worst, it);
 		}
 		return new ProfileRefinement.Refined(e, worst);
 	}
 
-	/** One joint fit of the group; its members keep their estimates flagged {@code FELL_BACK} if it cannot be made. */
+	/**
+	 * One joint fit of the group; its members keep their estimates flagged {@code FELL_BACK} if it cannot be made, and
+	 * are flagged {@code NOT_CONVERGED} if it reaches {@value #MAX_ITERATIONS} iterations.
+	 */
 	private static int fitJointly(final Plane plane, final Particle[] particles, final Estimate[] e, final int[] group,
 		final EmpiricalProfile profile, final double window, final Censoring censoring)
 	{
 		final int it = fitGroup(plane, particles, e, group, profile, window, censoring, JOINT, null);
-		if (it == 0) for (final int k : group)
-			e[k] = e[k].withFlags(e[k].flags() | Flag.FELL_BACK.bit());
+		// flagged here, per group: a group that hit the limit says nothing of the frame's other groups
+		final int flag = it == 0 ? Flag.FELL_BACK.bit() : it < 0 ? Flag.NOT_CONVERGED.bit() : 0;
+		if (flag != 0) for (final int k : group)
+			e[k] = e[k].withFlags(e[k].flags() | flag);
 		return it;
 	}
 
@@ -121,14 +126,14 @@ public final class GroupFit {
 	 * the first sweep and kept ({@link Kept}), to its own tolerance and for at most {@value #ITERATIONS_PER_SWEEP}
 	 * iterations a sweep; it is fitted again only while it or a neighbour
 	 * within reach still moves. The sweeps stop when no member moves more than {@link #settled its tolerance}, at
-	 * most {@value #MAX_SWEEPS}; a member still moving then is flagged {@code NOT_CONVERGED}, one that cannot be
+	 * most {@code maxSweeps} ({@value #MAX_SWEEPS}); a member still moving then is flagged {@code NOT_CONVERGED}, one that cannot be
 	 * fitted or slides off its particle {@code FELL_BACK}. The cost is linear in the group's size and bounded. A
 	 * member's standard errors are those of its own fit, without its covariance with the neighbours.
 	 *
 	 * @return the largest iteration count of a member's fit in the last sweep
 	 */
-	private static int fitInTurn(final Plane plane, final Particle[] particles, final Estimate[] e, final int[] group,
-		final EmpiricalProfile profile, final double window, final Censoring censoring)
+	static int fitInTurn(final Plane plane, final Particle[] particles, final Estimate[] e, final int[] group,
+		final EmpiricalProfile profile, final double window, final Censoring censoring, final int maxSweeps)
 	{
 		final int n = group.length;
 		final boolean[] failed = new boolean[n], active = new boolean[n], moving = new boolean[n];
@@ -142,7 +147,7 @@ public final class GroupFit {
 			kept[q] = new Kept();
 		int most = 0;
 		boolean any = true;
-		for (int sweep = 1; sweep <= MAX_SWEEPS && any; sweep++) {
+		for (int sweep = 1; sweep <= maxSweeps && any; sweep++) {
 			most = 0;
 			for (int q = 0; q < n; q++) {
 				if (!active[q]) continue;

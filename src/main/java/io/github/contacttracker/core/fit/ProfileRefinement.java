@@ -103,8 +103,8 @@ public final class ProfileRefinement implements Refinement {
 			else r = GroupFit.refine(plane, ps, start, profile, 2 * params.rOut(), params.rOut(), censoring);
 			final Estimate[] next = r.estimates();
 			for (int k = 0; k < next.length; k++) {
-				final int flags = next[k].flags() | (r.iterations() < 0 ? Flag.NOT_CONVERGED.bit() : 0);
-				next[k] = new Estimate(next[k].x(), next[k].y(), flags, next[k].secondArea(), Math.abs(r.iterations()),
+				next[k] = new Estimate(next[k].x(), next[k].y(), next[k].flags(), next[k].secondArea(), Math.abs(r
+					.iterations()),
 					next[k].solve(), next[k].sigmaX(), next[k].sigmaY(), next[k].amplitude(), next[k].scale());
 			}
 			final double[] moves = new double[next.length];

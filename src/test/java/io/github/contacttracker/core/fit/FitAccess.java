@@ -23,17 +23,30 @@ package io.github.contacttracker.core.fit;
 
 import java.util.List;
 
+import io.github.contacttracker.core.image.Censoring;
+import io.github.contacttracker.core.image.Plane;
+import io.github.contacttracker.core.profile.EmpiricalProfile;
 import io.github.contacttracker.core.radial.Estimate;
 import io.github.contacttracker.core.radial.Particle;
 
-/** For the tests of the rooms above: the fit's grouping (package-private in the core). */
+/** For the tests of the rooms above: the fit's grouping and its fit member by member (package-private in the core). */
 public final class FitAccess {
 
 	public static final int MAX_JOINT = GroupFit.MAX_JOINT;
+	public static final int MAX_SWEEPS = GroupFit.MAX_SWEEPS;
 
 	private FitAccess() {}
 
 	public static List<int[]> groups(final Particle[] ps, final Estimate[] e, final double distance) {
 		return GroupFit.groups(ps, e, distance);
+	}
+
+	/** Fits {@code group} member by member in at most {@code sweeps} sweeps; returns the new estimates. */
+	public static Estimate[] fitInTurn(final Plane plane, final Particle[] ps, final Estimate[] start, final int[] group,
+		final EmpiricalProfile profile, final double window, final Censoring censoring, final int sweeps)
+	{
+		final Estimate[] e = start.clone();
+		GroupFit.fitInTurn(plane, ps, e, group, profile, window, censoring, sweeps);
+		return e;
 	}
 }
