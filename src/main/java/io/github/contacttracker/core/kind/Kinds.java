@@ -127,8 +127,17 @@ public final class Kinds implements Serializable {
 			x[i] = Math.log(usable.get(i).coreRadius());
 			y[i] = Math.log(usable.get(i).peak());
 		}
-		final GaussianMixture m = count > 0 ? GaussianMixture.fit(x, y, Math.min(count, n), FLOOR) : automatic(x, y);
+		final GaussianMixture m = count > 0 ? given(x, y, Math.min(count, n)) : automatic(x, y);
 		return of(m, usable, x, y);
+	}
+
+	/** {@code count} components, or fewer if so many cannot be fitted (fewer distinct points). */
+	private static GaussianMixture given(final double[] x, final double[] y, final int count) {
+		for (int k = count; k > 1; k--) {
+			final GaussianMixture m = GaussianMixture.fit(x, y, k, FLOOR);
+			if (m != null) return m;
+		}
+		return GaussianMixture.fit(x, y, 1, FLOOR);
 	}
 
 	/** Most rounds of setting aside the members of too small a component (stray blobs, not a kind). */

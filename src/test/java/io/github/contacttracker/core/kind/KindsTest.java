@@ -176,6 +176,9 @@ class KindsTest {
 			assertEquals(1, one.kindOf(f));
 		// four asked of three kinds: four, the one left over splitting a kind
 		assertEquals(4, Kinds.find(sample, 4).count());
+		// more asked than there are particles: at most one kind per particle
+		assertEquals(1, Kinds.find(sample.subList(0, 1), 3).count());
+		assertEquals(1, Kinds.find(sample.subList(0, 1), 3).kindOf(sample.get(0)));
 		assertEquals("the number of kinds must be 0 (automatic) or more, not -1", org.junit.jupiter.api.Assertions
 			.assertThrows(InvalidInputException.class, () -> Kinds.find(sample, -1)).getMessage());
 	}
