@@ -45,7 +45,9 @@ import io.github.contacttracker.core.InvalidInputException;
  * particle in one kind.</li>
  * </ul>
  * Kinds are numbered 1, 2, ... in order of size (core radius; kinds of one size, within 6%, in order of
- * brightness), so that the numbering does not depend on the sample; 0 stands for a particle that cannot be classified (no bright core: see {@link KindFeatures#usable()}).
+ * brightness), so that the numbering does not depend on the sample; 0 stands for a particle that cannot be
+ * classified (no bright core: see {@link KindFeatures#usable()}). Immutable and serializable: one instance serves
+ * every frame and thread, and travels to a distributed job's workers.
  */
 public final class Kinds implements Serializable {
 
