@@ -61,7 +61,7 @@ public final class SpotTables {
 		SpotColumn.POSITION_X, SpotColumn.POSITION_Y, SpotColumn.RADIUS, SpotColumn.QUALITY, SpotColumn.SIGMA_X,
 		SpotColumn.SIGMA_Y, SpotColumn.FLAG_FELL_BACK, SpotColumn.FLAG_DEGENERATE, SpotColumn.FLAG_AT_BORDER,
 		SpotColumn.FLAG_MERGED, SpotColumn.FLAG_NOT_CONVERGED, SpotColumn.FLAG_UNMODELLED_NEIGHBOUR,
-		SpotColumn.FLAG_SECOND_PASS, SpotColumn.POSITION_T,
+		SpotColumn.FLAG_SECOND_PASS, SpotColumn.KIND, SpotColumn.POSITION_T,
 		SpotColumn.ACTIVE_RADIUS, SpotColumn.FIRST_PASS_X, SpotColumn.FIRST_PASS_Y, SpotColumn.ACTIVE_AREA,
 		SpotColumn.SECOND_AREA, SpotColumn.ITERATIONS, SpotColumn.POSITION_Z, SpotColumn.VISIBILITY);
 	/** The column the readable {@link #FLAGS} column follows. */

@@ -51,19 +51,29 @@ import java.util.Set;
  *        the other methods
  * @param scale the {@code fit} method's radial scale of the particle relative to the measured profile (1.2: its
  *        image is 1.2 times larger), NaN for the other methods
+ * @param kind the particle's kind, 1, 2, ... in order of size ({@code core.kind.Kinds}), 0 when not classified
  */
 public record Localization(int frame, double x, double y, double firstX, double firstY, int activeArea,
 	int secondArea, double quality, double radius, int flags, int iterations, double sigmaX, double sigmaY,
-	double amplitude, double scale) implements Serializable
+	double amplitude, double scale, int kind) implements Serializable
 {
 
-	/** A spot without the fit's amplitude and scale (NaN). */
+	/** A spot not classified into kinds (kind 0). */
+	public Localization(final int frame, final double x, final double y, final double firstX, final double firstY,
+		final int activeArea, final int secondArea, final double quality, final double radius, final int flags,
+		final int iterations, final double sigmaX, final double sigmaY, final double amplitude, final double scale)
+	{
+		this(frame, x, y, firstX, firstY, activeArea, secondArea, quality, radius, flags, iterations, sigmaX, sigmaY,
+			amplitude, scale, 0);
+	}
+
+	/** A spot without the fit's amplitude and scale (NaN), not classified into kinds. */
 	public Localization(final int frame, final double x, final double y, final double firstX, final double firstY,
 		final int activeArea, final int secondArea, final double quality, final double radius, final int flags,
 		final int iterations, final double sigmaX, final double sigmaY)
 	{
 		this(frame, x, y, firstX, firstY, activeArea, secondArea, quality, radius, flags, iterations, sigmaX, sigmaY,
-			Double.NaN, Double.NaN);
+			Double.NaN, Double.NaN, 0);
 	}
 
 	/** @return whether {@code flag} is set */
@@ -86,24 +96,30 @@ public record Localization(int frame, double x, double y, double firstX, double 
 	/** @return a copy with another frame index */
 	public Localization withFrame(final int newFrame) {
 		return new Localization(newFrame, x, y, firstX, firstY, activeArea, secondArea, quality, radius, flags,
-			iterations, sigmaX, sigmaY, amplitude, scale);
+			iterations, sigmaX, sigmaY, amplitude, scale, kind);
 	}
 
 	/** @return a copy moved by (dx, dy) pixels, e.g. from a crop's frame into the whole image's */
 	public Localization translate(final double dx, final double dy) {
 		return new Localization(frame, x + dx, y + dy, firstX + dx, firstY + dy, activeArea, secondArea, quality,
-			radius, flags, iterations, sigmaX, sigmaY, amplitude, scale);
+			radius, flags, iterations, sigmaX, sigmaY, amplitude, scale, kind);
 	}
 
 	/** @return a copy with other flags */
 	public Localization withFlags(final int newFlags) {
 		return new Localization(frame, x, y, firstX, firstY, activeArea, secondArea, quality, radius, newFlags,
-			iterations, sigmaX, sigmaY, amplitude, scale);
+			iterations, sigmaX, sigmaY, amplitude, scale, kind);
 	}
 
 	/** @return a copy with another radius (px), e.g. half the particle diameter the user gave */
 	public Localization withRadius(final double newRadius) {
 		return new Localization(frame, x, y, firstX, firstY, activeArea, secondArea, quality, newRadius, flags,
-			iterations, sigmaX, sigmaY, amplitude, scale);
+			iterations, sigmaX, sigmaY, amplitude, scale, kind);
+	}
+
+	/** @return a copy of another kind (0: not classified) */
+	public Localization withKind(final int newKind) {
+		return new Localization(frame, x, y, firstX, firstY, activeArea, secondArea, quality, radius, flags,
+			iterations, sigmaX, sigmaY, amplitude, scale, newKind);
 	}
 }

@@ -53,7 +53,9 @@ public enum SpotColumn {
 	FLAG_AT_BORDER("FLAG_AT_BORDER", "Touches border", "Border", Dimension.NONE, true),
 	FLAG_MERGED("FLAG_MERGED", "Suspected merge", "Merged", Dimension.NONE, true),
 	FLAG_NOT_CONVERGED("FLAG_NOT_CONVERGED", "Not converged", "NoConv", Dimension.NONE, true),
-	FLAG_UNMODELLED_NEIGHBOUR("FLAG_UNMODELLED_NEIGHBOUR", "Neighbour not modelled", "Unmod", Dimension.NONE, true);
+	FLAG_UNMODELLED_NEIGHBOUR("FLAG_UNMODELLED_NEIGHBOUR", "Neighbour not modelled", "Unmod", Dimension.NONE, true),
+	// last, so that the columns before keep their places in files written before kinds
+	KIND("KIND", "Particle kind", "Kind", Dimension.NONE, true);
 
 	/** TrackMate's feature dimensions, as written in its XML declarations. */
 	public enum Dimension {
@@ -148,6 +150,7 @@ public enum SpotColumn {
 			case FLAG_MERGED: return flag(spot, Flag.MERGED);
 			case FLAG_NOT_CONVERGED: return flag(spot, Flag.NOT_CONVERGED);
 			case FLAG_UNMODELLED_NEIGHBOUR: return flag(spot, Flag.UNMODELLED_NEIGHBOUR);
+			case KIND: return spot.kind();
 			default: throw new AssertionError(this);
 		}
 	}

@@ -25,10 +25,12 @@ import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 
+import java.io.StringWriter;
 import java.util.List;
 
 import org.junit.jupiter.api.Test;
 
+import io.github.contacttracker.core.Localization;
 import io.github.contacttracker.potential.SpotSet;
 
 class SpotTableCsvTest {
@@ -43,6 +45,23 @@ class SpotTableCsvTest {
 		assertEquals(List.of("FRAME", "POSITION_X", "POSITION_Y", "FLAG_MERGED"), List.copyOf(t.columns().keySet()));
 		assertArrayEquals(new double[] { 1.5, 3.5 }, t.columns().get("POSITION_X"));
 		assertArrayEquals(new double[] { 0, 1 }, t.columns().get("FLAG_MERGED"));
+	}
+
+	/** The KIND column is written last and read back as written; spots never classified are of kind 0. */
+	@Test
+	void readsBackTheKindOfEverySpot() throws Exception {
+		final Localization plain = new Localization(0, 1.5, 2.5, 1.5, 2.5, 30, 30, 1, 3.1, 0, 2, 0.01, 0.01);
+		final List<Localization> spots = List.of(plain, plain.withFrame(1).withKind(2), plain.withKind(3).translate(4,
+			0));
+		final StringWriter csv = new StringWriter();
+		SpotCsvWriter.write(csv, spots, Calibration.PIXELS);
+		final List<String> lines = csv.toString().lines().toList();
+		assertEquals("KIND", lines.get(0).substring(lines.get(0).lastIndexOf(',') + 1));
+		final SpotTableCsv.Table t = SpotTableCsv.parse(lines, key -> key.equals(SpotColumn.KIND.key()) || SpotSet
+			.reads(key), "k.csv");
+		assertArrayEquals(new double[] { 0, 2, 3 }, t.columns().get("KIND"));
+		assertArrayEquals(new double[] { 0, 1, 0 }, t.columns().get("FRAME"));
+		assertArrayEquals(new double[] { 1.5, 1.5, 5.5 }, t.columns().get("POSITION_X"));
 	}
 
 	@Test

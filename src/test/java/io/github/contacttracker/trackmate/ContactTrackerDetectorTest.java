@@ -153,7 +153,22 @@ class ContactTrackerDetectorTest {
 			assertEquals(l.activeArea(), s.getFeature(SpotColumn.ACTIVE_AREA.key()), 0);
 			assertEquals(l.secondArea(), s.getFeature(SpotColumn.SECOND_AREA.key()), 0);
 			assertEquals(l.has(Flag.SECOND_PASS) ? 1 : 0, s.getFeature(SpotColumn.FLAG_SECOND_PASS.key()), 0);
+			assertEquals(l.kind(), s.getFeature(SpotColumn.KIND.key()), 0);
 		}
+	}
+
+	/** A spot's kind is an integer spot feature TrackMate declares, shows and saves like the flags. */
+	@Test
+	void theKindIsAnIntegerSpotFeature() {
+		final Localization l = new Localization(3, 10, 20, 10.5, 20.5, 40, 40, 1, 3.6, 0, 2, 0.01, 0.02);
+		assertEquals(0, ContactTrackerDetector.toSpot(l, DX, DY).getFeature(SpotColumn.KIND.key()), 0,
+			"not classified");
+		assertEquals(2, ContactTrackerDetector.toSpot(l.withKind(2), DX, DY).getFeature(SpotColumn.KIND.key()), 0);
+		final ContactTrackerSpotFeatures<FloatType> features = new ContactTrackerSpotFeatures<>();
+		assertTrue(features.getFeatures().contains("KIND"));
+		assertTrue(features.getIsIntFeature().get("KIND"));
+		assertEquals("Kind", features.getFeatureShortNames().get("KIND"));
+		assertEquals(fiji.plugin.trackmate.Dimension.NONE, features.getFeatureDimensions().get("KIND"));
 	}
 
 	private static List<Localization> core(final RandomAccessibleInterval<FloatType> plane, final int frame) {
