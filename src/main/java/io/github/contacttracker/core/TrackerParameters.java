@@ -34,9 +34,11 @@ package io.github.contacttracker.core;
  * @param diameter the particles' diameter (px): the smallest centre distance of two particles at contact; 0 when
  *        not known. Merge detection uses it: a component too small to hold two particles that far apart is one
  *        particle, whatever its gradient lines do (the component's shape, {@code core.radial.ComponentShape})
+ * @param kinds kinds of particle the profile methods tell apart, each with its own measured profile: 0 found
+ *        automatically (by size and brightness, {@code core.kind.Kinds}), 1 all alike, or that many
  */
 public record TrackerParameters(double threshold, double rOut, int minArea, Connectivity connectivity,
-	int minSecondArea, Method method, double diameter)
+	int minSecondArea, Method method, double diameter, int kinds)
 {
 	/** Default {@code min_area} (px). */
 	public static final int DEFAULT_MIN_AREA = 20;
@@ -63,6 +65,10 @@ public record TrackerParameters(double threshold, double rOut, int minArea, Conn
 	public static final String MIN_SECOND_AREA_ALLOWED = "at least " + MIN_SECOND_AREA_AT_LEAST + " pixels";
 	/** Smallest diameter (px); the smallest, 0, means not known. */
 	public static final double DIAMETER_AT_LEAST = 0;
+	/** Most kinds of particle (the profile methods measure a profile per kind). */
+	public static final int KINDS_AT_MOST = 4;
+	/** What a valid number of kinds is, for messages. */
+	public static final String KINDS_ALLOWED = "0 (found automatically), 1 (all alike) or up to " + KINDS_AT_MOST;
 
 	/** @throws IllegalArgumentException with a one-line message naming the bad parameter */
 	public TrackerParameters {
@@ -79,6 +85,8 @@ public record TrackerParameters(double threshold, double rOut, int minArea, Conn
 		if (method == null) throw new InvalidInputException("method must be given");
 		if (!(diameter >= DIAMETER_AT_LEAST) || !Double.isFinite(diameter))
 			throw new InvalidInputException("diameter must be >= 0 pixels (0 = not given), not " + diameter);
+		if (kinds < 0 || kinds > KINDS_AT_MOST) throw new InvalidInputException("kinds must be " + KINDS_ALLOWED +
+			", not " + kinds);
 	}
 
 	/** Parameters without a diameter (not known). */
@@ -88,6 +96,13 @@ public record TrackerParameters(double threshold, double rOut, int minArea, Conn
 		this(threshold, rOut, minArea, connectivity, minSecondArea, method, 0);
 	}
 
+	/** Parameters whose kinds of particle are found automatically. */
+	public TrackerParameters(final double threshold, final double rOut, final int minArea,
+		final Connectivity connectivity, final int minSecondArea, final Method method, final double diameter)
+	{
+		this(threshold, rOut, minArea, connectivity, minSecondArea, method, diameter, 0);
+	}
+
 	/** @return parameters with the given threshold and r_out and defaults for the rest */
 	public static TrackerParameters of(final double threshold, final double rOut) {
 		return new TrackerParameters(threshold, rOut, DEFAULT_MIN_AREA, Connectivity.EIGHT, DEFAULT_MIN_SECOND_AREA,
@@ -95,18 +110,23 @@ public record TrackerParameters(double threshold, double rOut, int minArea, Conn
 	}
 
 	public TrackerParameters withMinArea(final int a) {
-		return new TrackerParameters(threshold, rOut, a, connectivity, minSecondArea, method, diameter);
+		return new TrackerParameters(threshold, rOut, a, connectivity, minSecondArea, method, diameter, kinds);
 	}
 
 	public TrackerParameters withMinSecondArea(final int a) {
-		return new TrackerParameters(threshold, rOut, minArea, connectivity, a, method, diameter);
+		return new TrackerParameters(threshold, rOut, minArea, connectivity, a, method, diameter, kinds);
 	}
 
 	public TrackerParameters withDiameter(final double d) {
-		return new TrackerParameters(threshold, rOut, minArea, connectivity, minSecondArea, method, d);
+		return new TrackerParameters(threshold, rOut, minArea, connectivity, minSecondArea, method, d, kinds);
 	}
 
 	public TrackerParameters withMethod(final Method m) {
-		return new TrackerParameters(threshold, rOut, minArea, connectivity, minSecondArea, m, diameter);
+		return new TrackerParameters(threshold, rOut, minArea, connectivity, minSecondArea, m, diameter, kinds);
+	}
+
+	/** @param k kinds of particle: 0 found automatically, 1 all alike, or that many */
+	public TrackerParameters withKinds(final int k) {
+		return new TrackerParameters(threshold, rOut, minArea, connectivity, minSecondArea, method, diameter, k);
 	}
 }

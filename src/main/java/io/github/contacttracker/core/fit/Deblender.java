@@ -57,11 +57,10 @@ final class Deblender {
 	 *         reached
 	 */
 	static ProfileRefinement.Refined refine(final Plane plane, final Particle[] particles, final Estimate[] start,
-		final EmpiricalProfile profile, final double discRadius)
+		final EmpiricalProfile[] profile, final double discRadius)
 	{
 		final int n = particles.length;
 		final Estimate[] e = start.clone();
-		final double reach = profile.radius();
 		final int margin = (int) Math.ceil(discRadius) + GradientOperator.MARGIN + 1;
 		final double[] cx = new double[n], cy = new double[n];
 		for (int it = 1; it <= MAX_ITERATIONS; it++) {
@@ -85,11 +84,12 @@ final class Deblender {
 						data[y * w + x] = plane.get(x0 + x, y0 + y);
 				for (int q = 0; q < n; q++) {
 					if (q == k || !particles[q].reliable()) continue;
+					final double reach = profile[q].radius();
 					if (Math.hypot(cx[q] - cx[k], cy[q] - cy[k]) > reach + margin * 1.5) continue;
 					for (int y = 0; y < h; y++)
 						for (int x = 0; x < w; x++) {
 							final double r = Math.hypot(x0 + x - cx[q], y0 + y - cy[q]);
-							if (r < reach) data[y * w + x] -= profile.lookup(r);
+							if (r < reach) data[y * w + x] -= profile[q].lookup(r);
 						}
 				}
 				final DoublePlane local = new DoublePlane(data, w, h);

@@ -134,9 +134,12 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 	 * (Apart from the fit's loop, so that the compiler sees small methods, each with its own pixel loop.)
 	 */
 	static FitPixels gather(final Plane plane, final Particle[] ps, final Estimate[] e, final int[] group,
-		final EmpiricalProfile profile, final double window, final Censoring censoring)
+		final EmpiricalProfile[] profile, final double window, final Censoring censoring)
 	{
-		final double R = profile.radius(), W = Math.min(R, window);
+		double R = 0;
+		for (final int k : group)
+			R = Math.max(R, profile[k].radius());
+		final double W = Math.min(R, window);
 		// The pixels: within each member's window (at its starting centre and scale), not clipped.
 		int x0 = Integer.MAX_VALUE, y0 = Integer.MAX_VALUE, x1 = Integer.MIN_VALUE, y1 = Integer.MIN_VALUE;
 		for (final int k : group) {
@@ -182,7 +185,7 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 	 * @return these pixels with the light of the particles outside {@code group} at their estimates {@code e} now
 	 *         (the candidates of a member fitted in turn, from one sweep to the next)
 	 */
-	FitPixels relit(final Particle[] ps, final Estimate[] e, final int[] group, final EmpiricalProfile profile) {
+	FitPixels relit(final Particle[] ps, final Estimate[] e, final int[] group, final EmpiricalProfile[] profile) {
 		int x0 = Integer.MAX_VALUE, x1 = Integer.MIN_VALUE;
 		for (int i = 0; i < count; i++) {
 			if (x[i] < x0) x0 = x[i];
@@ -197,20 +200,19 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 	 * pixels in row order (x within {@code [x0, x1]}): each particle on the rows within its reach only.
 	 */
 	private static double[] otherLight(final int[] px, final int[] py, final int count, final int x0, final int x1,
-		final Particle[] ps, final Estimate[] e, final int[] group, final EmpiricalProfile profile)
+		final Particle[] ps, final Estimate[] e, final int[] group, final EmpiricalProfile[] profile)
 	{
 		final double[] fixed = new double[count];
 		if (count == 0) return fixed;
-		final double R = profile.radius();
 		final int y0 = py[0], y1 = py[count - 1];
 		for (int k = 0; k < ps.length; k++) {
 			if (!ps[k].reliable() || GroupFit.contains(group, k)) continue;
 			final double kx = e[k].x(), ky = e[k].y(), ks = GroupFit.scaleOf(e[k]), ka = GroupFit.amplitudeOf(e[k]);
-			final double reach = R * ks;
+			final double reach = profile[k].radius() * ks;
 			if (kx < x0 - reach || kx > x1 + reach || ky < y0 - reach || ky > y1 + reach) continue;
 			final int from = firstOfRow(py, count, (int) Math.floor(ky - reach));
 			final int to = firstOfRow(py, count, (int) Math.ceil(ky + reach) + 1);
-			addLight(px, py, fixed, from, to, kx, ky, ks, ka, reach, profile);
+			addLight(px, py, fixed, from, to, kx, ky, ks, ka, reach, profile[k]);
 		}
 		return fixed;
 	}
@@ -309,7 +311,7 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 	 * false and leaves {@code use} unchanged (the caller chooses from the model itself).
 	 */
 	static boolean allUsable(final FitPixels candidates, final double[] p, final int n,
-		final EmpiricalProfile profile, final Censoring censoring, final boolean[] use)
+		final EmpiricalProfile[] profile, final Censoring censoring, final boolean[] use)
 	{
 		if (!withinBounds(candidates, p, n, profile, censoring)) return false;
 		java.util.Arrays.fill(use, true);
@@ -325,7 +327,7 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 	 * @return whether any mark changed
 	 */
 	static boolean select(final FitPixels candidates, final double[] p, final int n,
-		final EmpiricalProfile profile, final Censoring censoring, final boolean[] use, final FitPixels known,
+		final EmpiricalProfile[] profile, final Censoring censoring, final boolean[] use, final FitPixels known,
 		final double[] knownModels)
 	{
 		final int b0 = GroupFit.PER_PARTICLE * n;
@@ -357,7 +359,7 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 			for (int q = 0; q < n; q++) {
 				final int b = GroupFit.PER_PARTICLE * q;
 				final double dx = candidates.x()[i] - p[b], dy = candidates.y()[i] - p[b + 1];
-				model += p[b + 2] * profile.lookup(Math.sqrt(dx * dx + dy * dy) / p[b + 3]);
+				model += p[b + 2] * profile[q].lookup(Math.sqrt(dx * dx + dy * dy) / p[b + 3]);
 			}
 			final boolean usable = censoring.usable(model);
 			changed |= usable != use[i];
@@ -374,7 +376,7 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 	 *         chooses from the model itself, with the same result.
 	 */
 	private static boolean withinBounds(final FitPixels candidates, final double[] p, final int n,
-		final EmpiricalProfile profile, final Censoring censoring)
+		final EmpiricalProfile[] profile, final Censoring censoring)
 	{
 		final int b0 = GroupFit.PER_PARTICLE * n;
 		final double[] x = candidates.extent(); // u0, u1, v0, v1, f0, f1
@@ -382,8 +384,8 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 		double lo = p[b0] + Math.min(pu * x[0], pu * x[1]) + Math.min(pv * x[2], pv * x[3]) + x[4];
 		double hi = p[b0] + Math.max(pu * x[0], pu * x[1]) + Math.max(pv * x[2], pv * x[3]) + x[5];
 		for (int q = 0; q < n; q++) {
-			lo += profile.leastLight(p[GroupFit.PER_PARTICLE * q + 2]);
-			hi += profile.greatestLight(p[GroupFit.PER_PARTICLE * q + 2]);
+			lo += profile[q].leastLight(p[GroupFit.PER_PARTICLE * q + 2]);
+			hi += profile[q].greatestLight(p[GroupFit.PER_PARTICLE * q + 2]);
 		}
 		return censoring.usableBetween(lo, hi);
 	}

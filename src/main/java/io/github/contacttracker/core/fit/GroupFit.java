@@ -87,7 +87,7 @@ public final class GroupFit {
 	 *         iterations a group needed, negative if a group hit the limit
 	 */
 	static ProfileRefinement.Refined refine(final Plane plane, final Particle[] particles, final Estimate[] start,
-		final EmpiricalProfile profile, final double groupDistance, final double window, final Censoring censoring)
+		final EmpiricalProfile[] profile, final double groupDistance, final double window, final Censoring censoring)
 	{
 		final Estimate[] e = start.clone();
 		final List<int[]> groups = groups(particles, e, groupDistance);
@@ -106,7 +106,7 @@ public final class GroupFit {
 	 * are flagged {@code NOT_CONVERGED} if it reaches {@value #MAX_ITERATIONS} iterations.
 	 */
 	private static int fitJointly(final Plane plane, final Particle[] particles, final Estimate[] e, final int[] group,
-		final EmpiricalProfile profile, final double window, final Censoring censoring)
+		final EmpiricalProfile[] profile, final double window, final Censoring censoring)
 	{
 		final int it = fitGroup(plane, particles, e, group, profile, window, censoring, JOINT, null);
 		// flagged here, per group: a group that hit the limit says nothing of the frame's other groups
@@ -133,7 +133,7 @@ public final class GroupFit {
 	 * @return the largest iteration count of a member's fit in the last sweep
 	 */
 	static int fitInTurn(final Plane plane, final Particle[] particles, final Estimate[] e, final int[] group,
-		final EmpiricalProfile profile, final double window, final Censoring censoring, final int maxSweeps)
+		final EmpiricalProfile[] profile, final double window, final Censoring censoring, final int maxSweeps)
 	{
 		final int n = group.length;
 		final boolean[] failed = new boolean[n], active = new boolean[n], moving = new boolean[n];
@@ -141,7 +141,12 @@ public final class GroupFit {
 		final Estimate[] start = new Estimate[n];
 		for (int q = 0; q < n; q++)
 			start[q] = e[group[q]];
-		final double memberWindow = Math.min(window, profile.informationRadius(INFORMATION));
+		// each member's window: where its kind's profile holds the information on its centre
+		final java.util.Map<EmpiricalProfile, Double> information = new java.util.IdentityHashMap<>();
+		final double[] memberWindow = new double[n];
+		for (int q = 0; q < n; q++)
+			memberWindow[q] = Math.min(window, information.computeIfAbsent(profile[group[q]], pk -> pk
+				.informationRadius(INFORMATION)));
 		final Kept[] kept = new Kept[n];
 		for (int q = 0; q < n; q++)
 			kept[q] = new Kept();
@@ -155,7 +160,7 @@ public final class GroupFit {
 				final Estimate before = e[k];
 				// the first sweep chooses the member's pixels (as a joint fit does), the later ones keep them and its
 				// window, with the neighbours' light at their latest estimates
-				final int it = fitGroup(plane, particles, e, new int[] { k }, profile, memberWindow, censoring,
+				final int it = fitGroup(plane, particles, e, new int[] { k }, profile, memberWindow[q], censoring,
 					new Budget(ITERATIONS_PER_SWEEP, settled(before), MAX_SELECTIONS), kept[q]);
 				// a centre that slid away from its particle (onto a neighbour, or off into the background): no fit
 				failed[q] = it == 0 || e[k].distanceTo(start[q]) > MAX_SLIDE * Math.sqrt(particles[k].region.area() /
@@ -170,8 +175,8 @@ public final class GroupFit {
 			for (int q = 0; q < n; q++) {
 				active[q] = false;
 				for (int j = 0; j < n && !active[q]; j++)
-					active[q] = moving[j] && (j == q || e[group[j]].distanceTo(e[group[q]]) < memberWindow * scaleOf(
-						e[group[q]]) + profile.radius() * scaleOf(e[group[j]]));
+					active[q] = moving[j] && (j == q || e[group[j]].distanceTo(e[group[q]]) < memberWindow[q] * scaleOf(
+						e[group[q]]) + profile[group[j]].radius() * scaleOf(e[group[j]]));
 				any |= moving[q];
 			}
 		}
@@ -256,7 +261,7 @@ public final class GroupFit {
 	 * parameters: chosen again when the fit has settled, and the fit continued, until the choice stays put.
 	 */
 	private static int fitGroup(final Plane plane, final Particle[] ps, final Estimate[] e, final int[] group,
-		final EmpiricalProfile profile, final double window, final Censoring censoring, final Budget budget,
+		final EmpiricalProfile[] profile, final double window, final Censoring censoring, final Budget budget,
 		final Kept kept)
 	{
 		final int n = group.length, np = PER_PARTICLE * n + BACKGROUND;
@@ -264,6 +269,9 @@ public final class GroupFit {
 			profile) : FitPixels.gather(plane, ps, e, group, profile, window, censoring);
 		if (kept != null) kept.candidates = candidates;
 		if (candidates.count() <= np) return 0;
+		final EmpiricalProfile[] members = new EmpiricalProfile[n];
+		for (int q = 0; q < n; q++)
+			members[q] = profile[group[q]];
 		final double[] p = new double[np];
 		for (int q = 0; q < n; q++) {
 			final Estimate s = e[group[q]];
@@ -272,7 +280,7 @@ public final class GroupFit {
 			p[PER_PARTICLE * q + 2] = amplitudeOf(s);
 			p[PER_PARTICLE * q + 3] = scaleOf(s);
 		}
-		p[np - BACKGROUND] = profile.background();
+		p[np - BACKGROUND] = members[0].background(); // (every kind's profile has the same background)
 		final boolean frozen = kept != null && kept.use != null;
 		final boolean[] use = frozen ? kept.use : censoring.active() ? new boolean[candidates.count()] : null;
 		if (kept != null) kept.use = use;
@@ -282,15 +290,15 @@ public final class GroupFit {
 		FitPixels pixels = candidates;
 		if (frozen) {
 			pixels = candidates.subset(use);
-			rss = NormalEquations.accumulate(pixels, p, n, profile, jtj, jtr, null, null);
+			rss = NormalEquations.accumulate(pixels, p, n, members, jtj, jtr, null, null);
 		}
-		else if (use == null || FitPixels.allUsable(candidates, p, n, profile, censoring, use))
-			rss = NormalEquations.accumulate(candidates, p, n, profile, jtj, jtr, null, null);
+		else if (use == null || FitPixels.allUsable(candidates, p, n, members, censoring, use))
+			rss = NormalEquations.accumulate(candidates, p, n, members, jtj, jtr, null, null);
 		else {
 			// The first pass over every candidate chooses the pixels from the model it computes, and the pixels left
 			// out are then taken out of its sums (a pass over them alone): one pass, not a choice and a pass.
 			final double[] models = new double[candidates.count()];
-			rss = NormalEquations.accumulate(candidates, p, n, profile, jtj, jtr, null, models);
+			rss = NormalEquations.accumulate(candidates, p, n, members, jtj, jtr, null, models);
 			final boolean[] out = new boolean[use.length];
 			for (int i = 0; i < use.length; i++) {
 				use[i] = censoring.usable(models[i]);
@@ -300,7 +308,7 @@ public final class GroupFit {
 			if (pixels != candidates) {
 				final double[][] outJtj = new double[np][np];
 				final double[] outJtr = new double[np];
-				rss -= NormalEquations.accumulate(candidates.subset(out), p, n, profile, outJtj, outJtr, null, null);
+				rss -= NormalEquations.accumulate(candidates.subset(out), p, n, members, outJtj, outJtr, null, null);
 				for (int a = 0; a < np; a++) {
 					jtr[a] -= outJtr[a];
 					for (int b = 0; b < np; b++)
@@ -350,13 +358,13 @@ public final class GroupFit {
 				// chosen at the point of the latest residual pass, whose model is known on the pixels in use (the
 				// settled point is within TOLERANCE of it)
 				if (use != null && selections < budget.selections() && (evaluated == null ? FitPixels.select(candidates, p, n,
-					profile, censoring, use, null, null) : FitPixels.select(candidates, evaluated.p(), n, profile, censoring,
+					members, censoring, use, null, null) : FitPixels.select(candidates, evaluated.p(), n, members, censoring,
 						use, evaluated.pixels(), evaluated.models()))) {
 					selections++;
 					final FitPixels chosen = candidates.subset(use);
 					if (chosen.count() <= np) break;
 					pixels = chosen;
-					rss = NormalEquations.accumulate(pixels, p, n, profile, jtj, jtr, null, null);
+					rss = NormalEquations.accumulate(pixels, p, n, members, jtj, jtr, null, null);
 					hessianAtP = true;
 					noise = null;
 					evaluated = null;
@@ -367,7 +375,7 @@ public final class GroupFit {
 				break;
 			}
 			if (!hessianAtP) { // a chord step that was not small: J^T J at p, and the step again from it
-				rss = NormalEquations.accumulate(pixels, p, n, profile, jtj, jtr, null, null);
+				rss = NormalEquations.accumulate(pixels, p, n, members, jtj, jtr, null, null);
 				hessianAtP = true;
 				noise = null;
 				evaluated = null;
@@ -375,7 +383,7 @@ public final class GroupFit {
 			}
 			final double[] tr = new double[np], trialNoise = new double[PER_PARTICLE * n];
 			final double[] trialModels = use != null ? new double[pixels.count()] : null;
-			final double trialRss = allowed ? NormalEquations.accumulate(pixels, trial, n, profile, null, tr, trialNoise,
+			final double trialRss = allowed ? NormalEquations.accumulate(pixels, trial, n, members, null, tr, trialNoise,
 				trialModels) : Double.POSITIVE_INFINITY;
 			if (trialRss <= rss) {
 				System.arraycopy(trial, 0, p, 0, np);

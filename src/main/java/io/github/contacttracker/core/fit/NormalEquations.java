@@ -46,21 +46,27 @@ final class NormalEquations {
 	 * updated, on a flat lower triangle; the background's own block does not depend on {@code p} and was summed once
 	 * ({@link FitPixels#backgroundBlock}).
 	 */
-	static double accumulate(final FitPixels px, final double[] p, final int n, final EmpiricalProfile profile,
+	static double accumulate(final FitPixels px, final double[] p, final int n, final EmpiricalProfile[] profile,
 		final double[][] jtj, final double[] jtr, final double[] noise, final double[] models)
 	{
-		if (n == 1) return accumulateSingle(px, p, profile, jtj, jtr, noise, models);
-		if (n == 2) return accumulatePair(px, p, profile, jtj, jtr, noise, models);
+		if (n == 1) return accumulateSingle(px, p, profile[0], jtj, jtr, noise, models);
+		if (n == 2) return accumulatePair(px, p, profile[0], profile[1], jtj, jtr, noise, models);
 		return accumulateGroup(px, p, n, profile, jtj, jtr, noise, models);
 	}
 
 	/** {@link #accumulate} for any group (package-private for the test of {@link #accumulateSingle}). */
-	static double accumulateGroup(final FitPixels px, final double[] p, final int n, final EmpiricalProfile profile,
+	static double accumulateGroup(final FitPixels px, final double[] p, final int n, final EmpiricalProfile[] profile,
 		final double[][] jtj, final double[] jtr, final double[] noise, final double[] models)
 	{
 		final int np = GroupFit.PER_PARTICLE * n + GroupFit.BACKGROUND, b0 = np - GroupFit.BACKGROUND;
-		final double R = profile.radius();
-		final double[] tv = profile.valueTable(), td = profile.derivativeTable();
+		// each member's profile (its kind's): the tables, and its reach
+		final double[][] tvs = new double[n][], tds = new double[n][];
+		final double[] Rs = new double[n];
+		for (int q = 0; q < n; q++) {
+			tvs[q] = profile[q].valueTable();
+			tds[q] = profile[q].derivativeTable();
+			Rs[q] = profile[q].radius();
+		}
 		final double perStep = 1 / EmpiricalProfile.TABLE_STEP;
 		final int[] xs = px.x(), ys = px.y();
 		final double[] us = px.u(), vs = px.v(), values = px.value(), fixed = px.fixed();
@@ -74,7 +80,7 @@ final class NormalEquations {
 		// per member: the profile's reach squared and the inverse scale, so that pixels out of reach cost no root
 		final double[] reach2 = new double[n], perScale = new double[n];
 		for (int q = 0; q < n; q++) {
-			final double sc = p[GroupFit.PER_PARTICLE * q + 3];
+			final double sc = p[GroupFit.PER_PARTICLE * q + 3], R = Rs[q];
 			reach2[q] = R * sc * (R * sc);
 			perScale[q] = 1 / sc;
 		}
@@ -88,7 +94,8 @@ final class NormalEquations {
 				final double dx = xs[i] - p[b], dy = ys[i] - p[b + 1], r2 = dx * dx + dy * dy;
 				if (!(r2 < reach2[q])) continue;
 				final double r = Math.sqrt(r2), rs = r * perScale[q];
-				if (!(rs < R)) continue; // (rounding at the very edge)
+				if (!(rs < Rs[q])) continue; // (rounding at the very edge)
+				final double[] tv = tvs[q], td = tds[q];
 				// the profile's tables, linearly interpolated (as EmpiricalProfile.lookup, inlined)
 				final double t = rs * perStep;
 				final int k = (int) t;
@@ -224,13 +231,16 @@ final class NormalEquations {
 	 * and loops, which the client compiler does not keep in registers. Identical results ({@code
 	 * NormalEquationsTest}).
 	 */
-	static double accumulatePair(final FitPixels px, final double[] p, final EmpiricalProfile profile,
+	static double accumulatePair(final FitPixels px, final double[] p, final EmpiricalProfile profileA,
+		final EmpiricalProfile profileB,
 		final double[][] jtj, final double[] jtr, final double[] noise, final double[] models)
 	{
 		final int np = 2 * GroupFit.PER_PARTICLE + GroupFit.BACKGROUND, b0 = np - GroupFit.BACKGROUND;
 		final int bb = GroupFit.PER_PARTICLE; // the second member's first parameter
-		final double R = profile.radius();
-		final double[] tv = profile.valueTable(), td = profile.derivativeTable();
+		// each member's profile (its kind's)
+		final double aR = profileA.radius(), bR = profileB.radius();
+		final double[] atv = profileA.valueTable(), atd = profileA.derivativeTable();
+		final double[] btv = profileB.valueTable(), btd = profileB.derivativeTable();
 		final double perStep = 1 / EmpiricalProfile.TABLE_STEP;
 		final int[] xs = px.x(), ys = px.y();
 		final double[] us = px.u(), vs = px.v(), values = px.value(), fixed = px.fixed();
@@ -240,7 +250,8 @@ final class NormalEquations {
 		final double pb = p[b0], pu = p[b0 + 1], pv = p[b0 + 2];
 		final double ax = p[0], ay = p[1], aa = p[2], as = p[3], bx = p[bb], by = p[bb + 1], ba = p[bb + 2],
 			bs = p[bb + 3];
-		final double aReach2 = R * as * (R * as), aPerScale = 1 / as, bReach2 = R * bs * (R * bs), bPerScale = 1 / bs;
+		final double aReach2 = aR * as * (aR * as), aPerScale = 1 / as, bReach2 = bR * bs * (bR * bs),
+			bPerScale = 1 / bs;
 		double rss = 0, r0 = 0, ru = 0, rv = 0;
 		for (int i = 0; i < count; i++) {
 			final double u = us[i], v = vs[i];
@@ -250,12 +261,12 @@ final class NormalEquations {
 			final double adx = xs[i] - ax, ady = ys[i] - ay, ar2 = adx * adx + ady * ady;
 			if (ar2 < aReach2) {
 				final double r = Math.sqrt(ar2), rs = r * aPerScale;
-				if (rs < R) {
+				if (rs < aR) {
 					final double t = rs * perStep;
 					final int k = (int) t;
 					final double f = t - k;
-					final double val = tv[k] + f * (tv[k + 1] - tv[k]);
-					final double d = aa * (td[k] + f * (td[k + 1] - td[k])) * aPerScale;
+					final double val = atv[k] + f * (atv[k + 1] - atv[k]);
+					final double d = aa * (atd[k] + f * (atd[k + 1] - atd[k])) * aPerScale;
 					model += aa * val;
 					final double radial = r > 1e-12 ? -d / r : 0;
 					a0 = radial * adx;
@@ -268,12 +279,12 @@ final class NormalEquations {
 			final double bdx = xs[i] - bx, bdy = ys[i] - by, br2 = bdx * bdx + bdy * bdy;
 			if (br2 < bReach2) {
 				final double r = Math.sqrt(br2), rs = r * bPerScale;
-				if (rs < R) {
+				if (rs < bR) {
 					final double t = rs * perStep;
 					final int k = (int) t;
 					final double f = t - k;
-					final double val = tv[k] + f * (tv[k + 1] - tv[k]);
-					final double d = ba * (td[k] + f * (td[k + 1] - td[k])) * bPerScale;
+					final double val = btv[k] + f * (btv[k + 1] - btv[k]);
+					final double d = ba * (btd[k] + f * (btd[k + 1] - btd[k])) * bPerScale;
 					model += ba * val;
 					final double radial = r > 1e-12 ? -d / r : 0;
 					e0 = radial * bdx;

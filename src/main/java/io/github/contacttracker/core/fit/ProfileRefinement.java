@@ -21,12 +21,17 @@
  */
 package io.github.contacttracker.core.fit;
 
+import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.List;
 
 import io.github.contacttracker.core.Flag;
 import io.github.contacttracker.core.TrackerParameters;
 import io.github.contacttracker.core.image.Censoring;
 import io.github.contacttracker.core.image.Plane;
+import io.github.contacttracker.core.kind.KindFeatures;
+import io.github.contacttracker.core.kind.KindProfiles;
+import io.github.contacttracker.core.kind.Kinds;
 import io.github.contacttracker.core.profile.EmpiricalProfile;
 import io.github.contacttracker.core.profile.ProfileEstimator;
 import io.github.contacttracker.core.radial.Estimate;
@@ -69,38 +74,55 @@ public final class ProfileRefinement implements Refinement {
 	public Outcome refine(final Plane plane, final Particle[] ps, final TrackerParameters params,
 		final EmpiricalProfile given, final double noise)
 	{
+		return refine(plane, ps, params, given == null ? null : KindProfiles.one(given), noise);
+	}
+
+	/**
+	 * As {@link #refine(Plane, Particle[], TrackerParameters, EmpiricalProfile, double)} with the profile of each kind
+	 * of particle measured beforehand (over a stack), or {@code null}: then the kinds are told apart on this frame
+	 * (unless {@link TrackerParameters#kinds()} is 1) and each kind's profile measured on it. Each particle is drawn
+	 * with its kind's profile; the outcome holds the kinds.
+	 */
+	public Outcome refine(final Plane plane, final Particle[] ps, final TrackerParameters params,
+		final KindProfiles given, final double noise)
+	{
 		final Outcome iterative = SecondPass.iterate(ps, params);
 		Estimate[] e = iterative.estimates();
 		if (ps.length == 0) return iterative;
+		// each particle's kind, among the movie's kinds or this frame's
+		final Kinds kinds = given != null ? given.kinds() : params.kinds() == 1 ? null : kindsOf(plane, ps, e,
+			params);
+		final int[] kind = KindProfiles.kindsOf(kinds, plane, ps, e, params.rOut());
 		// measured here: alternated with the centres until these stop moving (see the stack tracker)
 		// pixels near the clip levels, chosen by the model (see Censoring), at the frame's noise
 		final Censoring censoring = Censoring.of(plane, noise);
 		final int rounds = given == null ? PROFILE_ROUNDS : 1;
-		EmpiricalProfile profile = given;
+		KindProfiles profiles = given;
 		final int clear = Flag.SECOND_PASS.bit() | Flag.FELL_BACK.bit() | Flag.NOT_CONVERGED.bit();
 		boolean settled = given != null;
 		final Rounds settling = new Rounds();
 		for (int round = 0; round < rounds; round++) {
 			if (given == null) {
-				profile = measure(plane, ps, e, params.rOut(), round == 0 ? null : profile, censoring);
-				if (profile == null) {
+				profiles = measure(plane, ps, e, params.rOut(), kinds, kind, round == 0 ? null : profiles, censoring);
+				if (profiles == null) {
 					final Estimate[] kept = e.clone();
 					for (int k = 0; k < kept.length; k++)
 						kept[k] = kept[k].withFlags(kept[k].flags() | Flag.FELL_BACK.bit());
-					return new Outcome(kept, iterative.discs());
+					return new Outcome(kept, iterative.discs(), kind);
 				}
 			}
+			final EmpiricalProfile[] of = profiles.byParticle(kind);
 			// the iterative pass's flags do not describe the refined centres (a group that cannot be fitted sets its own)
 			final Estimate[] start = e.clone();
 			for (int k = 0; k < start.length; k++)
 				start[k] = start[k].withFlags(start[k].flags() & ~clear);
 			final Refined r;
 			if (deblend) {
-				double disc = profile.activeRadius(params.threshold());
+				double disc = profiles.main().activeRadius(params.threshold());
 				if (disc < 3) disc = medianEquivalentRadius(ps);
-				r = Deblender.refine(plane, ps, start, profile, disc);
+				r = Deblender.refine(plane, ps, start, of, disc);
 			}
-			else r = GroupFit.refine(plane, ps, start, profile, 2 * params.rOut(), params.rOut(), censoring);
+			else r = GroupFit.refine(plane, ps, start, of, 2 * params.rOut(), params.rOut(), censoring);
 			final Estimate[] next = r.estimates();
 			for (int k = 0; k < next.length; k++) {
 				next[k] = new Estimate(next[k].x(), next[k].y(), next[k].flags(), next[k].secondArea(), Math.abs(r
@@ -124,46 +146,75 @@ public final class ProfileRefinement implements Refinement {
 		if (!settled) for (int k = 0; k < e.length; k++)
 			e[k] = e[k].withFlags(e[k].flags() | Flag.NOT_CONVERGED.bit());
 		flagUnmodelledNeighbours(ps, e, params.rOut());
-		return new Outcome(e, iterative.discs());
+		return new Outcome(e, iterative.discs(), kind);
 	}
 
 	/**
-	 * The profile on this frame around centres {@code e}, unreliable particles masked; null if too few pixels. The
-	 * profile {@code e} was fitted with, if any, chooses the pixels left out near clip levels.
+	 * @return the kinds of particle on this frame alone ({@link TrackerParameters#kinds()}: found automatically or
+	 *         that many), or null for one kind
 	 */
-	private static EmpiricalProfile measure(final Plane plane, final Particle[] ps, final Estimate[] e,
-		final double rOut, final EmpiricalProfile fittedWith, final Censoring censoring)
+	private static Kinds kindsOf(final Plane plane, final Particle[] ps, final Estimate[] e,
+		final TrackerParameters params)
 	{
-		final ProfileEstimator estimator = ProfileEstimator.forROut(rOut);
+		final List<KindFeatures> sample = new ArrayList<>();
+		final KindFeatures[] f = KindFeatures.measure(plane, ps, e, params.rOut());
+		for (int k = 0; k < ps.length; k++)
+			if (!Flag.DEGENERATE.isSet(ps[k].first.flags())) sample.add(f[k]); // merges too: a kind may be all merged
+		final Kinds kinds = Kinds.find(sample, params.kinds());
+		return kinds.count() < 2 ? null : kinds;
+	}
+
+	/**
+	 * The profile of each kind on this frame around centres {@code e}, unreliable particles masked; null if too few
+	 * pixels. The profiles {@code e} was fitted with, if any, choose the pixels left out near clip levels.
+	 */
+	private static KindProfiles measure(final Plane plane, final Particle[] ps, final Estimate[] e,
+		final double rOut, final Kinds kinds, final int[] kind, final KindProfiles fittedWith,
+		final Censoring censoring)
+	{
+		final int count = kinds == null ? 1 : kinds.count();
+		final ProfileEstimator estimator = ProfileEstimator.forROut(rOut, count);
 		final int n = ps.length;
 		final double[] cx = new double[n], cy = new double[n], amp = new double[n], scale = new double[n];
 		final boolean[] masked = new boolean[n];
-		double ampSum = 0, logScaleSum = 0;
-		int fitted = 0;
+		final int[] at = new int[n];
+		// per kind, the profile's own height and size: its particles' mean amplitude and (geometric) mean scale
+		final double[] ampSum = new double[count], logScaleSum = new double[count];
+		final int[] fitted = new int[count];
 		for (int k = 0; k < n; k++) {
 			cx[k] = e[k].x();
 			cy[k] = e[k].y();
 			masked[k] = !ps[k].reliable();
+			at[k] = KindProfiles.position(kinds, kind[k]);
 			final boolean known = Double.isFinite(e[k].amplitude()) && e[k].scale() > 0;
 			amp[k] = known ? e[k].amplitude() : 1;
 			scale[k] = known ? e[k].scale() : 1;
 			if (known && !masked[k]) {
-				ampSum += amp[k];
-				logScaleSum += Math.log(scale[k]);
-				fitted++;
+				ampSum[at[k]] += amp[k];
+				logScaleSum[at[k]] += Math.log(scale[k]);
+				fitted[at[k]]++;
 			}
 		}
-		// the profile's own height and size: the particles' mean amplitude and (geometric) mean scale
-		final double ampNorm = fitted > 0 && ampSum > 0 ? ampSum / fitted : 1;
-		final double scaleNorm = fitted > 0 ? Math.exp(logScaleSum / fitted) : 1;
-		for (int k = 0; k < n; k++) {
-			amp[k] /= ampNorm;
-			scale[k] /= scaleNorm;
+		final double[] ampNorm = new double[count], scaleNorm = new double[count];
+		for (int c = 0; c < count; c++) {
+			ampNorm[c] = fitted[c] > 0 && ampSum[c] > 0 ? ampSum[c] / fitted[c] : 1;
+			scaleNorm[c] = fitted[c] > 0 ? Math.exp(logScaleSum[c] / fitted[c]) : 1;
 		}
-		estimator.add(plane, cx, cy, amp, scale, masked, fittedWith == null ? null : new ProfileEstimator.Previous(
-			fittedWith, censoring, ampNorm, scaleNorm));
+		for (int k = 0; k < n; k++) {
+			amp[k] /= ampNorm[at[k]];
+			scale[k] /= scaleNorm[at[k]];
+		}
+		ProfileEstimator.Previous previous = null;
+		if (fittedWith != null) {
+			final EmpiricalProfile[] before = new EmpiricalProfile[count];
+			for (int c = 0; c < count; c++)
+				before[c] = fittedWith.profile(c);
+			previous = new ProfileEstimator.Previous(before, censoring, ampNorm, scaleNorm);
+		}
+		estimator.add(plane, cx, cy, amp, scale, masked, at, previous);
 		try {
-			return estimator.estimate();
+			final EmpiricalProfile[] measured = estimator.estimateAll();
+			return kinds == null ? KindProfiles.one(measured[0]) : KindProfiles.of(kinds, measured);
 		}
 		catch (final IllegalStateException ex) {
 			return null;

@@ -57,25 +57,49 @@ public final class ProfileEstimator {
 	static final double SMOOTHNESS = 1e-4;
 
 	private final double radius;
+	/** Coefficients of one profile. */
 	private final int count;
+	/** Profiles measured at once, one per kind of particle: coefficients {@code kind * count ...}, then B. */
+	private final int kinds;
+	/** Index of the background's first coefficient. */
+	private final int bIndex;
 	private final double[][] ata;
 	private final double[] atb;
 	private int samples;
 	private int profileSamples;
+	/** Per kind, the pixel values added within reach of a particle of that kind. */
+	private final int[] kindSamples;
 
 	/** @param radius the profile's reach (px): use {@code r_out} */
 	public ProfileEstimator(final double radius) {
+		this(radius, 1);
+	}
+
+	/**
+	 * @param radius the profile's reach (px)
+	 * @param kinds how many profiles to measure at once, one per kind of particle (all sharing the background)
+	 */
+	public ProfileEstimator(final double radius, final int kinds) {
 		if (!(radius > 3 * SPACING)) throw new IllegalArgumentException("profile radius must exceed " + 3 * SPACING +
 			" px, not " + radius);
+		if (kinds < 1) throw new IllegalArgumentException("at least one kind of particle, not " + kinds);
 		this.count = (int) Math.round(radius / SPACING) - 1;
 		this.radius = (count + 1) * SPACING;
-		ata = new double[count + 3][count + 3];
-		atb = new double[count + 3];
+		this.kinds = kinds;
+		this.bIndex = kinds * count;
+		ata = new double[bIndex + 3][bIndex + 3];
+		atb = new double[bIndex + 3];
+		kindSamples = new int[kinds];
 	}
 
 	/** @return an estimator reaching {@link #REACH_FACTOR} times {@code rOut} */
 	public static ProfileEstimator forROut(final double rOut) {
-		return new ProfileEstimator(REACH_FACTOR * rOut);
+		return forROut(rOut, 1);
+	}
+
+	/** @return an estimator of {@code kinds} profiles reaching {@link #REACH_FACTOR} times {@code rOut} */
+	public static ProfileEstimator forROut(final double rOut, final int kinds) {
+		return new ProfileEstimator(REACH_FACTOR * rOut, kinds);
 	}
 
 	/** @return the number of pixel values added so far */
@@ -107,6 +131,18 @@ public final class ProfileEstimator {
 	public <T extends RealType<T>> void add(final RandomAccessibleInterval<T> frame, final List<Localization> spots,
 		final double amplitudeNorm, final double scaleNorm, final EmpiricalProfile previous, final double noise)
 	{
+		add(frame, spots, new int[spots.size()], new double[] { amplitudeNorm }, new double[] { scaleNorm },
+			previous == null ? null : new EmpiricalProfile[] { previous }, noise);
+	}
+
+	/**
+	 * As {@link #add(RandomAccessibleInterval, List, double, double, EmpiricalProfile, double)}, spot {@code k} of
+	 * kind {@code kind[k]} (0-based), each kind with its own norms and previous profile.
+	 */
+	public <T extends RealType<T>> void add(final RandomAccessibleInterval<T> frame, final List<Localization> spots,
+		final int[] kind, final double[] amplitudeNorms, final double[] scaleNorms, final EmpiricalProfile[] previous,
+		final double noise)
+	{
 		final Plane plane = Plane.of(frame);
 		final int n = spots.size();
 		final double[] cx = new double[n], cy = new double[n], amp = new double[n], scale = new double[n];
@@ -115,19 +151,30 @@ public final class ProfileEstimator {
 			final Localization s = spots.get(k);
 			cx[k] = s.x() - plane.minX();
 			cy[k] = s.y() - plane.minY();
-			amp[k] = Double.isFinite(s.amplitude()) ? s.amplitude() / amplitudeNorm : 1;
-			scale[k] = Double.isFinite(s.scale()) && s.scale() > 0 ? s.scale() / scaleNorm : 1;
+			amp[k] = Double.isFinite(s.amplitude()) ? s.amplitude() / amplitudeNorms[kind[k]] : 1;
+			scale[k] = Double.isFinite(s.scale()) && s.scale() > 0 ? s.scale() / scaleNorms[kind[k]] : 1;
 			masked[k] = s.has(Flag.MERGED) || s.has(Flag.DEGENERATE);
 		}
-		add(plane, cx, cy, amp, scale, masked, previous == null ? null : new Previous(previous, Censoring.of(plane,
-			noise), amplitudeNorm, scaleNorm));
+		add(plane, cx, cy, amp, scale, masked, kind, previous == null ? null : new Previous(previous, Censoring.of(
+			plane, noise), amplitudeNorms, scaleNorms));
 	}
 
 	/**
-	 * The previous estimate's model, which chooses the pixels left out near the clip levels: its profile, the rule,
-	 * and the norms that turn the spots' amplitudes and scales given to {@code add} back into those fitted with it.
+	 * The previous estimate's model, which chooses the pixels left out near the clip levels: its profiles (one per
+	 * kind), the rule, and per kind the norms that turn the spots' amplitudes and scales given to {@code add} back
+	 * into those fitted with it.
 	 */
-	public record Previous(EmpiricalProfile profile, Censoring censoring, double amplitudeNorm, double scaleNorm) {}
+	public record Previous(EmpiricalProfile[] profiles, Censoring censoring, double[] amplitudeNorms,
+		double[] scaleNorms)
+	{
+		/** One kind. */
+		public Previous(final EmpiricalProfile profile, final Censoring censoring, final double amplitudeNorm,
+			final double scaleNorm)
+		{
+			this(new EmpiricalProfile[] { profile }, censoring, new double[] { amplitudeNorm }, new double[] {
+				scaleNorm });
+		}
+	}
 
 	/** Adds a frame with its spots, taken as alike (amplitude and scale 1 for spots without fitted ones). */
 	public <T extends RealType<T>> void add(final RandomAccessibleInterval<T> frame, final List<Localization> spots) {
@@ -139,16 +186,32 @@ public final class ProfileEstimator {
 	 *         spots that are neither merged nor degenerate
 	 */
 	public static double[] norms(final List<Localization> spots) {
-		double a = 0, s = 0;
-		int n = 0;
-		for (final Localization l : spots) {
+		final double[][] n = norms(spots, new int[spots.size()], 1);
+		return new double[] { n[0][0], n[1][0] };
+	}
+
+	/**
+	 * @return per kind ({@code kind[k]} of spot {@code k}, 0-based, below {@code kinds}): {mean amplitudes, geometric
+	 *         mean scales}, as {@link #norms(List)} over the spots of that kind
+	 */
+	public static double[][] norms(final List<Localization> spots, final int[] kind, final int kinds) {
+		final double[] a = new double[kinds], s = new double[kinds];
+		final int[] n = new int[kinds];
+		for (int k = 0; k < spots.size(); k++) {
+			final Localization l = spots.get(k);
 			if (l.has(Flag.MERGED) || l.has(Flag.DEGENERATE) || !Double.isFinite(l.amplitude()) || !(l.scale() > 0))
 				continue;
-			a += l.amplitude();
-			s += Math.log(l.scale());
-			n++;
+			a[kind[k]] += l.amplitude();
+			s[kind[k]] += Math.log(l.scale());
+			n[kind[k]]++;
 		}
-		return n == 0 || !(a > 0) ? new double[] { 1, 1 } : new double[] { a / n, Math.exp(s / n) };
+		final double[][] out = new double[2][kinds];
+		for (int c = 0; c < kinds; c++) {
+			final boolean none = n[c] == 0 || !(a[c] > 0);
+			out[0][c] = none ? 1 : a[c] / n[c];
+			out[1][c] = none ? 1 : Math.exp(s[c] / n[c]);
+		}
+		return out;
 	}
 
 	/** Adds a plane with centres in its local coordinates, particles alike; pixels near masked centres are skipped. */
@@ -173,12 +236,21 @@ public final class ProfileEstimator {
 	public void add(final Plane plane, final double[] cx, final double[] cy, final double[] amp, final double[] scale,
 		final boolean[] masked, final Previous previous)
 	{
+		add(plane, cx, cy, amp, scale, masked, new int[cx.length], previous);
+	}
+
+	/**
+	 * As {@link #add(Plane, double[], double[], double[], double[], boolean[], Previous)}, particle {@code k} of kind
+	 * {@code kind[k]} (0-based, below the estimator's number of kinds) drawn with its kind's profile.
+	 */
+	public void add(final Plane plane, final double[] cx, final double[] cy, final double[] amp, final double[] scale,
+		final boolean[] masked, final int[] kind, final Previous previous)
+	{
 		final int n = cx.length, w = plane.width(), h = plane.height();
 		final double saturation = plane.saturation(), floor = plane.floor();
 		final int[] near = new int[n];
 		final int[] idx = new int[4 * n + 3];
 		final double[] val = new double[4 * n + 3];
-		final int bIndex = count;
 		double maxScale = 1;
 		for (int k = 0; k < n; k++)
 			maxScale = Math.max(maxScale, scale[k]);
@@ -189,13 +261,14 @@ public final class ProfileEstimator {
 		final boolean[] aloneUsable = new boolean[n];
 		final int[] inReach = new int[n];
 		final double[] inReachR = new double[n];
-		final boolean backgroundUsable = previous == null || previous.censoring().usable(previous.profile()
+		final boolean backgroundUsable = previous == null || previous.censoring().usable(previous.profiles()[0]
 			.background());
 		if (previous != null) for (int k = 0; k < n; k++) {
-			final double a = previous.amplitudeNorm() * amp[k], b = previous.profile().background();
-			aloneUsable[k] = previous.censoring().usableBetween(b + previous.profile().leastLight(a), b + previous
-				.profile().greatestLight(a));
+			final EmpiricalProfile pk = previous.profiles()[kind[k]];
+			final double a = previous.amplitudeNorms()[kind[k]] * amp[k], b = pk.background();
+			aloneUsable[k] = previous.censoring().usableBetween(b + pk.leastLight(a), b + pk.greatestLight(a));
 		}
+		final boolean[] reachedKind = new boolean[kinds];
 		final double[] values = new double[w]; // each row read once (Plane.read), not pixel by pixel
 		for (int y = 0; y < h; y++) {
 			plane.read(0, w - 1, y, y, values, 0);
@@ -207,6 +280,7 @@ public final class ProfileEstimator {
 				if (v >= saturation || v <= floor) continue;
 				int len = 0, reached = 0;
 				boolean skip = false;
+				if (kinds > 1) java.util.Arrays.fill(reachedKind, false);
 				for (int q = 0; q < nn && !skip; q++) {
 					final int k = near[q];
 					final double dx = x - cx[k], dy = y - cy[k], d2 = dx * dx + dy * dy, reach = radius * scale[k];
@@ -222,13 +296,17 @@ public final class ProfileEstimator {
 					// the four cubic B-spline weights of knots i-1..i+2 (EmpiricalProfile.bspline at u - j)
 					final double f = u - i, g = 1 - f, f3 = f * f * f, g3 = g * g * g;
 					final double a = amp[k];
-					len = term(idx, val, len, i - 1, a * g3 / 6);
-					len = term(idx, val, len, i, a * (2.0 / 3 - f * f + 0.5 * f3));
-					len = term(idx, val, len, i + 1, a * (2.0 / 3 - g * g + 0.5 * g3));
-					len = term(idx, val, len, i + 2, a * f3 / 6);
+					final int off = kind[k] * count;
+					if (kinds > 1) reachedKind[kind[k]] = true;
+					len = term(idx, val, len, i - 1, a * g3 / 6, off);
+					len = term(idx, val, len, i, a * (2.0 / 3 - f * f + 0.5 * f3), off);
+					len = term(idx, val, len, i + 1, a * (2.0 / 3 - g * g + 0.5 * g3), off);
+					len = term(idx, val, len, i + 2, a * f3 / 6, off);
 				}
-				if (skip || previous != null && !usable(previous, reached, inReach, inReachR, amp, scale, aloneUsable,
-					backgroundUsable)) continue;
+				if (skip || previous != null && !usable(previous, reached, inReach, inReachR, amp, scale, kind,
+					aloneUsable, backgroundUsable)) continue;
+				if (kinds > 1) for (int c = 0; c < kinds; c++)
+					if (reachedKind[c]) kindSamples[c]++;
 				if (len == 0 || len == 4 && idx[1] == idx[0] + 1 && idx[2] == idx[1] + 1 && idx[3] == idx[2] + 1) {
 					// The common cases without the general outer product: the background alone, or one particle's
 					// four distinct knots; every sum receives the same products as there.
@@ -246,6 +324,7 @@ public final class ProfileEstimator {
 					if (len == 0) continue;
 					addOneParticle(idx[0], val, v, bu, bv);
 					profileSamples++;
+					if (kinds == 1) kindSamples[0]++;
 					continue;
 				}
 				// the background plane B + bx u + by v, about the frame's centre (u, v in hundreds of px)
@@ -272,7 +351,10 @@ public final class ProfileEstimator {
 					}
 				}
 				samples++;
-				if (len > 3) profileSamples++;
+				if (len > 3) {
+					profileSamples++;
+					if (kinds == 1) kindSamples[0]++;
+				}
 			}
 		}
 	}
@@ -298,7 +380,7 @@ public final class ProfileEstimator {
 		r3[c + 1] += w3 * w1;
 		r3[c + 2] += w3 * w2;
 		r3[c + 3] += w3 * w3;
-		final double[] b0 = ata[count], b1 = ata[count + 1], b2 = ata[count + 2];
+		final double[] b0 = ata[bIndex], b1 = ata[bIndex + 1], b2 = ata[bIndex + 2];
 		b0[c] += 1 * w0;
 		b0[c + 1] += 1 * w1;
 		b0[c + 2] += 1 * w2;
@@ -319,24 +401,29 @@ public final class ProfileEstimator {
 	 *         background, does not settle it
 	 */
 	private static boolean usable(final Previous previous, final int reached, final int[] inReach,
-		final double[] inReachR, final double[] amp, final double[] scale, final boolean[] aloneUsable,
-		final boolean backgroundUsable)
+		final double[] inReachR, final double[] amp, final double[] scale, final int[] kind,
+		final boolean[] aloneUsable, final boolean backgroundUsable)
 	{
 		if (reached == 0 && backgroundUsable || reached == 1 && aloneUsable[inReach[0]]) return true;
-		double model = previous.profile().background();
+		double model = previous.profiles()[0].background();
 		for (int q = 0; q < reached; q++) {
-			final int k = inReach[q];
-			model += previous.amplitudeNorm() * amp[k] * previous.profile().lookup(inReachR[q] / (previous.scaleNorm() *
-				scale[k]));
+			final int k = inReach[q], c = kind[k];
+			model += previous.amplitudeNorms()[c] * amp[k] * previous.profiles()[c].lookup(inReachR[q] / (previous
+				.scaleNorms()[c] * scale[k]));
 		}
 		return previous.censoring().usable(model);
 	}
 
-	/** Appends knot {@code j}'s term {@code value} (if it has a coefficient and is not zero); returns the length. */
-	private int term(final int[] idx, final double[] val, final int len, final int j, final double value) {
+	/**
+	 * Appends knot {@code j}'s term {@code value} (if it has a coefficient and is not zero) of the profile whose
+	 * coefficients start at {@code offset}; returns the length.
+	 */
+	private int term(final int[] idx, final double[] val, final int len, final int j, final double value,
+		final int offset)
+	{
 		final int c = EmpiricalProfile.coefficientIndex(j, count);
 		if (c < 0 || value == 0) return len;
-		idx[len] = c;
+		idx[len] = c + offset;
 		val[len] = value;
 		return len + 1;
 	}
@@ -346,7 +433,8 @@ public final class ProfileEstimator {
 
 	/** Adds what {@code other} (of the same radius) has accumulated, so frames can be measured in parallel. */
 	public void merge(final ProfileEstimator other) {
-		if (other.count != count) throw new IllegalArgumentException("profile radii differ");
+		if (other.count != count || other.kinds != kinds) throw new IllegalArgumentException(
+			"profile radii or kinds differ");
 		for (int i = 0; i < atb.length; i++) {
 			atb[i] += other.atb[i];
 			for (int j = 0; j < atb.length; j++)
@@ -354,42 +442,64 @@ public final class ProfileEstimator {
 		}
 		samples += other.samples;
 		profileSamples += other.profileSamples;
+		for (int c = 0; c < kinds; c++)
+			kindSamples[c] += other.kindSamples[c];
 	}
 
 	/**
-	 * @return the profile
+	 * @return the profile (of the first kind)
 	 * @throws IllegalStateException when the data cannot determine it
 	 */
 	public EmpiricalProfile estimate() {
-		final int m = count + 3;
+		return estimateAll()[0];
+	}
+
+	/**
+	 * @return the profile of each kind, all with the same background
+	 * @throws IllegalStateException when the data cannot determine them (naming the kind, if one has too few pixels)
+	 */
+	public EmpiricalProfile[] estimateAll() {
+		final int m = bIndex + 3;
 		final double[][] a = new double[m][m];
-		double trace = 0;
-		for (int i = 0; i < m; i++) {
+		for (int i = 0; i < m; i++)
 			for (int j = 0; j <= i; j++)
 				a[i][j] = a[j][i] = ata[i][j];
-			if (i <= count) trace += ata[i][i];
-		}
 		// A background without a ramp (one frame: no pixel off its centre row) leaves the plane's slopes free
-		for (int i = count + 1; i < m; i++)
+		for (int i = bIndex + 1; i < m; i++)
 			if (a[i][i] == 0) a[i][i] = 1;
-		// Penalty on second differences d_j = c_{j-1} - 2 c_j + c_{j+1}, j = 0..count, with c_-1 = c_1 and
-		// c_count = 0 (beyond the last coefficient).
-		final double lambda = SMOOTHNESS * trace / (count + 1);
-		for (int j = 0; j <= count; j++) {
-			final int[] ci = { EmpiricalProfile.coefficientIndex(j - 1, count), EmpiricalProfile.coefficientIndex(j,
-				count), EmpiricalProfile.coefficientIndex(j + 1, count) };
-			final double[] cw = { 1, -2, 1 };
-			for (int p = 0; p < 3; p++)
-				for (int q = 0; q < 3; q++)
-					if (ci[p] >= 0 && ci[q] >= 0) a[ci[p]][ci[q]] += lambda * cw[p] * cw[q];
+		for (int c = 0; c < kinds; c++) {
+			final int off = c * count;
+			// the scale of the penalty: the kind's diagonal and the background's
+			double trace = 0;
+			for (int i = off; i < off + count; i++)
+				trace += ata[i][i];
+			trace += ata[bIndex][bIndex];
+			// Penalty on second differences d_j = c_{j-1} - 2 c_j + c_{j+1}, j = 0..count, with c_-1 = c_1 and
+			// c_count = 0 (beyond the last coefficient).
+			final double lambda = SMOOTHNESS * trace / (count + 1);
+			for (int j = 0; j <= count; j++) {
+				final int[] ci = { EmpiricalProfile.coefficientIndex(j - 1, count), EmpiricalProfile.coefficientIndex(j,
+					count), EmpiricalProfile.coefficientIndex(j + 1, count) };
+				final double[] cw = { 1, -2, 1 };
+				for (int p = 0; p < 3; p++)
+					for (int q = 0; q < 3; q++)
+						if (ci[p] >= 0 && ci[q] >= 0) a[off + ci[p]][off + ci[q]] += lambda * cw[p] * cw[q];
+			}
 		}
 		final double[] x = SymmetricSolver.solve(a, atb);
 		// pixels of the background alone determine no profile: the smoothness penalty would make one up
 		if (x == null || samples < 4 * (count + 1) || profileSamples < 4 * count)
 			throw new IllegalStateException("too few pixels (" + samples + ", " + profileSamples + " within reach of a " +
 				"usable particle) to estimate the particles' profile");
-		final double[] coefficients = new double[count];
-		System.arraycopy(x, 0, coefficients, 0, count);
-		return new EmpiricalProfile(SPACING, coefficients, x[count], samples);
+		for (int c = 0; c < kinds; c++)
+			if (kindSamples[c] < 4 * count) throw new IllegalStateException("too few pixels (" + kindSamples[c] +
+				") within reach of a usable particle of kind " + (c + 1) + " to estimate its profile");
+		final EmpiricalProfile[] out = new EmpiricalProfile[kinds];
+		for (int c = 0; c < kinds; c++) {
+			final double[] coefficients = new double[count];
+			System.arraycopy(x, c * count, coefficients, 0, count);
+			out[c] = new EmpiricalProfile(SPACING, coefficients, x[bIndex], samples);
+		}
+		return out;
 	}
 }

@@ -35,10 +35,16 @@ import io.github.contacttracker.core.profile.EmpiricalProfile;
 public interface Refinement {
 
 	/**
-	 * The estimates of a frame and the disc centres the last radial-symmetry pass excluded ({@code null} when
-	 * nothing was excluded): the overlay draws each second active area from them.
+	 * The estimates of a frame, the disc centres the last radial-symmetry pass excluded ({@code null} when
+	 * nothing was excluded: the overlay draws each second active area from them), and each particle's kind (1-based,
+	 * 0 unclassified; {@code null}: none told apart).
 	 */
-	record Outcome(Estimate[] estimates, double[][] discs) {}
+	record Outcome(Estimate[] estimates, double[][] discs, int[] kinds) {
+		/** Without kinds (every particle of kind 0). */
+		public Outcome(final Estimate[] estimates, final double[][] discs) {
+			this(estimates, discs, null);
+		}
+	}
 
 	/**
 	 * @param plane the frame

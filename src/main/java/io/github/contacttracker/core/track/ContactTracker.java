@@ -29,6 +29,7 @@ import io.github.contacttracker.core.Localization;
 import io.github.contacttracker.core.Method;
 import io.github.contacttracker.core.TrackerParameters;
 import io.github.contacttracker.core.fit.ProfileRefinement;
+import io.github.contacttracker.core.kind.KindProfiles;
 import io.github.contacttracker.core.image.ComponentLabeling;
 import io.github.contacttracker.core.image.NoiseEstimate;
 import io.github.contacttracker.core.image.Plane;
@@ -105,7 +106,7 @@ public final class ContactTracker {
 	public <T extends RealType<T>> FrameResult analyse(final RandomAccessibleInterval<T> frame,
 		final int frameIndex, final EmpiricalProfile profile)
 	{
-		return analyse(Plane.of(frame), frameIndex, true, profile);
+		return analyse(Plane.of(frame), frameIndex, true, profile == null ? null : KindProfiles.one(profile));
 	}
 
 	/** The whole pipeline on a plane; regions are kept only when asked for. */
@@ -135,15 +136,21 @@ public final class ContactTracker {
 		return found;
 	}
 
+	/**
+	 * The whole pipeline on a plane, with the profile of each kind of particle measured beforehand (null: the profile
+	 * methods measure their own on this frame).
+	 */
 	FrameResult analyse(final Plane plane, final int frameIndex, final boolean keepRegions,
-		final EmpiricalProfile profile)
+		final KindProfiles profile)
 	{
 		final int[] discarded = new int[1];
 		final List<Particle> found = firstPasses(plane, params, discarded);
 		final double noise = NoiseEstimate.sigma(plane);
 		final Particle[] ps = withShapeFlags(found, noise, params, discarded);
-		final Refinement.Outcome outcome = refinement(params.method()).refine(plane, ps, params, profile,
-			noise);
+		final Refinement refinement = refinement(params.method());
+		final Refinement.Outcome outcome = refinement instanceof ProfileRefinement profiled ? profiled.refine(plane,
+			ps, params, profile, noise) : refinement.refine(plane, ps, params, null, noise);
+		final int[] kinds = outcome.kinds();
 		final Estimate[] est = outcome.estimates();
 		final List<Localization> spots = new ArrayList<>(ps.length);
 		final List<Region> active = new ArrayList<>(), second = new ArrayList<>();
@@ -162,7 +169,7 @@ public final class ContactTracker {
 			spots.add(new Localization(frameIndex, e.x() + dx, e.y() + dy, p.first.x() + dx, p.first.y() + dy,
 				p.region.area(), e.secondArea(), quality(p.quality, p.region.area(), noise), Math.sqrt(p.region.area() /
 					Math.PI), e.flags(),
-				e.iterations(), sx, sy, e.amplitude(), e.scale()));
+				e.iterations(), sx, sy, e.amplitude(), e.scale(), kinds == null ? 0 : kinds[k]));
 			if (keepRegions) {
 				active.add(p.region.translate(dx, dy));
 				second.add(SecondPass.secondRegion(p.region, k, outcome.discs(), params.rOut()).translate(dx, dy));

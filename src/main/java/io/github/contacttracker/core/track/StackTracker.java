@@ -39,6 +39,9 @@ import io.github.contacttracker.core.fit.GroupFit;
 import io.github.contacttracker.core.fit.ProfileRefinement;
 import io.github.contacttracker.core.fit.Rounds;
 import io.github.contacttracker.core.image.Plane;
+import io.github.contacttracker.core.kind.KindFeatures;
+import io.github.contacttracker.core.kind.KindProfiles;
+import io.github.contacttracker.core.kind.Kinds;
 import io.github.contacttracker.core.profile.EmpiricalProfile;
 import io.github.contacttracker.core.profile.ProfileEstimator;
 import net.imglib2.RandomAccessibleInterval;
@@ -157,12 +160,12 @@ public final class StackTracker {
 		private static final long serialVersionUID = 1L;
 
 		private final int[] sample;
-		private final EmpiricalProfile profile;
+		private final KindProfiles profile;
 		private final boolean settled;
 		private final transient List<FrameResult> round;
 		private final List<FrameResult> sampleResults;
 
-		ProfileStage(final int[] sample, final EmpiricalProfile profile, final boolean settled,
+		ProfileStage(final int[] sample, final KindProfiles profile, final boolean settled,
 			final List<FrameResult> round)
 		{
 			this.sample = sample;
@@ -177,8 +180,11 @@ public final class StackTracker {
 			return sample.clone();
 		}
 
-		/** @return the profile every frame is refined with, or {@code null} when each frame measures its own */
-		public EmpiricalProfile profile() {
+		/**
+		 * @return the profile of each kind of particle every frame is refined with, or {@code null} when each frame
+		 *         measures its own
+		 */
+		public KindProfiles profile() {
 			return profile;
 		}
 
@@ -242,7 +248,7 @@ public final class StackTracker {
 			frame, false, progress, cancelled);
 		// a dense field needs fewer frames for as many particles: the rounds' cost follows the frames
 		final int[] kept = fewer(first);
-		final List<FrameResult> iterative = new ArrayList<>(kept.length);
+		List<FrameResult> iterative = new ArrayList<>(kept.length);
 		final int[] chosen = new int[kept.length];
 		for (int i = 0; i < kept.length; i++) {
 			iterative.add(first.get(kept[i]));
@@ -250,18 +256,21 @@ public final class StackTracker {
 		}
 		progress.total -= sample.length - chosen.length; // the first round's frames
 		sample = chosen;
+		// the kinds of particle, told apart on the same frames; the profile of each is measured on its particles
+		final Kinds kinds = params.kinds() == 1 ? null : kinds(iterative, sample, frame, params);
+		if (kinds != null) iterative = withKinds(iterative, sample, frame, kinds, params.rOut());
 		// The profile is measured around estimated centres, and in a configuration that never changes (every frame
 		// the same cluster) it absorbs part of their error; so profile and centres are alternated on the sample
 		// frames until the centres stop moving (the joint least-squares fixed point, to a tenth of the centres' errors).
 		List<FrameResult> previous = iterative;
-		EmpiricalProfile used = profile(previous, null, sample, frame, params.rOut());
+		KindProfiles used = profile(previous, null, sample, frame, params.rOut(), kinds);
 		List<FrameResult> round = pass(tracker, used, sample, frame, false, progress, cancelled);
 		final Rounds rounds = new Rounds();
 		Rounds.Verdict verdict = rounds.next(moves(previous, round));
 		for (int r = 1; r < ProfileRefinement.PROFILE_ROUNDS && verdict == Rounds.Verdict.GOING_ON; r++) {
 			progress.total += sample.length;
 			previous = round;
-			used = profile(round, used, sample, frame, params.rOut());
+			used = profile(round, used, sample, frame, params.rOut(), kinds);
 			round = pass(tracker, used, sample, frame, false, progress, cancelled);
 			verdict = rounds.next(moves(previous, round));
 		}
@@ -411,33 +420,97 @@ public final class StackTracker {
 	}
 
 	/**
-	 * Measures the radial profile on frames {@code indices} (with their results, in the same order), the frames
-	 * shared among the threads; null (each frame then measures its own) when they hold too few usable pixels. The
-	 * profile the results were refined with, if any, chooses the pixels left out near clip levels.
+	 * Measures the radial profile of each kind on frames {@code indices} (with their results, in the same order, each
+	 * spot of its {@link Localization#kind() kind}), the frames shared among the threads; null (each frame then
+	 * measures its own) when they hold too few usable pixels. The profiles the results were refined with, if any,
+	 * choose the pixels left out near clip levels.
 	 */
-	private static <T extends RealType<T>> EmpiricalProfile profile(final List<FrameResult> results,
-		final EmpiricalProfile fittedWith, final int[] indices,
-		final IntFunction<? extends RandomAccessibleInterval<T>> frame, final double rOut)
+	private static <T extends RealType<T>> KindProfiles profile(final List<FrameResult> results,
+		final KindProfiles fittedWith, final int[] indices,
+		final IntFunction<? extends RandomAccessibleInterval<T>> frame, final double rOut, final Kinds kinds)
 	{
+		final int count = kinds == null ? 1 : kinds.count();
 		// One estimator per frame, merged in frame order: the sums, and so the results, do not depend on the
 		// number of threads.
-		final double[] norms = ProfileEstimator.norms(spots(results));
+		final List<Localization> all = spots(results);
+		final double[][] norms = ProfileEstimator.norms(all, positions(all, kinds), count);
+		final EmpiricalProfile[] before = fittedWith == null ? null : new EmpiricalProfile[count];
+		if (before != null) for (int c = 0; c < count; c++)
+			before[c] = fittedWith.profile(c);
 		final List<ProfileEstimator> parts = Parallelization.getTaskExecutor().forEachApply(positions(indices.length),
 			i -> {
-				final ProfileEstimator part = ProfileEstimator.forROut(rOut);
-				part.add(frame.apply(indices[i]), results.get(i).spots(), norms[0], norms[1], fittedWith, results.get(i)
-					.noiseSigma());
+				final ProfileEstimator part = ProfileEstimator.forROut(rOut, count);
+				final List<Localization> spots = results.get(i).spots();
+				part.add(frame.apply(indices[i]), spots, positions(spots, kinds), norms[0], norms[1], before, results.get(
+					i).noiseSigma());
 				return part;
 			});
-		final ProfileEstimator all = parts.get(0);
+		final ProfileEstimator sum = parts.get(0);
 		for (int i = 1; i < parts.size(); i++)
-			all.merge(parts.get(i));
+			sum.merge(parts.get(i));
 		try {
-			return all.estimate();
+			final EmpiricalProfile[] measured = sum.estimateAll();
+			return kinds == null ? KindProfiles.one(measured[0]) : KindProfiles.of(kinds, measured);
 		}
 		catch (final IllegalStateException e) {
 			return null;
 		}
+	}
+
+	/** @return the position of each spot's kind among the kinds' profiles ({@link KindProfiles#position}) */
+	private static int[] positions(final List<Localization> spots, final Kinds kinds) {
+		final int[] at = new int[spots.size()];
+		for (int k = 0; k < at.length; k++)
+			at[k] = KindProfiles.position(kinds, spots.get(k).kind());
+		return at;
+	}
+
+	/**
+	 * @return the kinds of particle on frames {@code indices} (their results in the same order; every spot but the
+	 *         degenerate ones: a kind may be all merges at a low threshold), {@link TrackerParameters#kinds()} found
+	 *         automatically or that many; null for one kind
+	 */
+	private static <T extends RealType<T>> Kinds kinds(final List<FrameResult> results, final int[] indices,
+		final IntFunction<? extends RandomAccessibleInterval<T>> frame, final TrackerParameters params)
+	{
+		final List<KindFeatures> sample = new ArrayList<>();
+		for (int i = 0; i < indices.length; i++) {
+			final List<Localization> spots = results.get(i).spots();
+			final KindFeatures[] f = features(Plane.of(frame.apply(indices[i])), spots, params.rOut());
+			for (int k = 0; k < f.length; k++)
+				if (!spots.get(k).has(Flag.DEGENERATE)) sample.add(f[k]);
+		}
+		final Kinds kinds = Kinds.find(sample, params.kinds());
+		return kinds.count() < 2 ? null : kinds;
+	}
+
+	/** @return the spots' features, measured at their centres (frame coordinates) */
+	private static KindFeatures[] features(final Plane plane, final List<Localization> spots, final double rOut) {
+		final double background = KindFeatures.background(plane);
+		final KindFeatures[] f = new KindFeatures[spots.size()];
+		for (int k = 0; k < f.length; k++) {
+			final Localization l = spots.get(k);
+			f[k] = KindFeatures.measure(plane, l.x() - plane.minX(), l.y() - plane.minY(), l.activeArea(), background,
+				rOut);
+		}
+		return f;
+	}
+
+	/** @return the results, each spot labelled with its kind */
+	private static <T extends RealType<T>> List<FrameResult> withKinds(final List<FrameResult> results,
+		final int[] indices, final IntFunction<? extends RandomAccessibleInterval<T>> frame, final Kinds kinds,
+		final double rOut)
+	{
+		final List<FrameResult> out = new ArrayList<>(results.size());
+		for (int i = 0; i < indices.length; i++) {
+			final List<Localization> spots = results.get(i).spots();
+			final KindFeatures[] f = features(Plane.of(frame.apply(indices[i])), spots, rOut);
+			final List<Localization> labelled = new ArrayList<>(spots.size());
+			for (int k = 0; k < f.length; k++)
+				labelled.add(spots.get(k).withKind(kinds.kindOf(f[k])));
+			out.add(results.get(i).withSpots(labelled));
+		}
+		return out;
 	}
 
 	/**
@@ -446,7 +519,7 @@ public final class StackTracker {
 	 * as it was, so the error a user sees does not depend on the threads.
 	 */
 	private static <T extends RealType<T>> List<FrameResult> pass(final ContactTracker tracker,
-		final EmpiricalProfile profile, final int[] indices,
+		final KindProfiles profile, final int[] indices,
 		final IntFunction<? extends RandomAccessibleInterval<T>> frame, final boolean keepRegions,
 		final Progress progress, final BooleanSupplier cancelled)
 	{
@@ -475,7 +548,7 @@ public final class StackTracker {
 	}
 
 	private static <T extends RealType<T>> FrameResult one(final ContactTracker tracker,
-		final EmpiricalProfile profile, final IntFunction<? extends RandomAccessibleInterval<T>> frame, final int t,
+		final KindProfiles profile, final IntFunction<? extends RandomAccessibleInterval<T>> frame, final int t,
 		final boolean keepRegions)
 	{
 		try {

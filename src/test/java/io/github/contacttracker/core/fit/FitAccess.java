@@ -41,12 +41,17 @@ public final class FitAccess {
 		return GroupFit.groups(ps, e, distance);
 	}
 
-	/** Fits {@code group} member by member in at most {@code sweeps} sweeps; returns the new estimates. */
+	/**
+	 * Fits {@code group} member by member in at most {@code sweeps} sweeps, every particle drawn with {@code profile};
+	 * returns the new estimates.
+	 */
 	public static Estimate[] fitInTurn(final Plane plane, final Particle[] ps, final Estimate[] start, final int[] group,
 		final EmpiricalProfile profile, final double window, final Censoring censoring, final int sweeps)
 	{
 		final Estimate[] e = start.clone();
-		GroupFit.fitInTurn(plane, ps, e, group, profile, window, censoring, sweeps);
+		final EmpiricalProfile[] of = new EmpiricalProfile[ps.length];
+		java.util.Arrays.fill(of, profile);
+		GroupFit.fitInTurn(plane, ps, e, group, of, window, censoring, sweeps);
 		return e;
 	}
 }

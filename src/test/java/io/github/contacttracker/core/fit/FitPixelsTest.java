@@ -135,7 +135,7 @@ class FitPixelsTest {
 			for (int q = 0; q < size; q++)
 				group[q] = (trial + q) % ps.length;
 			final double window = 5 + 30 * random.nextDouble();
-			final FitPixels got = FitPixels.gather(plane, ps, e, group, profile, window, censoring);
+			final FitPixels got = FitPixels.gather(plane, ps, e, group, alike(profile, ps.length), window, censoring);
 			final FitPixels want = reference(plane, ps, e, group, profile, window, censoring);
 			assertEquals(want.count(), got.count(), "trial " + trial);
 			assertArrayEquals(java.util.Arrays.copyOf(want.x(), want.count()), java.util.Arrays.copyOf(got.x(), got
@@ -163,7 +163,8 @@ class FitPixelsTest {
 		final Estimate[] e = new Estimate[ps.length];
 		for (int k = 0; k < ps.length; k++)
 			e[k] = ps[k].first;
-		final FitPixels got = FitPixels.gather(plane, ps, e, new int[] { 0, 1 }, profile, 20, Censoring.of(plane, 4));
+		final FitPixels got = FitPixels.gather(plane, ps, e, new int[] { 0, 1 }, alike(profile, ps.length), 20,
+			Censoring.of(plane, 4));
 		int clippedInWindow = 0;
 		for (int y = 0; y < H; y++)
 			for (int x = 0; x < W; x++) {
@@ -195,5 +196,12 @@ class FitPixelsTest {
 				assertEquals(-1, out[2 + 4 * 28], 0, "nothing after the rectangle");
 			}
 		}
+	}
+
+	/** @return {@code profile} for each of {@code n} particles (one kind) */
+	static EmpiricalProfile[] alike(final EmpiricalProfile profile, final int n) {
+		final EmpiricalProfile[] out = new EmpiricalProfile[n];
+		java.util.Arrays.fill(out, profile);
+		return out;
 	}
 }

@@ -60,16 +60,21 @@ class NormalEquationsTest {
 	}
 
 	private static EmpiricalProfile ringed() {
+		return ringed(120, 14);
+	}
+
+	/** A ringed profile of central height {@code peak} and dark ring at {@code ring} px (another kind of particle). */
+	private static EmpiricalProfile ringed(final double peak, final double ring) {
 		final double[] c = new double[29];
 		for (int j = 0; j < c.length; j++)
-			c[j] = 120 * Math.exp(-j * j / 60.0) - 25 * Math.exp(-(j - 14) * (j - 14) / 8.0);
+			c[j] = peak * Math.exp(-j * j / 60.0) - 25 * Math.exp(-(j - ring) * (j - ring) / 8.0);
 		return ProfileAccess.profile(1, c, 40, 1000);
 	}
 
 	/** A fast path's signature: {@link NormalEquations#accumulate} for a fixed group size. */
 	@FunctionalInterface
 	private interface Pass {
-		double run(FitPixels px, double[] p, EmpiricalProfile profile, double[][] jtj, double[] jtr, double[] noise,
+		double run(FitPixels px, double[] p, EmpiricalProfile[] profile, double[][] jtj, double[] jtr, double[] noise,
 			double[] models);
 	}
 
@@ -78,7 +83,7 @@ class NormalEquationsTest {
 	 * bit, with and without J^T J.
 	 */
 	private static void assertSameAsGeneral(final FitPixels px, final double[] p, final int n,
-		final EmpiricalProfile profile, final Pass fast)
+		final EmpiricalProfile[] profile, final Pass fast)
 	{
 		final int np = p.length;
 		for (final boolean hessian : new boolean[] { true, false }) {
@@ -100,13 +105,14 @@ class NormalEquationsTest {
 	void singleMemberFastPathIsIdentical() {
 		final EmpiricalProfile profile = ringed();
 		final FitPixels px = pixels(profile, 34.3, 31.8);
-		assertSameAsGeneral(px, new double[] { 34.1, 32.0, 1.05, 0.98, 39, 0.4, -0.2 }, 1, profile,
-			NormalEquations::accumulateSingle);
+		assertSameAsGeneral(px, new double[] { 34.1, 32.0, 1.05, 0.98, 39, 0.4, -0.2 }, 1, new EmpiricalProfile[] {
+			profile }, (x, p, pr, jtj, jtr, noise, models) -> NormalEquations.accumulateSingle(x, p, pr[0], jtj, jtr,
+				noise, models));
 	}
 
 	/**
 	 * The pair's path against the general one, members near enough for shared pixels and far enough for pixels out
-	 * of one member's reach (the profile reaches 30 px).
+	 * of one member's reach (the profile reaches 30 px), each member of its own kind (profile).
 	 */
 	@Test
 	void pairFastPathIsIdentical() {
@@ -118,6 +124,7 @@ class NormalEquationsTest {
 			if ((Math.hypot(px.x()[i] - p[0], px.y()[i] - p[1]) < 30 * p[3]) != (Math.hypot(px.x()[i] - p[4], px.y()[i] -
 				p[5]) < 30 * p[7])) onlyOne++;
 		assertTrue(onlyOne > 500, "pixels within reach of one member only: " + onlyOne);
-		assertSameAsGeneral(px, p, 2, profile, NormalEquations::accumulatePair);
+		assertSameAsGeneral(px, p, 2, new EmpiricalProfile[] { profile, ringed(90, 11) }, (x, q, pr, jtj, jtr, noise,
+			models) -> NormalEquations.accumulatePair(x, q, pr[0], pr[1], jtj, jtr, noise, models));
 	}
 }
