@@ -183,16 +183,38 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 
 	/**
 	 * @return these pixels with the light of the particles outside {@code group} at their estimates {@code e} now
-	 *         (the candidates of a member fitted in turn, from one sweep to the next)
+	 *         (the candidates of a member fitted in turn, from one sweep to the next): only the light of those whose
+	 *         estimate changed since {@code lit} (the estimates the present light was drawn at, per particle; updated)
+	 *         is taken out and drawn again. Most neighbours of a member have settled after a sweep or two.
 	 */
-	FitPixels relit(final Particle[] ps, final Estimate[] e, final int[] group, final EmpiricalProfile[] profile) {
-		int x0 = Integer.MAX_VALUE, x1 = Integer.MIN_VALUE;
-		for (int i = 0; i < count; i++) {
-			if (x[i] < x0) x0 = x[i];
-			if (x[i] > x1) x1 = x[i];
+	FitPixels relit(final Particle[] ps, final Estimate[] e, final int[] group, final EmpiricalProfile[] profile,
+		final Estimate[] lit)
+	{
+		final double[] light = fixed.clone();
+		for (int k = 0; k < ps.length; k++) {
+			if (!ps[k].reliable() || GroupFit.contains(group, k) || lit[k] == e[k]) continue;
+			if (lit[k] != null) light(light, lit[k], -1, profile[k]);
+			light(light, e[k], 1, profile[k]);
+			lit[k] = e[k];
 		}
-		return new FitPixels(x, y, value, otherLight(x, y, count, x0, x1, ps, e, group, profile), count, u, v,
-			candidates);
+		return new FitPixels(x, y, value, light, count, u, v, candidates);
+	}
+
+	/** Adds {@code sign} times the light of a particle at estimate {@code est} to {@code light}, on its rows. */
+	private void light(final double[] light, final Estimate est, final double sign, final EmpiricalProfile profile) {
+		final double kx = est.x(), ky = est.y(), ks = GroupFit.scaleOf(est), ka = GroupFit.amplitudeOf(est);
+		final double reach = profile.radius() * ks;
+		final int from = firstOfRow(y, count, (int) Math.floor(ky - reach));
+		final int to = firstOfRow(y, count, (int) Math.ceil(ky + reach) + 1);
+		addLight(x, y, light, from, to, kx, ky, ks, sign * ka, reach, profile);
+	}
+
+	/** @return the estimates the light of the particles outside {@code group} was drawn at by {@link #gather} */
+	static Estimate[] litAt(final Particle[] ps, final Estimate[] e, final int[] group) {
+		final Estimate[] lit = new Estimate[ps.length];
+		for (int k = 0; k < ps.length; k++)
+			if (ps[k].reliable() && !GroupFit.contains(group, k)) lit[k] = e[k];
+		return lit;
 	}
 
 	/**

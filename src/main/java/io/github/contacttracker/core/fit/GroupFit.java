@@ -265,8 +265,13 @@ public final class GroupFit {
 		final Kept kept)
 	{
 		final int n = group.length, np = PER_PARTICLE * n + BACKGROUND;
-		final FitPixels candidates = kept != null && kept.candidates != null ? kept.candidates.relit(ps, e, group,
-			profile) : FitPixels.gather(plane, ps, e, group, profile, window, censoring);
+		final FitPixels candidates;
+		if (kept != null && kept.candidates != null) candidates = kept.candidates.relit(ps, e, group, profile,
+			kept.lit);
+		else {
+			candidates = FitPixels.gather(plane, ps, e, group, profile, window, censoring);
+			if (kept != null) kept.lit = FitPixels.litAt(ps, e, group);
+		}
 		if (kept != null) kept.candidates = candidates;
 		if (candidates.count() <= np) return 0;
 		final EmpiricalProfile[] members = new EmpiricalProfile[n];
@@ -419,6 +424,8 @@ public final class GroupFit {
 	private static final class Kept {
 		FitPixels candidates;
 		boolean[] use;
+		/** the estimates the candidates' light of other particles was drawn at ({@link FitPixels#relit}) */
+		Estimate[] lit;
 	}
 
 	/** The model on a fit's pixels at parameters {@code p}, as a residual pass computed it. */

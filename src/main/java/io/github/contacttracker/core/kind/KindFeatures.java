@@ -162,11 +162,16 @@ public record KindFeatures(double coreRadius, double peak, double ringDepth, dou
 		final int y0 = Math.max(0, (int) Math.floor(y - reach)), y1 = Math.min(plane.height() - 1, (int) Math.ceil(y +
 			reach));
 		if (x0 > x1 || y0 > y1) return new double[0];
-		// counts per ring, then the values in one array, ring after ring
+		// counts per ring, then the values in one array, ring after ring (each pixel's ring computed once;
+		// Math.hypot, exact to the last bit, cost a tenth of a fit on the authors' movie)
+		final int w = x1 - x0 + 1;
+		final int[] ringOf = new int[w * (y1 - y0 + 1)];
 		final int[] count = new int[rings + 1];
-		for (int yy = y0; yy <= y1; yy++)
-			for (int xx = x0; xx <= x1; xx++) {
-				final int ring = ring(Math.hypot(xx - x, yy - y));
+		for (int yy = y0, i = 0; yy <= y1; yy++)
+			for (int xx = x0; xx <= x1; xx++, i++) {
+				final double dx = xx - x, dy = yy - y;
+				final int ring = ring(Math.sqrt(dx * dx + dy * dy));
+				ringOf[i] = ring;
 				if (ring < rings) count[ring]++;
 			}
 		final int[] start = new int[rings + 1];
@@ -174,11 +179,12 @@ public record KindFeatures(double coreRadius, double peak, double ringDepth, dou
 			start[r + 1] = start[r] + count[r];
 		final double[] values = new double[start[rings]];
 		final int[] fill = Arrays.copyOf(start, rings);
-		for (int yy = y0; yy <= y1; yy++)
-			for (int xx = x0; xx <= x1; xx++) {
-				final int ring = ring(Math.hypot(xx - x, yy - y));
-				if (ring < rings) values[fill[ring]++] = plane.get(xx, yy);
-			}
+		final double[] row = new double[w];
+		for (int yy = y0, i = 0; yy <= y1; yy++) {
+			plane.read(x0, x1, yy, yy, row, 0);
+			for (int xx = 0; xx < w; xx++, i++)
+				if (ringOf[i] < rings) values[fill[ringOf[i]]++] = row[xx];
+		}
 		final double[] out = new double[rings];
 		for (int r = 0; r < rings; r++) {
 			final int n = count[r];
