@@ -37,6 +37,7 @@ import io.github.contacttracker.io.ImageFiles;
 import io.github.contacttracker.io.ImagePlusFrames;
 import io.github.contacttracker.io.ProfilePlots;
 import io.github.contacttracker.io.ProfileReport;
+import io.github.contacttracker.io.ShownFrameProfile;
 import io.github.contacttracker.pipeline.MeasuredSettings;
 import net.imglib2.RandomAccessibleInterval;
 
@@ -88,7 +89,8 @@ public final class ProfileCommand extends ContactTrackerCli.Subcommand {
 		if (frame < 1 || frame > frames.frameCount())
 			throw new InvalidInputException("--frame " + frame + " does not exist: " + movie + " has " + frames
 				.frameCount() + " frame" + (frames.frameCount() == 1 ? "" : "s"));
-		final ProfileAnalysis.Result r = analyse(frames.frames().get(frame - 1), at);
+		final ProfileAnalysis.Result r = analyse(frames.frames().get(frame - 1), at, ShownFrameProfile.kindFrames(
+			frames, frame - 1));
 		final boolean integerData = imp.getBitDepth() != 32;
 		final double threshold = r.suggestedThreshold(integerData), rOut = r.suggestedROut();
 
@@ -124,10 +126,12 @@ public final class ProfileCommand extends ContactTrackerCli.Subcommand {
 	}
 
 	@SuppressWarnings({ "unchecked", "rawtypes" })
-	private ProfileAnalysis.Result analyse(final RandomAccessibleInterval frame, final double[] at) {
+	private ProfileAnalysis.Result analyse(final RandomAccessibleInterval frame, final double[] at,
+		final List kindFrames)
+	{
 		final double diameter = options.value(diameterOption), maxRadius = options.value(maxRadiusOption);
-		return at != null ? ProfileAnalysis.analyse(frame, at[0], at[1], diameter, maxRadius) : ProfileAnalysis.analyse(
-			frame, diameter, maxRadius);
+		return at != null ? ProfileAnalysis.analyse(frame, at[0], at[1], diameter, maxRadius, kindFrames)
+			: ProfileAnalysis.analyse(frame, diameter, maxRadius, kindFrames);
 	}
 
 	/** @return the numbers of {@code --at}, separated by commas (their count is checked when the command runs) */
