@@ -21,6 +21,7 @@
  */
 package io.github.contacttracker.advisor;
 
+import java.io.UncheckedIOException;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Comparator;
@@ -307,10 +308,11 @@ public final class ProfileAnalysis {
 	}
 
 	/**
-	 * Step 10: the kinds of particle. Each frame is tracked at the suggested threshold and {@code r_out} by the
-	 * paper's method (the nearer the true centres, the sharper the particles' profiles), each particle is measured
-	 * about its centre out to {@code r_out} against its frame's background, and the kinds are found automatically
-	 * among the particles of all the frames.
+	 * Step 10: the kinds of particle. Each frame is tracked at the suggested threshold and {@code r_out} (before
+	 * rounding) by the paper's method (the nearer the true centres, the sharper the particles' profiles), each
+	 * particle is measured about its centre out to {@code r_out} against its frame's background, and the kinds are
+	 * found automatically among the particles of all the frames. A frame that cannot be tracked (NaN pixels, a plane
+	 * that cannot be read) is left out: the kinds are a report, and the profile itself is measured.
 	 */
 	private static <T extends RealType<T>> ParticleKinds kinds(final List<? extends RandomAccessibleInterval<T>> frames,
 		final double threshold, final double rOut)
@@ -318,14 +320,23 @@ public final class ProfileAnalysis {
 		final ContactTracker tracker = new ContactTracker(TrackerParameters.of(threshold, rOut).withMethod(
 			Method.PAPER));
 		final List<KindFeatures> features = new ArrayList<>();
+		int used = 0;
 		for (final RandomAccessibleInterval<T> frame : frames) {
-			final Plane plane = Plane.of(frame);
-			final double background = KindFeatures.background(plane);
-			for (final Localization s : tracker.analyse(plane, 0, false).spots())
-				features.add(KindFeatures.measure(plane, s.x() - plane.minX(), s.y() - plane.minY(), s.activeArea(),
-					background, rOut));
+			final List<KindFeatures> own = new ArrayList<>();
+			try {
+				final Plane plane = Plane.of(frame);
+				final double background = KindFeatures.background(plane);
+				for (final Localization s : tracker.analyse(plane, 0, false).spots())
+					own.add(KindFeatures.measure(plane, s.x() - plane.minX(), s.y() - plane.minY(), s.activeArea(),
+						background, rOut));
+			}
+			catch (final InvalidInputException | UncheckedIOException e) {
+				continue;
+			}
+			features.addAll(own);
+			used++;
 		}
-		return new ParticleKinds(frames.size(), features.size(), Kinds.find(features).describe());
+		return new ParticleKinds(used, features.size(), Kinds.find(features).describe());
 	}
 
 	/** @throws InvalidInputException for a diameter or radius that is negative or not a number */

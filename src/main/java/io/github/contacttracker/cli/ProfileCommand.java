@@ -44,8 +44,8 @@ import net.imglib2.RandomAccessibleInterval;
 /**
  * {@code profile MOVIE [--at X,Y] [--frame N] [--diameter D] [--max-radius R] [--png OUT.png] [--csv OUT.csv]}:
  * the radial profile of the movie's isolated particles (or of the one at a point), printed as a table, plotted,
- * and read off into the tracking settings to copy. The same analysis as Fiji's Contact Tracker Profile
- * ({@link ProfileAnalysis}).
+ * and read off into the tracking settings to copy; the kinds of particle at those settings, a line each. The same
+ * analysis as Fiji's Contact Tracker Profile ({@link ProfileAnalysis}).
  */
 public final class ProfileCommand extends ContactTrackerCli.Subcommand {
 
@@ -72,7 +72,8 @@ public final class ProfileCommand extends ContactTrackerCli.Subcommand {
 		super(new CommandOptions("contact-tracker profile", "Radial profile of isolated particles and suggested " +
 			"--threshold, --r-out and --diameter.", "Finds the frame's most isolated particles itself (or takes --at " +
 				"X,Y), pools their profiles (ring medians above a local background plane), estimates the noise " +
-				"robustly, and prints a line to copy.").inDeclarationOrder(), out);
+				"robustly, reports the kinds of particle at the suggested settings (on the frame and the next " +
+				"four), and prints a line to copy.").inDeclarationOrder(), out);
 	}
 
 	@Override

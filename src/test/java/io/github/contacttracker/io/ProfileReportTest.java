@@ -42,7 +42,11 @@ import io.github.contacttracker.sim.ImageSimulator;
 import io.github.contacttracker.sim.NoiseFreeImage;
 import io.github.contacttracker.sim.NoiseModel;
 import io.github.contacttracker.sim.Quantiser;
+import net.imglib2.RandomAccess;
 import net.imglib2.img.array.ArrayImg;
+import net.imglib2.img.array.ArrayImgs;
+import net.imglib2.loops.LoopBuilder;
+import net.imglib2.type.numeric.real.FloatType;
 import net.imglib2.type.numeric.integer.UnsignedByteType;
 import org.junit.jupiter.api.Test;
 
@@ -133,6 +137,31 @@ class ProfileReportTest {
 		assertEquals(1, alike.kinds().kinds().size(), alike.kinds().toString());
 		assertTrue(ProfileReport.lines(alike, true).stream().anyMatch(l -> l.startsWith("  kind 1 of 1 (all particles " +
 			"alike): 20 particles, ")), ProfileReport.lines(alike, true).toString());
+	}
+
+	/**
+	 * The kinds are found on all the frames given; one that cannot be tracked (a NaN pixel) is left out, and the
+	 * profile is measured all the same.
+	 */
+	@Test
+	void kindsOnSeveralFramesLeaveOutOneThatCannotBeTracked() {
+		final ArrayImg<FloatType, ?> first = floats(frame(12, 8, 41)), second = floats(frame(12, 8, 43)), broken =
+			floats(frame(12, 8, 44));
+		final RandomAccess<FloatType> pixel = broken.randomAccess();
+		pixel.setPosition(new int[] { 0, 0 });
+		pixel.get().set(Float.NaN);
+		final ProfileAnalysis.Result r = ProfileAnalysis.analyse(first, DIAMETER, 0, List.of(first, second, broken));
+		assertEquals(2, r.kinds().frames(), "the broken frame left out");
+		assertEquals(List.of(24, 16), r.kinds().kinds().stream().map(Kinds.Kind::count).toList());
+		assertTrue(ProfileReport.kinds(r.kinds()).get(0).startsWith("kind 1 of 2: 24 particles in 2 frames, core " +
+			"radius "), ProfileReport.kinds(r.kinds()).toString());
+		assertEquals(ProfileAnalysis.analyse(first, DIAMETER, 0).threshold(), r.threshold(), 0);
+	}
+
+	private static ArrayImg<FloatType, ?> floats(final ArrayImg<UnsignedByteType, ?> bytes) {
+		final ArrayImg<FloatType, ?> out = ArrayImgs.floats(bytes.dimension(0), bytes.dimension(1));
+		LoopBuilder.setImages(bytes, out).forEachPixel((a, b) -> b.setReal(a.getRealDouble()));
+		return out;
 	}
 
 	/**
