@@ -21,6 +21,7 @@
  */
 package io.github.contacttracker.advisor;
 
+import java.io.UncheckedIOException;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Comparator;
@@ -38,6 +39,8 @@ import io.github.contacttracker.core.image.ComponentLabeling;
 import io.github.contacttracker.core.image.NoiseEstimate;
 import io.github.contacttracker.core.image.Plane;
 import io.github.contacttracker.core.image.Region;
+import io.github.contacttracker.core.kind.KindFeatures;
+import io.github.contacttracker.core.kind.Kinds;
 import io.github.contacttracker.core.radial.ComponentShape;
 import io.github.contacttracker.core.track.ContactTracker;
 import net.imglib2.RandomAccessibleInterval;
@@ -78,6 +81,9 @@ import net.imglib2.type.numeric.RealType;
  * only the plateau is flat, and the rule does not look inside {@code D/2}.</li>
  * <li>Raised, when it must be, clear of the background's texture ({@link #textureGap}) and until the frame's
  * active areas are round ({@link #roundFrom}).</li>
+ * <li>Kinds of particle ({@link #kinds}): the frame tracked at the suggested threshold and {@code r_out} (the
+ * paper's method), each particle measured about its centre ({@link KindFeatures}) and the kinds found
+ * automatically ({@link Kinds#find(java.util.Collection)}), as the tracker finds them.</li>
  * </ol>
  */
 public final class ProfileAnalysis {
@@ -144,12 +150,13 @@ public final class ProfileAnalysis {
 	 * @param centres the profiled particles' centres {@code {x, y}} (px)
 	 * @param findings things the user should know (empty when all is well), in the order they were found; the front
 	 *        ends put them into words ({@code io.ProfileReport})
+	 * @param kinds the kinds of particle at the suggested threshold and {@code r_out}
 	 */
 	public record Result(double x, double y, boolean refined, double diameter, boolean diameterEstimated,
 		int particles, double maxRadius, double[] radius, double[] level, int[] count, double background,
 		double noise, double peak, double reach, double rOut, double bridge, double atContact, double threshold,
 		double activeRadius,
-		List<double[]> centres, List<Finding> findings)
+		List<double[]> centres, List<Finding> findings, ParticleKinds kinds)
 	{
 		public Result {
 			findings = List.copyOf(findings);
@@ -172,7 +179,49 @@ public final class ProfileAnalysis {
 		}
 	}
 
+	/**
+	 * The kinds of particle the helper found ({@link #kinds}): the frames tracked at the suggested threshold and
+	 * {@code r_out}, their particles' kinds found automatically, as the tracker finds them.
+	 *
+	 * @param frames how many frames the kinds were found on (the frame profiled, and more when given)
+	 * @param particles how many particles those frames hold at the suggested threshold
+	 * @param kinds the kinds, numbered by size as in the {@code KIND} column, each with its particles in those
+	 *        frames (empty when no particle has a bright core)
+	 */
+	public record ParticleKinds(int frames, int particles, List<Kinds.Kind> kinds) {
+
+		public ParticleKinds {
+			kinds = List.copyOf(kinds);
+		}
+
+		/** @return the particles of no kind ({@code KIND} 0: no bright core, e.g. cut by the border) */
+		public int unclassified() {
+			return particles - kinds.stream().mapToInt(Kinds.Kind::count).sum();
+		}
+	}
+
+	/** The kinds of particle are found on at most this many frames ({@link #kindFrames}). */
+	public static final int KIND_FRAMES = 5;
+
 	private ProfileAnalysis() {}
+
+	/**
+	 * The frames of a movie to find the kinds of particle on: the frame profiled and the ones after it, then the
+	 * ones before it when the movie ends first, {@value #KIND_FRAMES} in all at most. The rarest kind of a movie
+	 * may have two particles in a frame: a kind needs {@value Kinds#MIN_MEMBERS}.
+	 *
+	 * @param frame the frame profiled, 0-based
+	 * @param frameCount the movie's frames
+	 * @return their 0-based indices, the frame profiled first, then in order
+	 */
+	public static List<Integer> kindFrames(final int frame, final int frameCount) {
+		final List<Integer> frames = new ArrayList<>(List.of(frame));
+		for (int t = frame + 1; t < frameCount && frames.size() < KIND_FRAMES; t++)
+			frames.add(t);
+		for (int t = frame - 1; t >= 0 && frames.size() < KIND_FRAMES; t--)
+			frames.add(1, t);
+		return frames;
+	}
 
 	/**
 	 * The profile of the particle at a point (the Fiji helper: the user clicked it).
@@ -183,14 +232,28 @@ public final class ProfileAnalysis {
 	 * @param diameter particle diameter (px): the centre distance at contact; 0 to estimate it from the frame
 	 * @param maxRadius radius to measure out to (px); 0 for {@value #AUTO_RADIUS_DIAMETERS} diameters. It is
 	 *        clipped to the farthest image corner.
-	 * @return the profile and the suggestions
+	 * @return the profile and the suggestions; the kinds of particle are those of this frame
 	 * @throws IllegalArgumentException with a one-line message: bad diameter or radius, point outside the frame,
 	 *         no background ring inside the image, or no particle brighter than the noise at the point
 	 */
 	public static <T extends RealType<T>> Result analyse(final RandomAccessibleInterval<T> frame, final double px,
 		final double py, final double diameter, final double maxRadius)
 	{
-		return run(frame, new double[] { px, py }, diameter, maxRadius);
+		return run(frame, new double[] { px, py }, diameter, maxRadius, List.of(frame));
+	}
+
+	/**
+	 * The profile of the particle at a point, and the kinds of particle found on several frames of the movie.
+	 *
+	 * @param kindFrames the frames to find the kinds of particle on (the frame profiled among them; see
+	 *        {@link #kindFrames}), of the same size and pixel type
+	 * @see #analyse(RandomAccessibleInterval, double, double, double, double)
+	 */
+	public static <T extends RealType<T>> Result analyse(final RandomAccessibleInterval<T> frame, final double px,
+		final double py, final double diameter, final double maxRadius,
+		final List<? extends RandomAccessibleInterval<T>> kindFrames)
+	{
+		return run(frame, new double[] { px, py }, diameter, maxRadius, kindFrames);
 	}
 
 	/**
@@ -201,11 +264,23 @@ public final class ProfileAnalysis {
 	public static <T extends RealType<T>> Result analyse(final RandomAccessibleInterval<T> frame,
 		final double diameter, final double maxRadius)
 	{
-		return run(frame, null, diameter, maxRadius);
+		return run(frame, null, diameter, maxRadius, List.of(frame));
+	}
+
+	/**
+	 * The profile of the frame's most isolated particles, and the kinds of particle found on several frames.
+	 *
+	 * @see #analyse(RandomAccessibleInterval, double, double, double, double, List)
+	 */
+	public static <T extends RealType<T>> Result analyse(final RandomAccessibleInterval<T> frame,
+		final double diameter, final double maxRadius, final List<? extends RandomAccessibleInterval<T>> kindFrames)
+	{
+		return run(frame, null, diameter, maxRadius, kindFrames);
 	}
 
 	private static <T extends RealType<T>> Result run(final RandomAccessibleInterval<T> frame, final double[] point,
-		final double diameterGiven, final double maxRadiusGiven)
+		final double diameterGiven, final double maxRadiusGiven,
+		final List<? extends RandomAccessibleInterval<T>> kindFrames)
 	{
 		checkArguments(diameterGiven, maxRadiusGiven);
 		final Plane plane = Plane.of(frame);
@@ -228,7 +303,40 @@ public final class ProfileAnalysis {
 			inFrame.add(new double[] { c[0] + plane.minX(), c[1] + plane.minY() });
 		return new Result(centre[0] + plane.minX(), centre[1] + plane.minY(), m.refined(), diameter, sized.estimated(),
 			m.centres().size(), m.radiusCap(), pooled.radius, level, pooled.count, pooled.background, pooled.noise, t
-				.peak(), m.reach(), rOut, t.bridge(), t.atContact(), t.threshold(), activeRadius, inFrame, findings);
+				.peak(), m.reach(), rOut, t.bridge(), t.atContact(), t.threshold(), activeRadius, inFrame, findings, kinds(
+					kindFrames, t.threshold(), rOut));
+	}
+
+	/**
+	 * Step 10: the kinds of particle. Each frame is tracked at the suggested threshold and {@code r_out} (before
+	 * rounding) by the paper's method (the nearer the true centres, the sharper the particles' profiles), each
+	 * particle is measured about its centre out to {@code r_out} against its frame's background, and the kinds are
+	 * found automatically among the particles of all the frames. A frame that cannot be tracked (NaN pixels, a plane
+	 * that cannot be read) is left out: the kinds are a report, and the profile itself is measured.
+	 */
+	private static <T extends RealType<T>> ParticleKinds kinds(final List<? extends RandomAccessibleInterval<T>> frames,
+		final double threshold, final double rOut)
+	{
+		final ContactTracker tracker = new ContactTracker(TrackerParameters.of(threshold, rOut).withMethod(
+			Method.PAPER));
+		final List<KindFeatures> features = new ArrayList<>();
+		int used = 0;
+		for (final RandomAccessibleInterval<T> frame : frames) {
+			final List<KindFeatures> own = new ArrayList<>();
+			try {
+				final Plane plane = Plane.of(frame);
+				final double background = KindFeatures.background(plane);
+				for (final Localization s : tracker.analyse(plane, 0, false).spots())
+					own.add(KindFeatures.measure(plane, s.x() - plane.minX(), s.y() - plane.minY(), s.activeArea(),
+						background, rOut));
+			}
+			catch (final InvalidInputException | UncheckedIOException e) {
+				continue;
+			}
+			features.addAll(own);
+			used++;
+		}
+		return new ParticleKinds(used, features.size(), Kinds.find(features).describe());
 	}
 
 	/** @throws InvalidInputException for a diameter or radius that is negative or not a number */

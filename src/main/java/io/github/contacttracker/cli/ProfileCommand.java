@@ -37,14 +37,15 @@ import io.github.contacttracker.io.ImageFiles;
 import io.github.contacttracker.io.ImagePlusFrames;
 import io.github.contacttracker.io.ProfilePlots;
 import io.github.contacttracker.io.ProfileReport;
+import io.github.contacttracker.io.ShownFrameProfile;
 import io.github.contacttracker.pipeline.MeasuredSettings;
 import net.imglib2.RandomAccessibleInterval;
 
 /**
  * {@code profile MOVIE [--at X,Y] [--frame N] [--diameter D] [--max-radius R] [--png OUT.png] [--csv OUT.csv]}:
  * the radial profile of the movie's isolated particles (or of the one at a point), printed as a table, plotted,
- * and read off into the tracking settings to copy. The same analysis as Fiji's Contact Tracker Profile
- * ({@link ProfileAnalysis}).
+ * and read off into the tracking settings to copy; the kinds of particle at those settings, a line each. The same
+ * analysis as Fiji's Contact Tracker Profile ({@link ProfileAnalysis}).
  */
 public final class ProfileCommand extends ContactTrackerCli.Subcommand {
 
@@ -71,7 +72,8 @@ public final class ProfileCommand extends ContactTrackerCli.Subcommand {
 		super(new CommandOptions("contact-tracker profile", "Radial profile of isolated particles and suggested " +
 			"--threshold, --r-out and --diameter.", "Finds the frame's most isolated particles itself (or takes --at " +
 				"X,Y), pools their profiles (ring medians above a local background plane), estimates the noise " +
-				"robustly, and prints a line to copy.").inDeclarationOrder(), out);
+				"robustly, reports the kinds of particle at the suggested settings (on the frame and the next " +
+				"four), and prints a line to copy.").inDeclarationOrder(), out);
 	}
 
 	@Override
@@ -88,7 +90,8 @@ public final class ProfileCommand extends ContactTrackerCli.Subcommand {
 		if (frame < 1 || frame > frames.frameCount())
 			throw new InvalidInputException("--frame " + frame + " does not exist: " + movie + " has " + frames
 				.frameCount() + " frame" + (frames.frameCount() == 1 ? "" : "s"));
-		final ProfileAnalysis.Result r = analyse(frames.frames().get(frame - 1), at);
+		final ProfileAnalysis.Result r = analyse(frames.frames().get(frame - 1), at, ShownFrameProfile.kindFrames(
+			frames, frame - 1));
 		final boolean integerData = imp.getBitDepth() != 32;
 		final double threshold = r.suggestedThreshold(integerData), rOut = r.suggestedROut();
 
@@ -124,10 +127,12 @@ public final class ProfileCommand extends ContactTrackerCli.Subcommand {
 	}
 
 	@SuppressWarnings({ "unchecked", "rawtypes" })
-	private ProfileAnalysis.Result analyse(final RandomAccessibleInterval frame, final double[] at) {
+	private ProfileAnalysis.Result analyse(final RandomAccessibleInterval frame, final double[] at,
+		final List kindFrames)
+	{
 		final double diameter = options.value(diameterOption), maxRadius = options.value(maxRadiusOption);
-		return at != null ? ProfileAnalysis.analyse(frame, at[0], at[1], diameter, maxRadius) : ProfileAnalysis.analyse(
-			frame, diameter, maxRadius);
+		return at != null ? ProfileAnalysis.analyse(frame, at[0], at[1], diameter, maxRadius, kindFrames)
+			: ProfileAnalysis.analyse(frame, diameter, maxRadius, kindFrames);
 	}
 
 	/** @return the numbers of {@code --at}, separated by commas (their count is checked when the command runs) */

@@ -28,6 +28,7 @@ import java.util.Locale;
 import io.github.contacttracker.advisor.Finding;
 import io.github.contacttracker.advisor.ProfileAnalysis;
 import io.github.contacttracker.core.Numbers;
+import io.github.contacttracker.core.kind.Kinds;
 
 /**
  * The profile helper's result ({@link ProfileAnalysis.Result}) in words: the lines that explain its numbers and a
@@ -44,8 +45,8 @@ public final class ProfileReport {
 
 	/**
 	 * @param integerData whether the image holds whole grey levels (the threshold is rounded up for them)
-	 * @return the lines that explain the numbers, then a {@link #WARNING} line for each finding (no trailing
-	 *         newlines)
+	 * @return the lines that explain the numbers, the kinds of particle ({@link #kinds}), then a {@link #WARNING}
+	 *         line for each finding (no trailing newlines)
 	 */
 	public static List<String> lines(final ProfileAnalysis.Result r, final boolean integerData) {
 		final List<String> lines = new ArrayList<>();
@@ -63,9 +64,48 @@ public final class ProfileReport {
 					integerData))));
 		lines.add(String.format(Locale.ROOT, "  active area radius at this threshold: %.2f px (D/2 = %.2f px)", r
 			.activeRadius(), r.diameter() / 2));
+		for (final String k : kinds(r.kinds()))
+			lines.add("  " + k);
 		for (final String w : warnings(r))
 			lines.add(WARNING + w);
 		return lines;
+	}
+
+	/**
+	 * @return the kinds of particle, a line each, numbered as in the {@code KIND} column (e.g. {@code kind 2 of 2: 37
+	 *         particles, core radius 8.1 px, active radius 9.4 px, central contrast 120, dark ring 35 deep at 12 px};
+	 *         {@code 185 particles in 5 frames} when found on several); one line when there is one kind or none; then
+	 *         how many particles are of no kind, if any (no indent, no full stop)
+	 */
+	public static List<String> kinds(final ProfileAnalysis.ParticleKinds found) {
+		final List<String> lines = new ArrayList<>();
+		final List<Kinds.Kind> kinds = found.kinds();
+		final String frames = found.frames() > 1 ? " in " + found.frames() + " frames" : "";
+		if (kinds.isEmpty()) lines.add("kinds: none (no particle with a bright core at this threshold)");
+		for (final Kinds.Kind k : kinds)
+			lines.add(kind(k, kinds.size(), frames));
+		if (found.unclassified() > 0 && !kinds.isEmpty()) lines.add(particles(found.unclassified()) + frames +
+			" of no kind (KIND 0: no bright core, e.g. cut by the border)");
+		return lines;
+	}
+
+	/** @return one kind's line */
+	private static String kind(final Kinds.Kind k, final int of, final String frames) {
+		final StringBuilder b = new StringBuilder("kind " + k.kind() + " of " + of);
+		if (of == 1) b.append(" (all particles alike)");
+		b.append(": ").append(particles(k.count())).append(frames);
+		b.append(", core radius ").append(Numbers.fmt(k.coreRadius(), 1)).append(" px");
+		if (!Double.isNaN(k.activeRadius())) b.append(", active radius ").append(Numbers.fmt(k.activeRadius(), 1))
+			.append(" px");
+		b.append(", central contrast ").append(Numbers.fmt(k.peak(), 0));
+		if (k.ringDepth() > 0 && !Double.isNaN(k.ringRadius())) b.append(", dark ring ").append(Numbers.fmt(k
+			.ringDepth(), 0)).append(" deep at ").append(Numbers.fmt(k.ringRadius(), 1)).append(" px");
+		else b.append(", no dark ring");
+		return b.toString();
+	}
+
+	private static String particles(final int n) {
+		return n + " particle" + (n == 1 ? "" : "s");
 	}
 
 	/** @return a sentence for each of the result's findings, in their order */

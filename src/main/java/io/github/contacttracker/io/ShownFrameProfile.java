@@ -21,6 +21,7 @@
  */
 package io.github.contacttracker.io;
 
+import java.util.AbstractList;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
@@ -30,6 +31,7 @@ import io.github.contacttracker.advisor.ProfileAnalysis;
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.core.Numbers;
 import net.imglib2.RandomAccessibleInterval;
+import net.imglib2.type.numeric.RealType;
 
 /**
  * The profile helper ({@link ProfileAnalysis}) run on the frame of an ImageJ image that is on display: what Fiji's
@@ -113,10 +115,34 @@ public record ShownFrameProfile(ProfileAnalysis.Result result, String title, int
 		final int t = ImagePlusFrames.shownFrame(imp);
 		// the frames' pixel type is known only at run time: the helper takes any real type
 		final RandomAccessibleInterval frame = frames.frame(t);
-		final ProfileAnalysis.Result r = point == null ? ProfileAnalysis.analyse(frame, diameter, maxRadius)
-			: ProfileAnalysis.analyse(frame, point[0], point[1], diameter, maxRadius);
+		final List kindFrames = kindFrames(frames, t);
+		final ProfileAnalysis.Result r = point == null ? ProfileAnalysis.analyse(frame, diameter, maxRadius,
+			kindFrames) : ProfileAnalysis.analyse(frame, point[0], point[1], diameter, maxRadius, kindFrames);
 		return new ShownFrameProfile(r, imp.getTitle(), t, frames.frameCount(), frames.channel(), imp
 			.getBitDepth() != 32, 0, null);
+	}
+
+	/**
+	 * @param t the frame profiled, 0-based
+	 * @return the frames the profile helper finds the kinds of particle on ({@link ProfileAnalysis#kindFrames}),
+	 *         each read when the helper comes to it
+	 */
+	public static List<RandomAccessibleInterval<? extends RealType<?>>> kindFrames(final ImagePlusFrames frames,
+		final int t)
+	{
+		final List<Integer> indices = ProfileAnalysis.kindFrames(t, frames.frameCount());
+		return new AbstractList<>() {
+
+			@Override
+			public RandomAccessibleInterval<? extends RealType<?>> get(final int i) {
+				return frames.frame(indices.get(i));
+			}
+
+			@Override
+			public int size() {
+				return indices.size();
+			}
+		};
 	}
 
 	/** @return the suggested threshold, rounded up to a whole grey level for 8- and 16-bit images */
@@ -154,11 +180,14 @@ public record ShownFrameProfile(ProfileAnalysis.Result result, String title, int
 
 	/**
 	 * @param who what measured, at the start of the first line (e.g. {@code Contact Tracker: measured})
-	 * @return the summary and the helper's warnings, for ImageJ's Log window, wrapped to {@link #LOG_WIDTH}
+	 * @return the summary, the kinds of particle ({@link ProfileReport#kinds}) and the helper's warnings, for
+	 *         ImageJ's Log window, wrapped to {@link #LOG_WIDTH}
 	 */
 	public String logText(final String who) {
 		final List<String> lines = new ArrayList<>();
 		lines.add(wrap(who + " " + summary(), LOG_WIDTH, "    "));
+		for (final String k : ProfileReport.kinds(result.kinds()))
+			lines.add(wrap("  " + k, LOG_WIDTH, "    "));
 		if (rejectedDiameter > 0) lines.add(wrap(ProfileReport.WARNING + "not measured with the diameter given, " +
 			Numbers.fmt(rejectedDiameter, 3) + " px (left from another image?): " + rejection, LOG_WIDTH, "    "));
 		for (final String w : ProfileReport.warnings(result))

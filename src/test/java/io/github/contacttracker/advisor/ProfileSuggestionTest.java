@@ -261,4 +261,17 @@ class ProfileSuggestionTest {
 		back.getRaster().getDataElements(0, 0, w, h, out);
 		return out;
 	}
+
+	/**
+	 * The kinds of particle are found on the frame profiled and the next ones, or the ones before it at the movie's
+	 * end: the rarest kind of the authors' tracking-test-project.avi has 2 particles a frame, a kind needs 3.
+	 */
+	@Test
+	void kindsAreFoundOnTheFrameAndItsNeighbours() {
+		assertEquals(List.of(0), ProfileAnalysis.kindFrames(0, 1));
+		assertEquals(List.of(0, 1, 2, 3, 4), ProfileAnalysis.kindFrames(0, 360));
+		assertEquals(List.of(7, 8, 9, 10, 11), ProfileAnalysis.kindFrames(7, 360));
+		assertEquals(List.of(9, 5, 6, 7, 8), ProfileAnalysis.kindFrames(9, 10));
+		assertEquals(List.of(2, 0, 1, 3), ProfileAnalysis.kindFrames(2, 4));
+	}
 }
