@@ -185,17 +185,37 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 	 * @return these pixels with the light of the particles outside {@code group} at their estimates {@code e} now
 	 *         (the candidates of a member fitted in turn, from one sweep to the next): only the light of those whose
 	 *         estimate changed since {@code lit} (the estimates the present light was drawn at, per particle; updated)
-	 *         is taken out and drawn again. Most neighbours of a member have settled after a sweep or two.
+	 *         is taken out and drawn again, unless most changed. Most neighbours of a member have settled after a sweep
+	 *         or two.
 	 */
 	FitPixels relit(final Particle[] ps, final Estimate[] e, final int[] group, final EmpiricalProfile[] profile,
 		final Estimate[] lit)
 	{
-		final double[] light = fixed.clone();
-		for (int k = 0; k < ps.length; k++) {
-			if (!ps[k].reliable() || GroupFit.contains(group, k) || lit[k] == e[k]) continue;
-			if (lit[k] != null) light(light, lit[k], -1, profile[k]);
-			light(light, e[k], 1, profile[k]);
-			lit[k] = e[k];
+		int changed = 0, others = 0;
+		for (int k = 0; k < ps.length; k++)
+			if (lit[k] != null) {
+				others++;
+				if (lit[k] != e[k]) changed++;
+			}
+		final double[] light;
+		if (2 * changed > others) { // most have moved: drawn afresh, once each rather than taken out and drawn again
+			int x0 = Integer.MAX_VALUE, x1 = Integer.MIN_VALUE;
+			for (int i = 0; i < count; i++) {
+				if (x[i] < x0) x0 = x[i];
+				if (x[i] > x1) x1 = x[i];
+			}
+			light = otherLight(x, y, count, x0, x1, ps, e, group, profile);
+			for (int k = 0; k < ps.length; k++)
+				if (lit[k] != null) lit[k] = e[k];
+		}
+		else {
+			light = fixed.clone();
+			for (int k = 0; k < ps.length; k++) {
+				if (lit[k] == null || lit[k] == e[k]) continue;
+				light(light, lit[k], -1, profile[k]);
+				light(light, e[k], 1, profile[k]);
+				lit[k] = e[k];
+			}
 		}
 		return new FitPixels(x, y, value, light, count, u, v, candidates);
 	}
@@ -209,13 +229,31 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 		addLight(x, y, light, from, to, kx, ky, ks, sign * ka, reach, profile);
 	}
 
-	/** @return the estimates the light of the particles outside {@code group} was drawn at by {@link #gather} */
-	static Estimate[] litAt(final Particle[] ps, final Estimate[] e, final int[] group) {
+	/**
+	 * @return the estimates the light of the particles outside {@code group} was drawn at by {@link #gather}, for
+	 *         those near enough to matter (the others null)
+	 */
+	Estimate[] litAt(final Particle[] ps, final Estimate[] e, final int[] group, final EmpiricalProfile[] profile) {
 		final Estimate[] lit = new Estimate[ps.length];
-		for (int k = 0; k < ps.length; k++)
-			if (ps[k].reliable() && !GroupFit.contains(group, k)) lit[k] = e[k];
+		if (count == 0) return lit;
+		int x0 = Integer.MAX_VALUE, x1 = Integer.MIN_VALUE;
+		for (int i = 0; i < count; i++) {
+			if (x[i] < x0) x0 = x[i];
+			if (x[i] > x1) x1 = x[i];
+		}
+		final int y0 = y[0], y1 = y[count - 1];
+		for (int k = 0; k < ps.length; k++) {
+			if (!ps[k].reliable() || GroupFit.contains(group, k)) continue;
+			// those whose light can reach these pixels at all (as in otherLight; a neighbour may move into reach)
+			final double reach = profile[k].radius() * GroupFit.scaleOf(e[k]) + MOVE_IN;
+			if (e[k].x() >= x0 - reach && e[k].x() <= x1 + reach && e[k].y() >= y0 - reach && e[k].y() <= y1 + reach)
+				lit[k] = e[k];
+		}
 		return lit;
 	}
+
+	/** How far (px) a neighbour out of reach of a member's pixels may move towards them and still be followed. */
+	private static final double MOVE_IN = 5;
 
 	/**
 	 * The light of the reliable particles outside the group, at their current centres, amplitudes and scales, on

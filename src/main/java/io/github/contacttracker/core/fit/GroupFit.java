@@ -270,7 +270,7 @@ public final class GroupFit {
 			kept.lit);
 		else {
 			candidates = FitPixels.gather(plane, ps, e, group, profile, window, censoring);
-			if (kept != null) kept.lit = FitPixels.litAt(ps, e, group);
+			if (kept != null) kept.lit = candidates.litAt(ps, e, group, profile);
 		}
 		if (kept != null) kept.candidates = candidates;
 		if (candidates.count() <= np) return 0;
