@@ -145,6 +145,11 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 		description = DialogHelp.TIP + TrackingSettings.HELP_DIAMETER)
 	private double diameter = TrackingSettings.DIAMETER.defaultValue();
 
+	@Parameter(validater = "validateInputs", label = "Kinds of particle (0 = automatic, 1 = all alike)", min = "" +
+		TrackingSettings.KINDS_AT_LEAST,
+		max = "" + TrackerParameters.KINDS_AT_MOST, description = DialogHelp.TIP + TrackingSettings.HELP_KINDS)
+	private int kinds = TrackingSettings.KINDS.defaultValue();
+
 	@Parameter(validater = "validateInputs", label = "Channel", min = "" + TrackingSettings.CHANNEL_AT_LEAST, description = DialogHelp.TIP + TrackingSettings.HELP_CHANNEL)
 	private int channel = TrackingSettings.CHANNEL.defaultValue();
 
@@ -254,7 +259,8 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 		return SettingValues.defaults().with(TrackingSettings.THRESHOLD, threshold).with(TrackingSettings.R_OUT, r_out)
 			.with(TrackingSettings.MIN_AREA, min_area).with(TrackingSettings.MIN_SECOND_AREA, min_second_area).withText(
 				TrackingSettings.CONNECTIVITY, connectivity).withText(TrackingSettings.METHOD, method).with(
-					TrackingSettings.DIAMETER, diameter).with(TrackingSettings.CHANNEL, channel);
+					TrackingSettings.DIAMETER, diameter).with(TrackingSettings.KINDS, kinds).with(TrackingSettings.CHANNEL,
+						channel);
 	}
 
 	/** @return the parameters as the core takes them, validated */
@@ -297,6 +303,7 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 			case "connectivity" -> connectivity;
 			case "method" -> method;
 			case "diameter" -> diameter;
+			case "kinds" -> kinds;
 			case "channel" -> channel;
 			default -> throw new IllegalStateException("no input for the setting " + s.name());
 		};

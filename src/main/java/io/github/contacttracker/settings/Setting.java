@@ -69,13 +69,15 @@ public final class Setting<V> {
 	private final Predicate<V> allowed;
 	private final String allowedText;
 	private final Number min;
+	private final Number max;
 	private final Unit unit;
 	private String trackMateKey;
 	private boolean imageSpecific;
+	private boolean optionalInMaps;
 
 	private Setting(final String name, final String label, final String help, final Class<V> type,
 		final V defaultValue, final List<V> choices, final Predicate<V> allowed, final String allowedText,
-		final Number min, final Unit unit, final String trackMateKey)
+		final Number min, final Number max, final Unit unit, final String trackMateKey)
 	{
 		this.name = name;
 		this.label = label;
@@ -86,6 +88,7 @@ public final class Setting<V> {
 		this.allowed = allowed;
 		this.allowedText = allowedText;
 		this.min = min;
+		this.max = max;
 		this.unit = unit;
 		this.trackMateKey = trackMateKey;
 	}
@@ -101,7 +104,7 @@ public final class Setting<V> {
 		final double min, final boolean minAllowed, final String allowedText, final Unit unit)
 	{
 		return new Setting<>(name, label, help, Double.class, defaultValue, List.of(), v -> Double.isFinite(v) &&
-			(minAllowed ? v >= min : v > min), allowedText, Double.isInfinite(min) ? null : min, unit, upper(name));
+			(minAllowed ? v >= min : v > min), allowedText, Double.isInfinite(min) ? null : min, null, unit, upper(name));
 	}
 
 	/** An integer setting with a smallest allowed value. */
@@ -109,7 +112,15 @@ public final class Setting<V> {
 		final int min, final String allowedText, final Unit unit, final String trackMateKey)
 	{
 		return new Setting<>(name, label, help, Integer.class, defaultValue, List.of(), v -> v >= min, allowedText, min,
-			unit, trackMateKey == null ? upper(name) : trackMateKey);
+			null, unit, trackMateKey == null ? upper(name) : trackMateKey);
+	}
+
+	/** An integer setting with a smallest and a largest allowed value. */
+	static Setting<Integer> integer(final String name, final String label, final String help, final int defaultValue,
+		final int min, final int max, final String allowedText, final Unit unit)
+	{
+		return new Setting<>(name, label, help, Integer.class, defaultValue, List.of(), v -> v >= min && v <= max,
+			allowedText, min, max, unit, upper(name));
 	}
 
 	/** A setting that takes one of a list of values (the first is the default unless given). */
@@ -117,7 +128,8 @@ public final class Setting<V> {
 		final V defaultValue, final List<V> choices)
 	{
 		return new Setting<>(name, label, help, type, defaultValue, List.copyOf(choices), choices::contains,
-			"one of " + String.join(", ", choices.stream().map(String::valueOf).toList()), null, Unit.NONE, upper(name));
+			"one of " + String.join(", ", choices.stream().map(String::valueOf).toList()), null, null, Unit.NONE, upper(
+				name));
 	}
 
 	private static String upper(final String name) {
@@ -127,6 +139,15 @@ public final class Setting<V> {
 	/** Marks a setting whose default fits no real image, so the command line requires it. */
 	Setting<V> imageSpecific() {
 		imageSpecific = true;
+		return this;
+	}
+
+	/**
+	 * Marks a setting added after TrackMate settings maps without it were written (scripts, sessions): a map that
+	 * lacks its key means its default.
+	 */
+	Setting<V> optionalInMaps() {
+		optionalInMaps = true;
 		return this;
 	}
 
@@ -142,6 +163,14 @@ public final class Setting<V> {
 	 */
 	public boolean isImageSpecific() {
 		return imageSpecific;
+	}
+
+	/**
+	 * @return whether a TrackMate settings map may lack the setting's key, which then means its default (a setting
+	 *         added after maps without it were written)
+	 */
+	public boolean isOptionalInMaps() {
+		return optionalInMaps;
 	}
 
 	/** @return the name: the key in macros ({@code r_out=20}) and settings maps */
@@ -177,6 +206,11 @@ public final class Setting<V> {
 	/** @return the smallest allowed value of a number setting, or {@code null} */
 	public Number min() {
 		return min;
+	}
+
+	/** @return the largest allowed value of a number setting, or {@code null} */
+	public Number max() {
+		return max;
 	}
 
 	/** @return the unit of a number setting */

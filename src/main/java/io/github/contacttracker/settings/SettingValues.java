@@ -50,7 +50,7 @@ public final class SettingValues {
 	}
 
 	/**
-	 * @return the values of {@code params} with the given channel and diameter (0: not given)
+	 * @return the values of {@code params} (their kinds too) with the given channel and diameter (0: not given)
 	 * @throws io.github.contacttracker.core.InvalidInputException if the channel or diameter is not allowed
 	 */
 	public static SettingValues of(final TrackerParameters params, final int channel, final double diameter) {
@@ -58,7 +58,7 @@ public final class SettingValues {
 			.with(TrackingSettings.MIN_AREA, params.minArea()).with(TrackingSettings.MIN_SECOND_AREA, params
 				.minSecondArea()).with(TrackingSettings.CONNECTIVITY, params.connectivity().neighbours()).with(
 					TrackingSettings.METHOD, params.method().key()).with(TrackingSettings.CHANNEL, channel).with(
-						TrackingSettings.DIAMETER, diameter);
+						TrackingSettings.DIAMETER, diameter).with(TrackingSettings.KINDS, params.kinds());
 	}
 
 	/**
@@ -90,7 +90,8 @@ public final class SettingValues {
 	public TrackerParameters parameters() {
 		return new TrackerParameters(get(TrackingSettings.THRESHOLD), get(TrackingSettings.R_OUT), get(
 			TrackingSettings.MIN_AREA), Connectivity.parse(String.valueOf(get(TrackingSettings.CONNECTIVITY))), get(
-				TrackingSettings.MIN_SECOND_AREA), Method.parse(get(TrackingSettings.METHOD)), get(TrackingSettings.DIAMETER));
+				TrackingSettings.MIN_SECOND_AREA), Method.parse(get(TrackingSettings.METHOD)), get(TrackingSettings.DIAMETER),
+			get(TrackingSettings.KINDS));
 	}
 
 	/** @return the 1-based channel */

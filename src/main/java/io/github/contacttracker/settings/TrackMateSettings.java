@@ -57,6 +57,9 @@ public final class TrackMateSettings {
 	public static final String KEY_MIN_SECOND_AREA = TrackingSettings.MIN_SECOND_AREA.trackMateKey();
 	public static final String KEY_CONNECTIVITY = TrackingSettings.CONNECTIVITY.trackMateKey();
 	public static final String KEY_METHOD = TrackingSettings.METHOD.trackMateKey();
+	public static final String KEY_DIAMETER = TrackingSettings.DIAMETER.trackMateKey();
+	/** Kinds of particle; maps written before it existed lack it, which means 0 (found automatically). */
+	public static final String KEY_KINDS = TrackingSettings.KINDS.trackMateKey();
 
 	public static final int DEFAULT_TARGET_CHANNEL = TrackingSettings.CHANNEL.defaultValue();
 
@@ -109,8 +112,9 @@ public final class TrackMateSettings {
 	}
 
 	/**
-	 * Checks a settings map: every key present, no unknown key, every value non-null, of the right type and
-	 * allowed.
+	 * Checks a settings map: every key present (but those of settings added after maps without them were written,
+	 * {@link Setting#isOptionalInMaps()}: absent, they mean their default), no unknown key, every value non-null, of
+	 * the right type and allowed.
 	 *
 	 * @return {@code null} when the map is fine, else a message naming each problem (one per line)
 	 */
@@ -120,6 +124,7 @@ public final class TrackMateSettings {
 		for (final Setting<?> s : TrackingSettings.ALL) {
 			final String key = s.trackMateKey();
 			final Object value = settings.get(key);
+			if (value == null && s.isOptionalInMaps() && !settings.containsKey(key)) continue;
 			if (value == null) line(errors, (settings.containsKey(key) ? "The value of " + key + " is null" :
 				"Missing setting " + key) + ": expected " + describe(s.type()) + ".");
 			else if (!s.type().isInstance(value)) line(errors, "Setting " + key + " must be " + describe(s.type()) +
@@ -142,7 +147,8 @@ public final class TrackMateSettings {
 	}
 
 	/**
-	 * @return the checked values of a settings map
+	 * @return the checked values of a settings map; a setting that may be absent ({@link Setting#isOptionalInMaps()})
+	 *         and is absent has its default
 	 * @throws InvalidInputException with every problem when the map is incomplete, mistyped or invalid
 	 */
 	@SuppressWarnings({ "unchecked", "rawtypes" })
@@ -151,8 +157,17 @@ public final class TrackMateSettings {
 		if (error != null) throw new InvalidInputException(error.replace('\n', ' '));
 		SettingValues v = SettingValues.defaults();
 		for (final Setting s : TrackingSettings.ALL)
-			v = v.with(s, settings.get(s.trackMateKey()));
+			if (settings.containsKey(s.trackMateKey())) v = v.with(s, settings.get(s.trackMateKey()));
 		return v;
+	}
+
+	/**
+	 * @return a new, modifiable settings map with every key, in {@link #keys()} order: {@code settings} with the
+	 *         defaults of the settings it may lack ({@link Setting#isOptionalInMaps()})
+	 * @throws InvalidInputException when the map is incomplete, mistyped or invalid
+	 */
+	public static Map<String, Object> complete(final Map<String, Object> settings) {
+		return toMap(values(settings));
 	}
 
 	/**

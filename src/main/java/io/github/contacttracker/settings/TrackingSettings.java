@@ -67,6 +67,11 @@ public final class TrackingSettings {
 		"it): RADIUS is half of it. 0 = not given: RADIUS is then the active area's equivalent radius " +
 		"(ACTIVE_RADIUS), smaller than the particle.";
 
+	/** Help text of {@link #KINDS}, a constant so that annotations (SciJava's {@code @Parameter}) can use it. */
+	public static final String HELP_KINDS = "Kinds of particle the profile methods (fit, deblend) tell apart by " +
+		"size and brightness, each with its own measured profile: 0 finds them automatically, 1 treats all " +
+		"particles as alike. The KIND column says each spot's kind.";
+
 	/** Help text of {@link #CHANNEL}, a constant so that annotations (SciJava's {@code @Parameter}) can use it. */
 	public static final String HELP_CHANNEL = "The channel to track, 1-based; single-channel images have only " +
 		"channel 1.";
@@ -112,6 +117,20 @@ public final class TrackingSettings {
 		HELP_DIAMETER, 0, TrackerParameters.DIAMETER_AT_LEAST, true,
 		"a number of pixels >= 0 (0 = not given)", Unit.PIXELS);
 
+	/**
+	 * The fewest kinds of particle: 0, found automatically. TrackerParameters states the largest number
+	 * ({@code KINDS_AT_MOST}) and the words as constants but checks this one without a constant; SettingsMatchCoreTest
+	 * pins the two together.
+	 */
+	public static final int KINDS_AT_LEAST = 0;
+
+	/**
+	 * Kinds of particle the profile methods tell apart. Added after settings maps without it were written: a
+	 * TrackMate map that lacks {@code KINDS} means 0, found automatically.
+	 */
+	public static final Setting<Integer> KINDS = Setting.integer("kinds", "Kinds of particle", HELP_KINDS, 0,
+		KINDS_AT_LEAST, TrackerParameters.KINDS_AT_MOST, TrackerParameters.KINDS_ALLOWED, Unit.NONE).optionalInMaps();
+
 	/** The channel tracked. */
 	public static final Setting<Integer> CHANNEL = Setting.integer("channel", "Channel",
 		HELP_CHANNEL, 1, CHANNEL_AT_LEAST, "at least 1 (1-based)",
@@ -119,7 +138,7 @@ public final class TrackingSettings {
 
 	/** Every setting, in the order front ends list them. */
 	public static final List<Setting<?>> ALL = List.of(THRESHOLD, R_OUT, MIN_AREA, MIN_SECOND_AREA, CONNECTIVITY,
-		METHOD, DIAMETER, CHANNEL);
+		METHOD, DIAMETER, KINDS, CHANNEL);
 
 	/**
 	 * @return the setting named {@code name} ({@code r_out}), or {@code null}

@@ -134,7 +134,8 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 			else if (setting == TrackingSettings.CHANNEL) control = new JSpinner(new SpinnerNumberModel(1, 1, Math.max(1,
 				nChannels), 1));
 			else if (setting.type() == Integer.class) control = new JSpinner(new SpinnerNumberModel(setting.min()
-				.intValue(), setting.min().intValue(), Integer.MAX_VALUE, 1));
+				.intValue(), setting.min().intValue(), setting.max() == null ? Integer.MAX_VALUE : setting.max().intValue(),
+				1));
 			else if (setting.unit() == Setting.Unit.PIXELS) {
 				final double min = setting.min() == null ? 0 : setting.min().doubleValue();
 				control = doubleSpinner(min * pixelWidth, min * pixelWidth, 1e6 * pixelWidth, pixelWidth, "0.####");
@@ -379,7 +380,8 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 	/**
 	 * Shows a settings map; a missing, mistyped or invalid value shows the value last used in this session
 	 * instead, else the default (TrackMate checks the map itself with the factory's {@code checkSettings}; its
-	 * wizard hands over null for keys the previous detector did not have). A channel beyond the image's is kept.
+	 * wizard hands over null for keys the previous detector did not have). A key a map may lack (a map of an earlier
+	 * version, without {@code KINDS}) shows its default when it lacks it. A channel beyond the image's is kept.
 	 */
 	@Override
 	public void setSettings(final Map<String, Object> settings) {
@@ -387,6 +389,8 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 		for (final Field f : fields.values()) {
 			final String key = f.setting.trackMateKey();
 			Object v = settings == null ? null : settings.get(key);
+			if (settings != null && f.setting.isOptionalInMaps() && !settings.containsKey(key)) v = f.setting
+				.defaultValue();
 			if (!f.setting.type().isInstance(v) || !allowed(f.setting, v)) v = d.get(key);
 			if (f.setting == TrackingSettings.CHANNEL) {
 				final SpinnerNumberModel cm = (SpinnerNumberModel) ((JSpinner) f.control).getModel();
@@ -431,14 +435,25 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 		l.setToolTipText(tip);
 		field.setToolTipText(tip);
 		field.setFont(FONT);
+		// the fields touch, with no gap between the rows: the wizard has no height to spare for the settings
+		final Insets tight = new Insets(0, 3, 0, 3);
+		if (field instanceof JComboBox) {
+			// no taller than a spinner (Swing's combo boxes are a few pixels taller)
+			final Dimension d = field.getPreferredSize();
+			field.setPreferredSize(new Dimension(d.width, Math.min(d.height, new JSpinner().getPreferredSize().height)));
+		}
 		final GridBagConstraints lc = at(0, row, 1);
 		lc.anchor = GridBagConstraints.EAST;
+		lc.insets = tight;
 		add(l, lc);
 		final GridBagConstraints c = at(1, row, 1);
 		c.fill = GridBagConstraints.HORIZONTAL;
 		c.weightx = 1;
+		c.insets = tight;
 		add(field, c);
-		add(unitLabel, at(2, row, 1));
+		final GridBagConstraints uc = at(2, row, 1);
+		uc.insets = tight;
+		add(unitLabel, uc);
 		return row + 1;
 	}
 

@@ -120,15 +120,17 @@ public class ContactTrackerDetectorFactory<T extends RealType<T> & NativeType<T>
 
 	/**
 	 * Writes the settings as attributes of {@code element}: {@code DETECTOR_NAME} and one attribute per key, in
-	 * {@link TrackMateSettings#keys()} order, with {@code toString()} of the value.
+	 * {@link TrackMateSettings#keys()} order, with {@code toString()} of the value; a key the map may lack (a map of
+	 * an earlier version, without {@code KINDS}) is written with its default.
 	 */
 	@Override
 	public String marshal(final Map<String, Object> settings, final Element element) {
 		final String error = checkSettings(settings);
 		if (error != null) return error;
+		final Map<String, Object> complete = TrackMateSettings.complete(settings);
 		element.setAttribute(TrackMateSettings.XML_ATTRIBUTE_DETECTOR_NAME, DETECTOR_KEY);
 		for (final String key : TrackMateSettings.keys())
-			element.setAttribute(key, settings.get(key).toString());
+			element.setAttribute(key, complete.get(key).toString());
 		return null;
 	}
 
@@ -164,7 +166,7 @@ public class ContactTrackerDetectorFactory<T extends RealType<T> & NativeType<T>
 	@Override
 	public String toString(final Map<String, Object> settings) {
 		final String error = checkSettings(settings);
-		return error != null ? error : TrackMateSettings.echo(settings);
+		return error != null ? error : TrackMateSettings.echo(TrackMateSettings.complete(settings));
 	}
 
 	@Override

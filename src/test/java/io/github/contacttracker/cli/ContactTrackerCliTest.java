@@ -92,6 +92,32 @@ class ContactTrackerCliTest {
 		}
 	}
 
+	/**
+	 * {@code --kinds N}: in the help; a value outside the core's limits, or no number, is a one-line error naming
+	 * it; a valid one reaches the core's parameters (the TrackMate file records the parameters tracked with).
+	 */
+	@Test
+	void kindsIsCheckedAgainstTheCoresLimitsAndReachesTheCore() throws IOException {
+		final String help = (String) run("track", "--help")[1];
+		assertTrue(help.contains("[--kinds=N]") && help.contains("--kinds=N  "), help);
+		final Path tif = simulated();
+		for (final String[] bad : new String[][] { { "5", "kinds must be 0 (found automatically), 1 (all alike) or " +
+			"up to 4, not 5" }, { "-1", "kinds must be 0 (found automatically), 1 (all alike) or up to 4, not -1" }, {
+				"two", "kinds must be a whole number, not 'two'" } })
+		{
+			final Object[] r = run("track", tif.toString(), "--threshold", "85", "--r-out", "61", "--kinds", bad[0]);
+			assertEquals(ContactTrackerCli.EXIT_BAD_INPUT, r[0], (String) r[2]);
+			assertEquals("contact-tracker: error: option --kinds: " + bad[1], ((String) r[2]).strip());
+			assertEquals("", r[1]);
+		}
+		final Path csv = dir.resolve("kinds.csv"), xml = dir.resolve("kinds.xml");
+		final Object[] r = run("track", tif.toString(), "--threshold", "85", "--r-out", "61", "--kinds", "1", "--csv",
+			csv.toString(), "--trackmate-xml", xml.toString());
+		assertEquals(0, r[0], (String) r[2]);
+		assertTrue(Files.readString(xml).contains(" KINDS=\"1\" "), "KINDS=\"1\" in the detector settings");
+		assertTrue(Files.readAllLines(csv).get(0).endsWith(",KIND"), "the KIND column");
+	}
+
 	@Test
 	void csvGoesToStdoutWithoutCsvOption() {
 		final Path tif = simulated();

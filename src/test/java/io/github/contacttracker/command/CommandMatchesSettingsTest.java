@@ -64,7 +64,9 @@ class CommandMatchesSettingsTest {
 				if (s.min() != null) assertEquals(s.min().doubleValue(), Double.parseDouble(String.valueOf(item
 					.getMinimumValue())), 0, s.name());
 				else assertNull(item.getMinimumValue(), s.name());
-				assertNull(item.getMaximumValue(), s.name() + ": the descriptor has no largest value");
+				if (s.max() != null) assertEquals(s.max().doubleValue(), Double.parseDouble(String.valueOf(item
+					.getMaximumValue())), 0, s.name());
+				else assertNull(item.getMaximumValue(), s.name() + ": the descriptor has no largest value");
 			}
 		}
 	}

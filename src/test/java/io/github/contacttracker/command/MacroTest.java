@@ -60,6 +60,7 @@ import io.github.contacttracker.core.track.StackTracker;
 import io.github.contacttracker.io.ImageFiles;
 import io.github.contacttracker.io.ImagePlusFrames;
 import io.github.contacttracker.io.SpotCsvWriter;
+import io.github.contacttracker.settings.TrackingSettings;
 
 /**
  * ImageJ macros calling Contact Tracker, run by ImageJ 1.x's own macro interpreter in this process, headless.
@@ -177,6 +178,7 @@ class MacroTest {
 		"simulated | threshold=abc r_out=20      | threshold must be a number, not 'abc'", // Fiji would pass 0
 		"simulated | threshold=60 r_out=-3       | r_out must be a positive number of pixels, not -3.0",
 		"simulated | threshold=60 method=best    | method must be one of first, paper, iterative, deblend, fit",
+		"simulated | threshold=60 kinds=5        | kinds must be 0 (found automatically), 1 (all alike) or up to 4, not 5",
 		"simulated | threshold=6000 r_out=20     | threshold 6000 is outside the data range",
 		"rgb       | threshold=60 r_out=20       | 'rgb' is an RGB image" })
 	void invalidInputStopsTheMacroAndChangesNothing(final String image, final String options, final String reason) {
@@ -221,18 +223,34 @@ class MacroTest {
 		assertFalse(IJ.redirectingErrorMessages(), "redirectErrorMessages() applies to one command");
 	}
 
+	/** {@code kinds=1} is taken and tracked with: the TrackMate file records the parameters the core got. */
+	@Test
+	void theMacroSetsTheKindsOfParticle(@TempDir final Path dir) throws Exception {
+		final Path xml = dir.resolve("kinds.xml");
+		WindowManager.setTempCurrentImage(Simulated.image());
+		final String printed = macro("run('Contact Tracker', '" + options("overlay=false kinds=1 trackmate_xml=[" + xml +
+			"]") + "');\nprint('n=' + nResults);");
+		WindowManager.setTempCurrentImage(null);
+		final Cancelable module = (Cancelable) FijiMacroBridge.last();
+		assertFalse(module.isCanceled(), module.getCancelReason());
+		assertEquals(1, FijiMacroBridge.last().getInput("kinds"));
+		assertTrue(printed.contains("n=10\n"), printed);
+		assertTrue(Files.readString(xml).contains(" KINDS=\"1\" "), Files.readString(xml));
+	}
+
 	@Test
 	void aMacroLeavingKeysOutGetsTheDefaultsNotTheDialogsLastValues() throws Exception {
-		// an interactive run remembers r_out = 30 and min_area = 25
+		// an interactive run remembers r_out = 30, min_area = 25 and kinds = 2
 		final ImagePlus imp = Simulated.image();
 		Simulated.run(context, ContactTrackerCommand.class, "imp", imp, "threshold", T, "r_out", 30.0, "min_area", 25,
-			"overlay", false);
+			"kinds", 2, "overlay", false);
 		WindowManager.setTempCurrentImage(imp);
 		macro("run('Contact Tracker', 'threshold=" + T + " r_out=" + R + " overlay=false');");
 		WindowManager.setTempCurrentImage(null);
 		assertEquals(R, (Double) FijiMacroBridge.last().getInput("r_out"), 0, "the macro's value wins");
 		assertEquals(TrackerParameters.DEFAULT_MIN_AREA, FijiMacroBridge.last().getInput("min_area"),
 			"a key left out takes the documented default");
+		assertEquals(TrackingSettings.KINDS.defaultValue(), FijiMacroBridge.last().getInput("kinds"));
 	}
 
 	/** Profile's suggestion reaches the macro through the Results table: nResults 1, getResult of each column. */

@@ -78,6 +78,24 @@ class SettingsMatchCoreTest {
 			sameOutcome(TrackingSettings.MIN_AREA, v, a -> with(100, 10, a, 50, 0), true);
 			sameOutcome(TrackingSettings.MIN_SECOND_AREA, v, a -> with(100, 10, 20, a, 0), true);
 		}
+		for (int v = TrackingSettings.KINDS_AT_LEAST - 2; v <= TrackerParameters.KINDS_AT_MOST + 2; v++)
+			sameOutcome(TrackingSettings.KINDS, v, k -> with(100, 10, 20, 50, 0).withKinds(k), true);
+	}
+
+	@Test
+	void kindsHasTheCoresLimitsAndWordsAndReachesTheCore() {
+		assertEquals(TrackingSettings.KINDS_AT_LEAST, TrackingSettings.KINDS.min().intValue());
+		assertEquals(TrackerParameters.KINDS_AT_MOST, TrackingSettings.KINDS.max().intValue());
+		assertEquals(TrackerParameters.KINDS_ALLOWED, TrackingSettings.KINDS.allowedText());
+		assertEquals("kinds must be " + TrackerParameters.KINDS_ALLOWED + ", not 5", outcome(() -> TrackingSettings.KINDS
+			.parse("5")));
+		assertEquals(0, TrackingSettings.KINDS.defaultValue());
+		assertEquals(0, SettingValues.defaults().parameters().kinds(), "found automatically unless set");
+		for (int k = TrackingSettings.KINDS_AT_LEAST; k <= TrackerParameters.KINDS_AT_MOST; k++) {
+			final SettingValues v = SettingValues.defaults().withText(TrackingSettings.KINDS, String.valueOf(k));
+			assertEquals(k, v.parameters().kinds());
+			assertEquals(v, SettingValues.of(v.parameters(), v.channel(), v.diameter()), "kinds " + k + " round trip");
+		}
 	}
 
 	@Test
@@ -87,5 +105,7 @@ class SettingsMatchCoreTest {
 		assertEquals(TrackerParameters.MIN_SECOND_AREA_AT_LEAST, TrackingSettings.MIN_SECOND_AREA.min().intValue());
 		assertEquals(TrackerParameters.DIAMETER_AT_LEAST, TrackingSettings.DIAMETER.min().doubleValue());
 		assertEquals(null, TrackingSettings.THRESHOLD.min());
+		for (final Setting<?> s : TrackingSettings.ALL)
+			if (s != TrackingSettings.KINDS) assertEquals(null, s.max(), s + ": the core states no largest value");
 	}
 }

@@ -63,6 +63,49 @@ class TrackMateSettingsTest {
 	}
 
 	@Test
+	void kindsRoundTripsThroughTheMapIntoTheParameters() {
+		assertEquals("KINDS", TrackMateSettings.KEY_KINDS);
+		assertEquals(0, TrackMateSettings.defaults().get(TrackMateSettings.KEY_KINDS));
+		for (int k = 0; k <= TrackerParameters.KINDS_AT_MOST; k++) {
+			final TrackerParameters p = TrackerParameters.of(100, 20).withKinds(k);
+			final Map<String, Object> map = TrackMateSettings.toMap(p, 1);
+			assertEquals(k, map.get(TrackMateSettings.KEY_KINDS));
+			assertEquals(p, TrackMateSettings.parameters(map));
+		}
+		assertEquals(3, TrackMateSettings.parse(TrackMateSettings.KEY_KINDS, "3"));
+	}
+
+	/**
+	 * A map of the version before KINDS (a script's, exactly the keys it documented) still checks and means kinds
+	 * found automatically; KINDS given but null, mistyped or out of range is named as every other setting is.
+	 */
+	@Test
+	void aMapWithoutKindsFromAnEarlierVersionMeansKindsFoundAutomatically() {
+		final Map<String, Object> older = new HashMap<>(Map.of("TARGET_CHANNEL", 2, "GREY_THRESHOLD", 85.0, "R_OUT",
+			61.0, "MIN_AREA", 20, "MIN_SECOND_AREA", 50, "CONNECTIVITY", 8, "METHOD", "deblend", "DIAMETER", 65.3));
+		assertNull(TrackMateSettings.check(older));
+		final TrackerParameters p = TrackMateSettings.parameters(older);
+		assertEquals(0, p.kinds());
+		assertEquals(Method.DEBLEND, p.method());
+		assertEquals(65.3, p.diameter());
+		assertEquals(2, TrackMateSettings.targetChannel(older));
+		final Map<String, Object> complete = TrackMateSettings.complete(older);
+		assertEquals(TrackMateSettings.keys(), java.util.List.copyOf(complete.keySet()));
+		assertEquals(0, complete.get(TrackMateSettings.KEY_KINDS));
+		assertEquals(8, older.size(), "the map given is left as it was");
+
+		older.put(TrackMateSettings.KEY_KINDS, null);
+		assertTrue(TrackMateSettings.check(older).contains("The value of KINDS is null"), TrackMateSettings.check(older));
+		older.put(TrackMateSettings.KEY_KINDS, 2.0);
+		assertTrue(TrackMateSettings.check(older).contains("KINDS must be an Integer"), TrackMateSettings.check(older));
+		older.put(TrackMateSettings.KEY_KINDS, TrackerParameters.KINDS_AT_MOST + 1);
+		assertEquals("Invalid setting KINDS: kinds must be " + TrackerParameters.KINDS_ALLOWED + ", not " +
+			(TrackerParameters.KINDS_AT_MOST + 1) + ".", TrackMateSettings.check(older));
+		older.put(TrackMateSettings.KEY_KINDS, 2);
+		assertEquals(2, TrackMateSettings.parameters(older).kinds());
+	}
+
+	@Test
 	void checkNamesMissingNullWronglyTypedAndUnknownSettings() {
 		final Map<String, Object> map = new HashMap<>(TrackMateSettings.defaults());
 		map.remove(TrackMateSettings.KEY_R_OUT);

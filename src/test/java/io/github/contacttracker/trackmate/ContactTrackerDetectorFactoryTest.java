@@ -22,6 +22,7 @@
 package io.github.contacttracker.trackmate;
 
 import io.github.contacttracker.settings.TrackMateSettings;
+import io.github.contacttracker.settings.TrackingSettings;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
@@ -149,6 +150,81 @@ class ContactTrackerDetectorFactoryTest {
 		assertEquals(55.5, map.get("GREY_THRESHOLD"), "an earlier file's THRESHOLD is read");
 		assertFalse(map.containsKey("THRESHOLD"));
 		assertEquals(factory.getDefaultSettings().get("METHOD"), map.get("METHOD"));
+	}
+
+	/** The settings of the version before KINDS: every key then written, in a file or in a script's map. */
+	private static Map<String, Object> olderSettings() {
+		final Map<String, Object> older = new HashMap<>(Map.of("TARGET_CHANNEL", 1, "GREY_THRESHOLD", 85.0, "R_OUT",
+			61.0, "MIN_AREA", 20, "MIN_SECOND_AREA", 50, "CONNECTIVITY", 4, "METHOD", "deblend", "DIAMETER", 65.3));
+		assertFalse(older.containsKey(TrackMateSettings.KEY_KINDS));
+		return older;
+	}
+
+	/**
+	 * A session saved by the version before KINDS (every other attribute, no KINDS) loads with kinds found
+	 * automatically, and is saved again with KINDS; so does a script's map of that version.
+	 */
+	@Test
+	void settingsOfAnEarlierVersionWithoutKindsLoadWithKindsFoundAutomatically() {
+		final Element older = new Element("DetectorSettings").setAttribute("DETECTOR_NAME", factory.getKey());
+		olderSettings().forEach((k, v) -> older.setAttribute(k, v.toString()));
+		final Map<String, Object> map = new HashMap<>();
+		assertNull(factory.unmarshal(older, map));
+		assertEquals(0, map.get("KINDS"));
+		final Map<String, Object> expected = new HashMap<>(olderSettings());
+		expected.put("KINDS", 0);
+		assertEquals(expected, map);
+		assertEquals(0, TrackMateSettings.parameters(map).kinds());
+
+		// a script's map of that version: checked, saved with KINDS = 0, described with it
+		final Map<String, Object> script = olderSettings();
+		assertNull(factory.checkSettings(script));
+		final Element saved = new Element("DetectorSettings");
+		assertNull(factory.marshal(script, saved));
+		assertEquals("0", saved.getAttributeValue("KINDS"));
+		assertTrue(factory.toString(script).contains("KINDS = 0"), factory.toString(script));
+		assertEquals(expected, roundTrip(script));
+	}
+
+	@Test
+	void kindsSurvivesMarshalAndUnmarshal() {
+		for (int k = 0; k <= TrackerParameters.KINDS_AT_MOST; k++) {
+			final Map<String, Object> s = TrackMateSettings.toMap(TrackerParameters.of(90, 30).withKinds(k), 1);
+			assertEquals(s, roundTrip(s));
+			assertEquals(k, TrackMateSettings.parameters(roundTrip(s)).kinds());
+		}
+		final Element invalid = new Element("DetectorSettings").setAttribute("KINDS", "5");
+		final String error = factory.unmarshal(invalid, new HashMap<>());
+		assertTrue(error.contains("KINDS") && error.contains("kinds must be " + TrackerParameters.KINDS_ALLOWED), error);
+	}
+
+	/**
+	 * The panel's field of KINDS spins from 0 to the core's largest number; a map without KINDS (an earlier
+	 * version's) shows 0, not the value last used, which a key the map holds as null shows.
+	 */
+	@Test
+	void panelAsksKindsWithinTheCoresLimits() {
+		final ConfigurationPanel panel = factory.getDetectorConfigurationPanel(new Settings(), new Model());
+		final JSpinner kinds = allComponents(panel).stream().filter(c -> c instanceof JSpinner && TrackingSettings.KINDS
+			.help().equals(((JSpinner) c).getToolTipText())).map(c -> (JSpinner) c).findFirst().orElse(null);
+		assertNotNull(kinds, "no field for kinds");
+		final javax.swing.SpinnerNumberModel model = (javax.swing.SpinnerNumberModel) kinds.getModel();
+		assertEquals(0, model.getMinimum());
+		assertEquals(TrackerParameters.KINDS_AT_MOST, model.getMaximum());
+
+		final Map<String, Object> three = TrackMateSettings.defaults();
+		three.put("KINDS", 3);
+		three.put("METHOD", "paper");
+		panel.setSettings(three);
+		assertEquals(three, panel.getSettings()); // now the values last used
+		assertEquals(3, kinds.getValue());
+
+		final Map<String, Object> older = olderSettings();
+		older.put("METHOD", null);
+		panel.setSettings(older);
+		assertEquals(0, panel.getSettings().get("KINDS"), "absent: the default");
+		assertEquals("paper", panel.getSettings().get("METHOD"), "null: the value last used");
+		assertEquals(65.3, panel.getSettings().get("DIAMETER"));
 	}
 
 	/** TrackMate's XML reader hands our file's {@code <DetectorSettings>} to the factory's unmarshal. */
