@@ -33,8 +33,8 @@ import io.github.contacttracker.core.profile.EmpiricalProfile;
 import io.github.contacttracker.core.profile.ProfileAccess;
 
 /**
- * The least-squares passes of {@link GroupFit} ({@link NormalEquations}): the fast paths for a group of one and of two
- * against the general one.
+ * The least-squares pass of {@link GroupFit} ({@link NormalEquations}) against the least squares' definition, for
+ * groups of one, two and three members, of one kind and of two.
  */
 class NormalEquationsTest {
 
@@ -71,51 +71,74 @@ class NormalEquationsTest {
 		return ProfileAccess.profile(1, c, 40, 1000);
 	}
 
-	/** A fast path's signature: {@link NormalEquations#accumulate} for a fixed group size. */
-	@FunctionalInterface
-	private interface Pass {
-		double run(FitPixels px, double[] p, EmpiricalProfile[] profile, double[][] jtj, double[] jtr, double[] noise,
-			double[] models);
+	/**
+	 * The model of the fit at parameters {@code p} on pixel {@code i}, from its definition: background plane, other
+	 * groups' light, and each member's light {@code a_q P_q(|x - c_q| / s_q)} by the profile's own lookup.
+	 */
+	private static double model(final FitPixels px, final int i, final double[] p, final EmpiricalProfile[] profile) {
+		final int n = profile.length, b0 = 4 * n;
+		double m = p[b0] + p[b0 + 1] * px.u()[i] + p[b0 + 2] * px.v()[i] + px.fixed()[i];
+		for (int q = 0; q < n; q++)
+			m += p[4 * q + 2] * profile[q].lookup(Math.hypot(px.x()[i] - p[4 * q], px.y()[i] - p[4 * q + 1]) / p[4 * q +
+				3]);
+		return m;
 	}
 
 	/**
-	 * Same J^T J, J^T r, residuals, noise weights and model values from {@code fast} as from the general pass, bit for
-	 * bit, with and without J^T J.
+	 * The one pass against the least squares' definition: residuals and models exactly, J^T r and J^T J against
+	 * those of a Jacobian by central differences of the model (the pass differentiates the profile's spline, the
+	 * differences its table: they agree to a few 1e-4 of the largest entry).
 	 */
-	private static void assertSameAsGeneral(final FitPixels px, final double[] p, final int n,
-		final EmpiricalProfile[] profile, final Pass fast)
+	private static void assertMatchesDefinition(final FitPixels px, final double[] p,
+		final EmpiricalProfile[] profile)
 	{
-		final int np = p.length;
-		for (final boolean hessian : new boolean[] { true, false }) {
-			final double[][] jg = hessian ? new double[np][np] : null, jf = hessian ? new double[np][np] : null;
-			final double[] rg = new double[np], rf = new double[np], ng = new double[4 * n], nf = new double[4 * n];
-			final double[] mg = new double[px.count()], mf = new double[px.count()];
-			final double rssGroup = NormalEquations.accumulateGroup(px, p, n, profile, jg, rg, ng, mg);
-			final double rssFast = fast.run(px, p, profile, jf, rf, nf, mf);
-			assertEquals(rssGroup, rssFast, 0);
-			assertArrayEquals(rg, rf, 0);
-			assertArrayEquals(ng, nf, 0);
-			assertArrayEquals(mg, mf, 0);
-			if (hessian) for (int r = 0; r < np; r++)
-				assertArrayEquals(jg[r], jf[r], 0, "row " + r);
+		final int n = profile.length, np = p.length;
+		final double[][] jtj = new double[np][np];
+		final double[] jtr = new double[np], models = new double[px.count()];
+		final double rss = NormalEquations.accumulate(px, p, n, profile, jtj, jtr, new double[4 * n], models);
+		final double[][] wantJtj = new double[np][np];
+		final double[] wantJtr = new double[np], g = new double[np];
+		double wantRss = 0;
+		for (int i = 0; i < px.count(); i++) {
+			final double m = model(px, i, p, profile), r = px.value()[i] - m;
+			assertEquals(m, models[i], 1e-9 * Math.abs(m), "model at pixel " + i);
+			wantRss += r * r;
+			for (int a = 0; a < np; a++) {
+				final double h = 1e-5 * Math.max(1, Math.abs(p[a]));
+				final double[] up = p.clone(), down = p.clone();
+				up[a] += h;
+				down[a] -= h;
+				g[a] = (model(px, i, up, profile) - model(px, i, down, profile)) / (2 * h);
+			}
+			for (int a = 0; a < np; a++) {
+				wantJtr[a] += g[a] * r;
+				for (int b = 0; b < np; b++)
+					wantJtj[a][b] += g[a] * g[b];
+			}
+		}
+		assertEquals(wantRss, rss, 1e-9 * wantRss);
+		// each entry on its own scale: J^T J's by its diagonal (a correlation), J^T r's by the residuals' norm
+		for (int a = 0; a < np; a++) {
+			assertEquals(wantJtr[a], jtr[a], 1e-3 * Math.sqrt(wantJtj[a][a] * wantRss), "J^T r, parameter " + a);
+			for (int b = 0; b < np; b++)
+				assertEquals(wantJtj[a][b], jtj[a][b], 1e-3 * Math.sqrt(wantJtj[a][a] * wantJtj[b][b]), "J^T J, " + a +
+					", " + b);
 		}
 	}
 
 	@Test
-	void singleMemberFastPathIsIdentical() {
+	void oneMember() {
 		final EmpiricalProfile profile = ringed();
-		final FitPixels px = pixels(profile, 34.3, 31.8);
-		assertSameAsGeneral(px, new double[] { 34.1, 32.0, 1.05, 0.98, 39, 0.4, -0.2 }, 1, new EmpiricalProfile[] {
-			profile }, (x, p, pr, jtj, jtr, noise, models) -> NormalEquations.accumulateSingle(x, p, pr[0], jtj, jtr,
-				noise, models));
+		assertMatchesDefinition(pixels(profile, 34.3, 31.8), new double[] { 34.1, 32.0, 1.05, 0.98, 39, 0.4, -0.2 },
+			new EmpiricalProfile[] { profile });
 	}
 
 	/**
-	 * The pair's path against the general one, members near enough for shared pixels and far enough for pixels out
-	 * of one member's reach (the profile reaches 30 px), each member of its own kind (profile).
+	 * Two members of unlike kinds (profiles), near enough for shared pixels and far enough for pixels out of one
+	 * member's reach (the profiles reach 30 px).
 	 */
 	@Test
-	void pairFastPathIsIdentical() {
+	void twoMembersOfTwoKinds() {
 		final EmpiricalProfile profile = ringed();
 		final FitPixels px = pixels(profile, 24.3, 31.8, 47.6, 30.1);
 		final double[] p = { 24.1, 32.0, 1.05, 0.98, 47.9, 30.0, 0.9, 1.04, 39, 0.4, -0.2 };
@@ -124,7 +147,14 @@ class NormalEquationsTest {
 			if ((Math.hypot(px.x()[i] - p[0], px.y()[i] - p[1]) < 30 * p[3]) != (Math.hypot(px.x()[i] - p[4], px.y()[i] -
 				p[5]) < 30 * p[7])) onlyOne++;
 		assertTrue(onlyOne > 500, "pixels within reach of one member only: " + onlyOne);
-		assertSameAsGeneral(px, p, 2, new EmpiricalProfile[] { profile, ringed(90, 11) }, (x, q, pr, jtj, jtr, noise,
-			models) -> NormalEquations.accumulatePair(x, q, pr[0], pr[1], jtj, jtr, noise, models));
+		assertMatchesDefinition(px, p, new EmpiricalProfile[] { profile, ringed(90, 11) });
+	}
+
+	@Test
+	void threeMembers() {
+		final EmpiricalProfile profile = ringed();
+		assertMatchesDefinition(pixels(profile, 20.2, 20.7, 41.1, 22.4, 30.6, 40.9), new double[] { 20.0, 20.5, 1.1, 1.0,
+			41.3, 22.2, 0.95, 1.02, 30.4, 41.0, 1.0, 0.97, 40, 0.3, 0.1 }, new EmpiricalProfile[] { profile, profile,
+				ringed(90, 11) });
 	}
 }
