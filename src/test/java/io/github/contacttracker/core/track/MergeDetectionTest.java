@@ -302,12 +302,7 @@ class MergeDetectionTest {
 	 */
 	@Test
 	void aLargeGroupIsFittedMemberByMember() {
-		final SplittableRandom rnd = new SplittableRandom(23);
-		final List<Item> items = new ArrayList<>();
-		for (int i = 0; i < 6; i++)
-			for (int j = 0; j < 5; j++)
-				items.add(new Item(IN_FOCUS, 30 + 18 * i + (j % 2) * 9 + 0.5 * rnd.nextDouble(), 30 + 16 * j + 0.5 * rnd
-					.nextDouble()));
+		final List<Item> items = denseField();
 		final Plane plane = render(170, 130, items, 29);
 		final TrackerParameters params = TrackerParameters.of(THRESHOLD, 16).withMethod(Method.FIT);
 		assertTrue(FitAccess.groups(ContactTracker.particles(plane, params), firstPasses(plane, params), 2 * params
@@ -332,12 +327,7 @@ class MergeDetectionTest {
 	 */
 	@Test
 	void aLargeGroupThatCannotSettleStopsAndIsFlagged() {
-		final SplittableRandom rnd = new SplittableRandom(23);
-		final List<Item> items = new ArrayList<>();
-		for (int i = 0; i < 6; i++)
-			for (int j = 0; j < 5; j++)
-				items.add(new Item(IN_FOCUS, 30 + 18 * i + (j % 2) * 9 + 0.5 * rnd.nextDouble(), 30 + 16 * j + 0.5 * rnd
-					.nextDouble()));
+		final List<Item> items = denseField();
 		final Plane plane = render(170, 130, items, 29);
 		final TrackerParameters params = TrackerParameters.of(THRESHOLD, 16).withMethod(Method.FIT);
 		final Particle[] ps = ContactTracker.particles(plane, params);
@@ -384,6 +374,17 @@ class MergeDetectionTest {
 		// members fitted in turn approach their joint fit slowly, which is why they are flagged)
 		assertTrue(rmsAll < 0.11 && rmsAll < 0.7 * rmsOne, "the sweeps approach the truth: rms " + rmsAll +
 			" px against " + rmsOne + " px after one sweep");
+	}
+
+	/** 30 saturated cores 16-18 px apart, in staggered rows: one group too large to fit jointly. */
+	private static List<Item> denseField() {
+		final SplittableRandom rnd = new SplittableRandom(23);
+		final List<Item> items = new ArrayList<>();
+		for (int i = 0; i < 6; i++)
+			for (int j = 0; j < 5; j++)
+				items.add(new Item(IN_FOCUS, 30 + 18 * i + (j % 2) * 9 + 0.5 * rnd.nextDouble(), 30 + 16 * j + 0.5 * rnd
+					.nextDouble()));
+		return items;
 	}
 
 	private static Item nearest(final List<Item> items, final double x, final double y) {
