@@ -38,8 +38,8 @@ import io.github.contacttracker.core.radial.Particle;
  * The {@code fit} method: particles closer than {@code 2 r_out} form a group (their significant light
  * overlaps), and each group is fitted jointly by least squares to the pixels within {@code R} (the measured
  * profile's reach) of its members: {@code I(x) = B + sum_k a_k P_k(|x - c_k| / s_k) + F(x)} with the measured
- * profile {@code P_k} of each particle's kind, free centres {@code c_k}, amplitudes {@code a_k} and local background {@code B}
- * (Levenberg-Marquardt); {@code F} is the faint light of particles of other groups (all farther than
+ * profile {@code P_k} of each particle's kind, free centres {@code c_k}, amplitudes {@code a_k}, radial scales
+ * {@code s_k} and local background {@code B} (Levenberg-Marquardt); {@code F} is the faint light of particles of other groups (all farther than
  * {@code 2 r_out}), held at their current estimates: only its tail reaches the group, where a centre error of
  * a few hundredths of a pixel changes nothing that matters. All the light of every particle is used, which is what the
  * Cramer-Rao bound assumes. Unreliable particles (suspected merges, degenerate) are left as they are and are
