@@ -58,24 +58,6 @@ public record Localization(int frame, double x, double y, double firstX, double 
 	double amplitude, double scale, int kind) implements Serializable
 {
 
-	/** A spot not classified into kinds (kind 0). */
-	public Localization(final int frame, final double x, final double y, final double firstX, final double firstY,
-		final int activeArea, final int secondArea, final double quality, final double radius, final int flags,
-		final int iterations, final double sigmaX, final double sigmaY, final double amplitude, final double scale)
-	{
-		this(frame, x, y, firstX, firstY, activeArea, secondArea, quality, radius, flags, iterations, sigmaX, sigmaY,
-			amplitude, scale, 0);
-	}
-
-	/** A spot without the fit's amplitude and scale (NaN), not classified into kinds. */
-	public Localization(final int frame, final double x, final double y, final double firstX, final double firstY,
-		final int activeArea, final int secondArea, final double quality, final double radius, final int flags,
-		final int iterations, final double sigmaX, final double sigmaY)
-	{
-		this(frame, x, y, firstX, firstY, activeArea, secondArea, quality, radius, flags, iterations, sigmaX, sigmaY,
-			Double.NaN, Double.NaN, 0);
-	}
-
 	/** @return whether {@code flag} is set */
 	public boolean has(final Flag flag) {
 		return flag.isSet(flags);
@@ -97,12 +79,6 @@ public record Localization(int frame, double x, double y, double firstX, double 
 	public Localization withFrame(final int newFrame) {
 		return new Localization(newFrame, x, y, firstX, firstY, activeArea, secondArea, quality, radius, flags,
 			iterations, sigmaX, sigmaY, amplitude, scale, kind);
-	}
-
-	/** @return a copy moved by (dx, dy) pixels, e.g. from a crop's frame into the whole image's */
-	public Localization translate(final double dx, final double dy) {
-		return new Localization(frame, x + dx, y + dy, firstX + dx, firstY + dy, activeArea, secondArea, quality,
-			radius, flags, iterations, sigmaX, sigmaY, amplitude, scale, kind);
 	}
 
 	/** @return a copy with other flags */

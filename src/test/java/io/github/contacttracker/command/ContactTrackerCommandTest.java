@@ -572,12 +572,13 @@ class ContactTrackerCommandTest extends WithContext {
 
 	@Test
 	void flaggedSpotsStandOutInTheirFlagsColour() {
-		final Localization ok = new Localization(0, 10, 10, 10, 10, 50, 50, 1, 4, 0, 2, 0.01, 0.01);
+		final Localization ok = new Localization(0, 10, 10, 10, 10, 50, 50, 1, 4, 0, 2, 0.01, 0.01, Double.NaN,
+			Double.NaN, 0);
 		final Localization fellBack = new Localization(0, 30, 10, 30.5, 10, 50, 10, 1, 4,
-			io.github.contacttracker.core.Flag.FELL_BACK.bit(), 1, 0.01, 0.01);
+			io.github.contacttracker.core.Flag.FELL_BACK.bit(), 1, 0.01, 0.01, Double.NaN, Double.NaN, 0);
 		final Localization merged = new Localization(0, 50, 10, 50, 10, 50, 10, 1, 4,
 			io.github.contacttracker.core.Flag.MERGED.bit() | io.github.contacttracker.core.Flag.AT_BORDER.bit(), 1, 0.01,
-			0.01);
+			0.01, Double.NaN, Double.NaN, 0);
 		final List<Roi> rois = SpotOverlay.rois(List.of(new FrameResult(List.of(ok, fellBack, merged), List.of(), List
 			.of(), 1, 0, false)), 8, 0, false, (roi, frame) -> {});
 		assertEquals(9, rois.size());

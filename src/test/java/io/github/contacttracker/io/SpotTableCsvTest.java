@@ -50,9 +50,11 @@ class SpotTableCsvTest {
 	/** The KIND column is written last and read back as written; spots never classified are of kind 0. */
 	@Test
 	void readsBackTheKindOfEverySpot() throws Exception {
-		final Localization plain = new Localization(0, 1.5, 2.5, 1.5, 2.5, 30, 30, 1, 3.1, 0, 2, 0.01, 0.01);
-		final List<Localization> spots = List.of(plain, plain.withFrame(1).withKind(2), plain.withKind(3).translate(4,
-			0));
+		final Localization plain = new Localization(0, 1.5, 2.5, 1.5, 2.5, 30, 30, 1, 3.1, 0, 2, 0.01, 0.01, Double.NaN,
+			Double.NaN, 0);
+		final Localization moved = new Localization(0, 5.5, 2.5, 5.5, 2.5, 30, 30, 1, 3.1, 0, 2, 0.01, 0.01, Double.NaN,
+			Double.NaN, 3);
+		final List<Localization> spots = List.of(plain, plain.withFrame(1).withKind(2), moved);
 		final StringWriter csv = new StringWriter();
 		SpotCsvWriter.write(csv, spots, Calibration.PIXELS);
 		final List<String> lines = csv.toString().lines().toList();

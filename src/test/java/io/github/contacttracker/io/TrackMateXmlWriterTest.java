@@ -70,11 +70,12 @@ class TrackMateXmlWriterTest {
 	/** Spots in frames 0, 2, 0 (out of order), one with flags and NaN standard errors. */
 	private static List<Localization> spots() {
 		return List.of(
-			new Localization(0, 10.25, 20.5, 10.3, 20.4, 120, 120, 5400.5, 6.18, 0, 1, 0.01, 0.02),
+			new Localization(0, 10.25, 20.5, 10.3, 20.4, 120, 120, 5400.5, 6.18, 0, 1, 0.01, 0.02, Double.NaN,
+				Double.NaN, 0),
 			new Localization(2, 30.125, 15.0, 30.6, 15.2, 150, 96, 7000, 6.9,
-				Flag.SECOND_PASS.bit() | Flag.AT_BORDER.bit(), 2, 0.015, 0.012),
+				Flag.SECOND_PASS.bit() | Flag.AT_BORDER.bit(), 2, 0.015, 0.012, Double.NaN, Double.NaN, 0),
 			new Localization(0, 44.0, 5.75, 44.1, 5.7, 90, 40, 3000, 5.35, Flag.FELL_BACK.bit(), 1, Double.NaN,
-				Double.NaN));
+				Double.NaN, Double.NaN, Double.NaN, 0));
 	}
 
 	private static final ImageSource SRC = new ImageSource("movie.tif", "/data/experiment", 64, 48, 1, 3);
@@ -338,11 +339,13 @@ class TrackMateXmlWriterTest {
 	@Test
 	void badInputIsRefusedAndLeavesNoFile() throws Exception {
 		final Path out = dir.resolve("bad.xml");
-		final List<Localization> late = List.of(new Localization(3, 1, 1, 1, 1, 30, 30, 1, 3, 0, 1, 0, 0));
+		final List<Localization> late = List.of(new Localization(3, 1, 1, 1, 1, 30, 30, 1, 3, 0, 1, 0, 0, Double.NaN,
+			Double.NaN, 0));
 		final IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
 			() -> TrackMateXmlWriter.write(out, late, CAL, SRC, PARAMS));
 		assertTrue(e.getMessage().contains("frame 3"), e.getMessage());
-		final List<Localization> nan = List.of(new Localization(0, Double.NaN, 1, 1, 1, 30, 30, 1, 3, 0, 1, 0, 0));
+		final List<Localization> nan = List.of(new Localization(0, Double.NaN, 1, 1, 1, 30, 30, 1, 3, 0, 1, 0, 0,
+			Double.NaN, Double.NaN, 0));
 		assertThrows(IllegalArgumentException.class, () -> TrackMateXmlWriter.write(out, nan, CAL, SRC, PARAMS));
 		assertFalse(Files.exists(out));
 

@@ -160,7 +160,8 @@ class ContactTrackerDetectorTest {
 	/** A spot's kind is an integer spot feature TrackMate declares, shows and saves like the flags. */
 	@Test
 	void theKindIsAnIntegerSpotFeature() {
-		final Localization l = new Localization(3, 10, 20, 10.5, 20.5, 40, 40, 1, 3.6, 0, 2, 0.01, 0.02);
+		final Localization l = new Localization(3, 10, 20, 10.5, 20.5, 40, 40, 1, 3.6, 0, 2, 0.01, 0.02, Double.NaN,
+			Double.NaN, 0);
 		assertEquals(0, ContactTrackerDetector.toSpot(l, DX, DY).getFeature(SpotColumn.KIND.key()), 0,
 			"not classified");
 		assertEquals(2, ContactTrackerDetector.toSpot(l.withKind(2), DX, DY).getFeature(SpotColumn.KIND.key()), 0);

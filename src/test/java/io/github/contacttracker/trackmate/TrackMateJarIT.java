@@ -157,7 +157,8 @@ class TrackMateJarIT {
 		assertThrows(ClassNotFoundException.class, () -> Class.forName("fiji.plugin.trackmate.Spot"),
 			"the mirror is on the integration-test class path: is the test running against target/classes?");
 		final Document doc = TrackMateXmlWriter.document(
-			List.of(new Localization(0, 3, 4, 3, 4, 30, 30, 100, 3.1, 0, 1, 0.01, 0.01)), Calibration.PIXELS,
+			List.of(new Localization(0, 3, 4, 3, 4, 30, 30, 100, 3.1, 0, 1, 0.01, 0.01, Double.NaN, Double.NaN,
+				0)), Calibration.PIXELS,
 			new ImageSource("a.tif", "", 16, 16, 1, 1), TrackerParameters.of(50, 8), 1);
 		assertEquals(TrackMateSettings.DETECTOR_KEY, doc.getRootElement().getChild("Settings").getChild("DetectorSettings")
 			.getAttributeValue("DETECTOR_NAME"));

@@ -166,7 +166,7 @@ public final class GroupFit {
 				final int it = fitGroup(plane, particles, e, new int[] { k }, profile, memberWindow[q], censoring,
 					new Budget(ITERATIONS_PER_SWEEP, settled(before), MAX_SELECTIONS), kept[q]);
 				// a centre that slid away from its particle (onto a neighbour, or off into the background): no fit
-				failed[q] = it == 0 || e[k].distanceTo(start[q]) > MAX_SLIDE * Math.sqrt(particles[k].region.area() /
+				failed[q] = it == 0 || e[k].distanceTo(start[q]) > MAX_SLIDE * Math.sqrt(particles[k].region().area() /
 					Math.PI);
 				if (failed[q]) e[k] = start[q].withFlags(e[k].flags());
 				moving[q] = it < 0 || !failed[q] && e[k].distanceTo(before) > settled(e[k]);

@@ -159,7 +159,7 @@ public final class ProfileRefinement implements Refinement {
 		final List<KindFeatures> sample = new ArrayList<>();
 		final KindFeatures[] f = KindFeatures.measure(plane, ps, e, params.rOut());
 		for (int k = 0; k < ps.length; k++)
-			if (!Flag.DEGENERATE.isSet(ps[k].first.flags())) sample.add(f[k]); // merges too: a kind may be all merged
+			if (!Flag.DEGENERATE.isSet(ps[k].first().flags())) sample.add(f[k]); // merges too: a kind may be all merged
 		final Kinds kinds = Kinds.find(sample, params.kinds());
 		return kinds.count() < 2 ? null : kinds;
 	}
@@ -231,17 +231,17 @@ public final class ProfileRefinement implements Refinement {
 	static void flagUnmodelledNeighbours(final Particle[] ps, final Estimate[] e, final double rOut) {
 		for (int q = 0; q < ps.length; q++) {
 			if (ps[q].reliable()) continue;
-			final double reach = 2 * rOut + Math.sqrt(ps[q].region.area() / Math.PI);
+			final double reach = 2 * rOut + Math.sqrt(ps[q].region().area() / Math.PI);
 			for (int k = 0; k < ps.length; k++)
-				if (k != q && ps[k].reliable() && Math.hypot(e[k].x() - ps[q].first.x(), e[k].y() - ps[q].first.y()) <
-					reach) e[k] = e[k].withFlags(e[k].flags() | Flag.UNMODELLED_NEIGHBOUR.bit());
+				if (k != q && ps[k].reliable() && Math.hypot(e[k].x() - ps[q].first().x(), e[k].y() - ps[q].first()
+					.y()) < reach) e[k] = e[k].withFlags(e[k].flags() | Flag.UNMODELLED_NEIGHBOUR.bit());
 		}
 	}
 
 	private static double medianEquivalentRadius(final Particle[] ps) {
 		final double[] r = new double[ps.length];
 		for (int k = 0; k < ps.length; k++)
-			r[k] = Math.sqrt(ps[k].region.area() / Math.PI);
+			r[k] = Math.sqrt(ps[k].region().area() / Math.PI);
 		Arrays.sort(r);
 		return r[r.length / 2];
 	}

@@ -205,8 +205,8 @@ public abstract class Plane {
 		PrimitiveBlocks.of(frame, OnFallback.ACCEPT).copy(frame, dest);
 	}
 
-	/** Wraps a 2D interval through a {@link RandomAccess}, never the fast path (for any {@link RealType}). */
-	public static <T extends RealType<T>> Plane generic(final RandomAccessibleInterval<T> frame) {
+	/** Wraps a 2D interval through a {@link RandomAccess}, never the fast path (for any {@link RealType}; package-private for tests). */
+	static <T extends RealType<T>> Plane generic(final RandomAccessibleInterval<T> frame) {
 		checkShape(frame);
 		return new GenericPlane<>(frame);
 	}

@@ -96,7 +96,8 @@ public record KindFeatures(double coreRadius, double peak, double ringDepth, dou
 		final double background = background(plane);
 		final KindFeatures[] out = new KindFeatures[particles.length];
 		for (int k = 0; k < out.length; k++)
-			out[k] = measure(plane, estimates[k].x(), estimates[k].y(), particles[k].region.area(), background, reach);
+			out[k] = measure(plane, estimates[k].x(), estimates[k].y(), particles[k].region().area(), background,
+				reach);
 		return out;
 	}
 

@@ -138,11 +138,6 @@ public final class EmpiricalProfile implements Serializable {
 		return radius;
 	}
 
-	/** @return the number of pixel values the estimate rests on */
-	public int samples() {
-		return samples;
-	}
-
 	/**
 	 * @return the radius of the central area at or above {@code threshold} (the active area of an isolated
 	 *         particle), 0 if the centre itself is below it

@@ -102,16 +102,6 @@ public final class ProfileEstimator {
 		return new ProfileEstimator(REACH_FACTOR * rOut, kinds);
 	}
 
-	/** @return the number of pixel values added so far */
-	public int samples() {
-		return samples;
-	}
-
-	/** @return the number of pixel values added so far that lie within reach of a particle */
-	public int profileSamples() {
-		return profileSamples;
-	}
-
 	/**
 	 * Adds a frame with its spots (positions in the frame's coordinates). Spots flagged merged or degenerate
 	 * are masked out. Each spot's fitted amplitude and radial scale are used where known (divided by their means
@@ -174,11 +164,6 @@ public final class ProfileEstimator {
 			this(new EmpiricalProfile[] { profile }, censoring, new double[] { amplitudeNorm }, new double[] {
 				scaleNorm });
 		}
-	}
-
-	/** Adds a frame with its spots, taken as alike (amplitude and scale 1 for spots without fitted ones). */
-	public <T extends RealType<T>> void add(final RandomAccessibleInterval<T> frame, final List<Localization> spots) {
-		add(frame, spots, 1, 1);
 	}
 
 	/**

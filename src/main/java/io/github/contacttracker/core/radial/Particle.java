@@ -31,17 +31,14 @@ import io.github.contacttracker.core.image.Region;
  */
 public final class Particle {
 
-	public final Region region;
-	final GradientField field;
-	/** Integrated intensity above threshold over the active area. */
-	public final double quality;
+	private final Region region;
+	private final GradientField field;
+	private final double quality;
 	/** Intensity-above-threshold weighted centroid: the fallback of a degenerate first pass. */
-	final double centroidX, centroidY;
-	public final boolean atBorder;
-	/** The active area's shape: one disc, or several merged ({@link ComponentShape}). */
-	public final ComponentShape shape;
-	/** The first pass on the whole active area (its flags include the shape flags once {@link #withShapeFlags}). */
-	public final Estimate first;
+	private final double centroidX, centroidY;
+	private final boolean atBorder;
+	private final ComponentShape shape;
+	private final Estimate first;
 
 	private Particle(final Region region, final GradientField field, final double quality, final double centroidX,
 		final double centroidY, final boolean atBorder, final ComponentShape shape, final Estimate first)
@@ -98,6 +95,39 @@ public final class Particle {
 	public Particle withShapeFlags(final int flags) {
 		return new Particle(region, field, quality, centroidX, centroidY, atBorder, shape, first.withFlags(
 			first.flags() | flags));
+	}
+
+	/** @return the active area */
+	public Region region() {
+		return region;
+	}
+
+	/** @return the gradients on the active area */
+	GradientField field() {
+		return field;
+	}
+
+	/** @return the integrated intensity above threshold over the active area */
+	public double quality() {
+		return quality;
+	}
+
+	/** @return whether the active area touches the image's border or holds pixels without a gradient */
+	public boolean atBorder() {
+		return atBorder;
+	}
+
+	/** @return the active area's shape: one disc, or several merged ({@link ComponentShape}) */
+	public ComponentShape shape() {
+		return shape;
+	}
+
+	/**
+	 * @return the first pass on the whole active area (its flags include the shape flags once
+	 *         {@link #withShapeFlags})
+	 */
+	public Estimate first() {
+		return first;
 	}
 
 	/** Whether the first pass was degenerate (the centre is then the centroid). */

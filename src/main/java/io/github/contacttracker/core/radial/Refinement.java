@@ -62,7 +62,7 @@ public interface Refinement {
 	Refinement FIRST_PASS = (plane, ps, params, profile, noise) -> {
 		final Estimate[] e = new Estimate[ps.length];
 		for (int k = 0; k < ps.length; k++)
-			e[k] = ps[k].first;
+			e[k] = ps[k].first();
 		return new Outcome(e, null);
 	};
 }

@@ -54,7 +54,7 @@ public final class SecondPass {
 	static Estimate[] firsts(final Particle[] ps) {
 		final Estimate[] e = new Estimate[ps.length];
 		for (int k = 0; k < ps.length; k++)
-			e[k] = ps[k].first;
+			e[k] = ps[k].first();
 		return e;
 	}
 
@@ -103,19 +103,20 @@ public final class SecondPass {
 	private static Estimate pass(final Particle p, final int self, final double[] cx, final double[] cy,
 		final TrackerParameters params)
 	{
-		final Estimate first = p.first;
-		final int area = p.region.area();
-		final int[] near = neighboursReaching(p.region, self, cx, cy, params.rOut());
+		final Estimate first = p.first();
+		final int area = p.region().area();
+		final int[] near = neighboursReaching(p.region(), self, cx, cy, params.rOut());
 		if (near.length == 0) return first; // nothing to exclude: the first centre is final
 		final double r2 = params.rOut() * params.rOut();
-		final int secondArea = countOutside(p.region, near, cx, cy, r2);
+		final int secondArea = countOutside(p.region(), near, cx, cy, r2);
 		if (secondArea == area) return first;
 		if (secondArea < params.minSecondArea())
 			return new Estimate(first.x(), first.y(), first.flags() | Flag.FELL_BACK.bit(), secondArea, first.iterations(),
 				first.solve(), Double.NaN, Double.NaN);
-		final boolean[] use = new boolean[p.field.size];
-		for (int i = 0; i < p.field.size; i++)
-			use[i] = outside(p.field.x[i], p.field.y[i], near, cx, cy, r2);
+		final GradientField field = p.field();
+		final boolean[] use = new boolean[field.size];
+		for (int i = 0; i < field.size; i++)
+			use[i] = outside(field.x[i], field.y[i], near, cx, cy, r2);
 		final Solve s = p.solve(use);
 		if (!s.ok()) return new Estimate(first.x(), first.y(), first.flags() | Flag.FELL_BACK.bit() | Flag.DEGENERATE
 			.bit(), secondArea, first.iterations(), first.solve(), Double.NaN, Double.NaN);

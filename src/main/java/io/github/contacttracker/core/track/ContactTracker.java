@@ -34,8 +34,6 @@ import io.github.contacttracker.core.image.ComponentLabeling;
 import io.github.contacttracker.core.image.NoiseEstimate;
 import io.github.contacttracker.core.image.Plane;
 import io.github.contacttracker.core.image.Region;
-import io.github.contacttracker.core.profile.EmpiricalProfile;
-import io.github.contacttracker.core.profile.ProfileEstimator;
 import io.github.contacttracker.core.radial.CentreUncertainty;
 import io.github.contacttracker.core.radial.ComponentShape;
 import io.github.contacttracker.core.radial.Estimate;
@@ -98,17 +96,6 @@ public final class ContactTracker {
 		return analyse(Plane.of(frame), frameIndex, true);
 	}
 
-	/**
-	 * Localizes the particles of a 2D frame with a radial profile measured beforehand (for instance over a whole
-	 * stack, see {@link ProfileEstimator}); used by the {@code deblend} and {@code fit} methods, ignored by the
-	 * others. With {@code profile == null} those methods measure the profile on this frame alone.
-	 */
-	public <T extends RealType<T>> FrameResult analyse(final RandomAccessibleInterval<T> frame,
-		final int frameIndex, final EmpiricalProfile profile)
-	{
-		return analyse(Plane.of(frame), frameIndex, true, profile == null ? null : KindProfiles.one(profile));
-	}
-
 	/** The whole pipeline on a plane; regions are kept only when asked for. */
 	public FrameResult analyse(final Plane plane, final int frameIndex, final boolean keepRegions) {
 		return analyse(plane, frameIndex, keepRegions, null);
@@ -166,13 +153,13 @@ public final class ContactTracker {
 				sx = noise * Math.sqrt(cov[0]);
 				sy = noise * Math.sqrt(cov[1]);
 			}
-			spots.add(new Localization(frameIndex, e.x() + dx, e.y() + dy, p.first.x() + dx, p.first.y() + dy,
-				p.region.area(), e.secondArea(), quality(p.quality, p.region.area(), noise), Math.sqrt(p.region.area() /
-					Math.PI), e.flags(),
+			spots.add(new Localization(frameIndex, e.x() + dx, e.y() + dy, p.first().x() + dx, p.first().y() + dy,
+				p.region().area(), e.secondArea(), quality(p.quality(), p.region().area(), noise), Math.sqrt(p.region()
+					.area() / Math.PI), e.flags(),
 				e.iterations(), sx, sy, e.amplitude(), e.scale(), kinds == null ? 0 : kinds[k]));
 			if (keepRegions) {
-				active.add(p.region.translate(dx, dy));
-				second.add(SecondPass.secondRegion(p.region, k, outcome.discs(), params.rOut()).translate(dx, dy));
+				active.add(p.region().translate(dx, dy));
+				second.add(SecondPass.secondRegion(p.region(), k, outcome.discs(), params.rOut()).translate(dx, dy));
 			}
 		}
 		return new FrameResult(spots, active, second, noise, discarded[0], profile == null && params.method()
@@ -218,8 +205,8 @@ public final class ContactTracker {
 		final List<Integer> roundAreas = new ArrayList<>();
 		for (int k = 0; k < ps.length; k++) {
 			final Particle p = particles.get(k);
-			merged[k] = p.shape.merged(p.atBorder, noise, alone(particles, k, params.rOut()), params.diameter());
-			if (!merged[k] && !p.atBorder) roundAreas.add(p.region.area());
+			merged[k] = p.shape().merged(p.atBorder(), noise, alone(particles, k, params.rOut()), params.diameter());
+			if (!merged[k] && !p.atBorder()) roundAreas.add(p.region().area());
 		}
 		int smallestMerge = 0;
 		if (roundAreas.size() >= MIN_ROUND_FOR_SIZES) {
@@ -230,11 +217,11 @@ public final class ContactTracker {
 		for (int k = 0; k < ps.length; k++) {
 			final Particle p = particles.get(k);
 			// (by outline only: a particle flagged for its gradient lines has the shape of one)
-			if (merged[k] && p.region.area() < smallestMerge && p.shape.outlineMerged(p.atBorder)) {
+			if (merged[k] && p.region().area() < smallestMerge && p.shape().outlineMerged(p.atBorder())) {
 				discarded[0]++;
 				continue;
 			}
-			ps[n++] = p.withShapeFlags((p.atBorder ? Flag.AT_BORDER.bit() : 0) | (merged[k] ? Flag.MERGED.bit() : 0));
+			ps[n++] = p.withShapeFlags((p.atBorder() ? Flag.AT_BORDER.bit() : 0) | (merged[k] ? Flag.MERGED.bit() : 0));
 		}
 		return java.util.Arrays.copyOf(ps, n);
 	}
@@ -246,10 +233,10 @@ public final class ContactTracker {
 	 */
 	private static boolean alone(final List<Particle> particles, final int k, final double rOut) {
 		final Particle p = particles.get(k);
-		final double reach = rOut + Math.sqrt(p.region.area() / Math.PI);
+		final double reach = rOut + Math.sqrt(p.region().area() / Math.PI);
 		for (int q = 0; q < particles.size(); q++)
-			if (q != k && Math.hypot(particles.get(q).first.x() - p.first.x(), particles.get(q).first.y() - p.first
-				.y()) < reach) return false;
+			if (q != k && Math.hypot(particles.get(q).first().x() - p.first().x(), particles.get(q).first().y() - p
+				.first().y()) < reach) return false;
 		return true;
 	}
 

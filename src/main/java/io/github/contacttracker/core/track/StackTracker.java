@@ -78,7 +78,7 @@ public final class StackTracker {
 	 * @param requested a number of threads asked for; below 1 means "all available processors"
 	 * @return the number of threads to run with
 	 */
-	public static int threads(final int requested) {
+	private static int threads(final int requested) {
 		return requested < 1 ? Runtime.getRuntime().availableProcessors() : requested;
 	}
 
@@ -178,19 +178,6 @@ public final class StackTracker {
 		/** @return the sample frames (0-based, ascending) */
 		public int[] sample() {
 			return sample.clone();
-		}
-
-		/**
-		 * @return the profile of each kind of particle every frame is refined with, or {@code null} when each frame
-		 *         measures its own
-		 */
-		public KindProfiles profile() {
-			return profile;
-		}
-
-		/** @return whether the profile rounds settled (if not, every spot is flagged {@code NOT_CONVERGED}) */
-		public boolean settled() {
-			return settled;
 		}
 
 		/** @return the final result of sample frame {@code i} (of {@link #sample()}), flags included */
@@ -369,7 +356,7 @@ public final class StackTracker {
 	/**
 	 * @return the frames the profile is measured on: evenly spread, within both limits (read: frame 0, for its size)
 	 */
-	public static <T extends RealType<T>> int[] profileFrames(final int count,
+	private static <T extends RealType<T>> int[] profileFrames(final int count,
 		final IntFunction<? extends RandomAccessibleInterval<T>> frame)
 	{
 		final RandomAccessibleInterval<T> first = frame.apply(0);

@@ -34,6 +34,7 @@ import org.junit.jupiter.api.Test;
 import io.github.contacttracker.core.TestImages;
 import io.github.contacttracker.core.TrackerParameters;
 import io.github.contacttracker.core.image.Censoring;
+import io.github.contacttracker.core.image.ImageAccess;
 import io.github.contacttracker.core.image.Plane;
 import io.github.contacttracker.core.profile.EmpiricalProfile;
 import io.github.contacttracker.core.profile.ProfileAccess;
@@ -126,7 +127,7 @@ class FitPixelsTest {
 			// centres off the pixel grid, windows of several sizes and scales, groups of one to five
 			final Estimate[] e = new Estimate[ps.length];
 			for (int k = 0; k < ps.length; k++) {
-				final Estimate f = ps[k].first;
+				final Estimate f = ps[k].first();
 				e[k] = new Estimate(f.x() + random.nextGaussian(), f.y() + random.nextGaussian(), 0, 0, 1, null, Double.NaN,
 					Double.NaN, 0.8 + 0.4 * random.nextDouble(), 0.7 + 0.6 * random.nextDouble());
 			}
@@ -162,7 +163,7 @@ class FitPixelsTest {
 		final EmpiricalProfile profile = profile();
 		final Estimate[] e = new Estimate[ps.length];
 		for (int k = 0; k < ps.length; k++)
-			e[k] = ps[k].first;
+			e[k] = ps[k].first();
 		final FitPixels got = FitPixels.gather(plane, ps, e, new int[] { 0, 1 }, alike(profile, ps.length), 20,
 			Censoring.of(plane, 4));
 		int clippedInWindow = 0;
@@ -183,7 +184,7 @@ class FitPixelsTest {
 		for (int i = 0; i < img.length; i++)
 			img[i] = Math.round(img[i]);
 		for (final Plane plane : new Plane[] { Plane.of(TestImages.bytes(img, 37, 23)), Plane.of(TestImages.shorts(img,
-			37, 23)), Plane.of(TestImages.floats(img, 37, 23)), Plane.generic(TestImages.bytes(img, 37, 23)) }) {
+			37, 23)), Plane.of(TestImages.floats(img, 37, 23)), ImageAccess.generic(TestImages.bytes(img, 37, 23)) }) {
 			final double[] out = new double[120];
 			for (int y = 0; y + 3 < 23; y += 5) {
 				java.util.Arrays.fill(out, -1);

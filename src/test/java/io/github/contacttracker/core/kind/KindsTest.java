@@ -304,7 +304,7 @@ class KindsTest {
 				if (p != null) ps.add(p);
 			}
 			final Particle[] particles = ps.toArray(new Particle[0]);
-			final Estimate[] centres = Arrays.stream(particles).map(p -> p.first).toArray(Estimate[]::new);
+			final Estimate[] centres = Arrays.stream(particles).map(p -> p.first()).toArray(Estimate[]::new);
 			final KindFeatures[] features = KindFeatures.measure(plane, particles, centres, REACH);
 			final int[] kinds = new int[particles.length];
 			for (int k = 0; k < particles.length; k++)

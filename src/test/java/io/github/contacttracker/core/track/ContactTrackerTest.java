@@ -34,6 +34,7 @@ import io.github.contacttracker.core.Localization;
 import io.github.contacttracker.core.Method;
 import io.github.contacttracker.core.TestImages;
 import io.github.contacttracker.core.TrackerParameters;
+import io.github.contacttracker.core.image.ImageAccess;
 import io.github.contacttracker.core.image.Plane;
 
 import net.imglib2.RandomAccessibleInterval;
@@ -127,11 +128,11 @@ class ContactTrackerTest {
 		final var floats = TestImages.floats(img, w, h);
 		final List<Localization> fromBytes = t.analyse(Plane.of(bytes), 0, false).spots();
 		assertEquals(3, fromBytes.size());
-		assertEquals(fromBytes, t.analyse(Plane.generic(bytes), 0, false).spots());
+		assertEquals(fromBytes, t.analyse(ImageAccess.generic(bytes), 0, false).spots());
 		assertEquals(fromBytes, t.analyse(Plane.of(shorts), 0, false).spots());
-		assertEquals(fromBytes, t.analyse(Plane.generic(shorts), 0, false).spots());
+		assertEquals(fromBytes, t.analyse(ImageAccess.generic(shorts), 0, false).spots());
 		final List<Localization> fromFloats = t.analyse(Plane.of(floats), 0, false).spots();
-		assertEquals(fromFloats, t.analyse(Plane.generic(floats), 0, false).spots());
+		assertEquals(fromFloats, t.analyse(ImageAccess.generic(floats), 0, false).spots());
 		assertEquals(fromBytes, fromFloats, "integer-valued floats give the same spots as bytes");
 		// A view with an offset is copied into an array and reports positions in its own coordinates.
 		final List<Localization> shifted = t.track(Views.translate(bytes, 7, -5), 0);

@@ -99,7 +99,7 @@ class MergeDetectionTest {
 		final List<ComponentShape> shapes = new ArrayList<>();
 		final Particle[] ps = ContactTracker.particles(plane, TrackerParameters.of(THRESHOLD, 30));
 		for (final Particle p : ps)
-			shapes.add(p.shape);
+			shapes.add(p.shape());
 		return new Seen(r.spots(), shapes);
 	}
 
@@ -396,7 +396,7 @@ class MergeDetectionTest {
 		final Particle[] ps = ContactTracker.particles(plane, params);
 		final Estimate[] e = new Estimate[ps.length];
 		for (int k = 0; k < ps.length; k++)
-			e[k] = ps[k].first;
+			e[k] = ps[k].first();
 		return e;
 	}
 }
