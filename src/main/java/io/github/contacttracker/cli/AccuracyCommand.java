@@ -56,15 +56,18 @@ final class AccuracyCommand extends ContactTrackerCli.Subcommand {
 	private final Option<Path> reportOption = options.add(Option.path("--report", "FILE.md", "Also write the tables " +
 		"as a markdown page, stamped with this command, the version and the date (the documentation's reports)."));
 	private final Option<String> particlesOption = options.add(Option.text("--particle", "5.53,2.06", "Particle " +
-		"types (um); with --scene also flat, and movie:PATH, a particle like a movie's (profile, noise and settings " +
-		"measured on its first frame).").withDefault("5.53,2.06"));
+		"types (um); with --scene also flat, and movie:PATH, particles like a movie's: one per kind of particle " +
+		"found on its first frames, each with its kind's profile as the fit measures it, and the movie's noise " +
+		"and settings (profile helper on its first frame); the mixed scenes put the kinds together.").withDefault(
+			"5.53,2.06"));
 	private final Option<String> scenariosOption = options.add(Option.text("--scenario", "pair,triple", "Scenarios.")
 		.withDefault("pair,triple"));
 	private final Option<String> methodsOption = options.add(Option.text("--methods", "M,...", "Methods. Default: " +
 		"every method for the paper's protocol, fit for --scene."));
 	private final Option<String> sceneOption = options.add(Option.text("--scene", "S,...", "Instead of the paper's " +
 		"protocol, the harder scenes at contact (eval.SceneStudy): pair, chain4, triple, hex7, hex19, unlike, unlike13, " +
-		"ramp, saturated, photon, or all."));
+		"ramp, saturated, photon, or all; and, for a movie of several kinds, mixed (its first and last kind at " +
+		"contact) and mixed7 (hex7 of its kinds in turn), each particle with its own kind's profile."));
 	private final Option<String> separationsOption = options.add(Option.text("--separations", "R,...", "Separations " +
 		"over the diameter (1 = contact). Default: 2 down to 1."));
 
@@ -84,11 +87,16 @@ final class AccuracyCommand extends ContactTrackerCli.Subcommand {
 		if (scene != null) { // the scenes of eval.SceneStudy (clusters, unlike particles, ramp, saturation)
 			final long t0 = System.nanoTime();
 			final SceneStudy study = new SceneStudy(Method.parse(methodList == null ? "fit" : methodList), threads);
-			final List<ParticleType> sceneTypes = new ArrayList<>();
-			for (final String p : ContactTrackerCli.list(particles))
-				sceneTypes.add(p.startsWith(MeasuredParticle.PREFIX) ? MeasuredParticle.of(Path.of(p.substring(
-					MeasuredParticle.PREFIX.length()))) : SceneStudy.particle(p));
-			final List<SceneStudy.Result> results = study.report(out, sceneTypes, scene, reps);
+			final List<SceneStudy.Kinds> sets = new ArrayList<>();
+			for (final String p : ContactTrackerCli.list(particles)) {
+				if (p.startsWith(MeasuredParticle.PREFIX)) sets.add(MeasuredParticle.kinds(Path.of(p.substring(
+					MeasuredParticle.PREFIX.length()))));
+				else {
+					final ParticleType t = SceneStudy.particle(p);
+					sets.add(new SceneStudy.Kinds(t.name(), List.of(t)));
+				}
+			}
+			final List<SceneStudy.Result> results = study.reportKinds(out, sets, scene, reps);
 			final double seconds = (System.nanoTime() - t0) * 1e-9;
 			out.printf(Locale.ROOT, "%nAccuracy run took %.0f s.%n", seconds);
 			if (csv != null) {

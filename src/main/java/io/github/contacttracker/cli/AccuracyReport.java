@@ -121,14 +121,16 @@ final class AccuracyReport {
 			"Method `%s`, %d images per scene, every scene at contact. Per scene: the mean error of the distance over " +
 				"every touching pair, the worst pair's mean, the spread, the scene's Cramér-Rao bound (CRB), the worst " +
 				"pair's std / CRB, every particle's largest bias along x, y, radial or tangential (and where), lost " +
-				"and extra spots, flagged spots, reported σ over the observed spread, and pixels clipped at 255 or 0.",
+				"and extra spots, flagged spots, reported σ over the observed spread, pixels clipped at 255 or 0, and spots " +
+				"the tracker gave another kind than their particle's (each kind of particle counted as the label most of " +
+				"its spots have).",
 			study.method().key(), reps));
 		String particle = null;
 		List<List<String>> table = new ArrayList<>();
 		final List<String> header = List.of("scene", "mean error (nm)", "worst pair (nm)", "std (nm)", "CRB (nm)",
 			"std / CRB (worst pair)", "position bias (nm)", "where", "lost", "extra", "flagged", "reported σ / spread",
-			"clipped px");
-		int lost = 0, extra = 0, flagged = 0;
+			"clipped px", "wrong kind");
+		int lost = 0, extra = 0, flagged = 0, wrongKind = 0;
 		double bias = 0, lo = Double.POSITIVE_INFINITY, hi = 0, slo = Double.POSITIVE_INFINITY, shi = 0;
 		for (final SceneStudy.Result r : results) {
 			if (!r.particle().equals(particle)) {
@@ -139,10 +141,12 @@ final class AccuracyReport {
 			table.add(List.of(r.scene(), Report.signed(r.meanError()), Report.signed(r.worstPairMean()), Report.two(r
 				.std()), Report.two(r.crb()), Report.two(r.worstStdOverCrb()), Report.signed(r.bias()), r.biasWhere(),
 				Integer.toString(r.lost()), Integer.toString(r.extra()), Integer.toString(r.flagged()), Report.two(r
-					.sigmaRatioMin()) + " to " + Report.two(r.sigmaRatioMax()), Long.toString(r.clipped())));
+					.sigmaRatioMin()) + " to " + Report.two(r.sigmaRatioMax()), Long.toString(r.clipped()), Integer.toString(r
+					.wrongKind())));
 			lost += r.lost();
 			extra += r.extra();
 			flagged += r.flagged();
+			wrongKind += r.wrongKind();
 			bias = Math.max(bias, Math.abs(r.bias()));
 			lo = Math.min(lo, r.worstStdOverCrb());
 			hi = Math.max(hi, r.worstStdOverCrb());
@@ -151,7 +155,8 @@ final class AccuracyReport {
 		}
 		if (particle != null) report.heading(particle).table(header, table);
 		return report.heading("Over every scene").bullets(List.of( //
-			"particles lost: " + lost + "; extra spots: " + extra + "; flagged spots: " + flagged, //
+			"particles lost: " + lost + "; extra spots: " + extra + "; flagged spots: " + flagged + "; spots of the " +
+				"wrong kind: " + wrongKind, //
 			"std / CRB of the worst pair: " + Report.two(lo) + " to " + Report.two(hi), //
 			"largest bias of a particle's position: " + Report.two(bias) + " nm", //
 			"reported σ / observed spread: " + Report.two(slo) + " to " + Report.two(shi)));

@@ -27,6 +27,12 @@ import java.util.List;
 
 import ij.ImagePlus;
 import io.github.contacttracker.advisor.ProfileAnalysis;
+import io.github.contacttracker.core.Method;
+import io.github.contacttracker.core.TrackerParameters;
+import io.github.contacttracker.core.kind.KindProfiles;
+import io.github.contacttracker.core.profile.EmpiricalProfile;
+import io.github.contacttracker.core.track.StackTracker;
+import io.github.contacttracker.eval.SceneStudy;
 import io.github.contacttracker.io.ImageFiles;
 import io.github.contacttracker.io.ImagePlusFrames;
 import io.github.contacttracker.sim.NoiseModel;
@@ -39,6 +45,11 @@ import io.github.contacttracker.sim.TabulatedProfile;
  * and diameter it suggests; the paper's pixel size (84.7 nm), so the errors read in the same nanometres as the other
  * particles'. Scenes of it at contact show how accurate the methods are on particles that look like the real ones,
  * where the real movie has no ground truth.
+ * <p>
+ * A movie of several kinds of particle ({@code core.kind}) gives one particle per kind ({@link #kinds}): the
+ * kinds found and each kind's profile measured as the tracker measures them ({@code fit}, kinds found
+ * automatically, on the movie's first {@link #KIND_FRAMES} frames), with the movie's background, noise,
+ * threshold, r_out and diameter (the kinds of a movie are taken as the same particles, in and out of focus).
  */
 final class MeasuredParticle {
 
@@ -47,7 +58,45 @@ final class MeasuredParticle {
 	/** The prefix of a particle key that names a movie. */
 	static final String PREFIX = "movie:";
 
+	/** The first frames of a movie its kinds and their profiles are measured on. */
+	static final int KIND_FRAMES = 8;
+	/** Step of the table a measured kind's profile is rendered from (px). */
+	static final double TABLE_STEP_PX = 0.25;
+
 	private MeasuredParticle() {}
+
+	/**
+	 * @return the particle of each kind found on {@code movie}'s first frames ({@code "like NAME kind K"}), or the one
+	 *         particle of {@link #of} (named {@code "like NAME"}) when the movie shows one kind
+	 */
+	@SuppressWarnings({ "rawtypes", "unchecked" })
+	static SceneStudy.Kinds kinds(final Path movie) throws java.io.IOException {
+		final ParticleType whole = of(movie);
+		final ImagePlusFrames frames = ImagePlusFrames.of(ImageFiles.open(movie), 1);
+		final List<net.imglib2.RandomAccessibleInterval> all = (List) frames.frames();
+		final int count = Math.min(KIND_FRAMES, all.size());
+		final StackTracker tracker = new StackTracker(TrackerParameters.of(whole.threshold(), whole.rOut()).withMethod(
+			Method.FIT));
+		final StackTracker.ProfileStage stage = tracker.profileStage(count, t -> all.get(t), () -> false);
+		final KindProfiles profiles = stage == null ? null : stage.profile();
+		if (profiles == null || profiles.count() < 2) return new SceneStudy.Kinds(whole.name(), List.of(whole));
+		final List<ParticleType> kinds = new ArrayList<>();
+		for (int c = 0; c < profiles.count(); c++)
+			kinds.add(new ParticleType(whole.name() + " kind " + (c + 1), whole.diameterMicrons(), PIXEL_NM, table(
+				profiles.profile(c)), whole.background(), whole.threshold(), whole.rOut(), whole.noise()));
+		return new SceneStudy.Kinds(whole.name(), kinds);
+	}
+
+	/** @return the measured profile as a table, 0 beyond its radius */
+	static TabulatedProfile table(final EmpiricalProfile p) {
+		final int n = (int) Math.ceil(p.radius() / TABLE_STEP_PX) + 1;
+		final double[] radii = new double[n + 1], values = new double[n + 1];
+		for (int i = 0; i <= n; i++) {
+			radii[i] = i * TABLE_STEP_PX;
+			values[i] = i < n ? p.value(radii[i]) : 0;
+		}
+		return new TabulatedProfile(radii, values);
+	}
 
 	/** @return the particle type measured on {@code movie}'s first frame */
 	@SuppressWarnings({ "rawtypes", "unchecked" })

@@ -37,7 +37,7 @@ import io.github.contacttracker.sim.Scene;
  * particles push below 0) are censored: they carry no information here, as in the fit. The bound is the method's
  * ideal: it keeps the band near the clip levels that the fit leaves out to avoid a selection bias (see
  * {@code core.Censoring}), so the fit's spread can exceed it a little where pixels clip. Derivatives by central
- * differences of the pixel-integrated model.
+ * differences of the pixel-integrated model, each particle drawn with its own kind's profile.
  */
 public final class SceneCramerRao {
 
@@ -63,11 +63,12 @@ public final class SceneCramerRao {
 		final int n = centres.size();
 		perParticle = scales ? 4 : 3;
 		final int np = perParticle * n + 3;
-		final ImageSimulator sim = new ImageSimulator(scene.type().profile());
-		final NoiseFreeImage model = scene.render(sim, centres, width, height);
+		final List<ImageSimulator> sims = scene.simulators();
+		final NoiseFreeImage model = scene.render(sims, centres, width, height);
 		final List<double[]> d = new ArrayList<>();
 		for (int k = 0; k < n; k++) {
 			final Scene.Particle p = scene.particles().get(k);
+			final ImageSimulator sim = sims.get(p.kind()); // each particle with its own profile
 			final double x = centres.get(k)[0], y = centres.get(k)[1];
 			d.add(diff(single(sim, x + STEP, y, p.scale(), p.amplitude(), width, height), single(sim, x - STEP, y, p
 				.scale(), p.amplitude(), width, height)));

@@ -23,7 +23,11 @@ package io.github.contacttracker.eval;
 
 import java.io.PrintStream;
 import java.util.ArrayList;
+import java.util.HashSet;
 import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.TreeMap;
 import java.util.Locale;
 
 import io.github.contacttracker.core.InvalidInputException;
@@ -64,10 +68,14 @@ public final class SceneStudy {
 	 * @param sigmaRatioMin smallest reported sigma / observed spread, over particles and axes
 	 * @param sigmaRatioMax largest
 	 * @param clipped pixels clipped at 255 or 0, over all frames
+	 * @param wrongKind matched spots of the wrong kind, over all frames: the tracker labels kinds by its own numbers,
+	 *        so each true kind is given the label most of its spots have, and a spot counts as wrong when its label
+	 *        is not its particle's, or when its particle's kind shares its label with a more numerous kind (kinds
+	 *        not told apart)
 	 */
 	public record Result(String scene, String particle, int images, double meanError, double worstPairMean,
 		double std, double crb, double worstStdOverCrb, double bias, String biasWhere, int lost, int extra,
-		int flagged, double sigmaRatioMin, double sigmaRatioMax, long clipped)
+		int flagged, double sigmaRatioMin, double sigmaRatioMax, long clipped, int wrongKind)
 	{}
 
 	private final Method method;
@@ -122,6 +130,8 @@ public final class SceneStudy {
 		final double[][] pairSum = new double[pairs.size()][3]; // count, sum, sum of squares
 		final double[][] pos = new double[n][7]; // count, sum dx, sum dy, sum dx2, sum dy2, sum sigmaX, sum sigmaY
 		int lost = 0, extra = 0, flagged = 0;
+		final int[] truthKind = scene.kinds();
+		final Map<Integer, Map<Integer, Integer>> labels = new TreeMap<>();
 		final double maxMatch = 0.4 * type.diameterPx();
 		for (int t = 0; t < results.size(); t++) {
 			final List<double[]> truth = stack.truth().get(t);
@@ -150,6 +160,7 @@ public final class SceneStudy {
 			}
 			for (int k = 0; k < n; k++) {
 				if (match[k] == null) continue;
+				labels.computeIfAbsent(truthKind[k], kind -> new TreeMap<>()).merge(match[k].kind(), 1, Integer::sum);
 				final double dx = match[k].x() - truth.get(k)[0], dy = match[k].y() - truth.get(k)[1];
 				final double[] p = pos[k];
 				p[0]++;
@@ -215,7 +226,8 @@ public final class SceneStudy {
 			for (int a = 0; a < 4; a++)
 				if (Math.abs(b[a] * nm) > Math.abs(bias)) {
 					bias = b[a] * nm;
-					where = "particle " + k + " " + axes[a];
+					where = "particle " + k + (scene.profiles().size() > 1 ? " (kind " + (truthKind[k] + 1) + ")" : "") +
+						" " + axes[a];
 				}
 			final double sdx = Math.sqrt(Math.max(0, (p[3] - p[0] * bx * bx) / (p[0] - 1)));
 			final double sdy = Math.sqrt(Math.max(0, (p[4] - p[0] * by * by) / (p[0] - 1)));
@@ -225,32 +237,58 @@ public final class SceneStudy {
 		}
 		return new Result(scene.key(), type.name(), results.size(), count > 0 ? total / count : Double.NaN, worst, Math
 			.sqrt(varSum / np), Math.sqrt(crbSum / np), worstRatio, bias, where, lost, extra, flagged, ratioMin, ratioMax,
-			stack.clippedPixels());
+			stack.clippedPixels(), wrongKind(labels));
+	}
+
+	/**
+	 * @param labels per true kind, how many of its spots got each label
+	 * @return the spots of the wrong kind ({@link Result#wrongKind()})
+	 */
+	static int wrongKind(final Map<Integer, Map<Integer, Integer>> labels) {
+		// each true kind's label: the one most of its spots have; the most numerous kinds choose first
+		final List<int[]> kinds = new ArrayList<>(); // true kind, its label, spots with it, all its spots
+		for (final Map.Entry<Integer, Map<Integer, Integer>> e : labels.entrySet()) {
+			int label = 0, most = -1, all = 0;
+			for (final Map.Entry<Integer, Integer> l : e.getValue().entrySet()) {
+				all += l.getValue();
+				if (l.getValue() > most) {
+					most = l.getValue();
+					label = l.getKey();
+				}
+			}
+			kinds.add(new int[] { e.getKey(), label, most, all });
+		}
+		kinds.sort((a, b) -> Integer.compare(b[3], a[3]));
+		final Set<Integer> taken = new HashSet<>();
+		int wrong = 0;
+		for (final int[] k : kinds)
+			wrong += taken.add(k[1]) ? k[3] - k[2] : k[3];
+		return wrong;
 	}
 
 	/** The table's header, as {@link #print} writes it. */
 	public static void printHeader(final PrintStream out) {
 		out.println("  scene      | mean err  worst pair   std (nm) | CRB (nm) | std/CRB (worst pair) | position bias (nm)" +
-			"              | lost extra flagged | reported sigma / spread | clipped px");
+			"              | lost extra flagged | reported sigma / spread | clipped px | wrong kind");
 	}
 
 	/** One row. */
 	public static void print(final PrintStream out, final Result r) {
-		out.printf(Locale.ROOT, "  %-10s | %8.2f %11.2f %10.2f | %8.2f | %20.2f | %6.2f %-23s | %4d %5d %7d | %10.2f to %-10.2f | %d%n",
+		out.printf(Locale.ROOT, "  %-10s | %8.2f %11.2f %10.2f | %8.2f | %20.2f | %6.2f %-23s | %4d %5d %7d | %10.2f to %-10.2f | %10d | %d%n",
 			r.scene(), r.meanError(), r.worstPairMean(), r.std(), r.crb(), r.worstStdOverCrb(), r.bias(), r.biasWhere(),
-			r.lost(), r.extra(), r.flagged(), r.sigmaRatioMin(), r.sigmaRatioMax(), r.clipped());
+			r.lost(), r.extra(), r.flagged(), r.sigmaRatioMin(), r.sigmaRatioMax(), r.clipped(), r.wrongKind());
 	}
 
 	/** The CSV header matching {@link #csv}. */
 	public static final String CSV_HEADER = "particle,scene,method,images,mean_error_nm,worst_pair_mean_nm,std_nm,crb_nm," +
-		"worst_std_over_crb,position_bias_nm,bias_where,lost,extra,flagged,sigma_ratio_min,sigma_ratio_max,clipped\n";
+		"worst_std_over_crb,position_bias_nm,bias_where,lost,extra,flagged,sigma_ratio_min,sigma_ratio_max,clipped,wrong_kind\n";
 
 	/** One CSV line. */
 	public String csv(final Result r) {
-		return String.format(Locale.ROOT, "%s,%s,%s,%d,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%s,%d,%d,%d,%.4f,%.4f,%d%n", r
+		return String.format(Locale.ROOT, "%s,%s,%s,%d,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%s,%d,%d,%d,%.4f,%.4f,%d,%d%n", r
 			.particle(), r.scene(), method.key(), r.images(), r.meanError(), r.worstPairMean(), r.std(), r.crb(), r
 				.worstStdOverCrb(), r.bias(), r.biasWhere(), r.lost(), r.extra(), r.flagged(), r.sigmaRatioMin(), r
-					.sigmaRatioMax(), r.clipped());
+					.sigmaRatioMax(), r.clipped(), r.wrongKind());
 	}
 
 	/**
@@ -264,22 +302,82 @@ public final class SceneStudy {
 	public List<Result> report(final PrintStream out, final List<ParticleType> types, final String scenes,
 		final int images)
 	{
-		final List<String> keys = sceneKeys(scenes);
+		final List<Kinds> sets = new ArrayList<>();
+		for (final ParticleType t : types)
+			sets.add(new Kinds(t.name(), List.of(t)));
+		return reportKinds(out, sets, scenes, images);
+	}
+
+	/**
+	 * The kinds of particle of one source (a movie's, or a single type): each kind alone in every plain scene, and
+	 * all of them together in the {@link Scene#MIXED_KEYS mixed} ones.
+	 *
+	 * @param name the source's name: the mixed scenes' particles are called after it
+	 * @param types its kinds, at least one
+	 */
+	public record Kinds(String name, List<ParticleType> types) {
+
+		/** Copies the list. */
+		public Kinds {
+			types = List.copyOf(types);
+		}
+	}
+
+	/**
+	 * Runs every plain scene for every kind of every source, then the mixed scenes of each source of two kinds or
+	 * more (a source of one kind has none: said so), and prints the tables.
+	 *
+	 * @param sets the sources and their kinds
+	 * @param scenes comma-separated scene keys ({@link #sceneKeys}), plain or {@link Scene#MIXED_KEYS mixed}
+	 * @param images frames per scene
+	 * @return the table's rows, in order
+	 */
+	public List<Result> reportKinds(final PrintStream out, final List<Kinds> sets, final String scenes,
+		final int images)
+	{
+		final List<String> keys = new ArrayList<>(), mixed = new ArrayList<>();
+		for (final String k : sceneKeys(scenes))
+			(Scene.MIXED_KEYS.contains(k.toLowerCase(Locale.ROOT)) ? mixed : keys).add(k);
+		final ParticleType any = sets.get(0).types().get(0);
 		for (final String k : keys)
-			Scene.of(k, types.get(0)); // unknown names fail before any work
+			Scene.of(k, any); // unknown names fail before any work
 		final List<Result> rows = new ArrayList<>();
-		for (final ParticleType type : types) {
-			out.printf(Locale.ROOT, "%n%s (D = %.1f px at %.1f nm/px), r_out %.0f px, method %s, %d images per scene, " +
-				"at contact%n", type.name(), type.diameterPx(), type.pixelSizeNm(), type.rOut(), method.key(), images);
-			printHeader(out);
-			long seed = 11;
-			for (final String k : keys) {
-				final Result r = run(Scene.of(k, type), images, seed++);
-				print(out, r);
-				rows.add(r);
+		for (final Kinds set : sets) {
+			for (final ParticleType type : set.types()) {
+				if (keys.isEmpty()) break;
+				heading(out, type, images);
+				long seed = 11;
+				for (final String k : keys)
+					rows.add(printed(out, run(Scene.of(k, type), images, seed++)));
 			}
+			if (mixed.isEmpty()) continue;
+			if (set.types().size() < 2) {
+				out.printf(Locale.ROOT, "%n%s: one kind, no mixed scene%n", set.name());
+				continue;
+			}
+			final String name = mixedName(set);
+			heading(out, Scene.mixed(mixed.get(0), name, set.types()).type(), images);
+			long seed = 31;
+			for (final String k : mixed)
+				rows.add(printed(out, run(Scene.mixed(k, name, set.types()), images, seed++)));
 		}
 		return rows;
+	}
+
+	/** @return the name of a source's mixed scenes' particles */
+	public static String mixedName(final Kinds set) {
+		return set.name() + ", kinds 1 to " + set.types().size() + " mixed";
+	}
+
+	private void heading(final PrintStream out, final ParticleType type, final int images) {
+		out.printf(Locale.ROOT, "%n%s (D = %.1f px at %.1f nm/px), r_out %.0f px, method %s, %d images per scene, " +
+			"at contact%n", type.name(), type.diameterPx(), type.pixelSizeNm(), type.rOut(), method.key(), images);
+		printHeader(out);
+	}
+
+	private static Result printed(final PrintStream out, final Result r) {
+		print(out, r);
+		return r;
 	}
 
 	/** @return the scenes named in a comma-separated list ({@code all}: every one) */

@@ -43,10 +43,15 @@ import net.imglib2.img.array.ArrayImg;
  * @param photonGain grey levels per photon for photon noise, or 0 for the type's additive noise
  * @param readNoise standard deviation of the read noise (grey levels), with photon noise
  * @param threshold the active-area threshold for this scene
+ * @param profiles the profile of each kind of particle ({@link Particle#kind()} indexes it): the type's alone, or
+ *        one per kind in a {@link #mixed} scene
  */
 public record Scene(String key, ParticleType type, List<Particle> particles, double rampX, double rampY,
-	double photonGain, double readNoise, double threshold)
+	double photonGain, double readNoise, double threshold, List<RadialProfile> profiles)
 {
+
+	/** The scenes of particles of unlike kinds that {@link #mixed} knows, in order. */
+	public static final List<String> MIXED_KEYS = List.of("mixed", "mixed7");
 
 	/** The scenes {@link #of} knows, in order. */
 	public static final List<String> KEYS = List.of("pair", "chain4", "triple", "hex7", "hex19", "unlike", "unlike13",
@@ -60,18 +65,80 @@ public record Scene(String key, ParticleType type, List<Particle> particles, dou
 	public static final double SATURATED_BRIGHTNESS = 2;
 
 	/**
-	 * One particle: centre, radial scale of the profile (1.2 = 1.2 times larger) and factor on its grey levels.
+	 * One particle: centre, radial scale of the profile (1.2 = 1.2 times larger), factor on its grey levels and
+	 * kind (which of the scene's {@link Scene#profiles() profiles} it has).
 	 *
 	 * @param x centre x relative to the scene's centre (px)
 	 * @param y centre y (px)
 	 * @param scale radial scale
 	 * @param amplitude brightness factor
+	 * @param kind index of its profile among the scene's (0: the type's)
 	 */
-	public record Particle(double x, double y, double scale, double amplitude) {}
+	public record Particle(double x, double y, double scale, double amplitude, int kind) {
 
-	/** Copies the list. */
+		/** A particle of the scene's type (kind 0). */
+		public Particle(final double x, final double y, final double scale, final double amplitude) {
+			this(x, y, scale, amplitude, 0);
+		}
+	}
+
+	/** Copies the lists; every particle's kind must have a profile. */
 	public Scene {
 		particles = List.copyOf(particles);
+		profiles = List.copyOf(profiles);
+		for (final Particle p : particles)
+			if (p.kind < 0 || p.kind >= profiles.size()) throw new IllegalArgumentException("particle of kind " + p.kind +
+				" but " + profiles.size() + " profiles");
+	}
+
+	/** A scene whose particles all have the type's profile. */
+	public Scene(final String key, final ParticleType type, final List<Particle> particles, final double rampX,
+		final double rampY, final double photonGain, final double readNoise, final double threshold)
+	{
+		this(key, type, particles, rampX, rampY, photonGain, readNoise, threshold, List.of(type.profile()));
+	}
+
+	/**
+	 * A scene of particles of unlike kinds at contact, each rendered with its own profile: {@code mixed}, a pair of
+	 * the first and the last kind, tilted as {@code unlike} is; {@code mixed7}, {@code hex7} with the first kind at
+	 * the centre and the ring going through the kinds in turn (second, ..., last, first, ...). The kinds share the
+	 * first one's diameter, pixel size, background and noise (a movie's kinds: the same particles in and out of
+	 * focus); r_out is the largest of theirs, the threshold the first one's.
+	 *
+	 * @param key one of {@link #MIXED_KEYS}
+	 * @param name the particles' name in reports
+	 * @param kinds at least two kinds
+	 * @return the scene at contact
+	 * @throws InvalidInputException for an unknown key
+	 */
+	public static Scene mixed(final String key, final String name, final List<ParticleType> kinds) {
+		if (kinds.size() < 2) throw new IllegalArgumentException("a mixed scene needs two kinds, not " + kinds.size());
+		final ParticleType first = kinds.get(0);
+		double rOut = 0;
+		final List<RadialProfile> profiles = new ArrayList<>();
+		for (final ParticleType k : kinds) {
+			rOut = Math.max(rOut, k.rOut());
+			profiles.add(k.profile());
+		}
+		final ParticleType type = new ParticleType(name, first.diameterMicrons(), first.pixelSizeNm(), first.profile(),
+			first.background(), first.threshold(), rOut, first.noise());
+		final double d = type.diameterPx();
+		final int last = kinds.size() - 1;
+		final List<Particle> ps = new ArrayList<>();
+		switch (key.trim().toLowerCase(Locale.ROOT)) {
+			case "mixed" -> {
+				for (final Particle p : unlike(d, 1, 1))
+					ps.add(new Particle(p.x, p.y, 1, 1, ps.isEmpty() ? 0 : last));
+			}
+			case "mixed7" -> {
+				final List<Particle> hex = hexagon(d);
+				for (int k = 0; k < hex.size(); k++)
+					ps.add(new Particle(hex.get(k).x, hex.get(k).y, 1, 1, k % kinds.size()));
+			}
+			default -> throw new InvalidInputException("a mixed scene must be among " + String.join(",", MIXED_KEYS) +
+				", not '" + key + "'");
+		}
+		return new Scene(key.trim().toLowerCase(Locale.ROOT), type, ps, 0, 0, 0, 0, type.threshold(), profiles);
 	}
 
 	/**
@@ -197,7 +264,10 @@ public record Scene(String key, ParticleType type, List<Particle> particles, dou
 	/** @return the frame size (px, square-ish: {width, height}) that holds every particle's visible reach */
 	public int[] frameSize() {
 		final double[] e = extent();
-		final double reach = Math.max(type.profile().reach(PaperParticles.REACH_LEVEL) * e[4], type.rOut());
+		double profileReach = 0;
+		for (final RadialProfile p : profiles)
+			profileReach = Math.max(profileReach, p.reach(PaperParticles.REACH_LEVEL));
+		final double reach = Math.max(profileReach * e[4], type.rOut());
 		final double border = reach + SimulatedStack.MARGIN_PX + 0.5;
 		return new int[] { (int) Math.ceil(e[1] - e[0] + 2 * border) + 1, (int) Math.ceil(e[3] - e[2] + 2 * border) +
 			1 };
@@ -228,13 +298,29 @@ public record Scene(String key, ParticleType type, List<Particle> particles, dou
 		return out;
 	}
 
+	/** @return a renderer of each of the {@link #profiles} */
+	public List<ImageSimulator> simulators() {
+		final List<ImageSimulator> sims = new ArrayList<>();
+		for (final RadialProfile p : profiles)
+			sims.add(new ImageSimulator(p));
+		return sims;
+	}
+
+	/** @return the kind of each particle ({@link Particle#kind()}), in order */
+	public int[] kinds() {
+		final int[] k = new int[particles.size()];
+		for (int i = 0; i < k.length; i++)
+			k[i] = particles.get(i).kind;
+		return k;
+	}
+
 	/**
 	 * The exact image of the scene with its particles at {@code centres}.
 	 *
-	 * @param simulator a renderer of the type's profile
+	 * @param simulators a renderer of each profile ({@link #simulators()})
 	 */
-	public NoiseFreeImage render(final ImageSimulator simulator, final List<double[]> centres, final int width,
-		final int height)
+	public NoiseFreeImage render(final List<ImageSimulator> simulators, final List<double[]> centres,
+		final int width, final int height)
 	{
 		final NoiseFreeImage img = NoiseFreeImage.uniform(width, height, 0);
 		final double[] px = img.pixels();
@@ -242,8 +328,8 @@ public record Scene(String key, ParticleType type, List<Particle> particles, dou
 			for (int x = 0; x < width; x++)
 				px[y * width + x] = background(x, y, width, height);
 		for (int k = 0; k < particles.size(); k++)
-			simulator.addParticle(img, centres.get(k)[0], centres.get(k)[1], particles.get(k).scale, particles.get(
-				k).amplitude);
+			simulators.get(particles.get(k).kind).addParticle(img, centres.get(k)[0], centres.get(k)[1], particles.get(
+				k).scale, particles.get(k).amplitude);
 		return img;
 	}
 
@@ -257,7 +343,7 @@ public record Scene(String key, ParticleType type, List<Particle> particles, dou
 		final int[] size = frameSize();
 		final int w = size[0], h = size[1];
 		final List<double[]> layout = layout();
-		final ImageSimulator simulator = new ImageSimulator(type.profile());
+		final List<ImageSimulator> simulator = simulators();
 		final SplittableRandom random = new SplittableRandom(seed);
 		final List<ArrayImg<?, ?>> frames = new ArrayList<>();
 		final List<List<double[]>> truth = new ArrayList<>();
