@@ -155,7 +155,6 @@ public record Scene(String key, ParticleType type, List<Particle> particles, dou
 			case "chain4" -> plain("chain4", type, line(4, d));
 			case "triple" -> plain("triple", type, triangle(d));
 			case "hex7" -> plain("hex7", type, hexagon(d));
-			// more than the fit joins (16): fitted member by member, as a dense field is
 			case "hex19" -> plain("hex19", type, hexPatch(d, 2));
 			case "unlike" -> plain("unlike", type, unlike(d, 1.2, 1.1));
 			case "unlike13" -> plain("unlike13", type, unlike(d, 1.3, 1.15));

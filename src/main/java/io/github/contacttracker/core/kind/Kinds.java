@@ -190,13 +190,27 @@ public final class Kinds implements Serializable {
 		return fits[1];
 	}
 
-	/** Whether every two components are clearly apart. */
+	/**
+	 * Whether every two components are clearly apart: well separated for their spreads, and unlike enough in size or
+	 * brightness to need profiles of their own ({@link #MIN_SIZE_RATIO}, {@link #MIN_BRIGHTNESS_RATIO}).
+	 */
 	private static boolean apart(final GaussianMixture m) {
 		for (int a = 0; a < m.k; a++)
 			for (int b = a + 1; b < m.k; b++)
-				if (m.separation(a, b) < MIN_SEPARATION) return false;
+				if (m.separation(a, b) < MIN_SEPARATION || Math.abs(m.mean[a][0] - m.mean[b][0]) < Math.log(
+					MIN_SIZE_RATIO) && Math.abs(m.mean[a][1] - m.mean[b][1]) < Math.log(MIN_BRIGHTNESS_RATIO)) return false;
 		return true;
 	}
+
+	/**
+	 * Kinds found automatically differ at least this much in core radius, or {@link #MIN_BRIGHTNESS_RATIO} in
+	 * brightness. Less is what a particle's surroundings do to its measured profile: in a simulated cluster of seven
+	 * alike particles the one surrounded on all sides became a kind of its own, and its profile, measured on
+	 * surrounded particles alone, never settled. The fit's free radial scale and amplitude cover such differences.
+	 */
+	public static final double MIN_SIZE_RATIO = 1.15;
+	/** See {@link #MIN_SIZE_RATIO}. */
+	public static final double MIN_BRIGHTNESS_RATIO = 1.3;
 
 	/** Numbers the components by size and describes each kind from its members in the sample. */
 	private static Kinds of(final GaussianMixture m, final List<KindFeatures> usable, final double[] x,

@@ -175,6 +175,14 @@ public final class StackTracker {
 			this.sampleResults = new ArrayList<>(flagged(round, settled));
 		}
 
+		/**
+		 * @return the profile of each kind of particle every frame is refined with, or {@code null} when each frame
+		 *         measures its own
+		 */
+		public KindProfiles profile() {
+			return profile;
+		}
+
 		/** @return the sample frames (0-based, ascending) */
 		public int[] sample() {
 			return sample.clone();
