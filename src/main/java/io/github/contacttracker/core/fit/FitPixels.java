@@ -199,12 +199,8 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 			}
 		final double[] light;
 		if (2 * changed > others) { // most have moved: drawn afresh, once each rather than taken out and drawn again
-			int x0 = Integer.MAX_VALUE, x1 = Integer.MIN_VALUE;
-			for (int i = 0; i < count; i++) {
-				if (x[i] < x0) x0 = x[i];
-				if (x[i] > x1) x1 = x[i];
-			}
-			light = otherLight(x, y, count, x0, x1, ps, e, group, profile);
+			final int[] xs = xRange();
+			light = otherLight(x, y, count, xs[0], xs[1], ps, e, group, profile);
 			for (int k = 0; k < ps.length; k++)
 				if (lit[k] != null) lit[k] = e[k];
 		}
@@ -236,12 +232,8 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 	Estimate[] litAt(final Particle[] ps, final Estimate[] e, final int[] group, final EmpiricalProfile[] profile) {
 		final Estimate[] lit = new Estimate[ps.length];
 		if (count == 0) return lit;
-		int x0 = Integer.MAX_VALUE, x1 = Integer.MIN_VALUE;
-		for (int i = 0; i < count; i++) {
-			if (x[i] < x0) x0 = x[i];
-			if (x[i] > x1) x1 = x[i];
-		}
-		final int y0 = y[0], y1 = y[count - 1];
+		final int[] xs = xRange();
+		final int x0 = xs[0], x1 = xs[1], y0 = y[0], y1 = y[count - 1];
 		for (int k = 0; k < ps.length; k++) {
 			if (!ps[k].reliable() || GroupFit.contains(group, k)) continue;
 			// those whose light can reach these pixels at all (as in otherLight; a neighbour may move into reach)
@@ -250,6 +242,16 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 				lit[k] = e[k];
 		}
 		return lit;
+	}
+
+	/** @return the least and greatest x of the pixels (the rows are in order: their y are the first's and last's) */
+	private int[] xRange() {
+		int x0 = Integer.MAX_VALUE, x1 = Integer.MIN_VALUE;
+		for (int i = 0; i < count; i++) {
+			if (x[i] < x0) x0 = x[i];
+			if (x[i] > x1) x1 = x[i];
+		}
+		return new int[] { x0, x1 };
 	}
 
 	/** How far (px) a neighbour out of reach of a member's pixels may move towards them and still be followed. */

@@ -90,9 +90,20 @@ public final class ProfileRefinement implements Refinement {
 		Estimate[] e = iterative.estimates();
 		if (ps.length == 0) return iterative;
 		// each particle's kind, among the movie's kinds or this frame's
-		final Kinds kinds = given != null ? given.kinds() : params.kinds() == 1 ? null : kindsOf(plane, ps, e,
-			params);
-		final int[] kind = KindProfiles.kindsOf(kinds, plane, ps, e, params.rOut());
+		final Kinds kinds;
+		final int[] kind;
+		if (given != null || params.kinds() == 1) {
+			kinds = given == null ? null : given.kinds();
+			kind = KindProfiles.kindsOf(kinds, plane, ps, e, params.rOut());
+		}
+		else { // this frame's own kinds: its particles measured once, to find the kinds and to place each
+			final KindFeatures[] f = KindFeatures.measure(plane, ps, e, params.rOut());
+			final List<KindFeatures> sample = new ArrayList<>();
+			for (int k = 0; k < ps.length; k++)
+				if (!Flag.DEGENERATE.isSet(ps[k].first().flags())) sample.add(f[k]); // merges too: a kind may be all merged
+			kinds = KindProfiles.tellApart(sample, params.kinds());
+			kind = KindProfiles.kindsOf(kinds, f);
+		}
 		// measured here: alternated with the centres until these stop moving (see the stack tracker)
 		// pixels near the clip levels, chosen by the model (see Censoring), at the frame's noise
 		final Censoring censoring = Censoring.of(plane, noise);
@@ -147,21 +158,6 @@ public final class ProfileRefinement implements Refinement {
 			e[k] = e[k].withFlags(e[k].flags() | Flag.NOT_CONVERGED.bit());
 		flagUnmodelledNeighbours(ps, e, params.rOut());
 		return new Outcome(e, iterative.discs(), kind);
-	}
-
-	/**
-	 * @return the kinds of particle on this frame alone ({@link TrackerParameters#kinds()}: found automatically or
-	 *         that many), or null for one kind
-	 */
-	private static Kinds kindsOf(final Plane plane, final Particle[] ps, final Estimate[] e,
-		final TrackerParameters params)
-	{
-		final List<KindFeatures> sample = new ArrayList<>();
-		final KindFeatures[] f = KindFeatures.measure(plane, ps, e, params.rOut());
-		for (int k = 0; k < ps.length; k++)
-			if (!Flag.DEGENERATE.isSet(ps[k].first().flags())) sample.add(f[k]); // merges too: a kind may be all merged
-		final Kinds kinds = Kinds.find(sample, params.kinds());
-		return kinds.count() < 2 ? null : kinds;
 	}
 
 	/**

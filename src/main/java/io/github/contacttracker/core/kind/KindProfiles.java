@@ -22,6 +22,7 @@
 package io.github.contacttracker.core.kind;
 
 import java.io.Serializable;
+import java.util.Collection;
 import java.util.List;
 
 import io.github.contacttracker.core.image.Plane;
@@ -112,24 +113,33 @@ public final class KindProfiles implements Serializable {
 	}
 
 	/**
-	 * Tells the kind of each particle of a frame, at its centre {@code estimates[k]}: 0 for all with one kind.
+	 * @param sample the particles of a few frames (every one but the degenerate: a kind may be all merges at a low
+	 *        threshold)
+	 * @param count kinds to find: 0 automatically, or that many
+	 * @return the kinds {@link Kinds#find(java.util.Collection, int)} finds, or null when they are fewer than two
+	 */
+	public static Kinds tellApart(final Collection<KindFeatures> sample, final int count) {
+		final Kinds kinds = Kinds.find(sample, count);
+		return kinds.count() < 2 ? null : kinds;
+	}
+
+	/**
+	 * Tells the kind of each particle of a frame, at its centre {@code estimates[k]}, among {@code kinds} (null: one
+	 * kind, all 0, nothing measured).
 	 *
 	 * @param reach the outermost radius of the particles' profiles read (px): {@code r_out}
 	 */
-	public int[] kindsOf(final Plane plane, final Particle[] particles, final Estimate[] estimates,
-		final double reach)
-	{
-		return kindsOf(kinds, plane, particles, estimates, reach);
-	}
-
-	/** As {@link #kindsOf(Plane, Particle[], Estimate[], double)} with the given kinds (null: one kind, all 0). */
 	public static int[] kindsOf(final Kinds kinds, final Plane plane, final Particle[] particles,
 		final Estimate[] estimates, final double reach)
 	{
-		final int[] out = new int[particles.length];
-		if (kinds == null || kinds.count() < 2) return out;
-		final KindFeatures[] f = KindFeatures.measure(plane, particles, estimates, reach);
-		for (int k = 0; k < out.length; k++)
+		return kinds == null ? new int[particles.length] : kindsOf(kinds, KindFeatures.measure(plane, particles,
+			estimates, reach));
+	}
+
+	/** @return the kind of each particle of features {@code f} among {@code kinds} (null: one kind, all 0) */
+	public static int[] kindsOf(final Kinds kinds, final KindFeatures[] f) {
+		final int[] out = new int[f.length];
+		if (kinds != null && kinds.count() >= 2) for (int k = 0; k < out.length; k++)
 			out[k] = kinds.kindOf(f[k]);
 		return out;
 	}

@@ -67,7 +67,7 @@ public final class ProfileEstimator {
 	private final double[] atb;
 	private int samples;
 	private int profileSamples;
-	/** Per kind, the pixel values added within reach of a particle of that kind. */
+	/** Per kind (with more than one), the pixel values added within reach of a particle of that kind. */
 	private final int[] kindSamples;
 
 	/** @param radius the profile's reach (px): use {@code r_out} */
@@ -318,10 +318,7 @@ public final class ProfileEstimator {
 					}
 				}
 				samples++;
-				if (len > 3) {
-					profileSamples++;
-					if (kinds == 1) kindSamples[0]++;
-				}
+				if (len > 3) profileSamples++;
 			}
 		}
 	}
@@ -422,7 +419,8 @@ public final class ProfileEstimator {
 		if (x == null || samples < 4 * (count + 1) || profileSamples < 4 * count)
 			throw new IllegalStateException("too few pixels (" + samples + ", " + profileSamples + " within reach of a " +
 				"usable particle) to estimate the particles' profile");
-		for (int c = 0; c < kinds; c++)
+		// (one kind: its pixels are those within reach of a particle, checked above)
+		if (kinds > 1) for (int c = 0; c < kinds; c++)
 			if (kindSamples[c] < 4 * count) throw new IllegalStateException("too few pixels (" + kindSamples[c] +
 				") within reach of a usable particle of kind " + (c + 1) + " to estimate its profile");
 		final EmpiricalProfile[] out = new EmpiricalProfile[kinds];

@@ -252,8 +252,21 @@ public final class StackTracker {
 		progress.total -= sample.length - chosen.length; // the first round's frames
 		sample = chosen;
 		// the kinds of particle, told apart on the same frames; the profile of each is measured on its particles
-		final Kinds kinds = params.kinds() == 1 ? null : kinds(iterative, sample, frame, params);
-		if (kinds != null) iterative = withKinds(iterative, sample, frame, kinds, params.rOut());
+		Kinds kinds = null;
+		if (params.kinds() != 1) {
+			// each frame read and its spots measured once, to find the kinds and to place each spot
+			final List<KindFeatures[]> features = new ArrayList<>(sample.length);
+			final List<KindFeatures> found = new ArrayList<>();
+			for (int i = 0; i < sample.length; i++) {
+				final List<Localization> spots = iterative.get(i).spots();
+				final KindFeatures[] f = features(Plane.of(frame.apply(sample[i])), spots, params.rOut());
+				features.add(f);
+				for (int k = 0; k < f.length; k++) // merges too: a kind may be all merges at a low threshold
+					if (!spots.get(k).has(Flag.DEGENERATE)) found.add(f[k]);
+			}
+			kinds = KindProfiles.tellApart(found, params.kinds());
+			if (kinds != null) iterative = withKinds(iterative, features, kinds);
+		}
 		// The profile is measured around estimated centres, and in a configuration that never changes (every frame
 		// the same cluster) it absorbs part of their error; so profile and centres are alternated on the sample
 		// frames until the centres stop moving (the joint least-squares fixed point, to a tenth of the centres' errors).
@@ -460,25 +473,6 @@ public final class StackTracker {
 		return at;
 	}
 
-	/**
-	 * @return the kinds of particle on frames {@code indices} (their results in the same order; every spot but the
-	 *         degenerate ones: a kind may be all merges at a low threshold), {@link TrackerParameters#kinds()} found
-	 *         automatically or that many; null for one kind
-	 */
-	private static <T extends RealType<T>> Kinds kinds(final List<FrameResult> results, final int[] indices,
-		final IntFunction<? extends RandomAccessibleInterval<T>> frame, final TrackerParameters params)
-	{
-		final List<KindFeatures> sample = new ArrayList<>();
-		for (int i = 0; i < indices.length; i++) {
-			final List<Localization> spots = results.get(i).spots();
-			final KindFeatures[] f = features(Plane.of(frame.apply(indices[i])), spots, params.rOut());
-			for (int k = 0; k < f.length; k++)
-				if (!spots.get(k).has(Flag.DEGENERATE)) sample.add(f[k]);
-		}
-		final Kinds kinds = Kinds.find(sample, params.kinds());
-		return kinds.count() < 2 ? null : kinds;
-	}
-
 	/** @return the spots' features, measured at their centres (frame coordinates) */
 	private static KindFeatures[] features(final Plane plane, final List<Localization> spots, final double rOut) {
 		final double background = KindFeatures.background(plane);
@@ -491,18 +485,17 @@ public final class StackTracker {
 		return f;
 	}
 
-	/** @return the results, each spot labelled with its kind */
-	private static <T extends RealType<T>> List<FrameResult> withKinds(final List<FrameResult> results,
-		final int[] indices, final IntFunction<? extends RandomAccessibleInterval<T>> frame, final Kinds kinds,
-		final double rOut)
+	/** @return the results, each spot labelled with its kind ({@code features}: the spots', frame by frame) */
+	private static List<FrameResult> withKinds(final List<FrameResult> results, final List<KindFeatures[]> features,
+		final Kinds kinds)
 	{
 		final List<FrameResult> out = new ArrayList<>(results.size());
-		for (int i = 0; i < indices.length; i++) {
+		for (int i = 0; i < results.size(); i++) {
 			final List<Localization> spots = results.get(i).spots();
-			final KindFeatures[] f = features(Plane.of(frame.apply(indices[i])), spots, rOut);
+			final int[] kind = KindProfiles.kindsOf(kinds, features.get(i));
 			final List<Localization> labelled = new ArrayList<>(spots.size());
-			for (int k = 0; k < f.length; k++)
-				labelled.add(spots.get(k).withKind(kinds.kindOf(f[k])));
+			for (int k = 0; k < kind.length; k++)
+				labelled.add(spots.get(k).withKind(kind[k]));
 			out.add(results.get(i).withSpots(labelled));
 		}
 		return out;
