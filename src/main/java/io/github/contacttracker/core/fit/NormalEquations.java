@@ -32,6 +32,7 @@ import io.github.contacttracker.core.profile.EmpiricalProfile;
  */
 final class NormalEquations {
 
+
 	private NormalEquations() {}
 
 	/**
@@ -50,6 +51,7 @@ final class NormalEquations {
 	static double accumulate(final FitPixels px, final double[] p, final int n, final EmpiricalProfile[] profile,
 		final double[][] jtj, final double[] jtr, final double[] noise, final double[] models)
 	{
+		if (n == 1) return accumulateOne(px, p, profile[0], jtj, jtr, noise, models);
 		final int np = GroupFit.PER_PARTICLE * n + GroupFit.BACKGROUND, b0 = np - GroupFit.BACKGROUND;
 		// each member's profile (its kind's): the tables, and its reach
 		final double[][] tvs = new double[n][], tds = new double[n][];
@@ -131,6 +133,116 @@ final class NormalEquations {
 					crossBlock(h, np, ba, within[mb], g0, g1, g2, g3, g[e], g[e + 1], g[e + 2], g[e + 3]);
 				}
 			}
+		}
+		return finish(px, np, h, jtj, jtr, r0, ru, rv, rss);
+	}
+
+	/**
+	 * {@link #accumulate} for a group of one, with the same sums in the same order (the same results to the last bit):
+	 * J^T J's member block and its rows against the background plane, J^T r and the residuals' sums in local variables.
+	 */
+	private static double accumulateOne(final FitPixels px, final double[] p, final EmpiricalProfile profile,
+		final double[][] jtj, final double[] jtr, final double[] noise, final double[] models)
+	{
+		final int np = GroupFit.PER_PARTICLE + GroupFit.BACKGROUND, b0 = GroupFit.PER_PARTICLE;
+		final double[] tv = profile.valueTable(), td = profile.derivativeTable();
+		final double R = profile.radius(), perStep = 1 / EmpiricalProfile.TABLE_STEP;
+		final int[] xs = px.x(), ys = px.y();
+		final double[] us = px.u(), vs = px.v(), values = px.value(), fixed = px.fixed();
+		final int count = px.count();
+		final double cx = p[0], cy = p[1], a = p[2], sc = p[3], pb = p[b0], pu = p[b0 + 1], pv = p[b0 + 2];
+		final double reach2 = R * sc * (R * sc), perScale = 1 / sc;
+		double rss = 0, r0 = 0, ru = 0, rv = 0, j0 = 0, j1 = 0, j2 = 0, j3 = 0;
+		double n0 = 0, n1 = 0, n2 = 0, n3 = 0;
+		// the member's block (lower triangle) and its rows against the plane's 1, u, v
+		double h00 = 0, h10 = 0, h11 = 0, h20 = 0, h21 = 0, h22 = 0, h30 = 0, h31 = 0, h32 = 0, h33 = 0;
+		double c0 = 0, c1 = 0, c2 = 0, c3 = 0, cu0 = 0, cu1 = 0, cu2 = 0, cu3 = 0, cv0 = 0, cv1 = 0, cv2 = 0, cv3 = 0;
+		final boolean hessian = jtj != null, weights = noise != null;
+		for (int i = 0; i < count; i++) {
+			final double u = us[i], v = vs[i];
+			double model = pb + pu * u + pv * v + fixed[i];
+			final double dx = xs[i] - cx, dy = ys[i] - cy, r2 = dx * dx + dy * dy;
+			boolean within = false;
+			double g0 = 0, g1 = 0, g2 = 0, g3 = 0;
+			if (r2 < reach2) {
+				final double r = Math.sqrt(r2), rs = r * perScale;
+				if (rs < R) {
+					final double t = rs * perStep;
+					final int k = (int) t;
+					final double f = t - k;
+					final double val = tv[k] + f * (tv[k + 1] - tv[k]);
+					final double d = a * (td[k] + f * (td[k + 1] - td[k])) * perScale;
+					model += a * val;
+					final double radial = r > 1e-12 ? -d / r : 0;
+					g0 = radial * dx;
+					g1 = radial * dy;
+					g2 = val;
+					g3 = -d * rs;
+					within = true;
+				}
+			}
+			if (models != null) models[i] = model;
+			final double res = values[i] - model;
+			rss += res * res;
+			r0 += res;
+			ru += res * u;
+			rv += res * v;
+			if (!within) continue;
+			j0 += g0 * res;
+			j1 += g1 * res;
+			j2 += g2 * res;
+			j3 += g3 * res;
+			if (weights) {
+				final double rr = res * res, wx = g0 * g0, wy = g1 * g1;
+				n0 += wx;
+				n1 += wx * rr;
+				n2 += wy;
+				n3 += wy * rr;
+			}
+			if (!hessian) continue;
+			h00 += g0 * g0;
+			h10 += g1 * g0;
+			h11 += g1 * g1;
+			h20 += g2 * g0;
+			h21 += g2 * g1;
+			h22 += g2 * g2;
+			h30 += g3 * g0;
+			h31 += g3 * g1;
+			h32 += g3 * g2;
+			h33 += g3 * g3;
+			c0 += g0;
+			c1 += g1;
+			c2 += g2;
+			c3 += g3;
+			cu0 += u * g0;
+			cu1 += u * g1;
+			cu2 += u * g2;
+			cu3 += u * g3;
+			cv0 += v * g0;
+			cv1 += v * g1;
+			cv2 += v * g2;
+			cv3 += v * g3;
+		}
+		jtr[0] = j0;
+		jtr[1] = j1;
+		jtr[2] = j2;
+		jtr[3] = j3;
+		if (weights) {
+			noise[0] += n0;
+			noise[1] += n1;
+			noise[2] += n2;
+			noise[3] += n3;
+		}
+		double[] h = null;
+		if (hessian) { // laid out as accumulate's flat lower triangle
+			h = new double[np * np];
+			final double[] own = { h00, h10, h11, h20, h21, h22, h30, h31, h32, h33 };
+			for (int r = 0, o = 0; r < GroupFit.PER_PARTICLE; r++)
+				for (int c = 0; c <= r; c++)
+					h[r * np + c] = own[o++];
+			final double[][] plane = { { c0, c1, c2, c3 }, { cu0, cu1, cu2, cu3 }, { cv0, cv1, cv2, cv3 } };
+			for (int r = 0; r < GroupFit.BACKGROUND; r++)
+				System.arraycopy(plane[r], 0, h, (b0 + r) * np, GroupFit.PER_PARTICLE);
 		}
 		return finish(px, np, h, jtj, jtr, r0, ru, rv, rss);
 	}

@@ -132,8 +132,15 @@ public final class KindProfiles implements Serializable {
 	public static int[] kindsOf(final Kinds kinds, final Plane plane, final Particle[] particles,
 		final Estimate[] estimates, final double reach)
 	{
-		return kinds == null ? new int[particles.length] : kindsOf(kinds, KindFeatures.measure(plane, particles,
-			estimates, reach));
+		if (kinds == null) return new int[particles.length];
+		if (particles.length != estimates.length)
+			throw new IllegalArgumentException(particles.length + " particles but " + estimates.length + " estimates");
+		final double background = KindFeatures.background(plane);
+		final KindFeatures[] f = new KindFeatures[particles.length];
+		for (int k = 0; k < f.length; k++) // only what places them: the core (see measureCore)
+			f[k] = KindFeatures.measureCore(plane, estimates[k].x(), estimates[k].y(), particles[k].region().area(),
+				background, reach);
+		return kindsOf(kinds, f);
 	}
 
 	/** @return the kind of each particle of features {@code f} among {@code kinds} (null: one kind, all 0) */

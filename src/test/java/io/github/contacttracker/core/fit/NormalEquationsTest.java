@@ -134,6 +134,37 @@ class NormalEquationsTest {
 	}
 
 	/**
+	 * The pass of a group of one ({@code accumulateOne}) gives what the pass of every group size gives for the same
+	 * member to the last bit: the member's sums taken out of a group of two whose other member lies out of reach of
+	 * every pixel (its terms are never added), the noise weights and the models included.
+	 */
+	@Test
+	void oneMembersOwnPassIsTheGeneralOne() {
+		final EmpiricalProfile profile = ringed();
+		final FitPixels px = pixels(profile, 34.3, 31.8);
+		final double[] one = { 34.1, 32.0, 1.05, 0.98, 39, 0.4, -0.2 };
+		final double[] two = { 34.1, 32.0, 1.05, 0.98, 500, 500, 1, 1, 39, 0.4, -0.2 };
+		final double[][] jtj1 = new double[7][7], jtj2 = new double[11][11];
+		final double[] jtr1 = new double[7], jtr2 = new double[11], noise1 = new double[4], noise2 = new double[8];
+		final double[] models1 = new double[px.count()], models2 = new double[px.count()];
+		final double rss1 = NormalEquations.accumulate(px, one, 1, new EmpiricalProfile[] { profile }, jtj1, jtr1,
+			noise1, models1);
+		final double rss2 = NormalEquations.accumulate(px, two, 2, new EmpiricalProfile[] { profile, profile }, jtj2,
+			jtr2, noise2, models2);
+		assertEquals(rss2, rss1, 0);
+		assertArrayEquals(models2, models1, 0);
+		assertArrayEquals(java.util.Arrays.copyOf(noise2, 4), noise1, 0);
+		// parameter a of the group of one is parameter at[a] of the group of two
+		final int[] at = { 0, 1, 2, 3, 8, 9, 10 };
+		for (int a = 0; a < 7; a++) {
+			assertEquals(jtr2[at[a]], jtr1[a], 0, "J^T r, parameter " + a);
+			for (int b = 0; b < 7; b++)
+				assertEquals(jtj2[at[a]][at[b]], jtj1[a][b], 0, "J^T J, " + a + ", " + b);
+		}
+		assertTrue(jtj1[0][0] > 0 && noise1[1] > 0, "the member's terms were added");
+	}
+
+	/**
 	 * Two members of unlike kinds (profiles), near enough for shared pixels and far enough for pixels out of one
 	 * member's reach (the profiles reach 30 px).
 	 */

@@ -242,6 +242,47 @@ class KindsTest {
 				2, "radius " + r);
 	}
 
+	/**
+	 * What places a particle among kinds, measured out to the core alone ({@link KindFeatures#measureCore}), is what
+	 * the whole profile gives: the same core radius and central contrast to the last bit, hence the same kind, for
+	 * particles of three sizes in a noisy dense field, at its borders too, whatever active area is given (none, too
+	 * small to hold the core at first, or large).
+	 */
+	@Test
+	void theCoreAloneGivesTheWholeProfilesKind() {
+		final List<Found> frames = simulate(new double[] { 0.8, 1, 1.4 }, new double[] { 1, 1.1, 1.2 }, 0.05, 23);
+		final Kinds kinds = Kinds.find(sample(frames));
+		assertEquals(3, kinds.count());
+		final SplittableRandom random = new SplittableRandom(5);
+		final ImageSimulator simulator = new ImageSimulator(PROFILE);
+		final NoiseFreeImage image = NoiseFreeImage.uniform(SIZE, SIZE, BACKGROUND);
+		final List<double[]> centres = new ArrayList<>();
+		for (final Truth p : layout(new double[] { 0.8, 1, 1.4 }, random)) {
+			final double scale = new double[] { 0.8, 1, 1.4 }[p.kind() - 1];
+			simulator.addParticle(image, p.x(), p.y(), scale, 1);
+			centres.add(new double[] { p.x() + 0.3 * gaussian(random), p.y() + 0.3 * gaussian(random) });
+		}
+		for (final double[] edge : new double[][] { { 2.5, 150 }, { 0.2, 0.4 }, { SIZE - 1.5, 200 }, { 100, SIZE - 4 } }) {
+			simulator.addParticle(image, edge[0], edge[1], 1.4, 1);
+			centres.add(edge);
+		}
+		final Plane plane = Plane.of(Quantiser.toUnsignedBytes(image, NoiseModel.uniform(NOISE), random).image());
+		final double background = KindFeatures.background(plane);
+		int usable = 0;
+		for (final double[] c : centres)
+			for (final int area : new int[] { 0, 3, 81, 400 }) {
+				final KindFeatures whole = KindFeatures.measure(plane, c[0], c[1], area, background, REACH);
+				final KindFeatures core = KindFeatures.measureCore(plane, c[0], c[1], area, background, REACH);
+				final String at = "at " + c[0] + ", " + c[1] + ", area " + area;
+				assertEquals(whole.coreRadius(), core.coreRadius(), 0, at);
+				assertEquals(whole.peak(), core.peak(), 0, at);
+				assertEquals(whole.activeRadius(), core.activeRadius(), 0, at);
+				assertEquals(kinds.kindOf(whole), kinds.kindOf(core), at);
+				if (whole.usable()) usable++;
+			}
+		assertTrue(usable > 0.9 * 4 * centres.size(), "most have a core: " + usable);
+	}
+
 	/** Where the profile first falls to half its value at the centre. */
 	private static double halfRadius(final RadialProfile p) {
 		double lo = 0, hi = 20;
