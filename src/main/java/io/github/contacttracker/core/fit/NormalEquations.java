@@ -26,12 +26,12 @@ import io.github.contacttracker.core.profile.EmpiricalProfile;
 /**
  * The passes of {@link GroupFit}'s least squares over a group's pixels ({@link FitPixels}): J^T J, J^T r and the
  * residuals at given parameters, in the layout per member x, y, amplitude, scale, then the background plane. One
- * pass for every group size: specialised copies for groups of one and two (the fit's commonest groups) saved 5% of
- * {@code track}'s time on the paper authors' real movie and 6% on the bench stack (measured side by side with the
- * same CSVs), too little for three copies of the model to keep in step.
+ * pass for every group size, and one for groups of one ({@link #accumulateOne}, its sums in local variables, bit for
+ * bit the same): large groups are fitted member by member, so on dense footage groups of one are most of the work,
+ * and their own pass took 10% off {@code track}'s time on a 300-frame stack of the paper authors' real movie
+ * (measured side by side, identical CSVs). (A copy for groups of two saved too little to keep in step.)
  */
 final class NormalEquations {
-
 
 	private NormalEquations() {}
 
