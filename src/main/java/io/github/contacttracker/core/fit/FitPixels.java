@@ -89,6 +89,11 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 		return new double[] { count, su, sv, su, suu, suv, sv, suv, svv, u0, u1, v0, v1, f0, f1 };
 	}
 
+	/** @return these pixels as candidates in their own right, numbered from 0 (a subset kept for good) */
+	FitPixels asCandidates() {
+		return candidates == null ? this : new FitPixels(x, y, value, fixed, count, u, v, backgroundBlock, extent, null);
+	}
+
 	/** @return the pixels marked in {@code keep}, in the same order (these pixels if all are) */
 	FitPixels subset(final boolean[] keep) {
 		int m = 0;

@@ -134,9 +134,9 @@ public final class GroupFit {
 	 * centre ({@link EmpiricalProfile#informationRadius}), which in a dense field lie well within r_out, chosen in
 	 * the first sweep and kept ({@link Kept}), to its own tolerance (in the first sweep, whose neighbours all move
 	 * after it, that of its first J^T J: the centre's own error is not known before) and for at most
-	 * {@value #ITERATIONS_PER_SWEEP} iterations a sweep; it is fitted again only while it or a neighbour within reach
-	 * still moves. The sweeps stop
-	 * when no member moves more than {@link #settled its tolerance}, at most {@code maxSweeps} ({@value #MAX_SWEEPS});
+	 * {@value #ITERATIONS_PER_SWEEP} iterations a sweep; it is fitted again only while it, or a neighbour whose window
+	 * overlaps its own, still moves. The sweeps stop when no member moves more than {@link #settled its tolerance}, at
+	 * most {@code maxSweeps} ({@value #MAX_SWEEPS});
 	 * a member still moving then is flagged {@code NOT_CONVERGED}, one that cannot be fitted or slides off its
 	 * particle {@code FELL_BACK}. The cost is linear in the group's size and bounded. A member's standard errors are
 	 * those of its own fit, without its covariance with the neighbours. (Compact blocks of up to 16 members fitted
@@ -311,7 +311,7 @@ public final class GroupFit {
 		if (frozen) {
 			pixels = candidates.subset(use);
 			if (pixels != candidates) { // kept from now on: only the pixels chosen are lit again and passed over
-				kept.candidates = pixels;
+				kept.candidates = pixels = pixels.asCandidates();
 				kept.use = new boolean[pixels.count()];
 				java.util.Arrays.fill(kept.use, true);
 			}
@@ -360,8 +360,9 @@ public final class GroupFit {
 		double[] noise = null;
 		// the model on the pixels at the latest point accepted by a residual pass, for the re-choice of the pixels
 		Evaluated evaluated = null;
-		// the latest accepted step's largest centre move (px)
+		// the latest accepted step's largest centre move (px), and the steps accepted since J^T J was computed
 		double lastMove = Double.POSITIVE_INFINITY;
+		int sinceHessian = 0;
 		for (; it <= budget.iterations(); it++) {
 			final double[][] a = new double[np][np];
 			for (int i = 0; i < np; i++) {
@@ -387,7 +388,7 @@ public final class GroupFit {
 				// clips, the pixels are chosen again at the settled model, and if the choice changed the fit goes on.
 				System.arraycopy(trial, 0, p, 0, np);
 				// chosen at the point of the latest residual pass, whose model is known on the pixels in use (the
-				// settled point is within TOLERANCE of it)
+				// settled point is within the tolerance of it)
 				if (use != null && selections < budget.selections() && (evaluated == null ? FitPixels.select(candidates, p, n,
 					members, censoring, use, null, null) : FitPixels.select(candidates, evaluated.p(), n, members, censoring,
 						use, evaluated.pixels(), evaluated.models()))) {
@@ -397,24 +398,32 @@ public final class GroupFit {
 					pixels = chosen;
 					rss = NormalEquations.accumulate(pixels, p, n, members, jtj, jtr, null, null);
 					hessianAtP = true;
+					sinceHessian = 0;
 					noise = null;
 					evaluated = null;
 					mu = 1e-3;
 					continue;
 				}
 				converged = true;
+				// the uncertainties want J^T J near the solution: after a run of chord steps it is that of a point
+				// several steps back, so it is computed once more here (with the residuals' variances)
+				if (sinceHessian > 1) {
+					noise = new double[PER_PARTICLE * n];
+					rss = NormalEquations.accumulate(pixels, p, n, members, jtj, jtr, noise, null);
+				}
 				break;
 			}
 			if (!hessianAtP && !(allowed && move <= CHORD_CONTRACTION * lastMove)) {
 				// a chord step that does not shrink fast: J^T J at p, and the step again from it
 				rss = NormalEquations.accumulate(pixels, p, n, members, jtj, jtr, null, null);
 				hessianAtP = true;
+				sinceHessian = 0;
 				noise = null;
 				evaluated = null;
 				continue;
 			}
 			final double[] tr = new double[np], trialNoise = new double[PER_PARTICLE * n];
-			final double[] trialModels = use != null ? new double[pixels.count()] : null;
+			final double[] trialModels = use != null && !frozen ? new double[pixels.count()] : null;
 			final double trialRss = allowed ? NormalEquations.accumulate(pixels, trial, n, members, null, tr, trialNoise,
 				trialModels) : Double.POSITIVE_INFINITY;
 			if (trialRss <= rss) {
@@ -426,10 +435,12 @@ public final class GroupFit {
 				rss = trialRss;
 				mu = Math.max(mu / 10, 1e-9);
 				lastMove = move;
+				sinceHessian++;
 			}
 			else if (!hessianAtP) { // the chord step failed: J^T J at p, and the step again from it
 				rss = NormalEquations.accumulate(pixels, p, n, members, jtj, jtr, null, null);
 				hessianAtP = true;
+				sinceHessian = 0;
 				noise = null;
 				evaluated = null;
 			}
@@ -448,12 +459,6 @@ public final class GroupFit {
 		}
 		return converged ? it : -it;
 	}
-
-	/**
-	 * A budget's tolerance that stands for {@link #settled a tenth of the fitted centres' own standard errors}, as
-	 * the first J^T J and residuals give them (one noise variance for all pixels).
-	 */
-	static final double OWN_ERROR = Double.NaN;
 
 	/** @return the move below which the centres of a fit whose first J^T J and residuals are these have settled */
 	private static double ownTolerance(final double[][] jtj, final double rss, final int pixels, final int n) {
@@ -489,16 +494,22 @@ public final class GroupFit {
 	static final int MAX_SELECTIONS = 5;
 
 	/**
-	 * What a fit may spend: iterations, the step (px) below which it has converged, and how many times it may choose
-	 * its pixels where the pixel type clips.
+	 * What a fit may spend: iterations, the step (px) below which it has converged ({@link #OWN_ERROR}: a tenth of
+	 * the centres' own errors), and how many times it may choose its pixels where the pixel type clips.
 	 */
 	record Budget(int iterations, double tolerance, int selections) {}
 
 	/**
-	 * A joint fit's budget. A member fitted in turn gets {@value #ITERATIONS_PER_SWEEP} iterations, its own
-	 * {@link #settled tolerance} and one choice of pixels per sweep: the sweeps are its outer iterations, and each
-	 * chooses the pixels afresh at the neighbours' latest light (on the paper authors' real movie a member's fit
-	 * otherwise chose its pixels twice and took 11 iterations on average, to a precision the next sweep undid).
+	 * A budget's tolerance that stands for {@link #settled a tenth of the fitted centres' own standard errors}, as
+	 * the first J^T J and residuals give them (one noise variance for all pixels).
+	 */
+	static final double OWN_ERROR = Double.NaN;
+
+	/**
+	 * A joint fit's budget. A member fitted in turn gets {@value #ITERATIONS_PER_SWEEP} iterations a sweep (the
+	 * sweeps are its outer iterations), in the first sweep the tolerance of its own error ({@link #OWN_ERROR}) and up
+	 * to {@value #MAX_SELECTIONS} choices of pixels, which it then keeps ({@link Kept}); in the later sweeps the
+	 * tolerance of its latest error ({@link #settled}).
 	 */
 	static final Budget JOINT = new Budget(MAX_ITERATIONS, TOLERANCE, MAX_SELECTIONS);
 }

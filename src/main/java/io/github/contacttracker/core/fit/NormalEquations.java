@@ -153,11 +153,13 @@ final class NormalEquations {
 		final double cx = p[0], cy = p[1], a = p[2], sc = p[3], pb = p[b0], pu = p[b0 + 1], pv = p[b0 + 2];
 		final double reach2 = R * sc * (R * sc), perScale = 1 / sc;
 		double rss = 0, r0 = 0, ru = 0, rv = 0, j0 = 0, j1 = 0, j2 = 0, j3 = 0;
-		double n0 = 0, n1 = 0, n2 = 0, n3 = 0;
+		final boolean weights = noise != null;
+		double n0 = weights ? noise[0] : 0, n1 = weights ? noise[1] : 0, n2 = weights ? noise[2] : 0, n3 = weights ?
+			noise[3] : 0;
 		// the member's block (lower triangle) and its rows against the plane's 1, u, v
 		double h00 = 0, h10 = 0, h11 = 0, h20 = 0, h21 = 0, h22 = 0, h30 = 0, h31 = 0, h32 = 0, h33 = 0;
 		double c0 = 0, c1 = 0, c2 = 0, c3 = 0, cu0 = 0, cu1 = 0, cu2 = 0, cu3 = 0, cv0 = 0, cv1 = 0, cv2 = 0, cv3 = 0;
-		final boolean hessian = jtj != null, weights = noise != null;
+		final boolean hessian = jtj != null;
 		for (int i = 0; i < count; i++) {
 			final double u = us[i], v = vs[i];
 			double model = pb + pu * u + pv * v + fixed[i];
@@ -228,10 +230,10 @@ final class NormalEquations {
 		jtr[2] = j2;
 		jtr[3] = j3;
 		if (weights) {
-			noise[0] += n0;
-			noise[1] += n1;
-			noise[2] += n2;
-			noise[3] += n3;
+			noise[0] = n0;
+			noise[1] = n1;
+			noise[2] = n2;
+			noise[3] = n3;
 		}
 		double[] h = null;
 		if (hessian) { // laid out as accumulate's flat lower triangle

@@ -91,13 +91,23 @@ public record KindFeatures(double coreRadius, double peak, double ringDepth, dou
 	public static KindFeatures[] measure(final Plane plane, final Particle[] particles, final Estimate[] estimates,
 		final double reach)
 	{
+		return measure(plane, particles, estimates, reach, false);
+	}
+
+	/** The particles measured wholly, or only for their kind ({@code coreOnly}), with the frame's background. */
+	private static KindFeatures[] measure(final Plane plane, final Particle[] particles, final Estimate[] estimates,
+		final double reach, final boolean coreOnly)
+	{
 		if (particles.length != estimates.length)
 			throw new IllegalArgumentException(particles.length + " particles but " + estimates.length + " estimates");
 		final double background = background(plane);
 		final KindFeatures[] out = new KindFeatures[particles.length];
-		for (int k = 0; k < out.length; k++)
-			out[k] = measure(plane, estimates[k].x(), estimates[k].y(), particles[k].region().area(), background,
-				reach);
+		for (int k = 0; k < out.length; k++) {
+			final double x = estimates[k].x(), y = estimates[k].y();
+			final int area = particles[k].region().area();
+			out[k] = coreOnly ? measureCore(plane, x, y, area, background, reach) : measure(plane, x, y, area,
+				background, reach);
+		}
 		return out;
 	}
 
@@ -136,6 +146,16 @@ public record KindFeatures(double coreRadius, double peak, double ringDepth, dou
 	}
 
 	/**
+	 * {@link #measureCore(Plane, double, double, int, double, double)} for the particles of a frame at centres
+	 * {@code estimates}, with the frame's {@link #background(Plane)}: what places them among known kinds.
+	 */
+	public static KindFeatures[] measureCore(final Plane plane, final Particle[] particles,
+		final Estimate[] estimates, final double reach)
+	{
+		return measure(plane, particles, estimates, reach, true);
+	}
+
+	/**
 	 * Measures what places a particle among known kinds ({@link Kinds#kindOf}): its {@link #coreRadius()} and
 	 * {@link #peak()}, exactly as {@link #measure(Plane, double, double, int, double, double)} finds them, from the
 	 * rings out to the core's edge only (a tenth of the pixels out to {@code r_out} on the authors' movie, whose
@@ -149,14 +169,14 @@ public record KindFeatures(double coreRadius, double peak, double ringDepth, dou
 		// twice the active radius holds the core of most particles; failing that, twice as far, up to the reach
 		double r = Math.min(reach, Double.isNaN(activeRadius) ? reach : Math.max(CORE_REACH, 2 * activeRadius + 2));
 		while (true) {
+			// (every ring of it is read whole, as out to the reach: a pixel outside the box read, of whole pixels
+			// from floor(x - r) to ceil(x + r), lies r + 1 or more from the centre, beyond the last ring's reach)
 			final double[] profile = profile(plane, x, y, background, r);
-			// the rings that lie whole within the pixels read (as they do in a measurement out to the reach)
-			final int whole = r >= reach ? profile.length : Math.min(profile.length, (int) Math.floor(r - 0.5) + 1);
 			final double peak = profile.length > 0 ? profile[0] : Double.NaN;
-			final int k = peak > 0 ? coreEnd(profile, whole, peak) : -1;
-			if (k != 0 || r >= reach) {
+			final int k = peak > 0 ? coreEnd(profile, profile.length, peak) : -1;
+			if (k != 0 || !(r < reach)) {
 				final double core = k > 0 ? coreRadius(profile, k, peak) : Double.NaN;
-				return new KindFeatures(core, peak, 0, Double.NaN, activeRadius, Arrays.copyOf(profile, whole));
+				return new KindFeatures(core, peak, 0, Double.NaN, activeRadius, profile);
 			}
 			r = Math.min(reach, 2 * r);
 		}
@@ -182,7 +202,10 @@ public record KindFeatures(double coreRadius, double peak, double ringDepth, dou
 		return 0;
 	}
 
-	/** @return the core's radius: where the profile falls to half the peak, linear between ring {@code k} and the last ring before it with a value */
+	/**
+	 * @return the core's radius: where the profile falls to half the peak, linear between ring {@code k} and the
+	 *         last ring before it with a value
+	 */
 	private static double coreRadius(final double[] profile, final int k, final double peak) {
 		final int inner = k >= 2 && Double.isNaN(profile[k - 1]) ? k - 2 : k - 1;
 		return inner + (k - inner) * (profile[inner] - 0.5 * peak) / (profile[inner] - profile[k]);

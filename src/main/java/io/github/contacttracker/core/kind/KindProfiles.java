@@ -124,23 +124,16 @@ public final class KindProfiles implements Serializable {
 	}
 
 	/**
-	 * Tells the kind of each particle of a frame, at its centre {@code estimates[k]}, among {@code kinds} (null: one
-	 * kind, all 0, nothing measured).
+	 * Tells the kind of each particle of a frame, at its centre {@code estimates[k]}, among {@code kinds} (null or one
+	 * kind: all 0, nothing measured).
 	 *
 	 * @param reach the outermost radius of the particles' profiles read (px): {@code r_out}
 	 */
 	public static int[] kindsOf(final Kinds kinds, final Plane plane, final Particle[] particles,
 		final Estimate[] estimates, final double reach)
 	{
-		if (kinds == null) return new int[particles.length];
-		if (particles.length != estimates.length)
-			throw new IllegalArgumentException(particles.length + " particles but " + estimates.length + " estimates");
-		final double background = KindFeatures.background(plane);
-		final KindFeatures[] f = new KindFeatures[particles.length];
-		for (int k = 0; k < f.length; k++) // only what places them: the core (see measureCore)
-			f[k] = KindFeatures.measureCore(plane, estimates[k].x(), estimates[k].y(), particles[k].region().area(),
-				background, reach);
-		return kindsOf(kinds, f);
+		if (kinds == null || kinds.count() < 2) return new int[particles.length];
+		return kindsOf(kinds, KindFeatures.measureCore(plane, particles, estimates, reach)); // only what places them
 	}
 
 	/** @return the kind of each particle of features {@code f} among {@code kinds} (null: one kind, all 0) */

@@ -136,7 +136,7 @@ class NormalEquationsTest {
 	/**
 	 * The pass of a group of one ({@code accumulateOne}) gives what the pass of every group size gives for the same
 	 * member to the last bit: the member's sums taken out of a group of two whose other member lies out of reach of
-	 * every pixel (its terms are never added), the noise weights and the models included.
+	 * every pixel (its terms are never added), the noise weights and the models included, with J^T J and without.
 	 */
 	@Test
 	void oneMembersOwnPassIsTheGeneralOne() {
@@ -162,6 +162,16 @@ class NormalEquationsTest {
 				assertEquals(jtj2[at[a]][at[b]], jtj1[a][b], 0, "J^T J, " + a + ", " + b);
 		}
 		assertTrue(jtj1[0][0] > 0 && noise1[1] > 0, "the member's terms were added");
+		// the residual pass (no J^T J), adding to noise sums already there, as a fit's passes do
+		final double[] more1 = { 1.5, 2.5, 3.5, 4.5 }, more2 = { 1.5, 2.5, 3.5, 4.5, 0, 0, 0, 0 };
+		one[0] += 0.03;
+		two[0] += 0.03;
+		assertEquals(NormalEquations.accumulate(px, two, 2, new EmpiricalProfile[] { profile, profile }, null, jtr2,
+			more2, null), NormalEquations.accumulate(px, one, 1, new EmpiricalProfile[] { profile }, null, jtr1, more1,
+				null), 0);
+		assertArrayEquals(java.util.Arrays.copyOf(more2, 4), more1, 0);
+		for (int a = 0; a < 7; a++)
+			assertEquals(jtr2[at[a]], jtr1[a], 0, "J^T r of the residual pass, parameter " + a);
 	}
 
 	/**
