@@ -322,13 +322,10 @@ public final class ProfileAnalysis {
 		final List<KindFeatures> features = new ArrayList<>();
 		int used = 0;
 		for (final RandomAccessibleInterval<T> frame : frames) {
-			final List<KindFeatures> own = new ArrayList<>();
+			final List<KindFeatures> own;
 			try {
 				final Plane plane = Plane.of(frame);
-				final double background = KindFeatures.background(plane);
-				for (final Localization s : tracker.analyse(plane, 0, false).spots())
-					own.add(KindFeatures.measure(plane, s.x() - plane.minX(), s.y() - plane.minY(), s.activeArea(),
-						background, rOut));
+				own = Arrays.asList(KindFeatures.measure(plane, tracker.analyse(plane, 0, false).spots(), rOut));
 			}
 			catch (final InvalidInputException | UncheckedIOException e) {
 				continue;

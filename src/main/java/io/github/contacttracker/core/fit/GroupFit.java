@@ -413,31 +413,26 @@ public final class GroupFit {
 				}
 				break;
 			}
-			if (!hessianAtP && !(allowed && move <= CHORD_CONTRACTION * lastMove)) {
-				// a chord step that does not shrink fast: J^T J at p, and the step again from it
-				rss = NormalEquations.accumulate(pixels, p, n, members, jtj, jtr, null, null);
-				hessianAtP = true;
-				sinceHessian = 0;
-				noise = null;
-				evaluated = null;
-				continue;
+			// a step from J^T J at p, or a chord step that shrinks fast, is evaluated
+			if (hessianAtP || allowed && move <= CHORD_CONTRACTION * lastMove) {
+				final double[] tr = new double[np], trialNoise = new double[PER_PARTICLE * n];
+				final double[] trialModels = use != null && !frozen ? new double[pixels.count()] : null;
+				final double trialRss = allowed ? NormalEquations.accumulate(pixels, trial, n, members, null, tr,
+					trialNoise, trialModels) : Double.POSITIVE_INFINITY;
+				if (trialRss <= rss) {
+					System.arraycopy(trial, 0, p, 0, np);
+					System.arraycopy(tr, 0, jtr, 0, np);
+					hessianAtP = false;
+					noise = trialNoise;
+					evaluated = new Evaluated(pixels, trial, trialModels);
+					rss = trialRss;
+					mu = Math.max(mu / 10, 1e-9);
+					lastMove = move;
+					sinceHessian++;
+					continue;
+				}
 			}
-			final double[] tr = new double[np], trialNoise = new double[PER_PARTICLE * n];
-			final double[] trialModels = use != null && !frozen ? new double[pixels.count()] : null;
-			final double trialRss = allowed ? NormalEquations.accumulate(pixels, trial, n, members, null, tr, trialNoise,
-				trialModels) : Double.POSITIVE_INFINITY;
-			if (trialRss <= rss) {
-				System.arraycopy(trial, 0, p, 0, np);
-				System.arraycopy(tr, 0, jtr, 0, np);
-				hessianAtP = false;
-				noise = trialNoise;
-				evaluated = new Evaluated(pixels, trial, trialModels);
-				rss = trialRss;
-				mu = Math.max(mu / 10, 1e-9);
-				lastMove = move;
-				sinceHessian++;
-			}
-			else if (!hessianAtP) { // the chord step failed: J^T J at p, and the step again from it
+			if (!hessianAtP) { // a chord step that does not shrink fast, or that failed: J^T J at p, and the step again
 				rss = NormalEquations.accumulate(pixels, p, n, members, jtj, jtr, null, null);
 				hessianAtP = true;
 				sinceHessian = 0;

@@ -23,7 +23,9 @@ package io.github.contacttracker.core.kind;
 
 import java.io.Serializable;
 import java.util.Arrays;
+import java.util.List;
 
+import io.github.contacttracker.core.Localization;
 import io.github.contacttracker.core.image.Plane;
 import io.github.contacttracker.core.radial.Estimate;
 import io.github.contacttracker.core.radial.Particle;
@@ -94,6 +96,20 @@ public record KindFeatures(double coreRadius, double peak, double ringDepth, dou
 		return measure(plane, particles, estimates, reach, false);
 	}
 
+	/**
+	 * As {@link #measure(Plane, Particle[], Estimate[], double)}, the spots a tracker found in the frame (at their
+	 * centres, in the frame's coordinates, with their active areas).
+	 */
+	public static KindFeatures[] measure(final Plane plane, final List<Localization> spots, final double reach) {
+		final double background = background(plane);
+		final KindFeatures[] out = new KindFeatures[spots.size()];
+		for (int k = 0; k < out.length; k++) {
+			final Localization s = spots.get(k);
+			out[k] = measure(plane, s.x() - plane.minX(), s.y() - plane.minY(), s.activeArea(), background, reach);
+		}
+		return out;
+	}
+
 	/** The particles measured wholly, or only for their kind ({@code coreOnly}), with the frame's background. */
 	private static KindFeatures[] measure(final Plane plane, final Particle[] particles, final Estimate[] estimates,
 		final double reach, final boolean coreOnly)
@@ -128,7 +144,7 @@ public record KindFeatures(double coreRadius, double peak, double ringDepth, dou
 		final double[] profile = profile(plane, x, y, background, reach);
 		final double peak = profile.length > 0 ? profile[0] : Double.NaN;
 		final double activeRadius = activeArea > 0 ? Math.sqrt(activeArea / Math.PI) : Double.NaN;
-		final int k = peak > 0 ? coreEnd(profile, profile.length, peak) : -1;
+		final int k = peak > 0 ? coreEnd(profile, peak) : -1;
 		final double core = k > 0 ? coreRadius(profile, k, peak) : Double.NaN;
 		if (Double.isNaN(core)) return new KindFeatures(Double.NaN, peak, 0, Double.NaN, activeRadius, profile);
 		// the dark ring: the lowest point between the core and the next rise back above the background (the halo),
@@ -173,7 +189,7 @@ public record KindFeatures(double coreRadius, double peak, double ringDepth, dou
 			// from floor(x - r) to ceil(x + r), lies r + 1 or more from the centre, beyond the last ring's reach)
 			final double[] profile = profile(plane, x, y, background, r);
 			final double peak = profile.length > 0 ? profile[0] : Double.NaN;
-			final int k = peak > 0 ? coreEnd(profile, profile.length, peak) : -1;
+			final int k = peak > 0 ? coreEnd(profile, peak) : -1;
 			if (k != 0 || !(r < reach)) {
 				final double core = k > 0 ? coreRadius(profile, k, peak) : Double.NaN;
 				return new KindFeatures(core, peak, 0, Double.NaN, activeRadius, profile);
@@ -186,13 +202,12 @@ public record KindFeatures(double coreRadius, double peak, double ringDepth, dou
 	private static final double CORE_REACH = 6;
 
 	/**
-	 * @return the first ring, among the first {@code rings} of {@code profile} (whose centre is {@code peak > 0}), at
-	 *         or below half the peak; -1 if a ring beyond the first has no value before it (no core can be told); 0 if
-	 *         none of those rings falls that low
+	 * @return the first ring of {@code profile} (whose centre is {@code peak > 0}) at or below half the peak; -1 if a
+	 *         ring beyond the first has no value before it (no core can be told); 0 if none falls that low
 	 */
-	private static int coreEnd(final double[] profile, final int rings, final double peak) {
+	private static int coreEnd(final double[] profile, final double peak) {
 		// (ring 1 holds no pixel when the centre sits on a pixel corner: then from ring 0 to ring 2)
-		for (int k = 1; k < rings; k++) {
+		for (int k = 1; k < profile.length; k++) {
 			if (Double.isNaN(profile[k])) {
 				if (k == 1) continue;
 				return -1;

@@ -259,7 +259,7 @@ public final class StackTracker {
 			final List<KindFeatures> found = new ArrayList<>();
 			for (int i = 0; i < sample.length; i++) {
 				final List<Localization> spots = iterative.get(i).spots();
-				final KindFeatures[] f = features(Plane.of(frame.apply(sample[i])), spots, params.rOut());
+				final KindFeatures[] f = KindFeatures.measure(Plane.of(frame.apply(sample[i])), spots, params.rOut());
 				features.add(f);
 				for (int k = 0; k < f.length; k++) // merges too: a kind may be all merges at a low threshold
 					if (!spots.get(k).has(Flag.DEGENERATE)) found.add(f[k]);
@@ -471,18 +471,6 @@ public final class StackTracker {
 		for (int k = 0; k < at.length; k++)
 			at[k] = KindProfiles.position(kinds, spots.get(k).kind());
 		return at;
-	}
-
-	/** @return the spots' features, measured at their centres (frame coordinates) */
-	private static KindFeatures[] features(final Plane plane, final List<Localization> spots, final double rOut) {
-		final double background = KindFeatures.background(plane);
-		final KindFeatures[] f = new KindFeatures[spots.size()];
-		for (int k = 0; k < f.length; k++) {
-			final Localization l = spots.get(k);
-			f[k] = KindFeatures.measure(plane, l.x() - plane.minX(), l.y() - plane.minY(), l.activeArea(), background,
-				rOut);
-		}
-		return f;
 	}
 
 	/** @return the results, each spot labelled with its kind ({@code features}: the spots', frame by frame) */
