@@ -41,6 +41,12 @@ import net.imglib2.type.numeric.RealType;
  * A light penalty on the coefficients' second differences keeps sparsely sampled knots (near r = 0) stable.
  * Pixels near spots flagged as merged or degenerate are left out, since their centres do not describe them; so
  * are clipped pixels and, given the previous estimate, those near a clip level ({@link Censoring}).
+ * <p>
+ * An estimator made {@link #forROut(double, int, Linearisation) from the linearisation} of an earlier estimate takes
+ * one chord step of the same least squares instead: it accumulates only the gradient {@code A^T (b - A x)} at the
+ * earlier solution {@code x} (a pass linear in the particles that reach a pixel, not quadratic) and solves with the
+ * earlier normal matrix. Its fixed point is the exact least-squares solution, and where the centres moved little
+ * since the earlier estimate (the profile rounds of a movie) one step lands within a small fraction of that change.
  * Not thread-safe.
  */
 public final class ProfileEstimator {
@@ -63,7 +69,13 @@ public final class ProfileEstimator {
 	private final int kinds;
 	/** Index of the background's first coefficient. */
 	private final int bIndex;
+	/** The normal matrix's lower triangle; null for a chord step, which accumulates only its diagonal. */
 	private final double[][] ata;
+	/** A chord step's: the normal matrix's diagonal (the penalty's scale), and a row's sums per coefficient. */
+	private final double[] diagonal, rowSum;
+	/** The earlier estimate a chord step starts from, or null: a full estimate. */
+	private final Linearisation from;
+	/** A full estimate's {@code A^T b}; a chord step's {@code A^T (b - A x)} at the earlier solution. */
 	private final double[] atb;
 	private int samples;
 	private int profileSamples;
@@ -80,6 +92,15 @@ public final class ProfileEstimator {
 	 * @param kinds how many profiles to measure at once, one per kind of particle (all sharing the background)
 	 */
 	public ProfileEstimator(final double radius, final int kinds) {
+		this(radius, kinds, null);
+	}
+
+	/**
+	 * @param radius the profile's reach (px)
+	 * @param kinds how many profiles to measure at once
+	 * @param from an earlier estimate of the same radius and kinds to take a chord step from, or null
+	 */
+	private ProfileEstimator(final double radius, final int kinds, final Linearisation from) {
 		if (!(radius > 3 * SPACING)) throw new IllegalArgumentException("profile radius must exceed " + 3 * SPACING +
 			" px, not " + radius);
 		if (kinds < 1) throw new IllegalArgumentException("at least one kind of particle, not " + kinds);
@@ -87,7 +108,12 @@ public final class ProfileEstimator {
 		this.radius = (count + 1) * SPACING;
 		this.kinds = kinds;
 		this.bIndex = kinds * count;
-		ata = new double[bIndex + 3][bIndex + 3];
+		if (from != null && from.solution.length != bIndex + 3) throw new IllegalArgumentException(
+			"the earlier estimate has another radius or number of kinds");
+		this.from = from;
+		ata = from == null ? new double[bIndex + 3][bIndex + 3] : null;
+		diagonal = from == null ? null : new double[bIndex + 3];
+		rowSum = from == null ? null : new double[bIndex + 3];
 		atb = new double[bIndex + 3];
 		kindSamples = new int[kinds];
 	}
@@ -99,7 +125,15 @@ public final class ProfileEstimator {
 
 	/** @return an estimator of {@code kinds} profiles reaching {@link #REACH_FACTOR} times {@code rOut} */
 	public static ProfileEstimator forROut(final double rOut, final int kinds) {
-		return new ProfileEstimator(REACH_FACTOR * rOut, kinds);
+		return forROut(rOut, kinds, null);
+	}
+
+	/**
+	 * @return as {@link #forROut(double, int)}; with {@code from} (of an estimator of the same {@code rOut} and kinds)
+	 *         a chord step from that estimate
+	 */
+	public static ProfileEstimator forROut(final double rOut, final int kinds, final Linearisation from) {
+		return new ProfileEstimator(REACH_FACTOR * rOut, kinds, from);
 	}
 
 	/**
@@ -236,9 +270,6 @@ public final class ProfileEstimator {
 		final int[] near = new int[n];
 		final int[] idx = new int[4 * n + 3];
 		final double[] val = new double[4 * n + 3];
-		double maxScale = 1;
-		for (int k = 0; k < n; k++)
-			maxScale = Math.max(maxScale, scale[k]);
 		final double mx = 0.5 * (w - 1), my = 0.5 * (h - 1);
 		// The previous model decides which pixels are too near a clip level. Where a pixel is within reach of one
 		// particle alone whose whole range of light keeps the model usable (or of none, and the background is), the
@@ -255,19 +286,47 @@ public final class ProfileEstimator {
 		}
 		final boolean[] reachedKind = new boolean[kinds];
 		final double[] values = new double[w]; // each row read once (Plane.read), not pixel by pixel
+		// Per row, the particles whose reach covers each pixel, in the order of the particles (so the sums are added in
+		// the same order as by testing every particle of the row at every pixel, which cost as much as the products on
+		// the authors' dense 1.avi): each particle's chord of the row, widened by a pixel, marked on the pixels it
+		// covers; the exact test stays per pixel.
+		final int[] first = new int[w + 1], at = new int[w];
+		int[] covering = new int[4 * w];
 		for (int y = 0; y < h; y++) {
 			plane.read(0, w - 1, y, y, values, 0);
+			java.util.Arrays.fill(first, 0);
 			int nn = 0;
-			for (int k = 0; k < n; k++)
-				if (Math.abs(y - cy[k]) < radius * maxScale) near[nn++] = k;
+			for (int k = 0; k < n; k++) {
+				final double reach = radius * scale[k], dy = y - cy[k];
+				if (!(Math.abs(dy) < reach)) continue;
+				final double half = Math.sqrt(reach * reach - dy * dy);
+				final int a = (int) Math.max(0, Math.floor(cx[k] - half) - 1), b = (int) Math.min(w - 1, Math.ceil(cx[k] +
+					half) + 1);
+				if (a > b) continue;
+				near[nn++] = k;
+				for (int x = a; x <= b; x++)
+					first[x + 1]++;
+			}
+			for (int x = 0; x < w; x++)
+				first[x + 1] += first[x];
+			if (covering.length < first[w]) covering = new int[2 * first[w]];
+			System.arraycopy(first, 0, at, 0, w);
+			for (int q = 0; q < nn; q++) {
+				final int k = near[q];
+				final double reach = radius * scale[k], dy = y - cy[k], half = Math.sqrt(reach * reach - dy * dy);
+				final int a = (int) Math.max(0, Math.floor(cx[k] - half) - 1), b = (int) Math.min(w - 1, Math.ceil(cx[k] +
+					half) + 1);
+				for (int x = a; x <= b; x++)
+					covering[at[x]++] = k;
+			}
 			for (int x = 0; x < w; x++) {
 				final double v = values[x];
 				if (v >= saturation || v <= floor) continue;
 				int len = 0, reached = 0;
 				boolean skip = false;
 				if (kinds > 1) java.util.Arrays.fill(reachedKind, false);
-				for (int q = 0; q < nn && !skip; q++) {
-					final int k = near[q];
+				for (int q = first[x]; q < first[x + 1] && !skip; q++) {
+					final int k = covering[q];
 					final double dx = x - cx[k], dy = y - cy[k], d2 = dx * dx + dy * dy, reach = radius * scale[k];
 					if (d2 >= reach * reach) continue;
 					if (masked[k]) {
@@ -301,6 +360,12 @@ public final class ProfileEstimator {
 				val[len++] = (x - mx) / RAMP_UNIT;
 				idx[len] = bIndex + 2;
 				val[len++] = (y - my) / RAMP_UNIT;
+				samples++;
+				if (len > 3) profileSamples++;
+				if (from != null) {
+					gradient(idx, val, len, v);
+					continue;
+				}
 				// The outer product, lower triangle only (by index: mirrored in estimate()), each unordered pair of
 				// terms once; two terms on one coefficient (the mirror at r = 0, two particles) add twice.
 				for (int a = 0; a < len; a++) {
@@ -317,8 +382,30 @@ public final class ProfileEstimator {
 						else row[ia] += 2 * pv;
 					}
 				}
-				samples++;
-				if (len > 3) profileSamples++;
+			}
+		}
+	}
+
+	/**
+	 * A chord step's pass over one pixel of value {@code v} whose row of the design matrix is the {@code len} terms
+	 * {@code idx, val}: its residual at the earlier solution times its row into {@code atb}, and its row's squares
+	 * (terms on one coefficient summed first, as in the outer product) into the diagonal.
+	 */
+	private void gradient(final int[] idx, final double[] val, final int len, final double v) {
+		final double[] x = from.solution;
+		double model = 0;
+		for (int a = 0; a < len; a++) {
+			model += val[a] * x[idx[a]];
+			rowSum[idx[a]] += val[a];
+		}
+		final double r = v - model;
+		for (int a = 0; a < len; a++) {
+			final int ia = idx[a];
+			atb[ia] += val[a] * r;
+			final double sum = rowSum[ia];
+			if (sum != 0) {
+				diagonal[ia] += sum * sum;
+				rowSum[ia] = 0;
 			}
 		}
 	}
@@ -361,11 +448,12 @@ public final class ProfileEstimator {
 
 	/** Adds what {@code other} (of the same radius) has accumulated, so frames can be measured in parallel. */
 	public void merge(final ProfileEstimator other) {
-		if (other.count != count || other.kinds != kinds) throw new IllegalArgumentException(
-			"profile radii or kinds differ");
+		if (other.count != count || other.kinds != kinds || other.from != from) throw new IllegalArgumentException(
+			"profile radii, kinds or earlier estimates differ");
 		for (int i = 0; i < atb.length; i++) {
 			atb[i] += other.atb[i];
-			for (int j = 0; j < atb.length; j++)
+			if (from != null) diagonal[i] += other.diagonal[i];
+			else for (int j = 0; j < atb.length; j++)
 				ata[i][j] += other.ata[i][j];
 		}
 		samples += other.samples;
@@ -387,34 +475,69 @@ public final class ProfileEstimator {
 	 * @throws IllegalStateException when the data cannot determine them (naming the kind, if one has too few pixels)
 	 */
 	public EmpiricalProfile[] estimateAll() {
-		final int m = bIndex + 3;
-		final double[][] a = new double[m][m];
-		for (int i = 0; i < m; i++)
-			for (int j = 0; j <= i; j++)
-				a[i][j] = a[j][i] = ata[i][j];
-		// A background without a ramp (one frame: no pixel off its centre row) leaves the plane's slopes free
-		for (int i = bIndex + 1; i < m; i++)
-			if (a[i][i] == 0) a[i][i] = 1;
-		for (int c = 0; c < kinds; c++) {
-			final int off = c * count;
-			// the scale of the penalty: the kind's diagonal and the background's
-			double trace = 0;
-			for (int i = off; i < off + count; i++)
-				trace += ata[i][i];
-			trace += ata[bIndex][bIndex];
-			// Penalty on second differences d_j = c_{j-1} - 2 c_j + c_{j+1}, j = 0..count, with c_-1 = c_1 and
-			// c_count = 0 (beyond the last coefficient).
-			final double lambda = SMOOTHNESS * trace / (count + 1);
-			for (int j = 0; j <= count; j++) {
-				final int[] ci = { EmpiricalProfile.coefficientIndex(j - 1, count), EmpiricalProfile.coefficientIndex(j,
-					count), EmpiricalProfile.coefficientIndex(j + 1, count) };
-				final double[] cw = { 1, -2, 1 };
-				for (int p = 0; p < 3; p++)
-					for (int q = 0; q < 3; q++)
-						if (ci[p] >= 0 && ci[q] >= 0) a[off + ci[p]][off + ci[q]] += lambda * cw[p] * cw[q];
-			}
+		return solve().profiles();
+	}
+
+	/**
+	 * The earlier estimate a chord step starts from: its solution (every kind's coefficients, then the background
+	 * plane) and the penalised normal matrix it was solved with (a chord step's: that of the full estimate it goes
+	 * back to).
+	 */
+	public static final class Linearisation {
+		private final double[][] normal;
+		private final double[] solution;
+
+		private Linearisation(final double[][] normal, final double[] solution) {
+			this.normal = normal;
+			this.solution = solution;
 		}
-		final double[] x = SymmetricSolver.solve(a, atb);
+	}
+
+	/** The profile of each kind, and the linearisation a later chord step starts from. */
+	public record Solution(EmpiricalProfile[] profiles, Linearisation linearisation) {}
+
+	/**
+	 * @return as {@link #estimateAll()}, with this estimate's linearisation
+	 * @throws IllegalStateException when the data cannot determine the profiles
+	 */
+	public Solution solve() {
+		final int m = bIndex + 3;
+		// the weight of the penalty on each kind's second differences: the kind's diagonal and the background's
+		final double[] lambda = new double[kinds];
+		for (int c = 0; c < kinds; c++) {
+			double trace = 0;
+			for (int i = c * count; i < (c + 1) * count; i++)
+				trace += diagonalAt(i);
+			trace += diagonalAt(bIndex);
+			lambda[c] = SMOOTHNESS * trace / (count + 1);
+		}
+		final double[][] normal;
+		final double[] x;
+		if (from == null) {
+			normal = new double[m][m];
+			for (int i = 0; i < m; i++)
+				for (int j = 0; j <= i; j++)
+					normal[i][j] = normal[j][i] = ata[i][j];
+			// A background without a ramp (one frame: no pixel off its centre row) leaves the plane's slopes free
+			for (int i = bIndex + 1; i < m; i++)
+				if (normal[i][i] == 0) normal[i][i] = 1;
+			for (int c = 0; c < kinds; c++)
+				addPenalty(normal, c * count, lambda[c]);
+			x = SymmetricSolver.solve(normal, atb);
+		}
+		else { // x + N^-1 (A^T (b - A x) - penalty x), N the earlier normal matrix
+			normal = from.normal;
+			final double[][] penalty = new double[m][m];
+			for (int c = 0; c < kinds; c++)
+				addPenalty(penalty, c * count, lambda[c]);
+			final double[] g = atb.clone();
+			for (int i = 0; i < m; i++)
+				for (int j = 0; j < m; j++)
+					g[i] -= penalty[i][j] * from.solution[j];
+			x = SymmetricSolver.solve(normal, g);
+			if (x != null) for (int i = 0; i < m; i++)
+				x[i] += from.solution[i];
+		}
 		// pixels of the background alone determine no profile: the smoothness penalty would make one up
 		if (x == null || samples < 4 * (count + 1) || profileSamples < 4 * count)
 			throw new IllegalStateException("too few pixels (" + samples + ", " + profileSamples + " within reach of a " +
@@ -429,6 +552,26 @@ public final class ProfileEstimator {
 			System.arraycopy(x, c * count, coefficients, 0, count);
 			out[c] = new EmpiricalProfile(SPACING, coefficients, x[bIndex], samples);
 		}
-		return out;
+		return new Solution(out, new Linearisation(normal, x));
+	}
+
+	private double diagonalAt(final int i) {
+		return from == null ? ata[i][i] : diagonal[i];
+	}
+
+	/**
+	 * Adds to {@code a} the penalty of weight {@code lambda} on the second differences {@code d_j = c_{j-1} - 2 c_j +
+	 * c_{j+1}}, {@code j = 0..count}, of the profile whose coefficients start at {@code off}, with {@code c_-1 = c_1}
+	 * and {@code c_count = 0} (beyond the last coefficient).
+	 */
+	private void addPenalty(final double[][] a, final int off, final double lambda) {
+		for (int j = 0; j <= count; j++) {
+			final int[] ci = { EmpiricalProfile.coefficientIndex(j - 1, count), EmpiricalProfile.coefficientIndex(j,
+				count), EmpiricalProfile.coefficientIndex(j + 1, count) };
+			final double[] cw = { 1, -2, 1 };
+			for (int p = 0; p < 3; p++)
+				for (int q = 0; q < 3; q++)
+					if (ci[p] >= 0 && ci[q] >= 0) a[off + ci[p]][off + ci[q]] += lambda * cw[p] * cw[q];
+		}
 	}
 }

@@ -270,16 +270,20 @@ public final class StackTracker {
 		// The profile is measured around estimated centres, and in a configuration that never changes (every frame
 		// the same cluster) it absorbs part of their error; so profile and centres are alternated on the sample
 		// frames until the centres stop moving (the joint least-squares fixed point, to a tenth of the centres' errors).
+		// The third and later rounds' profiles are chord steps from the second's least squares (see ProfileEstimator).
+		// Not from the first's: it rests on the iterative centres without fitted amplitudes and scales, too far from
+		// the later rows (on the authors' 1.avi a step from it closed only half the gap to the exact profile).
 		List<FrameResult> previous = iterative;
-		KindProfiles used = profile(previous, null, sample, frame, params.rOut(), kinds);
-		List<FrameResult> round = pass(tracker, used, sample, frame, false, progress, cancelled);
+		Measured used = profile(previous, null, sample, frame, params.rOut(), kinds);
+		if (used != null) used = new Measured(used.profiles(), null);
+		List<FrameResult> round = pass(tracker, profiles(used), sample, frame, false, progress, cancelled);
 		final Rounds rounds = new Rounds();
 		Rounds.Verdict verdict = rounds.next(moves(previous, round));
 		for (int r = 1; r < ProfileRefinement.PROFILE_ROUNDS && verdict == Rounds.Verdict.GOING_ON; r++) {
 			progress.total += sample.length;
 			previous = round;
 			used = profile(round, used, sample, frame, params.rOut(), kinds);
-			round = pass(tracker, used, sample, frame, false, progress, cancelled);
+			round = pass(tracker, profiles(used), sample, frame, false, progress, cancelled);
 			verdict = rounds.next(moves(previous, round));
 		}
 		// no fixed point within the rounds: every centre rests on a profile that was still moving. Settled: the
@@ -287,7 +291,7 @@ public final class StackTracker {
 		// refined with that very profile: without regions to keep, their results are the final ones. Cycling: so
 		// is the profile, but a few centres of the sample frames went back and forth between two fits; they are flagged.
 		if (verdict == Rounds.Verdict.CYCLING) round = stillMovingFlagged(round, rounds);
-		return new ProfileStage(sample, used, verdict != Rounds.Verdict.GOING_ON, round);
+		return new ProfileStage(sample, profiles(used), verdict != Rounds.Verdict.GOING_ON, round);
 	}
 
 	/** @return the results, the spots {@code rounds} saw still moving flagged {@code NOT_CONVERGED} */
@@ -428,13 +432,23 @@ public final class StackTracker {
 	}
 
 	/**
+	 * The profiles of a round and the linearisation of their least squares (null: the next round is measured in
+	 * full).
+	 */
+	private record Measured(KindProfiles profiles, ProfileEstimator.Linearisation linearisation) {}
+
+	private static KindProfiles profiles(final Measured m) {
+		return m == null ? null : m.profiles();
+	}
+
+	/**
 	 * Measures the radial profile of each kind on frames {@code indices} (with their results, in the same order, each
 	 * spot of its {@link Localization#kind() kind}), the frames shared among the threads; null (each frame then
 	 * measures its own) when they hold too few usable pixels. The profiles the results were refined with, if any,
-	 * choose the pixels left out near clip levels.
+	 * choose the pixels left out near clip levels, and the new ones are a chord step from their least squares.
 	 */
-	private static <T extends RealType<T>> KindProfiles profile(final List<FrameResult> results,
-		final KindProfiles fittedWith, final int[] indices,
+	private static <T extends RealType<T>> Measured profile(final List<FrameResult> results,
+		final Measured fitted, final int[] indices,
 		final IntFunction<? extends RandomAccessibleInterval<T>> frame, final double rOut, final Kinds kinds)
 	{
 		final int count = kinds == null ? 1 : kinds.count();
@@ -442,12 +456,14 @@ public final class StackTracker {
 		// number of threads.
 		final List<Localization> all = spots(results);
 		final double[][] norms = ProfileEstimator.norms(all, positions(all, kinds), count);
+		final KindProfiles fittedWith = profiles(fitted);
 		final EmpiricalProfile[] before = fittedWith == null ? null : new EmpiricalProfile[count];
 		if (before != null) for (int c = 0; c < count; c++)
 			before[c] = fittedWith.profile(c);
+		final ProfileEstimator.Linearisation from = fitted == null ? null : fitted.linearisation();
 		final List<ProfileEstimator> parts = Parallelization.getTaskExecutor().forEachApply(positions(indices.length),
 			i -> {
-				final ProfileEstimator part = ProfileEstimator.forROut(rOut, count);
+				final ProfileEstimator part = ProfileEstimator.forROut(rOut, count, from);
 				final List<Localization> spots = results.get(i).spots();
 				part.add(frame.apply(indices[i]), spots, positions(spots, kinds), norms[0], norms[1], before, results.get(
 					i).noiseSigma());
@@ -457,8 +473,10 @@ public final class StackTracker {
 		for (int i = 1; i < parts.size(); i++)
 			sum.merge(parts.get(i));
 		try {
-			final EmpiricalProfile[] measured = sum.estimateAll();
-			return kinds == null ? KindProfiles.one(measured[0]) : KindProfiles.of(kinds, measured);
+			final ProfileEstimator.Solution solved = sum.solve();
+			final EmpiricalProfile[] measured = solved.profiles();
+			return new Measured(kinds == null ? KindProfiles.one(measured[0]) : KindProfiles.of(kinds, measured), solved
+				.linearisation());
 		}
 		catch (final IllegalStateException e) {
 			return null;

@@ -23,6 +23,7 @@ package io.github.contacttracker.core.profile;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.function.DoubleUnaryOperator;
 
@@ -54,6 +55,52 @@ class ProfileEstimatorTest {
 			assertEquals(avg / 64, p.value(r), 0.3, "at r = " + r);
 		}
 		assertEquals(0, p.value(p.radius() + 1), 0);
+	}
+
+	/**
+	 * A chord step from an estimate around centres 0.6 px off (the profile rounds' earlier centres) lands on the exact
+	 * estimate around the true centres to within a small fraction of the gap between the two, and a second step from
+	 * it closer still: the steps converge to the exact least squares.
+	 */
+	@Test
+	void aChordStepLandsOnTheExactEstimate() {
+		final DoubleUnaryOperator profile = r -> 100 * Math.exp(-r * r / 50) - 20 * Math.exp(-(r - 12) * (r - 12) / 8);
+		final int w = 120, h = 90;
+		final double[] cx = { 45.3, 63.1, 54.0 }, cy = { 44.8, 46.2, 30.4 };
+		final DoublePlane plane = new DoublePlane(TestImages.render(w, h, 30, profile, new double[] { cx[0], cy[0] },
+			new double[] { cx[1], cy[1] }, new double[] { cx[2], cy[2] }), w, h);
+		final double[] amp = { 1.1, 0.9, 1 }, scale = { 1, 1.05, 0.97 };
+		final double[] offX = cx.clone(), offY = cy.clone();
+		for (int k = 0; k < 3; k++) {
+			offX[k] += 0.6 * Math.cos(2 * k);
+			offY[k] += 0.6 * Math.sin(2 * k);
+		}
+		final ProfileEstimator off = ProfileEstimator.forROut(20, 1);
+		off.add(plane, offX, offY, amp, scale, new boolean[3], null);
+		final ProfileEstimator.Solution earlier = off.solve();
+		final ProfileEstimator exact = ProfileEstimator.forROut(20, 1);
+		exact.add(plane, cx, cy, amp, scale, new boolean[3], null);
+		final EmpiricalProfile truth = exact.estimate();
+		final ProfileEstimator chord = ProfileEstimator.forROut(20, 1, earlier.linearisation());
+		chord.add(plane, cx, cy, amp, scale, new boolean[3], null);
+		final ProfileEstimator.Solution step = chord.solve();
+		final ProfileEstimator again = ProfileEstimator.forROut(20, 1, step.linearisation());
+		again.add(plane, cx, cy, amp, scale, new boolean[3], null);
+		final double gap = largestDifference(earlier.profiles()[0], truth);
+		final double first = largestDifference(step.profiles()[0], truth);
+		final double second = largestDifference(again.estimate(), truth);
+		assertTrue(gap > 0.4, "the centres' offset moves the profile: " + gap);
+		assertTrue(first < 0.1 * gap, "one step: " + first + " of a gap of " + gap);
+		assertTrue(second < 0.2 * first, "two steps: " + second + " after " + first);
+		assertEquals(truth.background(), again.estimate().background(), 1e-3 * Math.abs(truth.background() - earlier
+			.profiles()[0].background()) + 1e-9);
+	}
+
+	private static double largestDifference(final EmpiricalProfile a, final EmpiricalProfile b) {
+		double d = 0;
+		for (double r = 0; r < a.radius(); r += 0.25)
+			d = Math.max(d, Math.abs(a.value(r) - b.value(r)));
+		return d;
 	}
 
 	@Test
