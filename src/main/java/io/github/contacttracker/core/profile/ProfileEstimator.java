@@ -287,9 +287,9 @@ public final class ProfileEstimator {
 		final boolean[] reachedKind = new boolean[kinds];
 		final double[] values = new double[w]; // each row read once (Plane.read), not pixel by pixel
 		// Per row, the particles whose reach covers each pixel, in the order of the particles (so the sums are added in
-		// the same order as by testing every particle of the row at every pixel, which cost as much as the products on
-		// the authors' dense 1.avi): each particle's chord of the row, widened by a pixel, marked on the pixels it
-		// covers; the exact test stays per pixel.
+		// the same order as when every particle of the row was tested at every pixel, 6% slower on the authors' dense
+		// 1.avi): each particle's chord of the row, widened by a pixel, marked on the pixels it covers; the exact test
+		// stays per pixel.
 		final int[] first = new int[w + 1], at = new int[w];
 		int[] covering = new int[4 * w];
 		for (int y = 0; y < h; y++) {
