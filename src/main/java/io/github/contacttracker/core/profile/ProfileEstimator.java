@@ -267,7 +267,7 @@ public final class ProfileEstimator {
 	{
 		final int n = cx.length, w = plane.width(), h = plane.height();
 		final double saturation = plane.saturation(), floor = plane.floor();
-		final int[] near = new int[n];
+		final int[] near = new int[n], spanFrom = new int[n], spanTo = new int[n];
 		final int[] idx = new int[4 * n + 3];
 		final double[] val = new double[4 * n + 3];
 		final double mx = 0.5 * (w - 1), my = 0.5 * (h - 1);
@@ -303,7 +303,9 @@ public final class ProfileEstimator {
 				final int a = (int) Math.max(0, Math.floor(cx[k] - half) - 1), b = (int) Math.min(w - 1, Math.ceil(cx[k] +
 					half) + 1);
 				if (a > b) continue;
-				near[nn++] = k;
+				near[nn] = k;
+				spanFrom[nn] = a;
+				spanTo[nn++] = b;
 				for (int x = a; x <= b; x++)
 					first[x + 1]++;
 			}
@@ -311,14 +313,9 @@ public final class ProfileEstimator {
 				first[x + 1] += first[x];
 			if (covering.length < first[w]) covering = new int[2 * first[w]];
 			System.arraycopy(first, 0, at, 0, w);
-			for (int q = 0; q < nn; q++) {
-				final int k = near[q];
-				final double reach = radius * scale[k], dy = y - cy[k], half = Math.sqrt(reach * reach - dy * dy);
-				final int a = (int) Math.max(0, Math.floor(cx[k] - half) - 1), b = (int) Math.min(w - 1, Math.ceil(cx[k] +
-					half) + 1);
-				for (int x = a; x <= b; x++)
-					covering[at[x]++] = k;
-			}
+			for (int q = 0; q < nn; q++)
+				for (int x = spanFrom[q]; x <= spanTo[q]; x++)
+					covering[at[x]++] = near[q];
 			for (int x = 0; x < w; x++) {
 				final double v = values[x];
 				if (v >= saturation || v <= floor) continue;

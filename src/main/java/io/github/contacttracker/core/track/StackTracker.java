@@ -242,15 +242,10 @@ public final class StackTracker {
 		final List<FrameResult> first = pass(new ContactTracker(params.withMethod(Method.ITERATIVE)), null, sample,
 			frame, false, progress, cancelled);
 		// a dense field needs fewer frames for as many particles: the rounds' cost follows the frames
-		final int[] kept = fewer(first);
-		List<FrameResult> iterative = new ArrayList<>(kept.length);
-		final int[] chosen = new int[kept.length];
-		for (int i = 0; i < kept.length; i++) {
-			iterative.add(first.get(kept[i]));
-			chosen[i] = sample[kept[i]];
-		}
-		progress.total -= sample.length - chosen.length; // the first round's frames
-		sample = chosen;
+		final Frames kept = new Frames(sample, first).at(fewer(first));
+		List<FrameResult> iterative = kept.results();
+		progress.total -= sample.length - kept.indices().length; // the first round's frames
+		sample = kept.indices();
 		// the kinds of particle, told apart on the same frames; the profile of each is measured on its particles
 		Kinds kinds = null;
 		if (params.kinds() != 1) {
@@ -276,13 +271,11 @@ public final class StackTracker {
 		// ProfileEstimator). Not from the first's: it rests on the iterative centres without fitted amplitudes and
 		// scales, too far from the later rows (on 1.avi a step from it closed only half the gap to the exact profile).
 		List<FrameResult> previous = iterative;
-		final int[] start = new int[(sample.length + 1) / 2];
-		final List<FrameResult> startResults = new ArrayList<>(start.length);
-		for (int i = 0; i < start.length; i++) {
-			start[i] = sample[2 * i];
-			startResults.add(previous.get(2 * i));
-		}
-		Measured used = profile(startResults, null, start, frame, params.rOut(), kinds);
+		final int[] everyOther = new int[(sample.length + 1) / 2];
+		for (int i = 0; i < everyOther.length; i++)
+			everyOther[i] = 2 * i;
+		final Frames start = new Frames(sample, previous).at(everyOther);
+		Measured used = profile(start.results(), null, start.indices(), frame, params.rOut(), kinds);
 		if (used != null) used = new Measured(used.profiles(), null);
 		List<FrameResult> round = pass(tracker, profiles(used), sample, frame, false, progress, cancelled);
 		final Rounds rounds = new Rounds();
@@ -300,6 +293,20 @@ public final class StackTracker {
 		// is the profile, but a few centres of the sample frames went back and forth between two fits; they are flagged.
 		if (verdict == Rounds.Verdict.CYCLING) round = stillMovingFlagged(round, rounds);
 		return new ProfileStage(sample, profiles(used), verdict != Rounds.Verdict.GOING_ON, round);
+	}
+
+	/** Frames (their indices in the stack) and their results, in the same order. */
+	private record Frames(int[] indices, List<FrameResult> results) {
+		/** @return the frames at {@code positions} (of this list), in that order */
+		Frames at(final int[] positions) {
+			final int[] in = new int[positions.length];
+			final List<FrameResult> out = new ArrayList<>(positions.length);
+			for (int i = 0; i < positions.length; i++) {
+				in[i] = indices[positions[i]];
+				out.add(results.get(positions[i]));
+			}
+			return new Frames(in, out);
+		}
 	}
 
 	/** @return the results, the spots {@code rounds} saw still moving flagged {@code NOT_CONVERGED} */
