@@ -687,7 +687,7 @@ public final class ProfileAnalysis {
 			final DoubleList ax = new DoubleList(), ay = new DoubleList(), av = new DoubleList();
 			for (int y = y0; y <= y1; y++)
 				for (int x = x0; x <= x1; x++) {
-					final double r = Math.hypot(x - c[0], y - c[1]);
+					final double r = Math.sqrt((x - c[0]) * (x - c[0]) + (y - c[1]) * (y - c[1]));
 					if (r < inner || r > radiusCap || masked(others, x, y, mask)) continue;
 					ax.add(x - c[0]);
 					ay.add(y - c[1]);
@@ -708,7 +708,7 @@ public final class ProfileAnalysis {
 				residuals.add(av.get(i) - plane3[0] - plane3[1] * ax.get(i) - plane3[2] * ay.get(i));
 			for (int y = y0; y <= y1; y++)
 				for (int x = x0; x <= x1; x++) {
-					final double r = Math.hypot(x - c[0], y - c[1]);
+					final double r = Math.sqrt((x - c[0]) * (x - c[0]) + (y - c[1]) * (y - c[1]));
 					final int k = (int) Math.floor(r + 0.5);
 					if (r > radiusCap || k >= bins || masked(others, x, y, mask)) continue;
 					rings[k].add(plane.get(x, y) - plane3[0] - plane3[1] * (x - c[0]) - plane3[2] * (y - c[1]));
@@ -760,8 +760,11 @@ public final class ProfileAnalysis {
 	}
 
 	private static boolean masked(final List<double[]> others, final int x, final int y, final double mask) {
-		for (final double[] s : others)
-			if (Math.hypot(x - s[0], y - s[1]) < mask) return true;
+		final double m2 = mask * mask; // (squares: hypot's care for overflow costs a tenth of the helper's time)
+		for (final double[] s : others) {
+			final double dx = x - s[0], dy = y - s[1];
+			if (dx * dx + dy * dy < m2) return true;
+		}
 		return false;
 	}
 

@@ -42,7 +42,12 @@ public enum Flag {
 	 * reported centre is the intensity-weighted centroid of the active area.
 	 */
 	DEGENERATE("degenerate system"),
-	/** The active area reaches within 2 px of the image border; pixels there have no gradient. */
+	/**
+	 * The active area reaches within 2 px of the image border (pixels there have no gradient); for the profile
+	 * methods also a fitted centre whose frame cuts off 5% or more of the information on it (its core cut by the
+	 * edge: on real footage such centres move by several of their errors when the frame is cropped). Their pixels
+	 * are left out of the profile's measurement.
+	 */
 	AT_BORDER("touches border"),
 	/**
 	 * The active area looks like several particles merged into one component ({@code ComponentShape}; the

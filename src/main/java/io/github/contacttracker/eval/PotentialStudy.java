@@ -97,6 +97,33 @@ public record PotentialStudy(ParticleType type, PairInteraction interaction, int
 		return analyse(SpotSet.ofPositions(movie.truth(), 1 / d), FieldOfView.of(size / d, size / d));
 	}
 
+	/**
+	 * @return U(r) from the true centres of the particles whose spots {@link #measure} keeps (each kept spot's nearest
+	 *         true centre in its frame), in the field inferred from those spots: the same configurations and field as
+	 *         the tracked U, so that the two differ by the tracking errors alone
+	 */
+	public PairCorrelation.Result measureTruthOf(final FluidMovie movie, final List<Localization> spots) {
+		final List<List<double[]>> kept = new java.util.ArrayList<>();
+		for (int t = 0; t < movie.truth().size(); t++)
+			kept.add(new java.util.ArrayList<>());
+		for (final Localization l : spots) {
+			if (l.isFlagged()) continue;
+			double[] nearest = null;
+			double best = Double.POSITIVE_INFINITY;
+			for (final double[] c : movie.truth().get(l.frame())) {
+				final double d = Math.hypot(c[0] - l.x(), c[1] - l.y());
+				if (d < best) {
+					best = d;
+					nearest = c;
+				}
+			}
+			if (nearest != null) kept.get(l.frame()).add(nearest);
+		}
+		final SpotSet tracked = SpotSet.ofLocalizations(spots, SpotSet.Selection.DEFAULT, false, 1 / type.diameterPx());
+		return analyse(SpotSet.ofPositions(kept, 1 / type.diameterPx()), FieldOfView.inferred(tracked.allX(), tracked
+			.allY()));
+	}
+
 	private PairCorrelation.Result analyse(final SpotSet set, final FieldOfView field) {
 		return PairCorrelation.compute(set, field, bin, rMax).withZero(zeroFrom, rMax);
 	}

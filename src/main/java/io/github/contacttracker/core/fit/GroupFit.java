@@ -112,17 +112,35 @@ public final class GroupFit {
 
 	/**
 	 * One joint fit of the group; its members keep their estimates flagged {@code FELL_BACK} if it cannot be made, and
-	 * are flagged {@code NOT_CONVERGED} if it reaches {@value #MAX_ITERATIONS} iterations.
+	 * are flagged {@code NOT_CONVERGED} if it reaches {@value #MAX_ITERATIONS} iterations; a member whose fit is
+	 * {@link #absurd} keeps its start, flagged {@code FELL_BACK}.
 	 */
 	private static int fitJointly(final Plane plane, final Particle[] particles, final Estimate[] e, final int[] group,
 		final EmpiricalProfile[] profile, final double window, final Censoring censoring)
 	{
+		final Estimate[] start = new Estimate[group.length];
+		for (int q = 0; q < group.length; q++)
+			start[q] = e[group[q]];
 		final int it = fitGroup(plane, particles, e, group, profile, window, censoring, JOINT, null);
 		// flagged here, per group: a group that hit the limit says nothing of the frame's other groups
 		final int flag = it == 0 ? Flag.FELL_BACK.bit() : it < 0 ? Flag.NOT_CONVERGED.bit() : 0;
-		if (flag != 0) for (final int k : group)
-			e[k] = e[k].withFlags(e[k].flags() | flag);
+		for (int q = 0; q < group.length; q++) {
+			final int k = group[q];
+			if (flag != 0) e[k] = e[k].withFlags(e[k].flags() | flag);
+			else if (absurd(e[k])) e[k] = start[q].withFlags(e[k].flags() | Flag.FELL_BACK.bit());
+		}
 		return it;
+	}
+
+	/**
+	 * @return whether a jointly fitted member is no particle of its kind: an amplitude not above zero, or a radial
+	 *         scale pressed against a limit of its range. (A member cut by the frame's edge may rightly end far from
+	 *         its start, the first pass's centre of the part in view, so the slide that marks a failed member fitted
+	 *         in turn does not serve here.)
+	 */
+	private static boolean absurd(final Estimate fitted) {
+		final double scale = fitted.scale();
+		return !(fitted.amplitude() > 0) || !(scale > MIN_SCALE * 1.001 && scale < MAX_SCALE * 0.999);
 	}
 
 	/**
@@ -345,6 +363,14 @@ public final class GroupFit {
 		final double tolerance = Double.isNaN(budget.tolerance()) ? ownTolerance(jtj, rss, pixels.count(), n) : budget
 			.tolerance();
 		int selections = frozen ? budget.selections() : 1;
+		// The members whose moves decide that the fit has settled: not one whose active area the frame's edge cuts
+		// (unless all are), which with most of it outside may never settle: on a crop of the paper authors' 6.avi such
+		// a member slid 64 px out of the frame, its amplitude negative, and held its group of 22 for all its iterations.
+		final boolean[] holds = new boolean[n];
+		boolean anyInside = false;
+		for (int q = 0; q < n; q++)
+			anyInside |= holds[q] = !ps[group[q]].atBorder();
+		if (!anyInside) java.util.Arrays.fill(holds, true);
 		double mu = 1e-3;
 		int it = 1;
 		boolean converged = false;
@@ -381,7 +407,7 @@ public final class GroupFit {
 			}
 			double move = 0;
 			for (int q = 0; q < n; q++)
-				move = Math.max(move, Math.hypot(step[PER_PARTICLE * q], step[PER_PARTICLE * q + 1]));
+				if (holds[q]) move = Math.max(move, Math.hypot(step[PER_PARTICLE * q], step[PER_PARTICLE * q + 1]));
 			if (allowed && move < tolerance) {
 				// Settled: the step is taken without evaluating the model there (a pass over every pixel, a third of
 				// the fit's time); J^T J and the residuals at p serve the uncertainties as well. Where the pixel type

@@ -169,6 +169,39 @@ public final class EmpiricalProfile implements Serializable {
 		return radius;
 	}
 
+	/**
+	 * The share of the information on a particle's centre that a frame's edge cuts off: with the particle drawn at
+	 * {@code (x, y)} (px, pixel centres at integers) with radial scale {@code scale}, the Fisher information on its
+	 * x from the pixels outside the frame's {@code width x height} pixels over that from all pixels within reach (for
+	 * uniform noise: the squares of the model's derivative), and the same for y.
+	 *
+	 * @return the larger of the two shares, in [0, 1]; 0 when the particle's reach lies inside the frame
+	 */
+	public double informationOutside(final double x, final double y, final double scale, final int width,
+		final int height)
+	{
+		final double reach = radius * scale;
+		if (x - reach >= -0.5 && y - reach >= -0.5 && x + reach <= width - 0.5 && y + reach <= height - 0.5) return 0;
+		final double perStep = 1 / (TABLE_STEP * scale);
+		final double[] d = tableDerivative;
+		double allX = 0, allY = 0, outX = 0, outY = 0;
+		for (int py = (int) Math.ceil(y - reach); py <= y + reach; py++)
+			for (int px = (int) Math.ceil(x - reach); px <= x + reach; px++) {
+				final double dx = px - x, dy = py - y, r = Math.sqrt(dx * dx + dy * dy), t = r * perStep;
+				final int k = (int) t;
+				if (!(r < reach) || k + 1 >= d.length || r == 0) continue;
+				final double slope = d[k] + (t - k) * (d[k + 1] - d[k]), g = slope * slope / (r * r);
+				final double wx = g * dx * dx, wy = g * dy * dy;
+				allX += wx;
+				allY += wy;
+				if (px < 0 || py < 0 || px >= width || py >= height) {
+					outX += wx;
+					outY += wy;
+				}
+			}
+		return Math.max(allX > 0 ? outX / allX : 0, allY > 0 ? outY / allY : 0);
+	}
+
 	private double coefficient(final int j) {
 		final int a = Math.abs(j);
 		return a < coefficients.length ? coefficients[a] : 0;

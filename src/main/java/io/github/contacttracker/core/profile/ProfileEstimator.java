@@ -39,8 +39,10 @@ import net.imglib2.type.numeric.RealType;
  * measured even where no particle has an undistorted side (long-range profiles at contact).
  * <p>
  * A light penalty on the coefficients' second differences keeps sparsely sampled knots (near r = 0) stable.
- * Pixels near spots flagged as merged or degenerate are left out, since their centres do not describe them; so
- * are clipped pixels and, given the previous estimate, those near a clip level ({@link Censoring}).
+ * Pixels near spots flagged as merged or degenerate are left out, since their centres do not describe them, and
+ * near spots cut by the border ({@code AT_BORDER}), whose amplitudes, scales and centres the visible part leaves
+ * loose (on a crop of the paper authors' 6.avi they made the profile jump by half its height from round to round);
+ * so are clipped pixels and, given the previous estimate, those near a clip level ({@link Censoring}).
  * <p>
  * An estimator made {@link #forROut(double, int, Linearisation) from the linearisation} of an earlier estimate takes
  * one chord step of the same least squares instead: it accumulates only the gradient {@code A^T (b - A x)} at the
@@ -137,9 +139,9 @@ public final class ProfileEstimator {
 	}
 
 	/**
-	 * Adds a frame with its spots (positions in the frame's coordinates). Spots flagged merged or degenerate
-	 * are masked out. Each spot's fitted amplitude and radial scale are used where known (divided by their means
-	 * {@code amplitudeNorm} and {@code scaleNorm}, which fix the profile's own height and size).
+	 * Adds a frame with its spots (positions in the frame's coordinates). Spots flagged merged, degenerate or at
+	 * the border are masked out. Each spot's fitted amplitude and radial scale are used where known (divided by
+	 * their means {@code amplitudeNorm} and {@code scaleNorm}, which fix the profile's own height and size).
 	 */
 	public <T extends RealType<T>> void add(final RandomAccessibleInterval<T> frame, final List<Localization> spots,
 		final double amplitudeNorm, final double scaleNorm)
@@ -177,7 +179,7 @@ public final class ProfileEstimator {
 			cy[k] = s.y() - plane.minY();
 			amp[k] = Double.isFinite(s.amplitude()) ? s.amplitude() / amplitudeNorms[kind[k]] : 1;
 			scale[k] = Double.isFinite(s.scale()) && s.scale() > 0 ? s.scale() / scaleNorms[kind[k]] : 1;
-			masked[k] = s.has(Flag.MERGED) || s.has(Flag.DEGENERATE);
+			masked[k] = s.has(Flag.MERGED) || s.has(Flag.DEGENERATE) || s.has(Flag.AT_BORDER);
 		}
 		add(plane, cx, cy, amp, scale, masked, kind, previous == null ? null : new Previous(previous, Censoring.of(
 			plane, noise), amplitudeNorms, scaleNorms));
@@ -202,7 +204,7 @@ public final class ProfileEstimator {
 
 	/**
 	 * @return {mean amplitude, geometric mean scale} of the spots' fitted values (1 where none is known), over
-	 *         spots that are neither merged nor degenerate
+	 *         spots that are neither merged nor degenerate nor at the border
 	 */
 	public static double[] norms(final List<Localization> spots) {
 		final double[][] n = norms(spots, new int[spots.size()], 1);
@@ -218,8 +220,8 @@ public final class ProfileEstimator {
 		final int[] n = new int[kinds];
 		for (int k = 0; k < spots.size(); k++) {
 			final Localization l = spots.get(k);
-			if (l.has(Flag.MERGED) || l.has(Flag.DEGENERATE) || !Double.isFinite(l.amplitude()) || !(l.scale() > 0))
-				continue;
+			if (l.has(Flag.MERGED) || l.has(Flag.DEGENERATE) || l.has(Flag.AT_BORDER) || !Double.isFinite(l
+				.amplitude()) || !(l.scale() > 0)) continue;
 			a[kind[k]] += l.amplitude();
 			s[kind[k]] += Math.log(l.scale());
 			n[kind[k]]++;
@@ -487,6 +489,21 @@ public final class ProfileEstimator {
 		private Linearisation(final double[][] normal, final double[] solution) {
 			this.normal = normal;
 			this.solution = solution;
+		}
+
+		/**
+		 * @return how far the profiles moved from {@code earlier}'s (same radius and kinds): the largest change of a
+		 *         profile coefficient over the largest coefficient (the background plane left out)
+		 */
+		public double change(final Linearisation earlier) {
+			if (earlier.solution.length != solution.length) throw new IllegalArgumentException(
+				"another radius or number of kinds");
+			double change = 0, size = 0;
+			for (int i = 0; i < solution.length - 3; i++) {
+				change = Math.max(change, Math.abs(solution[i] - earlier.solution[i]));
+				size = Math.max(size, Math.abs(solution[i]));
+			}
+			return size > 0 ? change / size : change;
 		}
 	}
 
