@@ -252,12 +252,22 @@ public final class ProfileRefinement implements Refinement {
 	 * {@code profile[k]}) whose frame cuts off {@link #CUT_INFORMATION} of the information on it.
 	 */
 	static void flagCutByTheBorder(final Plane plane, final Estimate[] e, final EmpiricalProfile[] profile) {
+		// a centre farther from every edge than the radius that holds 99% of its information cannot lose 5% to them:
+		// the share is summed only nearer the edges (summed for every centre within reach, 6% of the time on 1.avi)
+		final java.util.Map<EmpiricalProfile, Double> safe = new java.util.IdentityHashMap<>();
 		for (int k = 0; k < e.length; k++) {
 			final double scale = e[k].scale() > 0 && Double.isFinite(e[k].scale()) ? e[k].scale() : 1;
-			if (!(profile[k].informationOutside(e[k].x(), e[k].y(), scale, plane.width(), plane.height()) <
-				CUT_INFORMATION)) e[k] = e[k].withFlags(e[k].flags() | Flag.AT_BORDER.bit());
+			final double x = e[k].x(), y = e[k].y();
+			final double inside = Math.min(Math.min(x + 0.5, plane.width() - 0.5 - x), Math.min(y + 0.5, plane
+				.height() - 0.5 - y));
+			if (inside >= scale * safe.computeIfAbsent(profile[k], p -> p.informationRadius(SAFE_INFORMATION))) continue;
+			if (!(profile[k].informationOutside(x, y, scale, plane.width(), plane.height()) < CUT_INFORMATION)) e[k] =
+				e[k].withFlags(e[k].flags() | Flag.AT_BORDER.bit());
 		}
 	}
+
+	/** See {@link #flagCutByTheBorder}. */
+	private static final double SAFE_INFORMATION = 0.99;
 
 	private static double medianEquivalentRadius(final Particle[] ps) {
 		final double[] r = new double[ps.length];
