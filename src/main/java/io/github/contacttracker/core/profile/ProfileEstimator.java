@@ -41,7 +41,7 @@ import net.imglib2.type.numeric.RealType;
  * A light penalty on the coefficients' second differences keeps sparsely sampled knots (near r = 0) stable.
  * Pixels near spots flagged as merged or degenerate are left out, since their centres do not describe them, and
  * near spots cut by the border ({@code AT_BORDER}), whose amplitudes, scales and centres the visible part leaves
- * loose (on a crop of the paper authors' 6.avi they made the profile jump by half its height from round to round);
+ * loose (on a crop of the paper authors' 6.avi they made the profile change by up to its height from round to round);
  * so are clipped pixels and, given the previous estimate, those near a clip level ({@link Censoring}).
  * <p>
  * An estimator made {@link #forROut(double, int, Linearisation) from the linearisation} of an earlier estimate takes
