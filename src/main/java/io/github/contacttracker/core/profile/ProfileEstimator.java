@@ -179,7 +179,7 @@ public final class ProfileEstimator {
 			cy[k] = s.y() - plane.minY();
 			amp[k] = Double.isFinite(s.amplitude()) ? s.amplitude() / amplitudeNorms[kind[k]] : 1;
 			scale[k] = Double.isFinite(s.scale()) && s.scale() > 0 ? s.scale() / scaleNorms[kind[k]] : 1;
-			masked[k] = s.has(Flag.MERGED) || s.has(Flag.DEGENERATE) || s.has(Flag.AT_BORDER);
+			masked[k] = !usable(s);
 		}
 		add(plane, cx, cy, amp, scale, masked, kind, previous == null ? null : new Previous(previous, Censoring.of(
 			plane, noise), amplitudeNorms, scaleNorms));
@@ -203,8 +203,17 @@ public final class ProfileEstimator {
 	}
 
 	/**
+	 * @return whether the pixels within reach of a spot enter the profile: not a suspected merge nor a degenerate
+	 *         first pass (its centre does not describe them), nor a particle cut by the border (its amplitude, scale
+	 *         and centre are loose)
+	 */
+	public static boolean usable(final Localization spot) {
+		return !spot.has(Flag.MERGED) && !spot.has(Flag.DEGENERATE) && !spot.has(Flag.AT_BORDER);
+	}
+
+	/**
 	 * @return {mean amplitude, geometric mean scale} of the spots' fitted values (1 where none is known), over
-	 *         spots that are neither merged nor degenerate nor at the border
+	 *         the {@link #usable} spots
 	 */
 	public static double[] norms(final List<Localization> spots) {
 		final double[][] n = norms(spots, new int[spots.size()], 1);
@@ -220,8 +229,7 @@ public final class ProfileEstimator {
 		final int[] n = new int[kinds];
 		for (int k = 0; k < spots.size(); k++) {
 			final Localization l = spots.get(k);
-			if (l.has(Flag.MERGED) || l.has(Flag.DEGENERATE) || l.has(Flag.AT_BORDER) || !Double.isFinite(l
-				.amplitude()) || !(l.scale() > 0)) continue;
+			if (!usable(l) || !Double.isFinite(l.amplitude()) || !(l.scale() > 0)) continue;
 			a[kind[k]] += l.amplitude();
 			s[kind[k]] += Math.log(l.scale());
 			n[kind[k]]++;

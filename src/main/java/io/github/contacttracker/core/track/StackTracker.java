@@ -247,19 +247,17 @@ public final class StackTracker {
 		final List<FrameResult> probed = pass(iterativeTracker, null, at(sample, probe), frame,
 			false, progress, cancelled);
 		final int[] keep = fewer(sample.length, usableParticles(probed) / (double) probe.length);
-		final List<Integer> missing = new ArrayList<>();
-		for (final int position : keep)
-			if (indexOf(probe, position) < 0) missing.add(position);
-		final int[] rest = new int[missing.size()];
+		final FrameResult[] done = new FrameResult[sample.length]; // by position among the sample frames
+		for (int i = 0; i < probe.length; i++)
+			done[probe[i]] = probed.get(i);
+		final int[] rest = java.util.stream.IntStream.of(keep).filter(p -> done[p] == null).toArray();
+		final List<FrameResult> others = pass(iterativeTracker, null, at(sample, rest), frame, false, progress,
+			cancelled);
 		for (int i = 0; i < rest.length; i++)
-			rest[i] = missing.get(i);
-		final List<FrameResult> others = pass(iterativeTracker, null, at(sample, rest), frame,
-			false, progress, cancelled);
+			done[rest[i]] = others.get(i);
 		List<FrameResult> iterative = new ArrayList<>(keep.length);
-		for (final int position : keep) {
-			final int p = indexOf(probe, position);
-			iterative.add(p >= 0 ? probed.get(p) : others.get(indexOf(rest, position)));
-		}
+		for (final int p : keep)
+			iterative.add(done[p]);
 		progress.total -= sample.length - probe.length - rest.length; // iterative frames not run
 		progress.total -= sample.length - keep.length; // the first round's frames
 		sample = at(sample, keep);
@@ -327,13 +325,6 @@ public final class StackTracker {
 		return new ProfileStage(sample, profiles(used), verdict != Rounds.Verdict.GOING_ON, round);
 	}
 
-	/** @return the position of {@code value} in {@code array}, or -1 */
-	private static int indexOf(final int[] array, final int value) {
-		for (int i = 0; i < array.length; i++)
-			if (array[i] == value) return i;
-		return -1;
-	}
-
 	/** @return the elements of {@code array} at {@code positions}, in that order */
 	private static int[] at(final int[] array, final int[] positions) {
 		final int[] out = new int[positions.length];
@@ -344,7 +335,6 @@ public final class StackTracker {
 
 	/** Frames (their indices in the stack) and their results, in the same order. */
 	private record Frames(int[] indices, List<FrameResult> results) {
-
 		/** @return the frames at {@code positions} (of this list), in that order */
 		Frames at(final int[] positions) {
 			final List<FrameResult> out = new ArrayList<>(positions.length);
@@ -472,12 +462,12 @@ public final class StackTracker {
 		return kept;
 	}
 
-	/** @return the spots of {@code results} the profile can use: neither merged nor degenerate nor at the border */
+	/** @return the spots of {@code results} the profile can use ({@link ProfileEstimator#usable}) */
 	private static int usableParticles(final List<FrameResult> results) {
 		int particles = 0;
 		for (final FrameResult r : results)
 			for (final Localization l : r.spots())
-				if (!l.has(Flag.MERGED) && !l.has(Flag.DEGENERATE) && !l.has(Flag.AT_BORDER)) particles++;
+				if (ProfileEstimator.usable(l)) particles++;
 		return particles;
 	}
 
