@@ -65,7 +65,7 @@ final class AccuracyCommand extends ContactTrackerCli.Subcommand {
 	private final Option<String> methodsOption = options.add(Option.text("--methods", "M,...", "Methods. Default: " +
 		"every method for the paper's protocol, fit for --scene."));
 	private final Option<String> sceneOption = options.add(Option.text("--scene", "S,...", "Instead of the paper's " +
-		"protocol, the harder scenes at contact (eval.SceneStudy): pair, chain4, triple, hex7, hex19, unlike, unlike13, " +
+		"protocol, the harder scenes at contact (eval.SceneStudy): pair, chain4, triple, hex7, hex19, hex37, unlike, unlike13, " +
 		"ramp, saturated, photon, or all; and, for a movie of several kinds, mixed (its first and last kind at " +
 		"contact) and mixed7 (hex7 of its kinds in turn), each particle with its own kind's profile."));
 	private final Option<String> separationsOption = options.add(Option.text("--separations", "R,...", "Separations " +

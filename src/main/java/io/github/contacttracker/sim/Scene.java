@@ -54,8 +54,8 @@ public record Scene(String key, ParticleType type, List<Particle> particles, dou
 	public static final List<String> MIXED_KEYS = List.of("mixed", "mixed7");
 
 	/** The scenes {@link #of} knows, in order. */
-	public static final List<String> KEYS = List.of("pair", "chain4", "triple", "hex7", "hex19", "unlike", "unlike13",
-		"ramp", "saturated", "photon");
+	public static final List<String> KEYS = List.of("pair", "chain4", "triple", "hex7", "hex19", "hex37", "unlike",
+		"unlike13", "ramp", "saturated", "photon");
 
 	/** Grey levels per photon of the photon-noise scenes: about 300 photons at a background of 60. */
 	public static final double PHOTON_GAIN = 0.2;
@@ -156,6 +156,8 @@ public record Scene(String key, ParticleType type, List<Particle> particles, dou
 			case "triple" -> plain("triple", type, triangle(d));
 			case "hex7" -> plain("hex7", type, hexagon(d));
 			case "hex19" -> plain("hex19", type, hexPatch(d, 2));
+			// more than GroupFit fits jointly: its members are fitted in turn, as in a dense field
+			case "hex37" -> plain("hex37", type, hexPatch(d, 3));
 			case "unlike" -> plain("unlike", type, unlike(d, 1.2, 1.1));
 			case "unlike13" -> plain("unlike13", type, unlike(d, 1.3, 1.15));
 			case "ramp" -> new Scene("ramp", type, line(2, d), 0.05, 0.03, PHOTON_GAIN, READ_NOISE, th);
