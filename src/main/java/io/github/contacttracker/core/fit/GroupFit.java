@@ -344,6 +344,7 @@ public final class GroupFit {
 		// per member, the residuals' variance where its centre's information lies (see accumulate): every pass at p
 		// sums it, so that the standard errors always come from it, whichever pass the fit ends on
 		final double[] startNoise = new double[PER_PARTICLE * n];
+		Evaluated initial = null;
 		double rss;
 		FitPixels pixels = candidates;
 		if (frozen) {
@@ -367,6 +368,7 @@ public final class GroupFit {
 			// out are then taken out of its sums (a pass over them alone): one pass, not a choice and a pass.
 			final double[] models = new double[candidates.count()];
 			rss = NormalEquations.accumulate(candidates, p, n, members, jtj, jtr, startNoise, models);
+			initial = new Evaluated(candidates, p.clone(), models);
 			final boolean[] out = new boolean[use.length];
 			for (int i = 0; i < use.length; i++) {
 				use[i] = censoring.usable(models[i]);
@@ -410,8 +412,9 @@ public final class GroupFit {
 		boolean hessianAtP = previous == null;
 		// the residuals' variances of the latest pass at p
 		double[] noise = startNoise;
-		// the model on the pixels at the latest point accepted by a residual pass, for the re-choice of the pixels
-		Evaluated evaluated = null;
+		// the model on the pixels at the latest pass's point, for the re-choice of the pixels (where they are chosen)
+		final boolean choosing = use != null && !frozen;
+		Evaluated evaluated = initial;
 		// the latest accepted step's largest centre move (px), and the steps accepted since J^T J was computed
 		double lastMove = Double.POSITIVE_INFINITY;
 		int sinceHessian = previous == null ? 0 : 1;
@@ -449,10 +452,11 @@ public final class GroupFit {
 					if (chosen.count() <= np) break;
 					pixels = chosen;
 					noise = new double[PER_PARTICLE * n];
-					rss = NormalEquations.accumulate(pixels, p, n, members, jtj, jtr, noise, null);
+					final double[] models = choosing ? new double[pixels.count()] : null;
+					rss = NormalEquations.accumulate(pixels, p, n, members, jtj, jtr, noise, models);
+					evaluated = choosing ? new Evaluated(pixels, p.clone(), models) : null;
 					hessianAtP = true;
 					sinceHessian = 0;
-					evaluated = null;
 					mu = 1e-3;
 					continue;
 				}
@@ -468,7 +472,7 @@ public final class GroupFit {
 			// a step from J^T J at p, or a chord step that shrinks fast, is evaluated
 			if (hessianAtP || allowed && move <= CHORD_CONTRACTION * lastMove) {
 				final double[] tr = new double[np], trialNoise = new double[PER_PARTICLE * n];
-				final double[] trialModels = use != null && !frozen ? new double[pixels.count()] : null;
+				final double[] trialModels = choosing ? new double[pixels.count()] : null;
 				final double trialRss = allowed ? NormalEquations.accumulate(pixels, trial, n, members, null, tr,
 					trialNoise, trialModels) : Double.POSITIVE_INFINITY;
 				if (trialRss <= rss) {
@@ -486,10 +490,11 @@ public final class GroupFit {
 			}
 			if (!hessianAtP) { // a chord step that does not shrink fast, or that failed: J^T J at p, and the step again
 				noise = new double[PER_PARTICLE * n];
-				rss = NormalEquations.accumulate(pixels, p, n, members, jtj, jtr, noise, null);
+				final double[] models = choosing ? new double[pixels.count()] : null;
+				rss = NormalEquations.accumulate(pixels, p, n, members, jtj, jtr, noise, models);
+				evaluated = choosing ? new Evaluated(pixels, p.clone(), models) : null;
 				hessianAtP = true;
 				sinceHessian = 0;
-				evaluated = null;
 			}
 			else mu *= 10;
 		}
@@ -537,7 +542,7 @@ public final class GroupFit {
 		double[][] jtj;
 	}
 
-	/** The model on a fit's pixels at parameters {@code p}, as a residual pass computed it. */
+	/** The model on a fit's pixels at parameters {@code p}, as a pass over them computed it. */
 	private record Evaluated(FitPixels pixels, double[] p, double[] models) {}
 
 	/** The usable pixels are chosen at most this many times per fit (one pixel could flip back and forth). */
