@@ -152,11 +152,11 @@ public final class GroupFit {
 	 * centre ({@link EmpiricalProfile#informationRadius}), which in a dense field lie well within r_out, chosen in
 	 * the first sweep and kept ({@link Kept}), to its own tolerance (in the first sweep, whose neighbours all move
 	 * after it, that of its first J^T J: the centre's own error is not known before) and for at most
-	 * {@value #ITERATIONS_PER_SWEEP} iterations a sweep; it is fitted again only while it, or a neighbour whose window
-	 * overlaps its own, still moves. The sweeps stop when no member moves more than {@link #settled its tolerance}, at
-	 * most {@code maxSweeps} ({@value #MAX_SWEEPS});
-	 * a member still moving then is flagged {@code NOT_CONVERGED}, one that cannot be fitted or slides off its
-	 * particle {@code FELL_BACK}. The cost is linear in the group's size and bounded. A member's standard errors are
+	 * {@value #ITERATIONS_PER_SWEEP} iterations a sweep; it is fitted again only when a neighbour whose window overlaps
+	 * its own moved by more than {@link #settled that neighbour's tolerance} after the member's latest fit, or when its
+	 * own iterations ran out. The sweeps stop when no member is to be fitted again, at most {@code maxSweeps}
+	 * ({@value #MAX_SWEEPS}); a member that would be fitted again then, or that its latest fit still moved, is flagged
+	 * {@code NOT_CONVERGED}, one that cannot be fitted or slides off its particle {@code FELL_BACK}. The cost is linear in the group's size and bounded. A member's standard errors are
 	 * those of its own fit, without its covariance with the neighbours. (Compact blocks of up to 16 members fitted
 	 * jointly in turn approached a simulated field's joint fit 3.5 times closer in ten sweeps, but on the authors'
 	 * movie no block ever settled: a member that cannot settle holds up a joint fit, not its neighbours' own.)
