@@ -188,8 +188,10 @@ public final class GroupFit {
 			kept[q] = new Kept();
 		int most = 0;
 		boolean any = true;
+		long sweepStart = 0;
 		for (int sweep = 1; sweep <= maxSweeps && any; sweep++) {
 			most = 0;
+			sweepStart = clock;
 			for (int q = 0; q < n; q++) {
 				if (!active[q]) continue;
 				final int k = group[q];
@@ -202,8 +204,10 @@ public final class GroupFit {
 				failed[q] = it == 0 || e[k].distanceTo(start[q]) > MAX_SLIDE * Math.sqrt(particles[k].region().area() /
 					Math.PI);
 				if (failed[q]) e[k] = start[q].withFlags(e[k].flags());
-				unfinished[q] = it < 0;
-				moving[q] = unfinished[q] || !failed[q] && e[k].distanceTo(before) > settled(e[k]);
+				// a member that failed is back at its start: it moved if that is not where its neighbours last saw it
+				// (counted as unfinished, one sliding off every sweep held its group for all of them: a crop of 1.avi)
+				unfinished[q] = it < 0 && !failed[q];
+				moving[q] = unfinished[q] || e[k].distanceTo(before) > settled(e[k]);
 				fittedAt[q] = ++clock;
 				if (moving[q]) movedAt[q] = clock;
 				most = Math.max(most, Math.abs(it));
@@ -226,8 +230,9 @@ public final class GroupFit {
 		for (int q = 0; q < n; q++) {
 			final int k = group[q];
 			if (failed[q]) e[k] = e[k].withFlags(e[k].flags() | Flag.FELL_BACK.bit());
-			// out of sweeps: one that would be fitted again, or that its latest fit still moved
-			else if (any && (active[q] || moving[q])) e[k] = e[k].withFlags(e[k].flags() | Flag.NOT_CONVERGED.bit());
+			// out of sweeps: one that would be fitted again, or that the last sweep's fit still moved
+			else if (any && (active[q] || moving[q] && fittedAt[q] > sweepStart)) e[k] = e[k].withFlags(e[k].flags() |
+				Flag.NOT_CONVERGED.bit());
 		}
 		return most;
 	}
