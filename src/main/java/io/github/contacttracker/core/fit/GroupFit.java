@@ -155,9 +155,10 @@ public final class GroupFit {
 	 * {@value #ITERATIONS_PER_SWEEP} iterations a sweep; it is fitted again only when a neighbour whose window overlaps
 	 * its own moved by more than {@link #settled that neighbour's tolerance} after the member's latest fit, or when its
 	 * own iterations ran out. The sweeps stop when no member is to be fitted again, at most {@code maxSweeps}
-	 * ({@value #MAX_SWEEPS}); a member that would be fitted again then, or that its latest fit still moved, is flagged
-	 * {@code NOT_CONVERGED}, one that cannot be fitted or slides off its particle {@code FELL_BACK}. The cost is linear in the group's size and bounded. A member's standard errors are
-	 * those of its own fit, without its covariance with the neighbours. (Compact blocks of up to 16 members fitted
+	 * ({@value #MAX_SWEEPS}); a member that would be fitted again then, or that the last sweep's fit still moved, is
+	 * flagged {@code NOT_CONVERGED}, one that cannot be fitted or slides off its particle {@code FELL_BACK}. The cost
+	 * is linear in the group's size and bounded. A member's standard errors are those of its own fit, without its
+	 * covariance with the neighbours. (Compact blocks of up to 16 members fitted
 	 * jointly in turn approached a simulated field's joint fit 3.5 times closer in ten sweeps, but on the authors'
 	 * movie no block ever settled: a member that cannot settle holds up a joint fit, not its neighbours' own.)
 	 *
@@ -167,11 +168,11 @@ public final class GroupFit {
 		final EmpiricalProfile[] profile, final double window, final Censoring censoring, final int maxSweeps)
 	{
 		final int n = group.length;
-		final boolean[] failed = new boolean[n], active = new boolean[n], moving = new boolean[n], unfinished =
-			new boolean[n];
+		final boolean[] failed = new boolean[n], active = new boolean[n], unfinished = new boolean[n];
 		java.util.Arrays.fill(active, true);
-		// when each member was last fitted and last moved, counted in fits: a member is fitted again only when a
-		// neighbour moved after its own latest fit (block Gauss-Seidel: a move before it, it has seen)
+		// when each member was last fitted and last moved (by more than its tolerance, or its iterations ran out),
+		// counted in fits: a member is fitted again only when a neighbour moved after its own latest fit (block
+		// Gauss-Seidel: a move before it, it has seen)
 		final long[] fittedAt = new long[n], movedAt = new long[n];
 		long clock = 0;
 		final Estimate[] start = new Estimate[n];
@@ -207,9 +208,8 @@ public final class GroupFit {
 				// a member that failed is back at its start: it moved if that is not where its neighbours last saw it
 				// (counted as unfinished, one sliding off every sweep held its group for all of them: a crop of 1.avi)
 				unfinished[q] = it < 0 && !failed[q];
-				moving[q] = unfinished[q] || e[k].distanceTo(before) > settled(e[k]);
 				fittedAt[q] = ++clock;
-				if (moving[q]) movedAt[q] = clock;
+				if (unfinished[q] || e[k].distanceTo(before) > settled(e[k])) movedAt[q] = clock;
 				most = Math.max(most, Math.abs(it));
 			}
 			// fitted again: a member whose iterations ran out, and one that a neighbour's move after its own fit reaches:
@@ -231,8 +231,8 @@ public final class GroupFit {
 			final int k = group[q];
 			if (failed[q]) e[k] = e[k].withFlags(e[k].flags() | Flag.FELL_BACK.bit());
 			// out of sweeps: one that would be fitted again, or that the last sweep's fit still moved
-			else if (any && (active[q] || moving[q] && fittedAt[q] > sweepStart)) e[k] = e[k].withFlags(e[k].flags() |
-				Flag.NOT_CONVERGED.bit());
+			else if (any && (active[q] || movedAt[q] > sweepStart)) e[k] = e[k].withFlags(e[k].flags() | Flag.NOT_CONVERGED
+				.bit());
 		}
 		return most;
 	}
@@ -510,8 +510,8 @@ public final class GroupFit {
 		for (int q = 0; q < n; q++) {
 			final Estimate old = e[group[q]];
 			final int b = PER_PARTICLE * q;
-			final double vx = noise != null && noise[b] > 0 ? dof * noise[b + 1] / noise[b] : s2;
-			final double vy = noise != null && noise[b + 2] > 0 ? dof * noise[b + 3] / noise[b + 2] : s2;
+			final double vx = noise[b] > 0 ? dof * noise[b + 1] / noise[b] : s2;
+			final double vy = noise[b + 2] > 0 ? dof * noise[b + 3] / noise[b + 2] : s2;
 			e[group[q]] = new Estimate(p[b], p[b + 1], old.flags(), old.secondArea(), old.iterations(), old.solve(), Math
 				.sqrt(vx * inv[b][b]), Math.sqrt(vy * inv[b + 1][b + 1]), p[b + 2], p[b + 3]);
 		}
