@@ -61,6 +61,15 @@ public sealed interface Finding {
 	record NotIsolated(double neighbour, double diameter) implements Finding {}
 
 	/**
+	 * The field is so dense that masking every neighbour within {@code wanted} left no background around the
+	 * particles profiled: they were masked only within {@code mask}, and their light may show in the profile.
+	 *
+	 * @param mask how far from each neighbour pixels were masked (px)
+	 * @param wanted how far they were to be (px)
+	 */
+	record NeighboursMaskedCloser(double mask, double wanted) implements Finding {}
+
+	/**
 	 * The profile is still off the background where the background is measured: {@code r_out} is a lower bound.
 	 *
 	 * @param radius where the background annulus starts (px)

@@ -559,9 +559,10 @@ public final class ProfileAnalysis {
 		for (final int k : chosen)
 			centres.add(xy[k]);
 		final double radiusCap = Math.min(wanted, farthestCorner(centres.get(0)[0], centres.get(0)[1], w, h));
-		Pooled pooled = pool(plane, centres, xy, diameter, radiusCap);
+		Pooled pooled = poolNarrowing(plane, centres, xy, diameter, radiusCap, diameter, null);
 		double reach = reach(pooled, radiusCap, null);
-		pooled = pool(plane, centres, xy, Math.max(diameter, reach + R_OUT_MARGIN_PX), radiusCap);
+		pooled = poolNarrowing(plane, centres, xy, Math.max(diameter, reach + R_OUT_MARGIN_PX), radiusCap, diameter,
+			findings);
 		reach = reach(pooled, radiusCap, findings);
 		return new Measured(pooled.centres(), refined, radiusCap, pooled, reach, imageEdge(pooled, reach), findings);
 	}
@@ -657,8 +658,48 @@ public final class ProfileAnalysis {
 		List<double[]> centres) {}
 
 	/**
+	 * {@link #pool}, the mask narrowed (by {@value #MASK_NARROWING} at a time, down to half the diameter) while no
+	 * particle has background pixels left around it: in a dense field of particles that do not touch (the paper
+	 * authors' Test_im.png, 50 particles 28-38 px apart in 250 x 250 px), every pixel lies within a diameter of some
+	 * neighbour. Narrowed, it is reported in {@code findings} (when not null).
+	 *
+	 * @throws InvalidInputException naming the particle tried first when no mask down to half the diameter leaves
+	 *         background
+	 */
+	private static Pooled poolNarrowing(final Plane plane, final List<double[]> centres, final double[][] spots,
+		final double mask, final double radiusCap, final double diameter, final List<Finding> findings)
+	{
+		NoBackground first = null;
+		for (double m = mask; m >= diameter / 2; m *= MASK_NARROWING)
+			try {
+				final Pooled pooled = pool(plane, centres, spots, m, radiusCap);
+				if (first != null && findings != null) findings.add(new Finding.NeighboursMaskedCloser(m, mask));
+				return pooled;
+			}
+			catch (final NoBackground e) {
+				if (first == null) first = e;
+			}
+		throw first;
+	}
+
+	/** Each step of {@link #poolNarrowing} multiplies the mask by this. */
+	static final double MASK_NARROWING = 0.8;
+
+	/** No particle pooled has enough background pixels around it: the message names the first one tried. */
+	private static final class NoBackground extends InvalidInputException {
+
+		private static final long serialVersionUID = 1L;
+
+		NoBackground(final String message) {
+			super(message);
+		}
+	}
+
+	/**
 	 * Pools the pixels around {@code centres} within {@code radiusCap}, masking pixels within {@code mask} of every
 	 * other spot of {@code spots}; each particle's local background is a plane fitted robustly to its annulus.
+	 *
+	 * @throws NoBackground when no particle has enough background pixels
 	 */
 	private static Pooled pool(final Plane plane, final List<double[]> centres, final double[][] spots,
 		final double mask, final double radiusCap)
@@ -715,7 +756,7 @@ public final class ProfileAnalysis {
 					sumR[k] += r;
 				}
 		}
-		if (used.isEmpty()) throw new InvalidInputException(failure);
+		if (used.isEmpty()) throw new NoBackground(failure);
 		final double noise = clippedSigma(residuals.toArray());
 		int filled = bins;
 		while (filled > 0 && rings[filled - 1].size == 0)

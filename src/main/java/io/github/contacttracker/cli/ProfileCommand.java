@@ -64,7 +64,7 @@ public final class ProfileCommand extends ContactTrackerCli.Subcommand {
 	private final Option<Double> maxRadiusOption = options.add(Option.decimal("--max-radius", "R", "how far out the " +
 		"profile is measured (px); default: 2.5 diameters").withDefaultExplained("0"));
 	private final Option<Integer> channelOption = options.add(Option.integer("--channel", "C", "channel of a " +
-		"multi-channel image (from 1)").withDefaultExplained("0"));
+		"multi-channel image (from 1), or of a colour one (1 red, 2 green, 3 blue)").withDefaultExplained("0"));
 	private final Option<Path> pngOption = options.add(Option.path("--png", "OUT.png", "write the profile plot"));
 	private final Option<Path> csvOption = options.add(Option.path("--csv", "OUT.csv", "write the profile table"));
 

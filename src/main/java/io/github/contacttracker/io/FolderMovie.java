@@ -35,8 +35,9 @@ import ij.process.ImageProcessor;
 /**
  * A folder of frames (TIFF, PNG or JPEG, one 2D image per file) as a virtual stack, in natural order
  * ({@code frame2} before {@code frame10}); each file is opened when its frame is needed. Every frame must have the
- * first one's size and bit depth. Colour JPEG frames are converted to grey (JPEG codes grey pictures in colour
- * too); colour TIFF and PNG frames are refused like any colour image.
+ * first one's size and bit depth. A frame stored in colour whose red, green and blue are equal is grey (JPEG codes
+ * grey pictures in colour too); a folder of colour frames is a colour movie, of which one channel is tracked (see
+ * {@link ImagePlusFrames}).
  */
 final class FolderMovie {
 
@@ -82,8 +83,12 @@ final class FolderMovie {
 		catch (final java.io.UncheckedIOException e) {
 			throw e.getCause();
 		}
-		final String name = file.getFileName().toString().toLowerCase(Locale.ROOT);
-		if (ip.getBitDepth() == 24 && (name.endsWith(".jpg") || name.endsWith(".jpeg"))) ip = ip.convertToByte(false);
+		// a grey picture stored in colour (JPEG often codes grey in colour) is grey, in a folder of grey frames or
+		// first: exactly its grey levels
+		if (ip.getBitDepth() == 24 && (w == 0 || bits == 8)) {
+			final ImageProcessor grey = ImagePlusFrames.grey(ip);
+			if (grey != null) ip = grey;
+		}
 		if (w > 0 && (ip.getWidth() != w || ip.getHeight() != h || ip.getBitDepth() != bits))
 			throw new IOException("frame " + file + " is " + ip.getWidth() + " x " + ip.getHeight() + ", " + ip
 				.getBitDepth() + "-bit, unlike the first frame (" + w + " x " + h + ", " + bits + "-bit)");

@@ -53,8 +53,9 @@ public final class ImageFiles {
 	 * (a virtual stack), so that a movie of any size fits a fixed heap:
 	 * <ul>
 	 * <li>TIFF, multi-page TIFF, ImageJ hyperstacks, BigTIFF, OME-TIFF, 64-bit float TIFF ({@link TiffMovie});</li>
-	 * <li>AVI: uncompressed, MJPEG or PNG-coded, what ImageJ 1's {@code AVI_Reader} reads; colour frames (MJPEG
-	 * codes even grey movies in colour) are converted to grey, the mean of R, G and B;</li>
+	 * <li>AVI: uncompressed, MJPEG or PNG-coded, what ImageJ 1's {@code AVI_Reader} reads; colour frames stay RGB
+	 * (MJPEG codes even grey movies in colour: {@link ImagePlusFrames} tracks those as grey, and one channel of a
+	 * colour movie);</li>
 	 * <li>a folder of TIFF, PNG or JPEG frames, one image per file, in natural order ({@link FolderMovie});</li>
 	 * <li>any other single image ImageJ 1 opens (PNG, JPEG, GIF, BMP, ...), read whole.</li>
 	 * </ul>
@@ -112,9 +113,9 @@ public final class ImageFiles {
 	private static ImagePlus avi(final Path file) throws IOException {
 		AviHeader.check(file);
 		final AVI_Reader reader = new AVI_Reader();
-		// virtual, colour converted to grey, not flipped; its messages caught (its error text is our line)
+		// virtual, colour kept, not flipped; its messages caught (its error text is our line)
 		final ImageJMessages.Result<ImageStack> made = ImageJMessages.call(file, () -> reader.makeStack(file
-			.toAbsolutePath().toString(), 1, 0, true, true, false));
+			.toAbsolutePath().toString(), 1, 0, true, false, false));
 		final ImageStack avi = made.value();
 		if (avi == null || avi.size() == 0 || reader.getErrorText() != null) throw new IOException("cannot read " +
 			file + " as an AVI movie: " + InvalidInputException.oneLine(reader.getErrorText() != null ? reader

@@ -44,6 +44,12 @@ import net.imglib2.type.numeric.RealType;
  * Every time point is a frame. A plain stack of 2D planes (one channel, slices only) is a time series. In a
  * multi-channel image one channel is tracked. An image with both Z and T above 1 is refused: the method is 2D.
  * <p>
+ * <b>Colour.</b> An RGB image (colour cameras; MJPEG, which codes even grey movies in colour) has three channels,
+ * 1 red, 2 green, 3 blue, tracked as 8-bit grey. Without a chosen channel it is tracked as grey only when its
+ * first frame is grey (red, green and blue equal at every pixel: then each frame's mean of the three, exactly the
+ * grey of a grey movie); a colour image is refused with the channels' contrast, since their mean would add the
+ * noise of channels without signal to the one that holds it.
+ * <p>
  * <b>Values.</b> Frames hold the image's own values: for 8- and 16-bit images with a calibration function (ImageJ
  * stores signed 16-bit data with an offset of 32768 and such a function), each frame is converted to those values,
  * so that a threshold means what the user sees.
@@ -63,13 +69,16 @@ public final class ImagePlusFrames {
 	private final float[] cTable;
 	private final Calibration calibration;
 	private final int width, height, channel;
+	/** Of an RGB image: the component tracked, 1 red, 2 green, 3 blue, or 0 the mean of the three (a grey image). */
+	private final int colour;
 	private final boolean virtual;
 	private final Map<Integer, RandomAccessibleInterval<? extends RealType<?>>> cache;
 	private int reads;
 
 	private ImagePlusFrames(final ImageStack stack, final int[] stackIndex, final float[] cTable,
-		final Calibration calibration, final int width, final int height, final int channel)
+		final Calibration calibration, final int width, final int height, final int channel, final int colour)
 	{
+		this.colour = colour;
 		this.stack = stack;
 		this.stackIndex = stackIndex;
 		this.cTable = cTable;
@@ -100,35 +109,95 @@ public final class ImagePlusFrames {
 		final int bits = imp.getBitDepth();
 		if (imp.getWidth() < 1 || imp.getHeight() < 1) throw new InvalidInputException(name + " has no pixels (" + imp
 			.getWidth() + " x " + imp.getHeight() + ")");
-		if (bits == 24)
-			throw new InvalidInputException(name + " is an RGB image: convert it to 8-bit, 16-bit or 32-bit grey " +
-				"(Image > Type) or split the channels first");
-		if (bits != 8 && bits != 16 && bits != 32)
+		if (bits != 8 && bits != 16 && bits != 24 && bits != 32)
 			throw new InvalidInputException(name + " has an unsupported bit depth: " + bits);
-		final int nc = imp.getNChannels(), nz = imp.getNSlices(), nt = imp.getNFrames();
+		final boolean rgb = bits == 24;
+		if (rgb && imp.getNChannels() > 1) throw new InvalidInputException(name + " is an RGB image of " + imp
+			.getNChannels() + " channels: split it (Image > Color > Split Channels) and track one");
+		final int nc = rgb ? 3 : imp.getNChannels(), nz = imp.getNSlices(), nt = imp.getNFrames();
 		if (nz > 1 && nt > 1)
 			throw new InvalidInputException(name + " has " + nz + " Z slices and " + nt +
 				" time frames: the method is 2D; make a projection or pick one slice first");
 		if (channel < 0 || channel > nc)
 			throw new InvalidInputException("channel " + channel + " does not exist: " + name + " has " + nc +
 				" channel" + (nc == 1 ? "" : "s"));
-		if (channel == 0 && nc > 1)
+		if (channel == 0 && nc > 1 && !rgb)
 			throw new InvalidInputException(name + " has " + nc + " channels: choose one to track (channel = 1.." +
 				nc + ")");
-		final int c = Math.max(channel, 1);
+		final int c = rgb ? 1 : Math.max(channel, 1); // an RGB image's colours are in each of its planes
 		final int count = Math.max(nz, nt); // Z slices of a plain stack are frames
 		final int[] index = new int[count];
 		for (int t = 1; t <= count; t++)
 			index[t - 1] = nt > 1 ? imp.getStackIndex(c, 1, t) : imp.getStackIndex(c, t, 1);
+		if (rgb && channel == 0) {
+			final ImageProcessor first = imp.getStack().getProcessor(index[0]);
+			if (first == null) throw new InvalidInputException("cannot read frame 1 of " + name);
+			final double[] spread = colourSpread((int[]) first.getPixels());
+			if (spread != null) throw new InvalidInputException(name + " has colour frames (red, green and blue " +
+				"differ): choose the channel to track (channel = 1 red, 2 green, 3 blue; their spread in frame 1: " +
+				String.format(java.util.Locale.ROOT, "%.1f, %.1f, %.1f", spread[0], spread[1], spread[2]) + " grey levels)");
+		}
 		final ij.measure.Calibration cal = imp.getCalibration();
 		// a calibration function (signed 16-bit data, or one the user set) maps stored to real values
-		final float[] cTable = bits != 32 && cal.calibrated() ? cal.getCTable() : null;
+		final float[] cTable = bits != 32 && !rgb && cal.calibrated() ? cal.getCTable() : null;
 		final double pw = cal.pixelWidth > 0 ? cal.pixelWidth : 1, ph = cal.pixelHeight > 0 ? cal.pixelHeight : 1;
 		final double dt = cal.frameInterval > 0 ? cal.frameInterval : 1;
 		final String unit = cal.scaled() ? cal.getXUnit() : "pixel";
 		final String timeUnit = cal.frameInterval > 0 ? cal.getTimeUnit() : "frame";
 		return new ImagePlusFrames(imp.getStack(), index, cTable, new Calibration(cal.scaled() ? pw : 1, cal.scaled()
-			? ph : 1, unit, dt, timeUnit), imp.getWidth(), imp.getHeight(), c);
+			? ph : 1, unit, dt, timeUnit), imp.getWidth(), imp.getHeight(), rgb ? Math.max(channel, 1) : c, rgb ? channel
+				: -1);
+	}
+
+	/**
+	 * @return null when every pixel has red, green and blue equal (a grey image stored in colour), else each
+	 *         component's standard deviation over the frame (grey levels)
+	 */
+	private static double[] colourSpread(final int[] rgb) {
+		boolean grey = true;
+		for (final int p : rgb)
+			if (((p >> 16) & 0xff) != (p & 0xff) || ((p >> 8) & 0xff) != (p & 0xff)) {
+				grey = false;
+				break;
+			}
+		if (grey) return null;
+		final double[] spread = new double[3];
+		for (int c = 0; c < 3; c++) {
+			final int shift = 16 - 8 * c;
+			double sum = 0, sum2 = 0;
+			for (final int p : rgb) {
+				final int v = (p >> shift) & 0xff;
+				sum += v;
+				sum2 += (double) v * v;
+			}
+			final double mean = sum / rgb.length;
+			spread[c] = Math.sqrt(Math.max(0, sum2 / rgb.length - mean * mean));
+		}
+		return spread;
+	}
+
+	/**
+	 * @return an RGB picture whose red, green and blue are equal at every pixel as an 8-bit one of those grey levels;
+	 *         null for any other
+	 */
+	static ImageProcessor grey(final ImageProcessor ip) {
+		if (!(ip.getPixels() instanceof int[] rgb) || colourSpread(rgb) != null) return null;
+		return new ij.process.ByteProcessor(ip.getWidth(), ip.getHeight(), component(rgb, 3));
+	}
+
+	/** @return the RGB pixels' component {@code colour} (1 red, 2 green, 3 blue; 0 the rounded mean of the three) */
+	private static byte[] component(final int[] rgb, final int colour) {
+		final byte[] out = new byte[rgb.length];
+		if (colour == 0) for (int i = 0; i < rgb.length; i++) {
+			final int p = rgb[i];
+			out[i] = (byte) ((((p >> 16) & 0xff) + ((p >> 8) & 0xff) + (p & 0xff) + 1) / 3);
+		}
+		else {
+			final int shift = 24 - 8 * colour;
+			for (int i = 0; i < rgb.length; i++)
+				out[i] = (byte) (rgb[i] >> shift);
+		}
+		return out;
 	}
 
 	/**
@@ -194,6 +263,11 @@ public final class ImagePlusFrames {
 			throw new InvalidInputException("a frame is " + ip.getWidth() + " x " + ip.getHeight() + " pixels, not " +
 				width + " x " + height + " like the first");
 		final Object pixels = ip.getPixels();
+		if (pixels instanceof int[] rgb) {
+			if (colour < 0) throw new InvalidInputException("a frame is in colour (RGB), unlike the first");
+			return ArrayImgs.unsignedBytes(component(rgb, colour), width, height);
+		}
+		if (colour >= 0) throw new InvalidInputException("a frame is grey, unlike the first (RGB)");
 		if (cTable != null) {
 			final float[] real = new float[width * height];
 			if (pixels instanceof byte[]) {

@@ -132,6 +132,10 @@ public final class ProfileReport {
 		if (finding instanceof Finding.NotIsolated f)
 			return "no particle is isolated: the most isolated has a neighbour at " + fmt2(f.neighbour()) + " px (" +
 				fmt2(f.neighbour() / f.diameter()) + " diameters); the profile's outer part may show neighbours";
+		if (finding instanceof Finding.NeighboursMaskedCloser f)
+			return "the field is dense: pixels within " + fmt2(f.wanted()) + " px of a neighbour left no background " +
+				"around the particles, so neighbours were masked within " + fmt2(f.mask()) + " px only; their light may " +
+				"show in the profile's outer part";
 		if (finding instanceof Finding.NotBackToBackground f)
 			return "the profile has not returned to the background by " + fmt2(f.radius()) + " px: increase " +
 				"max_radius (r_out is a lower bound)";

@@ -74,7 +74,7 @@ public final class TrackingSettings {
 
 	/** Help text of {@link #CHANNEL}, a constant so that annotations (SciJava's {@code @Parameter}) can use it. */
 	public static final String HELP_CHANNEL = "The channel to track, 1-based; single-channel images have only " +
-		"channel 1.";
+		"channel 1, colour (RGB) ones three: 1 red, 2 green, 3 blue.";
 
 	/** The first channel: channels count from 1. (The core's parameters state their own limits.) */
 	public static final int CHANNEL_AT_LEAST = 1;

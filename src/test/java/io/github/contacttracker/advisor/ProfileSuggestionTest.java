@@ -224,6 +224,36 @@ class ProfileSuggestionTest {
 		assertEquals(c[1], one.y(), 0.2);
 	}
 
+	/**
+	 * A field so dense that no pixel lies a diameter away from every particle: a hexagonal lattice of 29 px, the
+	 * estimated diameter 27-28 px. The helper found no background around any particle and refused ("only 0 background
+	 * pixels lie between 54.88 and 68.60 px from the particle at ..."), and so did {@code track} without values; on the
+	 * paper authors' single image Test_im.png (50 particles 27.5-38 px apart in 250 x 250 px) too. Now the mask around
+	 * the neighbours narrows until background is left, and the helper says so. (On Test_im.png the values it then
+	 * measures find all 50 particles; on this perfect lattice the neighbours' rings, all at the same distances, still
+	 * show in the profile, and the helper's other warnings say what follows.)
+	 */
+	@Test
+	void aFieldWithoutBackgroundBeyondADiameterIsMeasuredWithANarrowerMask() {
+		final int w = 250, h = 250;
+		final SplittableRandom rnd = new SplittableRandom(5);
+		final List<double[]> centres = new ArrayList<>();
+		for (int row = 0; 8 + row * 29 * Math.sqrt(3) / 2 < h - 8; row++)
+			for (double x = 8 + (row % 2) * 14.5; x < w - 8; x += 29)
+				centres.add(new double[] { x + rnd.nextDouble(-1, 1), 8 + row * 29 * Math.sqrt(3) / 2 + rnd.nextDouble(-1,
+					1) });
+		final RadialProfile profile = r -> 120 * Math.exp(-r * r / 32) - 16 * Math.exp(-(r - 14) * (r - 14) / 18);
+		final RandomAccessibleInterval<UnsignedByteType> frame = Quantiser.toUnsignedBytes(new ImageSimulator(profile,
+			3).render(centres, w, h, 65), NoiseModel.gaussian(3), rnd).image();
+		final ProfileAnalysis.Result r = ProfileAnalysis.analyse(frame, 0, 0);
+		final List<Finding> narrowed = r.findings().stream().filter(f -> f instanceof Finding.NeighboursMaskedCloser)
+			.toList();
+		assertEquals(1, narrowed.size(), "said once: " + r.findings());
+		final Finding.NeighboursMaskedCloser f = (Finding.NeighboursMaskedCloser) narrowed.get(0);
+		assertTrue(f.mask() < f.wanted() && f.mask() >= r.diameter() / 2, f + " at diameter " + r.diameter());
+		assertEquals(28, r.diameter(), 1.5, "the lattice's spacing, less its jitter");
+	}
+
 	/** {@code count} random centres at least {@code margin} inside a w x h frame and more than {@code apart} apart. */
 	static List<double[]> scattered(final int count, final int w, final int h, final double margin,
 		final double apart, final SplittableRandom rnd)

@@ -36,8 +36,10 @@ import org.junit.jupiter.api.io.TempDir;
 
 import ij.IJ;
 import ij.ImagePlus;
+import ij.ImageStack;
 import ij.io.FileSaver;
 import ij.plugin.filter.AVI_Writer;
+import ij.process.ColorProcessor;
 import ij.process.ImageProcessor;
 import io.github.contacttracker.io.TestMovies;
 
@@ -53,9 +55,11 @@ class MovieInputTest {
 	private static final int FRAMES = 4;
 
 	/** Tracks {@code input}; returns the spots' (frame, x, y) from the CSV on stdout, after checking the run. */
-	private static List<double[]> track(final Path input, final String threshold) {
-		final Object[] r = ContactTrackerCliTest.run("track", input.toString(), "--threshold", threshold, "--r-out",
-			"14", "--method", "paper");
+	private static List<double[]> track(final Path input, final String threshold, final String... more) {
+		final List<String> args = new ArrayList<>(List.of("track", input.toString(), "--threshold", threshold,
+			"--r-out", "14", "--method", "paper"));
+		args.addAll(List.of(more));
+		final Object[] r = ContactTrackerCliTest.run(args.toArray(String[]::new));
 		assertEquals(0, r[0], (String) r[2]);
 		final List<double[]> spots = new ArrayList<>();
 		final List<String> lines = ((String) r[1]).lines().toList();
@@ -91,6 +95,67 @@ class MovieInputTest {
 			// JPEG loses a little; the others are exact
 			assertTrack(track(avi, "120"), FRAMES, compression == AVI_Writer.JPEG_COMPRESSION ? 0.1 : 0.02);
 		}
+	}
+
+	/**
+	 * A colour camera's movie: the particle in red, a second one mirrored left-right in blue, green a flat 30. Each
+	 * chosen channel gives its own particle exactly as a grey movie of that channel would; without a choice the
+	 * movie is refused, naming the channels' contrast (their mean would add channels without signal to the one
+	 * with it).
+	 */
+	@Test
+	void aColourMovieTracksTheChosenChannel() throws IOException {
+		final List<float[]> red = TestMovies.frames(FRAMES, 20, 220);
+		final ImageStack rgb = new ImageStack(TestMovies.W, TestMovies.H);
+		for (final float[] f : red) {
+			final int[] px = new int[f.length];
+			for (int i = 0; i < px.length; i++) {
+				final int x = i % TestMovies.W, mirrored = i - x + TestMovies.W - 1 - x;
+				px[i] = (int) f[i] << 16 | 30 << 8 | (int) f[mirrored];
+			}
+			rgb.addSlice(null, new ColorProcessor(TestMovies.W, TestMovies.H, px));
+		}
+		final Path avi = dir.resolve("colour.avi");
+		new AVI_Writer().writeImage(new ImagePlus("colour", rgb), avi.toString(), AVI_Writer.NO_COMPRESSION, 0);
+		final Path redOnly = dir.resolve("red.tif");
+		new FileSaver(TestMovies.bytes(red)).saveAsTiffStack(redOnly.toString());
+
+		final List<double[]> fromRed = track(avi, "120", "--channel", "1");
+		assertTrack(fromRed, FRAMES, 0.02);
+		assertEquals(csv(track(redOnly, "120")), csv(fromRed), "the red channel is tracked as a grey movie of it");
+		final List<double[]> fromBlue = track(avi, "120", "--channel", "3");
+		assertEquals(FRAMES, fromBlue.size());
+		for (int t = 0; t < FRAMES; t++)
+			assertEquals(TestMovies.W - 1 - TestMovies.x(t), fromBlue.get(t)[1], 0.02, "the blue particle, mirrored");
+		final Object[] r = ContactTrackerCliTest.run("track", avi.toString(), "--threshold", "120", "--r-out", "14");
+		assertEquals(ContactTrackerCli.EXIT_BAD_INPUT, r[0]);
+		assertTrue(((String) r[2]).startsWith("contact-tracker: error: 'colour.avi' has colour frames (red, green and " +
+			"blue differ): choose the channel to track (channel = 1 red, 2 green, 3 blue; their spread in frame 1: "),
+			(String) r[2]);
+		assertTrue(((String) r[2]).contains(", 0.0, "), "green is flat: " + r[2]);
+	}
+
+	/** A grey movie stored in colour (as MJPEG codes grey) is tracked as the grey movie, without a channel. */
+	@Test
+	void aGreyMovieStoredInColourIsGrey() throws IOException {
+		final ImagePlus grey = movie8();
+		final ImageStack rgb = new ImageStack(TestMovies.W, TestMovies.H);
+		for (int t = 1; t <= FRAMES; t++)
+			rgb.addSlice(null, grey.getStack().getProcessor(t).convertToRGB());
+		final Path colour = dir.resolve("grey-in-colour.avi"), plain = dir.resolve("grey.avi");
+		new AVI_Writer().writeImage(new ImagePlus("grey in colour", rgb), colour.toString(), AVI_Writer.NO_COMPRESSION,
+			0);
+		new AVI_Writer().writeImage(grey, plain.toString(), AVI_Writer.NO_COMPRESSION, 0);
+		final List<double[]> spots = track(colour, "120");
+		assertTrack(spots, FRAMES, 0.02);
+		assertEquals(csv(track(plain, "120")), csv(spots));
+	}
+
+	private static String csv(final List<double[]> spots) {
+		final StringBuilder b = new StringBuilder();
+		for (final double[] s : spots)
+			b.append(java.util.Arrays.toString(s)).append('\n');
+		return b.toString();
 	}
 
 	@Test

@@ -41,7 +41,6 @@ import org.scijava.module.Module;
 import org.scijava.script.ScriptService;
 
 import ij.ImagePlus;
-import ij.process.ColorProcessor;
 import io.github.contacttracker.core.Connectivity;
 import io.github.contacttracker.core.Method;
 import io.github.contacttracker.core.TrackerParameters;
@@ -92,7 +91,7 @@ class BatchScriptsTest extends WithContext {
 		final Path in = Files.createDirectories(dir.resolve("in")), out = Files.createDirectories(dir.resolve("out"));
 		final ImagePlus movie = Simulated.image();
 		ImageFiles.saveTiff(movie, in.resolve("movie.tif"));
-		ImageFiles.saveTiff(new ImagePlus("colour", new ColorProcessor(40, 30)), in.resolve("colour.tiff"));
+		ImageFiles.saveTiff(Simulated.zAndT("volume"), in.resolve("volume.tiff"));
 		Files.writeString(in.resolve("notes.txt"), "not an image");
 		Files.write(in.resolve("truncated.tif"), java.util.Arrays.copyOf(Files.readAllBytes(in.resolve("movie.tif")),
 			600)); // a broken file: named in the log, the others done
@@ -101,7 +100,7 @@ class BatchScriptsTest extends WithContext {
 		final Module m = scripts.run(script.toFile(), true, "input", in.toFile(), "output", out.toFile(), "threshold",
 			threshold, "r_out", rOut, "min_area", 20, "method", "paper", "channel", 1, "trackmate", true).get();
 		assertEquals(1, m.getOutput("done"));
-		assertEquals(2, m.getOutput("failed"), "the RGB image and the truncated file are refused");
+		assertEquals(2, m.getOutput("failed"), "the Z and T stack and the truncated file are refused");
 
 		// the CSV is the command line's for the same image and parameters
 		final ImagePlus reopened = ImageFiles.open(in.resolve("movie.tif"));
@@ -113,7 +112,7 @@ class BatchScriptsTest extends WithContext {
 			false)), frames.calibration());
 		assertEquals(expected.toString(), Files.readString(out.resolve("movie.csv")));
 		assertTrue(Files.isRegularFile(out.resolve("movie.xml")), "TrackMate XML on request");
-		assertFalse(Files.exists(out.resolve("colour.csv")));
+		assertFalse(Files.exists(out.resolve("volume.csv")));
 		assertFalse(Files.exists(out.resolve("notes.csv")));
 	}
 }

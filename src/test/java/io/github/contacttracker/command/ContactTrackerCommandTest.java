@@ -364,15 +364,10 @@ class ContactTrackerCommandTest extends WithContext {
 	}
 
 	static Stream<Arguments> badInputs() {
-		final ImageStack zt = new ImageStack(32, 32);
-		for (int i = 0; i < 4; i++)
-			zt.addSlice(new ByteProcessor(32, 32));
-		final ImagePlus zAndT = new ImagePlus("zt", zt);
-		zAndT.setDimensions(1, 2, 2);
 		return Stream.of(
-			Arguments.of(new ImagePlus("rgb", new ColorProcessor(32, 32)), new Object[0],
-				"'rgb' is an RGB image: convert it to 8-bit, 16-bit or 32-bit grey"),
-			Arguments.of(zAndT, new Object[0],
+			Arguments.of(new ImagePlus("rgb", new ColorProcessor(32, 32)), new Object[] { "channel", 4 },
+				"channel 4 does not exist: 'rgb' has 3 channels"),
+			Arguments.of(Simulated.zAndT("zt"), new Object[0],
 				"'zt' has 2 Z slices and 2 time frames: the method is 2D; make a projection or pick one slice first"),
 			Arguments.of(Simulated.image(), new Object[] { "r_out", 0.0 }, "r_out must be a positive number of pixels, not 0.0"),
 			Arguments.of(Simulated.image(), new Object[] { "r_out", "-3" }, "r_out must be a positive number of pixels, not -3.0"),

@@ -180,7 +180,7 @@ class MacroTest {
 		"simulated | threshold=60 method=best    | method must be one of first, paper, iterative, deblend, fit",
 		"simulated | threshold=60 kinds=5        | kinds must be 0 (found automatically), 1 (all alike) or up to 4, not 5",
 		"simulated | threshold=6000 r_out=20     | threshold 6000 is outside the data range",
-		"rgb       | threshold=60 r_out=20       | 'rgb' is an RGB image" })
+		"rgb       | threshold=60 channel=4      | channel 4 does not exist: 'rgb' has 3 channels" })
 	void invalidInputStopsTheMacroAndChangesNothing(final String image, final String options, final String reason) {
 		final ImagePlus imp = image.equals("rgb") ? new ImagePlus("rgb", new ColorProcessor(40, 30)) : Simulated.image();
 		ResultsTable.getResultsTable().incrementCounter();
@@ -202,7 +202,7 @@ class MacroTest {
 	void aUsersBatchLoopWithRedirectedErrorsReportsTheFileAndGoesOn(@TempDir final Path dir) throws Exception {
 		final Path in = Files.createDirectories(dir.resolve("in"));
 		ImageFiles.saveTiff(Simulated.image(), in.resolve("a.tif"));
-		ImageFiles.saveTiff(new ImagePlus("colour", new ColorProcessor(40, 30)), in.resolve("b colour.tif"));
+		ImageFiles.saveTiff(Simulated.zAndT("volume"), in.resolve("b volume.tif"));
 		ImageFiles.saveTiff(Simulated.image(), in.resolve("c.tif"));
 		final String printed = macro("dir = getArgument();\n" + //
 			"setBatchMode(true);\n" + //
@@ -216,8 +216,9 @@ class MacroTest {
 			"}\n" + //
 			"print('open images: ' + nImages);", in + "/");
 		assertTrue(printed.contains("a.tif: 10 spots"), printed);
-		assertTrue(printed.contains("Contact Tracker ('b colour.tif'): 'b colour.tif' is an RGB image"), printed);
-		assertTrue(printed.contains("b colour.tif: 0 spots"), "not the previous file's spots:\n" + printed);
+		assertTrue(printed.contains("Contact Tracker ('b volume.tif'): 'b volume.tif' has 2 Z slices and 2 time frames"),
+			printed);
+		assertTrue(printed.contains("b volume.tif: 0 spots"), "not the previous file's spots:\n" + printed);
 		assertTrue(printed.contains("c.tif: 10 spots"), "the loop goes on:\n" + printed);
 		assertTrue(printed.contains("open images: 0"), printed);
 		assertFalse(IJ.redirectingErrorMessages(), "redirectErrorMessages() applies to one command");
@@ -293,7 +294,7 @@ class MacroTest {
 	void shippedBatchMacroWritesEachCsvAndReportsFailures(@TempDir final Path dir) throws Exception {
 		final Path in = Files.createDirectories(dir.resolve("in")), out = Files.createDirectories(dir.resolve("out"));
 		ImageFiles.saveTiff(Simulated.image(), in.resolve("movie.tif"));
-		ImageFiles.saveTiff(new ImagePlus("colour", new ColorProcessor(40, 30)), in.resolve("colour.tif"));
+		ImageFiles.saveTiff(Simulated.zAndT("volume"), in.resolve("volume.tif"));
 		// hostile: the directory chain loops back to the first directory (ImageJ's open() never ends on it)
 		final byte[] loop = Files.readAllBytes(in.resolve("movie.tif"));
 		final java.nio.ByteBuffer b = java.nio.ByteBuffer.wrap(loop).order(loop[0] == 'I' ? java.nio.ByteOrder.LITTLE_ENDIAN
@@ -307,8 +308,9 @@ class MacroTest {
 		final String printed = macro(code, String.format(Locale.ROOT,
 			"input=[%s] output=[%s] threshold=%s r_out=%s method=%s", in, out, T, R, Method.DEFAULT.key()));
 		assertTrue(printed.contains("movie.tif: 10 spots -> "), printed);
-		assertTrue(printed.contains("Contact Tracker ('colour.tif'): 'colour.tif' is an RGB image"), printed);
-		assertTrue(printed.contains("colour.tif: FAILED"), printed);
+		assertTrue(printed.contains("Contact Tracker ('volume.tif'): 'volume.tif' has 2 Z slices and 2 time frames"),
+			printed);
+		assertTrue(printed.contains("volume.tif: FAILED"), printed);
 		assertTrue(printed.contains("loop.tif: FAILED: cannot read " + in.resolve("loop.tif") + ": damaged TIFF: its " +
 			"chain of image directories loops back"), printed);
 		assertTrue(printed.contains("empty.tif: FAILED: cannot read " + in.resolve("empty.tif") + ": it is empty"),
@@ -316,6 +318,6 @@ class MacroTest {
 		assertTrue(printed.contains("Contact Tracker batch: 1 image(s) done, 3 failed"), printed);
 		assertTrue(printed.contains("open images: 0"), printed);
 		assertEquals(cliCsv(ImageFiles.open(in.resolve("movie.tif"))), Files.readString(out.resolve("movie.csv")));
-		assertFalse(Files.exists(out.resolve("colour.csv")));
+		assertFalse(Files.exists(out.resolve("volume.csv")));
 	}
 }

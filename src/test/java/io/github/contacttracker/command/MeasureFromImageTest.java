@@ -149,10 +149,10 @@ class MeasureFromImageTest extends WithContext {
 		assertFalse(((Cancelable) m).isCanceled(), "the dialog stays open");
 
 		// an image the command refuses says so the same way
-		final Module rgb = dialog(new ImagePlus("rgb", new ij.process.ColorProcessor(32, 32)));
-		assertTrue(press(rgb).trim().startsWith("Contact Tracker: cannot measure from the image: 'rgb' is an RGB " +
-			"image"));
-		assertEquals(TrackingSettings.THRESHOLD.defaultValue(), value(rgb, "threshold"), 0);
+		final Module zt = dialog(Simulated.zAndT("zt"));
+		assertTrue(press(zt).trim().startsWith("Contact Tracker: cannot measure from the image: 'zt' has 2 Z slices " +
+			"and 2 time frames"));
+		assertEquals(TrackingSettings.THRESHOLD.defaultValue(), value(zt, "threshold"), 0);
 	}
 
 	/** Headless and from scripts the button is an optional input nobody sets: the run ignores it. */

@@ -57,6 +57,17 @@ final class Simulated {
 	}
 
 	/** @return the true centres of frame {@code t} (px) */
+	/** @return an image with 2 Z slices and 2 time frames, which every front end refuses (the method is 2D) */
+	static ImagePlus zAndT(final String title) {
+		final ij.ImageStack zt = new ij.ImageStack(32, 32);
+		for (int i = 0; i < 4; i++)
+			zt.addSlice(new ij.process.ByteProcessor(32, 32));
+		final ImagePlus imp = new ImagePlus(title, zt);
+		imp.setDimensions(1, 2, 2);
+		imp.setOpenAsHyperStack(true);
+		return imp;
+	}
+
 	static List<double[]> truth(final int t) {
 		return STACK.truth().get(t);
 	}
