@@ -412,7 +412,7 @@ public final class ProfileAnalysis {
 		final double diameterGiven, final double maxRadiusGiven, final List<Finding> findings)
 	{
 		if (diameterGiven != 0) {
-			final Measured m = measure(plane, s, at, diameterGiven, maxRadiusGiven);
+			final Measured m = measure(plane, s, at, diameterGiven, maxRadiusGiven, false);
 			findings.addAll(m.findings());
 			return new Sized(diameterGiven, false, m);
 		}
@@ -423,11 +423,12 @@ public final class ProfileAnalysis {
 			radii[k] = Math.sqrt(s.spots().get(k).activeArea() / Math.PI);
 		final double fromCores = PROVISIONAL_CORE_RADII * quantile(radii, 0.5);
 		final double provisional = Double.isFinite(fromSpots) ? Math.min(fromSpots, fromCores) : fromCores;
-		Measured m = measure(plane, s, at, provisional, maxRadiusGiven);
+		Measured m = measure(plane, s, at, provisional, maxRadiusGiven, true);
 		final double own = 2 * m.imageEdge();
 		final boolean fromImage = !(fromSpots < own);
 		final double diameter = fromImage ? own : fromSpots;
-		if (Math.abs(diameter - provisional) > 0.01 * provisional) m = measure(plane, s, at, diameter, maxRadiusGiven);
+		if (Math.abs(diameter - provisional) > 0.01 * provisional) m = measure(plane, s, at, diameter, maxRadiusGiven,
+			true);
 		findings.add(fromImage ? new Finding.DiameterFromImage(diameter, own / 2) : new Finding.DiameterFromSpacing(
 			diameter, DIAMETER_PERCENTILE, s.xy().length, own));
 		findings.addAll(m.findings());
@@ -503,9 +504,13 @@ public final class ProfileAnalysis {
 	/**
 	 * Steps 3-6: picks the particles (the one at {@code point}, else the most isolated), masks their neighbours and
 	 * pools their profile, twice (the masks widened to the measured reach the second time).
+	 *
+	 * @param narrow whether the masks may narrow where they leave no background ({@link #poolNarrowing}): for an
+	 *        estimated diameter; a given one that leaves none is wrong for the image, and the front ends say so and
+	 *        estimate it instead
 	 */
 	private static Measured measure(final Plane plane, final Spots s, final double[] point, final double diameter,
-		final double maxRadiusGiven)
+		final double maxRadiusGiven, final boolean narrow)
 	{
 		final int w = plane.width(), h = plane.height();
 		final List<Localization> spots = s.spots();
@@ -559,9 +564,10 @@ public final class ProfileAnalysis {
 		for (final int k : chosen)
 			centres.add(xy[k]);
 		final double radiusCap = Math.min(wanted, farthestCorner(centres.get(0)[0], centres.get(0)[1], w, h));
-		Pooled pooled = poolNarrowing(plane, centres, xy, diameter, radiusCap, diameter, null);
+		final double narrowest = narrow ? diameter / 2 : Double.POSITIVE_INFINITY;
+		Pooled pooled = poolNarrowing(plane, centres, xy, diameter, radiusCap, narrowest, null);
 		double reach = reach(pooled, radiusCap, null);
-		pooled = poolNarrowing(plane, centres, xy, Math.max(diameter, reach + R_OUT_MARGIN_PX), radiusCap, diameter,
+		pooled = poolNarrowing(plane, centres, xy, Math.max(diameter, reach + R_OUT_MARGIN_PX), radiusCap, narrowest,
 			findings);
 		reach = reach(pooled, radiusCap, findings);
 		return new Measured(pooled.centres(), refined, radiusCap, pooled, reach, imageEdge(pooled, reach), findings);
@@ -658,19 +664,20 @@ public final class ProfileAnalysis {
 		List<double[]> centres) {}
 
 	/**
-	 * {@link #pool}, the mask narrowed (by {@value #MASK_NARROWING} at a time, down to half the diameter) while no
+	 * {@link #pool}, the mask narrowed (by {@value #MASK_NARROWING} at a time, down to {@code narrowest}) while no
 	 * particle has background pixels left around it: in a dense field of particles that do not touch (the paper
 	 * authors' Test_im.png, 50 particles 28-38 px apart in 250 x 250 px), every pixel lies within a diameter of some
 	 * neighbour. Narrowed, it is reported in {@code findings} (when not null).
 	 *
-	 * @throws InvalidInputException naming the particle tried first when no mask down to half the diameter leaves
+	 * @param narrowest the narrowest mask tried (half the diameter; infinite: the mask as it is)
+	 * @throws InvalidInputException naming the particle tried first when no mask down to {@code narrowest} leaves
 	 *         background
 	 */
 	private static Pooled poolNarrowing(final Plane plane, final List<double[]> centres, final double[][] spots,
-		final double mask, final double radiusCap, final double diameter, final List<Finding> findings)
+		final double mask, final double radiusCap, final double narrowest, final List<Finding> findings)
 	{
 		NoBackground first = null;
-		for (double m = mask; m >= diameter / 2; m *= MASK_NARROWING)
+		for (double m = mask; m == mask || m >= narrowest; m *= MASK_NARROWING)
 			try {
 				final Pooled pooled = pool(plane, centres, spots, m, radiusCap);
 				if (first != null && findings != null) findings.add(new Finding.NeighboursMaskedCloser(m, mask));

@@ -70,6 +70,9 @@ class ProfileReportTest {
 			"given");
 		expected.put(new Finding.NotIsolated(93.0844, 52.44), "no particle is isolated: the most isolated has a " +
 			"neighbour at 93.08 px (1.780 diameters); the profile's outer part may show neighbours");
+		expected.put(new Finding.NeighboursMaskedCloser(22.1376, 27.672), "the field is dense: pixels within 27.67 px " +
+			"of a neighbour left no background around the particles, so neighbours were masked within 22.14 px only; " +
+			"their light may show in the profile's outer part");
 		expected.put(new Finding.NotBackToBackground(12.8), "the profile has not returned to the background by 12.80 " +
 			"px: increase max_radius (r_out is a lower bound)");
 		expected.put(new Finding.BackgroundTexture(61.4321, 10, 13.9789, 123.98), "at 61.43, 10 bright spots of the " +
