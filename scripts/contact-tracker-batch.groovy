@@ -7,6 +7,7 @@
 #@ Integer (label = "Channel", value = 1) channel
 #@ Double (label = "Particle diameter (px, 0 = not given)", value = 0) diameter
 #@ Integer (label = "Kinds of particle (0 = automatic, 1 = all alike)", value = 0, min = 0, max = 4) kinds
+#@ String (label = "Particles", choices = {"bright", "dark"}, value = "bright") particles
 #@ Boolean (label = "Also save a TrackMate XML per image", value = false) trackmate
 #@ CommandService commands
 #@ LogService log
@@ -18,7 +19,7 @@
 // command line writes. In Fiji: open it in the script editor and Run, or File > Open... and Run.
 // Headless:
 //   ImageJ-linux64 --headless --console --run contact-tracker-batch.groovy \
-//     'input="/data/movies",output="/data/spots",threshold=110,r_out=55,min_area=20,method="paper",channel=1,diameter=0,kinds=0,trackmate=false'
+//     'input="/data/movies",output="/data/spots",threshold=110,r_out=55,min_area=20,method="paper",channel=1,diameter=0,kinds=0,particles="bright",trackmate=false'
 
 import io.github.contacttracker.io.ImageFiles
 import io.github.contacttracker.command.ContactTrackerCommand
@@ -47,7 +48,7 @@ for (f in tiffs) {
 	def module = commands.run(ContactTrackerCommand, true,
 		"imp", imp, "threshold", threshold, "r_out", r_out, "min_area", min_area,
 		"min_second_area", TrackerParameters.DEFAULT_MIN_SECOND_AREA, "connectivity", "8", "method", method,
-		"channel", channel, "diameter", diameter, "kinds", kinds, "pair_cutoff", 0d, "overlay", false, "table", false,
+		"channel", channel, "diameter", diameter, "kinds", kinds, "particles", particles, "pair_cutoff", 0d, "overlay", false, "table", false,
 		"results", "spots", "threads", 0, "csv", csv, "trackmate_xml", xml).get()
 	if (module.isCanceled()) {
 		log.error("Contact Tracker batch: " + f.name + ": " + module.getCancelReason())

@@ -3,10 +3,10 @@
 //
 // Headless (Fiji):
 //   ImageJ-linux64 --headless --console -macro /path/to/contact-tracker-batch.ijm \
-//     "input=[/data/movies] output=[/data/spots] threshold=110 r_out=55 min_area=20 method=paper channel=1 diameter=0 kinds=0"
+//     "input=[/data/movies] output=[/data/spots] threshold=110 r_out=55 min_area=20 method=paper channel=1 diameter=0 kinds=0 particles=bright"
 // In Fiji: Plugins > Macros > Run... and pick this file; without an argument it asks for the values.
 //
-// Keys not given take the defaults below. An image that fails (a broken file, RGB, Z and T both > 1, a bad
+// Keys not given take the defaults below. An image that fails (a broken file, Z and T both > 1, a bad
 // value, ...) is reported with its name and reason and the batch goes on with the next one; no image is left open.
 
 args = getArgument();
@@ -21,6 +21,7 @@ if (args == "") {
 	Dialog.addNumber("Channel", 1);
 	Dialog.addNumber("Particle diameter (px, 0 = not given)", 0);
 	Dialog.addNumber("Kinds of particle (0 = automatic, 1 = all alike)", 0);
+	Dialog.addChoice("Particles", newArray("bright", "dark"), "bright");
 	Dialog.show();
 	input = Dialog.getString();
 	output = Dialog.getString();
@@ -31,6 +32,7 @@ if (args == "") {
 	channel = Dialog.getNumber();
 	diameter = Dialog.getNumber();
 	kinds = Dialog.getNumber();
+	particles = Dialog.getChoice();
 } else {
 	input = value(args, "input", "");
 	output = value(args, "output", "");
@@ -41,13 +43,15 @@ if (args == "") {
 	channel = value(args, "channel", "1");
 	diameter = value(args, "diameter", "0");
 	kinds = value(args, "kinds", "0");
+	particles = value(args, "particles", "bright");
 }
 if (input == "" || !File.isDirectory(input)) exit("Contact Tracker batch: input folder not found: '" + input + "'");
 if (output == "" || !File.isDirectory(output)) exit("Contact Tracker batch: output folder not found: '" + output + "'");
 if (!endsWith(input, "/") && !endsWith(input, File.separator)) input = input + File.separator;
 if (!endsWith(output, "/") && !endsWith(output, File.separator)) output = output + File.separator;
 options = "threshold=" + threshold + " r_out=" + r_out + " min_area=" + min_area + " method=" + method +
-	" channel=" + channel + " diameter=" + diameter + " kinds=" + kinds + " overlay=false table=false";
+	" channel=" + channel + " diameter=" + diameter + " kinds=" + kinds + " particles=" + particles +
+	" overlay=false table=false";
 
 setBatchMode(true);
 list = getFileList(input);

@@ -39,6 +39,8 @@ import io.github.contacttracker.io.ProfilePlots;
 import io.github.contacttracker.io.ProfileReport;
 import io.github.contacttracker.io.ShownFrameProfile;
 import io.github.contacttracker.pipeline.MeasuredSettings;
+import io.github.contacttracker.settings.SettingValues;
+import io.github.contacttracker.settings.TrackingSettings;
 import net.imglib2.RandomAccessibleInterval;
 
 /**
@@ -65,6 +67,9 @@ public final class ProfileCommand extends ContactTrackerCli.Subcommand {
 		"profile is measured (px); default: 2.5 diameters").withDefaultExplained("0"));
 	private final Option<Integer> channelOption = options.add(Option.integer("--channel", "C", "channel of a " +
 		"multi-channel image (from 1), or of a colour one (1 red, 2 green, 3 blue)").withDefaultExplained("0"));
+	private final Option<String> particlesOption = options.add(Option.text("--particles", "bright|dark", "dark: " +
+		"particles darker than the background, the image inverted first (as 'track --particles dark')").withDefault(
+			"bright"));
 	private final Option<Path> pngOption = options.add(Option.path("--png", "OUT.png", "write the profile plot"));
 	private final Option<Path> csvOption = options.add(Option.path("--csv", "OUT.csv", "write the profile table"));
 
@@ -86,7 +91,9 @@ public final class ProfileCommand extends ContactTrackerCli.Subcommand {
 		if (png != null) AtomicFile.checkFolder("png", png);
 		if (csv != null) AtomicFile.checkFolder("csv", csv);
 		final ImagePlus imp = ImageFiles.open(movie);
-		final ImagePlusFrames frames = ImagePlusFrames.of(imp, options.value(channelOption));
+		final boolean dark = SettingValues.defaults().withText(TrackingSettings.PARTICLES, options.value(
+			particlesOption)).dark();
+		final ImagePlusFrames frames = ImagePlusFrames.of(imp, options.value(channelOption), dark);
 		if (frame < 1 || frame > frames.frameCount())
 			throw new InvalidInputException("--frame " + frame + " does not exist: " + movie + " has " + frames
 				.frameCount() + " frame" + (frames.frameCount() == 1 ? "" : "s"));
@@ -122,7 +129,7 @@ public final class ProfileCommand extends ContactTrackerCli.Subcommand {
 		for (final Path t : targets)
 			out.println("  wrote " + t);
 		out.println(SUGGESTION + " --threshold " + MeasuredSettings.optionValue(threshold) + " --r-out " + MeasuredSettings.optionValue(
-			rOut) + " --diameter " + MeasuredSettings.optionValue(r.suggestedDiameter()));
+			rOut) + " --diameter " + MeasuredSettings.optionValue(r.suggestedDiameter()) + (dark ? " --particles dark" : ""));
 		return 0;
 	}
 

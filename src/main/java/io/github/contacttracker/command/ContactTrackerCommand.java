@@ -150,6 +150,10 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 		max = "" + TrackerParameters.KINDS_AT_MOST, description = DialogHelp.TIP + TrackingSettings.HELP_KINDS)
 	private int kinds = TrackingSettings.KINDS.defaultValue();
 
+	@Parameter(validater = "validateInputs", label = "Particles", choices = { "bright", TrackingSettings.DARK },
+		description = DialogHelp.TIP + TrackingSettings.HELP_PARTICLES)
+	private String particles = TrackingSettings.PARTICLES.defaultValue();
+
 	@Parameter(validater = "validateInputs", label = "Channel", min = "" + TrackingSettings.CHANNEL_AT_LEAST, description = DialogHelp.TIP + TrackingSettings.HELP_CHANNEL)
 	private int channel = TrackingSettings.CHANNEL.defaultValue();
 
@@ -259,8 +263,8 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 		return SettingValues.defaults().with(TrackingSettings.THRESHOLD, threshold).with(TrackingSettings.R_OUT, r_out)
 			.with(TrackingSettings.MIN_AREA, min_area).with(TrackingSettings.MIN_SECOND_AREA, min_second_area).withText(
 				TrackingSettings.CONNECTIVITY, connectivity).withText(TrackingSettings.METHOD, method).with(
-					TrackingSettings.DIAMETER, diameter).with(TrackingSettings.KINDS, kinds).with(TrackingSettings.CHANNEL,
-						channel);
+					TrackingSettings.DIAMETER, diameter).with(TrackingSettings.KINDS, kinds).withText(TrackingSettings.PARTICLES,
+						particles).with(TrackingSettings.CHANNEL, channel);
 	}
 
 	/** @return the parameters as the core takes them, validated */
@@ -304,6 +308,7 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 			case "method" -> method;
 			case "diameter" -> diameter;
 			case "kinds" -> kinds;
+			case "particles" -> particles;
 			case "channel" -> channel;
 			default -> throw new IllegalStateException("no input for the setting " + s.name());
 		};
@@ -485,7 +490,7 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 	private void measureFromImage() {
 		final ShownFrameProfile p;
 		try {
-			p = ShownFrameProfile.measure(imp, channel, diameter);
+			p = ShownFrameProfile.measure(imp, channel, TrackingSettings.DARK.equals(particles), diameter);
 		}
 		catch (final InvalidInputException e) {
 			final String message = TITLE + ": cannot measure from the image: " + e.getMessage();

@@ -31,6 +31,7 @@ import ij.ImagePlus;
 import ij.ImageStack;
 import ij.process.ImageProcessor;
 import io.github.contacttracker.core.InvalidInputException;
+import io.github.contacttracker.core.image.Inversion;
 import net.imglib2.RandomAccessibleInterval;
 import net.imglib2.img.array.ArrayImgs;
 import net.imglib2.type.numeric.RealType;
@@ -71,14 +72,18 @@ public final class ImagePlusFrames {
 	private final int width, height, channel;
 	/** Of an RGB image: the component tracked, 1 red, 2 green, 3 blue, or 0 the mean of the three (a grey image). */
 	private final int colour;
+	/** Whether each frame is inverted ({@link Inversion}: dark particles). */
+	private final boolean dark;
 	private final boolean virtual;
 	private final Map<Integer, RandomAccessibleInterval<? extends RealType<?>>> cache;
 	private int reads;
 
 	private ImagePlusFrames(final ImageStack stack, final int[] stackIndex, final float[] cTable,
-		final Calibration calibration, final int width, final int height, final int channel, final int colour)
+		final Calibration calibration, final int width, final int height, final int channel, final int colour,
+		final boolean dark)
 	{
 		this.colour = colour;
+		this.dark = dark;
 		this.stack = stack;
 		this.stackIndex = stackIndex;
 		this.cTable = cTable;
@@ -104,6 +109,16 @@ public final class ImagePlusFrames {
 	 * @throws InvalidInputException with a one-line message when the image cannot be tracked
 	 */
 	public static ImagePlusFrames of(final ImagePlus imp, final int channel) {
+		return of(imp, channel, false);
+	}
+
+	/**
+	 * As {@link #of(ImagePlus, int)}, each frame inverted for dark particles (the profile helper's view of them; the
+	 * tracking pipeline inverts its frames itself).
+	 *
+	 * @param dark whether to invert the frames ({@link Inversion})
+	 */
+	public static ImagePlusFrames of(final ImagePlus imp, final int channel, final boolean dark) {
 		if (imp == null) throw new InvalidInputException("no image");
 		final String name = "'" + imp.getTitle() + "'";
 		final int bits = imp.getBitDepth();
@@ -146,7 +161,7 @@ public final class ImagePlusFrames {
 		final String timeUnit = cal.frameInterval > 0 ? cal.getTimeUnit() : "frame";
 		return new ImagePlusFrames(imp.getStack(), index, cTable, new Calibration(cal.scaled() ? pw : 1, cal.scaled()
 			? ph : 1, unit, dt, timeUnit), imp.getWidth(), imp.getHeight(), rgb ? Math.max(channel, 1) : c, rgb ? channel
-				: -1);
+				: -1, dark);
 	}
 
 	/**
@@ -259,6 +274,12 @@ public final class ImagePlusFrames {
 	}
 
 	private RandomAccessibleInterval<? extends RealType<?>> wrap(final ImageProcessor ip) {
+		final RandomAccessibleInterval<? extends RealType<?>> frame = values(ip);
+		return dark ? Inversion.of(frame) : frame;
+	}
+
+	/** @return the frame's own values, without copying where it can */
+	private RandomAccessibleInterval<? extends RealType<?>> values(final ImageProcessor ip) {
 		if (ip.getWidth() != width || ip.getHeight() != height)
 			throw new InvalidInputException("a frame is " + ip.getWidth() + " x " + ip.getHeight() + " pixels, not " +
 				width + " x " + height + " like the first");

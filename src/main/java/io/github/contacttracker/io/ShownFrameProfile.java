@@ -67,20 +67,23 @@ public record ShownFrameProfile(ProfileAnalysis.Result result, String title, int
 	 *
 	 * @param imp the image
 	 * @param channel the 1-based channel to measure (the one that will be tracked)
+	 * @param dark whether the particles are dark (the frame inverted first)
 	 * @param diameter the particle diameter in pixels, or 0 to estimate it from the frame
 	 * @return the profile and the suggestions
 	 * @throws InvalidInputException with a one-line message: an image that cannot be tracked, or a frame the helper
 	 *         finds no usable particle in (with the diameter given, if estimating it does not help either)
 	 */
-	public static ShownFrameProfile measure(final ImagePlus imp, final int channel, final double diameter) {
+	public static ShownFrameProfile measure(final ImagePlus imp, final int channel, final boolean dark,
+		final double diameter)
+	{
 		try {
-			return run(imp, channel, null, diameter, 0);
+			return run(imp, channel, dark, null, diameter, 0);
 		}
 		catch (final InvalidInputException e) {
 			if (!(diameter > 0)) throw e;
 			final ShownFrameProfile estimated;
 			try {
-				estimated = run(imp, channel, null, 0, 0);
+				estimated = run(imp, channel, dark, null, 0, 0);
 			}
 			catch (final InvalidInputException again) {
 				throw e;
@@ -104,14 +107,14 @@ public record ShownFrameProfile(ProfileAnalysis.Result result, String title, int
 		final double maxRadius)
 	{
 		if (imp == null) throw new InvalidInputException("no image");
-		return run(imp, imp.convertIndexToPosition(imp.getCurrentSlice())[0], point, diameter, maxRadius);
+		return run(imp, imp.convertIndexToPosition(imp.getCurrentSlice())[0], false, point, diameter, maxRadius);
 	}
 
 	@SuppressWarnings({ "unchecked", "rawtypes" })
-	private static ShownFrameProfile run(final ImagePlus imp, final int channel, final double[] point,
-		final double diameter, final double maxRadius)
+	private static ShownFrameProfile run(final ImagePlus imp, final int channel, final boolean dark,
+		final double[] point, final double diameter, final double maxRadius)
 	{
-		final ImagePlusFrames frames = ImagePlusFrames.of(imp, channel);
+		final ImagePlusFrames frames = ImagePlusFrames.of(imp, channel, dark);
 		final int t = ImagePlusFrames.shownFrame(imp);
 		// the frames' pixel type is known only at run time: the helper takes any real type
 		final RandomAccessibleInterval frame = frames.frame(t);

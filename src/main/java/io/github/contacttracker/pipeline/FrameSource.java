@@ -23,6 +23,7 @@ package io.github.contacttracker.pipeline;
 
 import java.util.function.IntFunction;
 
+import io.github.contacttracker.core.image.Inversion;
 import io.github.contacttracker.io.Calibration;
 import io.github.contacttracker.io.ImagePlusFrames;
 import net.imglib2.RandomAccessibleInterval;
@@ -68,6 +69,15 @@ public interface FrameSource {
 	/** @return frame {@code t} of this source alone (a preview's), its data range not checked */
 	default FrameSource only(final int t) {
 		return of(1, i -> frame(t), calibration(), name(), null);
+	}
+
+	/**
+	 * @return these frames inverted ({@link Inversion}: dark particles made bright), the data range that of the
+	 *         inverted frames
+	 */
+	default FrameSource inverted() {
+		return of(frameCount(), t -> Inversion.of(frame(t)), calibration(), name(), checksDataRange() ? t -> ImagePlusFrames
+			.range(Inversion.of(frame(t)), t) : null);
 	}
 
 	/** @return an ImageJ image's frames as a source, read when needed, the data range checked */

@@ -25,6 +25,7 @@ import java.math.BigDecimal;
 
 import io.github.contacttracker.advisor.ProfileAnalysis;
 import io.github.contacttracker.core.InvalidInputException;
+import io.github.contacttracker.core.image.Inversion;
 import io.github.contacttracker.settings.SettingValues;
 import io.github.contacttracker.settings.TrackingSettings;
 import net.imglib2.RandomAccessibleInterval;
@@ -62,7 +63,8 @@ public final class MeasuredSettings {
 		if (thresholdGiven && rOutGiven && diameter) return new Result(settings, "");
 		final ProfileAnalysis.Result r;
 		try {
-			r = ProfileAnalysis.analyse((RandomAccessibleInterval) first, settings.diameter(), 0);
+			r = ProfileAnalysis.analyse((RandomAccessibleInterval) (settings.dark() ? Inversion.of(
+				(RandomAccessibleInterval) first) : first), settings.diameter(), 0);
 		}
 		catch (final InvalidInputException e) {
 			if (thresholdGiven && rOutGiven) return new Result(settings, "contact-tracker: " + name + ": the diameter " +

@@ -83,7 +83,7 @@ public final class TrackingPipeline {
 	}
 
 	/**
-	 * @param source the movie
+	 * @param given the movie (inverted here for dark particles: {@link #frames})
 	 * @param outputs the files to write ({@link Outputs#NONE} for none)
 	 * @param threads worker threads (below 1: all processors)
 	 * @param keepRegions whether to keep each spot's active areas (for overlays)
@@ -95,12 +95,13 @@ public final class TrackingPipeline {
 	 * @throws IOException when writing a file fails (none is left behind)
 	 */
 	@SuppressWarnings({ "rawtypes", "unchecked" })
-	public TrackingResult run(final FrameSource source, final Outputs outputs, final int threads,
+	public TrackingResult run(final FrameSource given, final Outputs outputs, final int threads,
 		final boolean keepRegions, final StackTracker.ProgressListener progress, final BooleanSupplier cancelled)
 		throws IOException
 	{
 		final long start = System.nanoTime();
 		outputs.check();
+		final FrameSource source = frames(given);
 		checkThreshold(source);
 		final StackTracker tracker = new StackTracker(params);
 		final IntFunction<RandomAccessibleInterval> frame = source::frame; // raw: the pixel type varies by source
@@ -108,6 +109,14 @@ public final class TrackingPipeline {
 		final List<FrameResult> frames = StackTracker.withThreads(threads, () -> tracker.track(source.frameCount(),
 			(IntFunction) frame, keepRegions, progress, cancelled));
 		return finish(frames, source.calibration(), outputs, start);
+	}
+
+	/**
+	 * @return the frames as the tracker sees them: inverted for dark particles ({@link SettingValues#dark()}), as
+	 *         they are for bright ones; the threshold is checked against these
+	 */
+	public FrameSource frames(final FrameSource source) {
+		return settings.dark() ? source.inverted() : source;
 	}
 
 	/**

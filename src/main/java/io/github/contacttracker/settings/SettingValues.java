@@ -104,6 +104,11 @@ public final class SettingValues {
 		return get(TrackingSettings.DIAMETER);
 	}
 
+	/** @return whether the particles are dark: the frames are inverted before tracking ({@code core.image.Inversion}) */
+	public boolean dark() {
+		return TrackingSettings.DARK.equals(get(TrackingSettings.PARTICLES));
+	}
+
 	/** @return "threshold = 100.0, r_out = 20.0, ...", every setting in order */
 	public String echo() {
 		final StringBuilder sb = new StringBuilder();

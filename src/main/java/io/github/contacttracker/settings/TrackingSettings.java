@@ -76,6 +76,14 @@ public final class TrackingSettings {
 	public static final String HELP_CHANNEL = "The channel to track, 1-based; single-channel images have only " +
 		"channel 1, colour (RGB) ones three: 1 red, 2 green, 3 blue.";
 
+	/** Help text of {@link #PARTICLES}, a constant so that annotations (SciJava's {@code @Parameter}) can use it. */
+	public static final String HELP_PARTICLES = "bright: particles brighter than the background at their centre; " +
+		"dark: darker, and the image is inverted first (as Edit > Invert: 255 - v for 8 bits, 65535 - v for 16 bits, " +
+		"-v for 32 bits): the threshold and every grey level are then the inverted image's.";
+
+	/** The value of {@link #PARTICLES} for dark particles. */
+	public static final String DARK = "dark";
+
 	/** The first channel: channels count from 1. (The core's parameters state their own limits.) */
 	public static final int CHANNEL_AT_LEAST = 1;
 
@@ -136,9 +144,16 @@ public final class TrackingSettings {
 		HELP_CHANNEL, 1, CHANNEL_AT_LEAST, "at least 1 (1-based)",
 		Unit.NONE, "TARGET_CHANNEL");
 
+	/**
+	 * Whether the particles are brighter or darker than the background (dark: the frames are inverted first). Added
+	 * after settings maps without it were written: a TrackMate map that lacks {@code PARTICLES} means bright.
+	 */
+	public static final Setting<String> PARTICLES = Setting.choice("particles", "Particles", HELP_PARTICLES,
+		String.class, "bright", List.of("bright", DARK)).optionalInMaps();
+
 	/** Every setting, in the order front ends list them. */
 	public static final List<Setting<?>> ALL = List.of(THRESHOLD, R_OUT, MIN_AREA, MIN_SECOND_AREA, CONNECTIVITY,
-		METHOD, DIAMETER, KINDS, CHANNEL);
+		METHOD, DIAMETER, KINDS, PARTICLES, CHANNEL);
 
 	/**
 	 * @return the setting named {@code name} ({@code r_out}), or {@code null}

@@ -275,9 +275,10 @@ public final class SparkTrack {
 			final MeasuredSettings.Result measured = MeasuredSettings.of(path.substring(path.lastIndexOf('/') + 1), frames
 				.frames().get(0), !open.floats(), settings, thresholdGiven, rOutGiven);
 			final TrackingPipeline pipeline = new TrackingPipeline(measured.settings());
-			pipeline.checkThreshold(FrameSource.of(frames, movie));
+			final FrameSource source = pipeline.frames(FrameSource.of(frames, movie));
+			pipeline.checkThreshold(source);
 			final StackTracker.ProfileStage stage = StackTracker.withThreads(1, () -> new StackTracker(measured.settings()
-				.parameters()).profileStage(frames.frameCount(), frameFunction(frames), () -> false));
+				.parameters()).profileStage(frames.frameCount(), frameFunction(source), () -> false));
 			return new MoviePlan(index, movie, uri, MoviePlan.ship(measured.settings()), channelGiven, measured.notice(),
 				frames.frameCount(), frames.width(), frames.height(), frames.calibration(), stage, null);
 		}
@@ -287,7 +288,7 @@ public final class SparkTrack {
 	}
 
 	@SuppressWarnings({ "rawtypes", "unchecked" })
-	private static IntFunction frameFunction(final ImagePlusFrames frames) {
+	private static IntFunction frameFunction(final FrameSource frames) {
 		return (IntFunction) frames::frame; // raw: the pixel type varies by movie
 	}
 
@@ -295,7 +296,8 @@ public final class SparkTrack {
 	@SuppressWarnings("unchecked")
 	private static TrackedChunk trackChunk(final MoviePlan plan, final int[] chunk) {
 		try {
-			final ImagePlusFrames frames = Movies.open(plan.uri(), plan.movie(), plan.channel()).frames();
+			final FrameSource frames = new TrackingPipeline(plan.values()).frames(FrameSource.of(Movies.open(plan.uri(), plan
+				.movie(), plan.channel()).frames(), plan.movie()));
 			final List<FrameResult> results = StackTracker.withThreads(1, () -> new StackTracker(plan.values()
 				.parameters()).trackWith(plan.stage(), chunk, frameFunction(frames), () -> false));
 			return new TrackedChunk(chunk, results, null);

@@ -287,11 +287,12 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 	private void measureInBackground() {
 		measureButton.setEnabled(false);
 		final int channel = (Integer) fields.get(TrackingSettings.CHANNEL).value();
+		final boolean dark = dark();
 		final double diameter = (Double) fields.get(TrackingSettings.DIAMETER).value();
 		final Thread worker = new Thread(() -> {
 			Supplier<String> outcome;
 			try {
-				outcome = measure(channel, diameter);
+				outcome = measure(channel, dark, diameter);
 			}
 			catch (final RuntimeException e) {
 				// a bug, not a frame without particles: in full to ImageJ, and the button stays usable
@@ -320,8 +321,13 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 	 * @return the message shown under the button
 	 */
 	String measureFromImage() {
-		return measure((Integer) fields.get(TrackingSettings.CHANNEL).value(), (Double) fields.get(
+		return measure((Integer) fields.get(TrackingSettings.CHANNEL).value(), dark(), (Double) fields.get(
 			TrackingSettings.DIAMETER).value()).get();
+	}
+
+	/** @return whether the fields say the particles are dark */
+	private boolean dark() {
+		return TrackingSettings.DARK.equals(fields.get(TrackingSettings.PARTICLES).value());
 	}
 
 	/**
@@ -329,10 +335,10 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 	 *
 	 * @return what shows its outcome (on the event thread): fills the fields, or not, and returns the message
 	 */
-	private Supplier<String> measure(final int channel, final double diameter) {
+	private Supplier<String> measure(final int channel, final boolean dark, final double diameter) {
 		final ShownFrameProfile p;
 		try {
-			p = ShownFrameProfile.measure(imp, channel, diameter);
+			p = ShownFrameProfile.measure(imp, channel, dark, diameter);
 		}
 		catch (final InvalidInputException e) {
 			return () -> {
@@ -370,10 +376,12 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 		final JScrollPane scroll = new JScrollPane(info, ScrollPaneConstants.VERTICAL_SCROLLBAR_AS_NEEDED,
 			ScrollPaneConstants.HORIZONTAL_SCROLLBAR_NEVER);
 		scroll.setBorder(BorderFactory.createEmptyBorder());
-		scroll.setPreferredSize(new Dimension(280, 72));
+		// three lines, the rest by scrolling: the settings (ten rows with the channel) and TrackMate's Preview need the
+		// wizard's height
+		scroll.setPreferredSize(new Dimension(280, 52));
 		// the wizard is a little shorter than the panel's preferred size, so GridBagLayout falls back to minimum
 		// sizes: keep the text readable and let TrackMate's histogram give way instead
-		scroll.setMinimumSize(new Dimension(200, 72));
+		scroll.setMinimumSize(new Dimension(200, 52));
 		return scroll;
 	}
 

@@ -41,6 +41,7 @@ import ij.io.FileSaver;
 import ij.plugin.filter.AVI_Writer;
 import ij.process.ColorProcessor;
 import ij.process.ImageProcessor;
+import io.github.contacttracker.io.ProfileScenes;
 import io.github.contacttracker.io.TestMovies;
 
 /**
@@ -149,6 +150,55 @@ class MovieInputTest {
 		final List<double[]> spots = track(colour, "120");
 		assertTrack(spots, FRAMES, 0.02);
 		assertEquals(csv(track(plain, "120")), csv(spots));
+	}
+
+	/**
+	 * Dark particles (as the paper authors' toolbox's "inverted image"): a movie of the particle darker than the
+	 * background, in 8 and 16 bits and 32-bit float, tracked with {@code --particles dark} gives exactly the spots of
+	 * the bright movie it is the inverse of (255 - v, 65535 - v, -v), at the same threshold, and with the values the
+	 * helper measures on each; the profile helper measures the same on both.
+	 */
+	@Test
+	void darkParticlesAreTrackedAsTheInvertedMovie() throws IOException {
+		final List<float[]> bright = TestMovies.frames(FRAMES, 20, 220);
+		for (final int[] type : new int[][] { { 8, 1, 255 }, { 16, 1, 65535 }, { 32, 3, 0 } }) {
+			final List<float[]> dark = new ArrayList<>();
+			for (final float[] f : bright) {
+				final float[] d = new float[f.length];
+				for (int i = 0; i < d.length; i++)
+					d[i] = type[2] - f[i];
+				dark.add(d);
+			}
+			final Path b = dir.resolve("bright" + type[0] + ".tif"), d = dir.resolve("dark" + type[0] + ".tif");
+			TestMovies.writeTiff(b, false, type[0], type[1], bright, null, 0);
+			TestMovies.writeTiff(d, false, type[0], type[1], dark, null, 0);
+			final List<double[]> fromDark = track(d, "120", "--particles", "dark");
+			assertTrack(fromDark, FRAMES, 0.02);
+			assertEquals(csv(track(b, "120")), csv(fromDark), type[0] + " bits");
+		}
+		// a frame the profile helper can measure on: several isolated particles
+		final ImagePlus particles = ProfileScenes.particles("particles", 2, io.github.contacttracker.io.Calibration.PIXELS);
+		assertEquals(8, particles.getBitDepth());
+		final Path b = dir.resolve("bright8.tif"), d = dir.resolve("dark8.tif");
+		new FileSaver(particles).saveAsTiffStack(b.toString());
+		for (int t = 1; t <= particles.getStackSize(); t++)
+			particles.getStack().getProcessor(t).invert(); // 255 - v
+		new FileSaver(particles).saveAsTiffStack(d.toString());
+		final Object[] measuredBright = ContactTrackerCliTest.run("track", b.toString());
+		assertEquals(0, measuredBright[0], (String) measuredBright[2]);
+		final Object[] measuredDark = ContactTrackerCliTest.run("track", d.toString(), "--particles", "dark");
+		assertEquals(0, measuredDark[0], (String) measuredDark[2]);
+		assertEquals(measuredBright[1], measuredDark[1], "the same values measured, the same spots");
+		final String time = "[0-9.]+ s \\([0-9.]+ frames/s\\)";
+		assertEquals(((String) measuredBright[2]).replace("bright8", "dark8").replaceAll(time, ""), ((String) measuredDark[2])
+			.replaceAll(time, ""), "the same values measured");
+		final Object[] profile = ContactTrackerCliTest.run("profile", d.toString(), "--particles", "dark");
+		assertEquals(0, profile[0], (String) profile[2]);
+		final String suggestion = ((String) profile[1]).lines().filter(l -> l.startsWith("suggested:")).findFirst()
+			.orElseThrow();
+		assertTrue(suggestion.endsWith(" --particles dark"), suggestion);
+		assertEquals(((String) ContactTrackerCliTest.run("profile", b.toString())[1]).replace("bright8", "dark8")
+			.replace(suggestion.replace(" --particles dark", ""), suggestion), profile[1]);
 	}
 
 	private static String csv(final List<double[]> spots) {

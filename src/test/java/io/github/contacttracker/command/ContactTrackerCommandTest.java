@@ -127,6 +127,29 @@ class ContactTrackerCommandTest extends WithContext {
 		assertFalse(c.isCanceled(), () -> "cancelled: " + c.getCancelReason());
 	}
 
+	/**
+	 * Dark particles: the movie inverted (Edit > Invert, 255 - v) with particles = dark gives the bright movie's
+	 * table; the image shown is not changed.
+	 */
+	@Test
+	void darkParticlesGiveTheBrightMoviesTable() throws Exception {
+		final ImagePlus bright = Simulated.image();
+		final ResultsTable reference = (ResultsTable) run(bright, "overlay", false).getOutput("spots");
+		final ImageStack stack = new ImageStack(bright.getWidth(), bright.getHeight());
+		for (int t = 1; t <= Simulated.FRAMES; t++) {
+			final ImageProcessor ip = bright.getStack().getProcessor(t).duplicate();
+			ip.invert();
+			stack.addSlice(ip);
+		}
+		final ImagePlus dark = new ImagePlus("dark", stack);
+		dark.setCalibration(bright.getCalibration());
+		final byte[] before = ((byte[]) stack.getPixels(1)).clone();
+		final Module m = run(dark, "overlay", false, "particles", "dark");
+		assertSucceeded(m);
+		assertSameTable(reference, (ResultsTable) m.getOutput("spots"));
+		assertArrayEquals(before, (byte[]) stack.getPixels(1), "the image is left as it was");
+	}
+
 	private static void assertSameTable(final ResultsTable expected, final ResultsTable actual) {
 		assertArrayEquals(expected.getHeadings(), actual.getHeadings());
 		assertEquals(expected.size(), actual.size());

@@ -173,6 +173,7 @@ class ContactTrackerDetectorFactoryTest {
 		assertEquals(0, map.get("KINDS"));
 		final Map<String, Object> expected = new HashMap<>(olderSettings());
 		expected.put("KINDS", 0);
+		expected.put("PARTICLES", "bright"); // added later still: bright, as every earlier version tracked
 		assertEquals(expected, map);
 		assertEquals(0, TrackMateSettings.parameters(map).kinds());
 
@@ -182,6 +183,7 @@ class ContactTrackerDetectorFactoryTest {
 		final Element saved = new Element("DetectorSettings");
 		assertNull(factory.marshal(script, saved));
 		assertEquals("0", saved.getAttributeValue("KINDS"));
+		assertEquals("bright", saved.getAttributeValue("PARTICLES"));
 		assertTrue(factory.toString(script).contains("KINDS = 0"), factory.toString(script));
 		assertEquals(expected, roundTrip(script));
 	}

@@ -176,6 +176,27 @@ class ContactTrackerDetectorTest {
 		return new ContactTracker(TestImages.params()).track(plane, frame);
 	}
 
+	/**
+	 * Dark particles: a 32-bit frame of the particles negated (darker than the background) with {@code PARTICLES =
+	 * dark} gives exactly the spots of the bright frame; without it, none of them.
+	 */
+	@Test
+	void darkParticlesGiveTheSpotsOfTheBrightFrame() {
+		final ArrayImg<FloatType, FloatArray> raw = TestImages.image(TestImages.WIDTH, TestImages.HEIGHT);
+		final ArrayImg<FloatType, FloatArray> dark = TestImages.image(TestImages.WIDTH, TestImages.HEIGHT);
+		final float[] px = dark.update(null).getCurrentStorageArray();
+		for (int i = 0; i < px.length; i++)
+			px[i] = -px[i];
+		final Map<String, Object> settings = TestImages.settings(1);
+		settings.put("PARTICLES", "dark");
+		final ImgPlus<FloatType> img = imgPlus(dark, Axes.X, Axes.Y);
+		assertSpotsEqualCoreTimesCalibration(core(raw, 0), spotsOf(detect(img, settings, wholeMovie(img)), 0), 0);
+		settings.put("PARTICLES", "bright");
+		final SpotGlobalDetector<FloatType> bright = factory.getDetector(img, settings, wholeMovie(img));
+		assertFalse(bright.checkInput() && bright.process() && bright.getResult().getNSpots(false) > 0,
+			"a threshold above a negated image's every pixel");
+	}
+
 	@Test
 	void calibrated2DFrameGivesTheCoreTimesTheCalibration() {
 		final ArrayImg<FloatType, FloatArray> raw = TestImages.image(TestImages.WIDTH, TestImages.HEIGHT);
