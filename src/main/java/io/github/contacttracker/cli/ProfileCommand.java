@@ -32,6 +32,7 @@ import java.util.Locale;
 import ij.ImagePlus;
 import io.github.contacttracker.advisor.ProfileAnalysis;
 import io.github.contacttracker.core.InvalidInputException;
+import io.github.contacttracker.core.image.Inversion;
 import io.github.contacttracker.io.AtomicFile;
 import io.github.contacttracker.io.ImageFiles;
 import io.github.contacttracker.io.ImagePlusFrames;
@@ -67,9 +68,10 @@ public final class ProfileCommand extends ContactTrackerCli.Subcommand {
 		"profile is measured (px); default: 2.5 diameters").withDefaultExplained("0"));
 	private final Option<Integer> channelOption = options.add(Option.integer("--channel", "C", "channel of a " +
 		"multi-channel image (from 1), or of a colour one (1 red, 2 green, 3 blue)").withDefaultExplained("0"));
-	private final Option<String> particlesOption = options.add(Option.text("--particles", "bright|dark", "dark: " +
-		"particles darker than the background, the image inverted first (as 'track --particles dark')").withDefault(
-			"bright"));
+	private final Option<String> particlesOption = options.add(Option.text("--particles", "bright|dark", "particles " +
+		"brighter or darker than the background (dark: the image inverted first, as 'track --particles dark'); " +
+		"default: dark where the frame's darkest pixel lies more than twice as far below its median as its brightest " +
+		"above it, as 'track' measures it, else bright").withDefaultExplained("bright"));
 	private final Option<Path> pngOption = options.add(Option.path("--png", "OUT.png", "write the profile plot"));
 	private final Option<Path> csvOption = options.add(Option.path("--csv", "OUT.csv", "write the profile table"));
 
@@ -91,9 +93,14 @@ public final class ProfileCommand extends ContactTrackerCli.Subcommand {
 		if (png != null) AtomicFile.checkFolder("png", png);
 		if (csv != null) AtomicFile.checkFolder("csv", csv);
 		final ImagePlus imp = ImageFiles.open(movie);
-		final boolean dark = SettingValues.defaults().withText(TrackingSettings.PARTICLES, options.value(
+		final boolean given = options.given(particlesOption);
+		final boolean said = SettingValues.defaults().withText(TrackingSettings.PARTICLES, options.value(
 			particlesOption)).dark();
-		final ImagePlusFrames frames = ImagePlusFrames.of(imp, options.value(channelOption), dark);
+		final ImagePlusFrames plain = ImagePlusFrames.of(imp, options.value(channelOption));
+		// as 'track' measures: dark where the frame looks so, unless bright or dark was said
+		final boolean dark = said || !given && frame >= 1 && frame <= plain.frameCount() && Inversion.looksDark(plain
+			.frame(frame - 1));
+		final ImagePlusFrames frames = dark ? ImagePlusFrames.of(imp, options.value(channelOption), true) : plain;
 		if (frame < 1 || frame > frames.frameCount())
 			throw new InvalidInputException("--frame " + frame + " does not exist: " + movie + " has " + frames
 				.frameCount() + " frame" + (frames.frameCount() == 1 ? "" : "s"));

@@ -193,7 +193,8 @@ final class TrackCommand extends ContactTrackerCli.Subcommand {
 	{
 		final MeasuredSettings.Result r = MeasuredSettings.of(input.getFileName().toString(), frames.frames().get(0),
 			imp.getBitDepth() != 32, settings, options.given(settingOptions.get(TrackingSettings.THRESHOLD)), options
-				.given(settingOptions.get(TrackingSettings.R_OUT)));
+				.given(settingOptions.get(TrackingSettings.R_OUT)), options.given(settingOptions.get(
+					TrackingSettings.PARTICLES)));
 		notice.append(r.notice());
 		return r.settings();
 	}

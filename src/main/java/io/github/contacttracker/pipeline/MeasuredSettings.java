@@ -26,6 +26,7 @@ import java.math.BigDecimal;
 import io.github.contacttracker.advisor.ProfileAnalysis;
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.core.image.Inversion;
+import io.github.contacttracker.io.ImagePlusFrames;
 import io.github.contacttracker.settings.SettingValues;
 import io.github.contacttracker.settings.TrackingSettings;
 import net.imglib2.RandomAccessibleInterval;
@@ -53,18 +54,30 @@ public final class MeasuredSettings {
 	 * @param settings the settings given (the others at their defaults)
 	 * @param thresholdGiven whether the threshold was given
 	 * @param rOutGiven whether r_out was given
+	 * @param particlesGiven whether bright or dark particles was said; when neither it nor the threshold was, the
+	 *        particles are taken for dark ones where the frame looks so ({@link Inversion#looksDark}), and the notice
+	 *        says it
 	 * @throws InvalidInputException when the threshold or r_out is missing and cannot be measured
 	 */
 	@SuppressWarnings({ "unchecked", "rawtypes" })
 	public static Result of(final String name, final RandomAccessibleInterval<?> first, final boolean integerData,
-		final SettingValues settings, final boolean thresholdGiven, final boolean rOutGiven)
+		final SettingValues settings, final boolean thresholdGiven, final boolean rOutGiven,
+		final boolean particlesGiven)
 	{
 		final boolean diameter = settings.diameter() > 0;
 		if (thresholdGiven && rOutGiven && diameter) return new Result(settings, "");
+		SettingValues v = settings;
+		final StringBuilder said = new StringBuilder();
+		if (!thresholdGiven && !particlesGiven && !settings.dark() && Inversion.looksDark(
+			(RandomAccessibleInterval) first))
+		{
+			v = v.withText(TrackingSettings.PARTICLES, TrackingSettings.DARK);
+			said.append(" --particles dark");
+		}
 		final ProfileAnalysis.Result r;
 		try {
-			r = ProfileAnalysis.analyse((RandomAccessibleInterval) (settings.dark() ? Inversion.of(
-				(RandomAccessibleInterval) first) : first), settings.diameter(), 0);
+			r = ProfileAnalysis.analyse((RandomAccessibleInterval) (v.dark() ? Inversion.of(
+				(RandomAccessibleInterval) first) : first), v.diameter(), 0);
 		}
 		catch (final InvalidInputException e) {
 			if (thresholdGiven && rOutGiven) return new Result(settings, "contact-tracker: " + name + ": the diameter " +
@@ -73,11 +86,18 @@ public final class MeasuredSettings {
 				rOutGiven ? "" : "and ") + (rOutGiven ? "" : "--r-out ") + "on the first frame of " + name + ": " + e
 					.getMessage() + "; give them (contact-tracker profile MOVIE --at X,Y measures one particle)", e);
 		}
-		SettingValues v = settings;
-		final StringBuilder said = new StringBuilder();
 		if (!thresholdGiven) {
 			v = v.with(TrackingSettings.THRESHOLD, r.suggestedThreshold(integerData));
 			said.append(" --threshold ").append(optionValue(v.get(TrackingSettings.THRESHOLD)));
+			final double[] range = ImagePlusFrames.range((RandomAccessibleInterval) (v.dark() ? Inversion.of(
+				(RandomAccessibleInterval) first) : first), 0);
+			// above every pixel: what the helper took for particles' cores are not (on the authors' 1.avi inverted,
+			// the bright rings around dark cores)
+			if (v.get(TrackingSettings.THRESHOLD) > range[1]) throw new InvalidInputException("cannot measure " +
+				"--threshold on the first frame of " + name + ": the helper's " + optionValue(v.get(
+					TrackingSettings.THRESHOLD)) + " lies above its every pixel (" + optionValue(range[1]) + ")" + (v.dark()
+						? "" : "; if the particles are darker than the background, give --particles dark") + "; or give " +
+					"the values (contact-tracker profile MOVIE --at X,Y measures one particle)");
 		}
 		if (!rOutGiven) {
 			v = v.with(TrackingSettings.R_OUT, r.suggestedROut());

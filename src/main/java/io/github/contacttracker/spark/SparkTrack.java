@@ -169,7 +169,7 @@ public final class SparkTrack {
 		final String failFirst = sc.getConf().get(FAIL_FIRST_ATTEMPT, "");
 		final Map<String, Object> given = MoviePlan.ship(o.settings());
 		final boolean thresholdGiven = o.given(TrackingSettings.THRESHOLD), rOutGiven = o.given(TrackingSettings.R_OUT),
-			channelGiven = o.given(TrackingSettings.CHANNEL);
+			channelGiven = o.given(TrackingSettings.CHANNEL), particlesGiven = o.given(TrackingSettings.PARTICLES);
 		final long jobStart = System.currentTimeMillis();
 		final List<Tuple2<Integer, String>> movies = new ArrayList<>();
 		for (int m = 0; m < o.movies.size(); m++)
@@ -177,7 +177,7 @@ public final class SparkTrack {
 
 		// stage 1: a task per movie
 		final List<MoviePlan> plans = new ArrayList<>(sc.parallelize(movies, movies.size()).map(m -> plan(m._1, m._2,
-			given, thresholdGiven, rOutGiven, channelGiven)).collect());
+			given, thresholdGiven, rOutGiven, channelGiven, particlesGiven)).collect());
 		plans.sort((a, b) -> Integer.compare(a.index(), b.index()));
 		final Broadcast<List<MoviePlan>> shared = sc.broadcast(plans);
 
@@ -263,7 +263,7 @@ public final class SparkTrack {
 
 	/** Stage 1 of one movie (on an executor): open, measure, check, profile; a bad movie gives a failed plan. */
 	private static MoviePlan plan(final int index, final String movie, final Map<String, Object> given,
-		final boolean thresholdGiven, final boolean rOutGiven, final boolean channelGiven)
+		final boolean thresholdGiven, final boolean rOutGiven, final boolean channelGiven, final boolean particlesGiven)
 	{
 		final String uri = uri(movie);
 		try {
@@ -273,7 +273,7 @@ public final class SparkTrack {
 			final ImagePlusFrames frames = open.frames();
 			final String path = movie.replaceAll("/+$", "");
 			final MeasuredSettings.Result measured = MeasuredSettings.of(path.substring(path.lastIndexOf('/') + 1), frames
-				.frames().get(0), !open.floats(), settings, thresholdGiven, rOutGiven);
+				.frames().get(0), !open.floats(), settings, thresholdGiven, rOutGiven, particlesGiven);
 			final TrackingPipeline pipeline = new TrackingPipeline(measured.settings());
 			final FrameSource source = pipeline.frames(FrameSource.of(frames, movie));
 			pipeline.checkThreshold(source);

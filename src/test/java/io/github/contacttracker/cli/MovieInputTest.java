@@ -186,19 +186,33 @@ class MovieInputTest {
 		new FileSaver(particles).saveAsTiffStack(d.toString());
 		final Object[] measuredBright = ContactTrackerCliTest.run("track", b.toString());
 		assertEquals(0, measuredBright[0], (String) measuredBright[2]);
+		final String time = "[0-9.]+ s \\([0-9.]+ frames/s\\)";
 		final Object[] measuredDark = ContactTrackerCliTest.run("track", d.toString(), "--particles", "dark");
 		assertEquals(0, measuredDark[0], (String) measuredDark[2]);
 		assertEquals(measuredBright[1], measuredDark[1], "the same values measured, the same spots");
-		final String time = "[0-9.]+ s \\([0-9.]+ frames/s\\)";
 		assertEquals(((String) measuredBright[2]).replace("bright8", "dark8").replaceAll(time, ""), ((String) measuredDark[2])
 			.replaceAll(time, ""), "the same values measured");
-		final Object[] profile = ContactTrackerCliTest.run("profile", d.toString(), "--particles", "dark");
-		assertEquals(0, profile[0], (String) profile[2]);
-		final String suggestion = ((String) profile[1]).lines().filter(l -> l.startsWith("suggested:")).findFirst()
-			.orElseThrow();
-		assertTrue(suggestion.endsWith(" --particles dark"), suggestion);
-		assertEquals(((String) ContactTrackerCliTest.run("profile", b.toString())[1]).replace("bright8", "dark8")
-			.replace(suggestion.replace(" --particles dark", ""), suggestion), profile[1]);
+		// not said: the helper sees that the frame is dark (its darkest pixel far further below its median than its
+		// brightest above), says so, and measures the rest on the inverted frame
+		final Object[] measured = ContactTrackerCliTest.run("track", d.toString());
+		assertEquals(0, measured[0], (String) measured[2]);
+		assertEquals(measuredBright[1], measured[1], "taken for dark particles");
+		assertEquals(((String) measuredBright[2]).replace("bright8", "dark8").replace("profile helper:",
+			"profile helper: --particles dark").replaceAll(time, ""), ((String) measured[2]).replaceAll(time, ""));
+		// said bright: as said
+		assertEquals(ContactTrackerCli.EXIT_BAD_INPUT, ContactTrackerCliTest.run("track", d.toString(), "--particles",
+			"bright")[0]);
+		for (final String[] said : new String[][] { { "--particles", "dark" }, {} }) {
+			final List<String> args = new ArrayList<>(List.of("profile", d.toString()));
+			args.addAll(List.of(said));
+			final Object[] profile = ContactTrackerCliTest.run(args.toArray(String[]::new));
+			assertEquals(0, profile[0], (String) profile[2]);
+			final String suggestion = ((String) profile[1]).lines().filter(l -> l.startsWith("suggested:")).findFirst()
+				.orElseThrow();
+			assertTrue(suggestion.endsWith(" --particles dark"), suggestion);
+			assertEquals(((String) ContactTrackerCliTest.run("profile", b.toString())[1]).replace("bright8", "dark8")
+				.replace(suggestion.replace(" --particles dark", ""), suggestion), profile[1]);
+		}
 	}
 
 	private static String csv(final List<double[]> spots) {

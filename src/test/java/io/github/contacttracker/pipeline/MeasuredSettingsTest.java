@@ -1,0 +1,125 @@
+/*-
+ * #%L
+ * Contact Tracker: sub-pixel localization of colloidal particles, also when they touch.
+ * %%
+ * Copyright (C) 2026 Contact Tracker developers
+ * %%
+ * This program is free software: you can redistribute it and/or modify
+ * it under the terms of the GNU General Public License as
+ * published by the Free Software Foundation, either version 3 of the
+ * License, or (at your option) any later version.
+ * 
+ * This program is distributed in the hope that it will be useful,
+ * but WITHOUT ANY WARRANTY; without even the implied warranty of
+ * MERCHANTABILITY or FITNESS FOR A PARTICULAR PURPOSE.  See the
+ * GNU General Public License for more details.
+ * 
+ * You should have received a copy of the GNU General Public
+ * License along with this program.  If not, see
+ * <http://www.gnu.org/licenses/gpl-3.0.html>.
+ * #L%
+ */
+package io.github.contacttracker.pipeline;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.SplittableRandom;
+
+import org.junit.jupiter.api.Test;
+
+import io.github.contacttracker.core.InvalidInputException;
+import io.github.contacttracker.core.image.Inversion;
+import io.github.contacttracker.settings.SettingValues;
+import io.github.contacttracker.settings.TrackingSettings;
+import io.github.contacttracker.sim.ImageSimulator;
+import io.github.contacttracker.sim.NoiseModel;
+import io.github.contacttracker.sim.Quantiser;
+import io.github.contacttracker.sim.RadialProfile;
+import net.imglib2.RandomAccessibleInterval;
+import net.imglib2.type.numeric.integer.UnsignedByteType;
+
+/** What {@code track} measures when values are not given: the polarity of the particles among them. */
+class MeasuredSettingsTest {
+
+	/**
+	 * Bright-field-like particles as on the paper authors' 1.avi (a core saturating far above the 8-bit range, a deep
+	 * dark ring, a faint bright ring; D = 32 px), 40 in 320 x 320 px, some touching, background 136, noise 3.
+	 */
+	private static RandomAccessibleInterval<UnsignedByteType> brightField() {
+		final RadialProfile profile = r -> 200 * Math.exp(-r * r / 32) - 80 * Math.exp(-(r - 12) * (r - 12) / 32) + 12 *
+			Math.exp(-(r - 27) * (r - 27) / 32);
+		final SplittableRandom rnd = new SplittableRandom(3);
+		final List<double[]> centres = new ArrayList<>();
+		while (centres.size() < 40) {
+			final double[] c = { 20 + rnd.nextDouble() * 280, 20 + rnd.nextDouble() * 280 };
+			if (centres.stream().allMatch(o -> Math.hypot(c[0] - o[0], c[1] - o[1]) > 31.5)) centres.add(c);
+		}
+		return Quantiser.toUnsignedBytes(new ImageSimulator(profile, 3).render(centres, 320, 320, 136), NoiseModel
+			.gaussian(3), rnd).image();
+	}
+
+	@SuppressWarnings("unchecked")
+	private static RandomAccessibleInterval<UnsignedByteType> inverted(final RandomAccessibleInterval<UnsignedByteType> f) {
+		return (RandomAccessibleInterval<UnsignedByteType>) Inversion.of(f);
+	}
+
+	/**
+	 * Inverted, such a frame is dark cores in bright rings, and its darkest pixel lies little further below its median
+	 * than its brightest above it (as on 1.avi inverted): not taken for dark particles. The helper then takes the
+	 * rings for cores and its threshold lies above every pixel; that is said, with what to do, instead of a refusal of
+	 * the threshold later. Told, the values are those of the bright frame.
+	 */
+	@Test
+	void aThresholdAboveEveryPixelSaysWhatToTry() {
+		final RandomAccessibleInterval<UnsignedByteType> bright = brightField(), dark = inverted(bright);
+		assertFalse(Inversion.looksDark(bright));
+		assertFalse(Inversion.looksDark(dark), "1.avi inverted is not taken for dark either");
+		final SettingValues defaults = SettingValues.defaults();
+		final InvalidInputException e = assertThrows(InvalidInputException.class, () -> MeasuredSettings.of("bf.tif",
+			dark, true, defaults, false, false, false));
+		assertTrue(e.getMessage().startsWith("cannot measure --threshold on the first frame of bf.tif: the helper's "),
+			e.getMessage());
+		assertTrue(e.getMessage().contains(" lies above its every pixel ("), e.getMessage());
+		assertTrue(e.getMessage().contains("; if the particles are darker than the background, give --particles dark;"),
+			e.getMessage());
+
+		final MeasuredSettings.Result fromBright = MeasuredSettings.of("bf.tif", bright, true, defaults, false, false,
+			false);
+		final MeasuredSettings.Result told = MeasuredSettings.of("bf.tif", dark, true, defaults.withText(
+			TrackingSettings.PARTICLES, TrackingSettings.DARK), false, false, true);
+		assertEquals(fromBright.settings().withText(TrackingSettings.PARTICLES, TrackingSettings.DARK), told.settings());
+		assertEquals(fromBright.notice(), told.notice(), "nothing measured about the polarity: it was given");
+	}
+
+	/**
+	 * Particles darker than a bright background (the inverse of bright ones on a dark one): taken for dark when neither
+	 * the threshold nor the polarity was given, and said; with the threshold given, never (it is the user's grey
+	 * level).
+	 */
+	@Test
+	void darkParticlesAreMeasuredAsSuchUnlessTheThresholdIsGiven() {
+		final RadialProfile profile = r -> 150 * Math.exp(-r * r / 18);
+		final SplittableRandom rnd = new SplittableRandom(7);
+		final List<double[]> centres = new ArrayList<>();
+		for (int k = 0; k < 9; k++)
+			centres.add(new double[] { 40 + 60 * (k % 3) + rnd.nextDouble(), 40 + 60 * (k / 3) + rnd.nextDouble() });
+		final RandomAccessibleInterval<UnsignedByteType> bright = Quantiser.toUnsignedBytes(new ImageSimulator(profile, 3)
+			.render(centres, 200, 200, 40), NoiseModel.gaussian(2), rnd).image(), dark = inverted(bright);
+		assertTrue(Inversion.looksDark(dark));
+		final SettingValues defaults = SettingValues.defaults();
+		final MeasuredSettings.Result fromBright = MeasuredSettings.of("m.tif", bright, true, defaults, false, false,
+			false);
+		final MeasuredSettings.Result fromDark = MeasuredSettings.of("m.tif", dark, true, defaults, false, false, false);
+		assertEquals(fromBright.settings().withText(TrackingSettings.PARTICLES, TrackingSettings.DARK), fromDark
+			.settings());
+		assertEquals(fromBright.notice().replace("profile helper:", "profile helper: --particles dark"), fromDark
+			.notice());
+		final SettingValues given = defaults.with(TrackingSettings.THRESHOLD, 100.0).with(TrackingSettings.R_OUT, 20.0);
+		assertFalse(MeasuredSettings.of("m.tif", dark, true, given, true, true, false).settings().dark());
+	}
+}
