@@ -666,7 +666,7 @@ public final class ProfileAnalysis {
 	/**
 	 * {@link #pool}, the mask narrowed (by {@value #MASK_NARROWING} at a time, down to {@code narrowest}) while no
 	 * particle has background pixels left around it: in a dense field of particles that do not touch (the paper
-	 * authors' Test_im.png, 50 particles 28-38 px apart in 250 x 250 px), every pixel lies within a diameter of some
+	 * authors' Test_im.png, 50 particles 27.5-38.5 px apart in 250 x 250 px), every pixel lies within a diameter of some
 	 * neighbour. Narrowed, it is reported in {@code findings} (when not null).
 	 *
 	 * @param narrowest the narrowest mask tried (half the diameter; infinite: the mask as it is)

@@ -498,6 +498,7 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 			if (status != null) status.showStatus(message);
 			return;
 		}
+		if (p.darkFound()) particles = TrackingSettings.DARK;
 		threshold = p.threshold();
 		r_out = p.rOut();
 		diameter = p.diameter();

@@ -105,7 +105,8 @@ public final class ImagePlusFrames {
 
 	/**
 	 * @param imp the image
-	 * @param channel the 1-based channel to track; 0 accepts only single-channel images
+	 * @param channel the 1-based channel to track (of an RGB image: 1 red, 2 green, 3 blue); 0 accepts only
+	 *        single-channel images and RGB ones whose first frame is grey
 	 * @throws InvalidInputException with a one-line message when the image cannot be tracked
 	 */
 	public static ImagePlusFrames of(final ImagePlus imp, final int channel) {

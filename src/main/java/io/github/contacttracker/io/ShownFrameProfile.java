@@ -29,6 +29,7 @@ import java.util.Locale;
 import ij.ImagePlus;
 import io.github.contacttracker.advisor.ProfileAnalysis;
 import io.github.contacttracker.core.InvalidInputException;
+import io.github.contacttracker.core.image.Inversion;
 import io.github.contacttracker.core.Numbers;
 import net.imglib2.RandomAccessibleInterval;
 import net.imglib2.type.numeric.RealType;
@@ -51,9 +52,11 @@ import net.imglib2.type.numeric.RealType;
  * @param rejectedDiameter a diameter given (px) that the helper could not measure with, so it estimated the
  *        diameter instead ({@link #measure}); 0 if none
  * @param rejection why it could not, {@code null} if none
+ * @param dark whether the frame was measured inverted: dark particles
+ * @param darkFound whether that was found ({@link #measure}: the particles were said bright, the frame looks dark)
  */
 public record ShownFrameProfile(ProfileAnalysis.Result result, String title, int frame, int frameCount, int channel,
-	boolean integerData, double rejectedDiameter, String rejection)
+	boolean integerData, double rejectedDiameter, String rejection, boolean dark, boolean darkFound)
 {
 
 	/** Longest line written to ImageJ's Log window: it does not wrap, and a default Log window is about this wide. */
@@ -63,7 +66,10 @@ public record ShownFrameProfile(ProfileAnalysis.Result result, String title, int
 	 * The profile of the most isolated particles of the frame on display (the "Measure from the image" buttons).
 	 * A diameter given is used; if the helper cannot measure with it (typically one left in the fields from another
 	 * image, e.g. twice these particles' size on a dense monolayer: no background within reach), the diameter is
-	 * estimated instead and {@link #summary()} and {@link #logText} say so ({@link #rejectedDiameter()}).
+	 * estimated instead and {@link #summary()} and {@link #logText} say so ({@link #rejectedDiameter()}). Particles
+	 * said bright on a frame that looks dark ({@link Inversion#looksDark}) are measured as dark ones, as {@code track}
+	 * measures them when neither they nor the threshold are given, and the summary says so ({@link #darkFound()}):
+	 * the buttons set the setting with the values.
 	 *
 	 * @param imp the image
 	 * @param channel the 1-based channel to measure (the one that will be tracked)
@@ -73,23 +79,26 @@ public record ShownFrameProfile(ProfileAnalysis.Result result, String title, int
 	 * @throws InvalidInputException with a one-line message: an image that cannot be tracked, or a frame the helper
 	 *         finds no usable particle in (with the diameter given, if estimating it does not help either)
 	 */
-	public static ShownFrameProfile measure(final ImagePlus imp, final int channel, final boolean dark,
+	public static ShownFrameProfile measure(final ImagePlus imp, final int channel, final boolean said,
 		final double diameter)
 	{
+		final boolean found = !said && Inversion.looksDark(ImagePlusFrames.of(imp, channel).frame(ImagePlusFrames
+			.shownFrame(imp)));
+		final boolean dark = said || found;
 		try {
-			return run(imp, channel, dark, null, diameter, 0);
+			return run(imp, channel, dark, found, null, diameter, 0);
 		}
 		catch (final InvalidInputException e) {
 			if (!(diameter > 0)) throw e;
 			final ShownFrameProfile estimated;
 			try {
-				estimated = run(imp, channel, dark, null, 0, 0);
+				estimated = run(imp, channel, dark, found, null, 0, 0);
 			}
 			catch (final InvalidInputException again) {
 				throw e;
 			}
 			return new ShownFrameProfile(estimated.result, estimated.title, estimated.frame, estimated.frameCount,
-				estimated.channel, estimated.integerData, diameter, e.getMessage());
+				estimated.channel, estimated.integerData, diameter, e.getMessage(), dark, found);
 		}
 	}
 
@@ -107,12 +116,12 @@ public record ShownFrameProfile(ProfileAnalysis.Result result, String title, int
 		final double maxRadius)
 	{
 		if (imp == null) throw new InvalidInputException("no image");
-		return run(imp, imp.convertIndexToPosition(imp.getCurrentSlice())[0], false, point, diameter, maxRadius);
+		return run(imp, imp.convertIndexToPosition(imp.getCurrentSlice())[0], false, false, point, diameter, maxRadius);
 	}
 
 	@SuppressWarnings({ "unchecked", "rawtypes" })
 	private static ShownFrameProfile run(final ImagePlus imp, final int channel, final boolean dark,
-		final double[] point, final double diameter, final double maxRadius)
+		final boolean darkFound, final double[] point, final double diameter, final double maxRadius)
 	{
 		final ImagePlusFrames frames = ImagePlusFrames.of(imp, channel, dark);
 		final int t = ImagePlusFrames.shownFrame(imp);
@@ -122,7 +131,7 @@ public record ShownFrameProfile(ProfileAnalysis.Result result, String title, int
 		final ProfileAnalysis.Result r = point == null ? ProfileAnalysis.analyse(frame, diameter, maxRadius,
 			kindFrames) : ProfileAnalysis.analyse(frame, point[0], point[1], diameter, maxRadius, kindFrames);
 		return new ShownFrameProfile(r, imp.getTitle(), t, frames.frameCount(), frames.channel(), imp
-			.getBitDepth() != 32, 0, null);
+			.getBitDepth() != 32, 0, null, dark, darkFound);
 	}
 
 	/**
@@ -168,8 +177,9 @@ public record ShownFrameProfile(ProfileAnalysis.Result result, String title, int
 	 *         {@code (estimated: 65.29 px given did not fit)} when a diameter given could not be measured with
 	 */
 	public String summary() {
-		return String.format(Locale.ROOT, "'%s'%s%s: threshold %s, r_out %s px, diameter %s px (%s)", title,
-			frameCount > 1 ? ", frame " + (frame + 1) : "", channel > 1 ? ", channel " + channel : "", Numbers.fmt(
+		return String.format(Locale.ROOT, "'%s'%s%s: %sthreshold %s, r_out %s px, diameter %s px (%s)", title,
+			frameCount > 1 ? ", frame " + (frame + 1) : "", channel > 1 ? ", channel " + channel : "", darkFound
+				? "dark particles (the frame looks so), " : dark ? "dark particles, " : "", Numbers.fmt(
 				threshold(), 3), Numbers.fmt(rOut(), 3), Numbers.fmt(diameter(), 3), rejectedDiameter > 0 ? "estimated: " +
 					Numbers.fmt(rejectedDiameter, 3) + " px given did not fit" : result.diameterEstimated() ? "estimated"
 						: "given");

@@ -347,6 +347,7 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 			};
 		}
 		return () -> {
+			if (p.darkFound()) fields.get(TrackingSettings.PARTICLES).show(TrackingSettings.DARK);
 			fields.get(TrackingSettings.THRESHOLD).show(p.threshold());
 			fields.get(TrackingSettings.R_OUT).show(p.rOut());
 			fields.get(TrackingSettings.DIAMETER).show(p.diameter());

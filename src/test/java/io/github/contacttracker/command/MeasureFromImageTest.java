@@ -117,6 +117,30 @@ class MeasureFromImageTest extends WithContext {
 		assertFalse(((Cancelable) m).isCanceled());
 	}
 
+	/**
+	 * Dark particles (the frame inverted, 255 - v) with Particles left at bright: the button finds them dark, sets
+	 * the setting and measures what it measures on the bright frame, and says so.
+	 */
+	@Test
+	void darkParticlesAreFoundSetAndMeasuredInverted() throws Exception {
+		final ImagePlus bright = ProfileScenes.particles("particles", 1, Calibration.PIXELS);
+		final ProfileAnalysis.Result r = helper(bright, 0, 0);
+		final ImagePlus dark = ProfileScenes.particles("particles", 1, Calibration.PIXELS);
+		dark.getProcessor().invert();
+		final Module m = dialog(dark);
+		assertEquals("bright", m.getInput("particles"));
+		final String log = press(m);
+		assertEquals("dark", m.getInput("particles"));
+		assertEquals(r.suggestedThreshold(true), value(m, "threshold"), 0);
+		assertEquals(r.suggestedROut(), value(m, "r_out"), 0);
+		assertTrue(log.replace("\n    ", " ").startsWith("Contact Tracker: measured 'particles': dark particles (the " +
+			"frame looks so), threshold "), log);
+		// said bright: the bright frame stays bright
+		final Module b = dialog(bright);
+		press(b);
+		assertEquals("bright", b.getInput("particles"));
+	}
+
 	@Test
 	void aGivenDiameterIsKeptAndUsed() throws Exception {
 		final ImagePlus imp = ProfileScenes.particles("particles", 1, Calibration.PIXELS);

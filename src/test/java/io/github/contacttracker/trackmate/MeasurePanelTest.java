@@ -109,6 +109,22 @@ class MeasurePanelTest {
 		assertTrue(shown(panel).contains(message.substring(0, 20)), "the message is on the panel");
 	}
 
+	/** Dark particles with PARTICLES at bright: the button finds them dark, sets it, and measures the inverted frame. */
+	@Test
+	void darkParticlesAreFoundSetAndMeasuredInverted() {
+		final ImagePlus bright = ProfileScenes.particles("particles", 1, MICRONS);
+		final ProfileAnalysis.Result r = helper(bright, 0, 0);
+		final ImagePlus dark = ProfileScenes.particles("particles", 1, MICRONS);
+		dark.getProcessor().invert();
+		final ContactTrackerConfigurationPanel panel = panel(dark);
+		assertEquals("bright", panel.getSettings().get("PARTICLES"));
+		final String message = panel.measureFromImage();
+		assertEquals("dark", panel.getSettings().get("PARTICLES"));
+		assertEquals(r.suggestedThreshold(true), number(panel.getSettings(), "GREY_THRESHOLD"), 0);
+		assertEquals(r.suggestedROut(), number(panel.getSettings(), "R_OUT"), 0);
+		assertTrue(message.startsWith("Measured 'particles': dark particles (the frame looks so), threshold "), message);
+	}
+
 	@Test
 	void aGivenDiameterIsKeptAndUsed() {
 		final ImagePlus imp = ProfileScenes.particles("particles", 1, MICRONS);
