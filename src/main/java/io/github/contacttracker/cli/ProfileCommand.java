@@ -135,8 +135,9 @@ public final class ProfileCommand extends ContactTrackerCli.Subcommand {
 		}
 		for (final Path t : targets)
 			out.println("  wrote " + t);
-		out.println(SUGGESTION + " --threshold " + MeasuredSettings.optionValue(threshold) + " --r-out " + MeasuredSettings.optionValue(
-			rOut) + " --diameter " + MeasuredSettings.optionValue(r.suggestedDiameter()) + (dark ? " --particles dark" : ""));
+		out.println(SUGGESTION + " --threshold " + MeasuredSettings.optionValue(threshold) + " --r-out " + MeasuredSettings
+			.optionValue(rOut) + " --diameter " + MeasuredSettings.optionValue(r.suggestedDiameter()) + (dark
+				? " --particles dark" : ""));
 		return 0;
 	}
 
