@@ -77,9 +77,9 @@ final class TrackCommand extends ContactTrackerCli.Subcommand {
 	TrackCommand(final PrintStream out, final PrintStream err) {
 		super(new CommandOptions("contact-tracker track", "Localize the particles of every frame of a movie; the " +
 			"spots go to stdout as CSV without --csv.", "MOVIE: a TIFF (multi-page, BigTIFF, OME-TIFF, 8/16/32-bit " +
-				"integer or 32/64-bit float), an AVI (uncompressed, MJPEG, PNG), a folder of TIFF/PNG/JPEG frames, or " +
-				"another image ImageJ opens. Several movies, with --out-dir, run one after the other in one process: " +
-				"the JVM starts and warms up once.").withRepeatedLastParameter(), out);
+				"integer or 32/64-bit float), an AVI (uncompressed, MJPEG, PNG; grey or colour), a folder of " +
+				"TIFF/PNG/JPEG frames, or another image ImageJ opens. Several movies, with --out-dir, run one after the " +
+				"other in one process: the JVM starts and warms up once.").withRepeatedLastParameter(), out);
 		this.err = err;
 		movieOption = options.add(Option.positionalPath("MOVIE", "The movie, image or folder of frames."));
 		for (final Setting<?> s : TrackingSettings.ALL) {
