@@ -109,6 +109,7 @@ public final class ProfileCommand extends ContactTrackerCli.Subcommand {
 		final boolean integerData = imp.getBitDepth() != 32;
 		final double threshold = r.suggestedThreshold(integerData), rOut = r.suggestedROut();
 
+		if (!frames.colourChoice().isEmpty()) out.println(frames.colourChoice());
 		out.printf(Locale.ROOT, "%s, frame %d: profile of %d particle%s around %s%n", movie.getFileName(), frame, r
 			.particles(), r.particles() == 1 ? "" : "s", centres(r));
 		out.println("   r_px    level  above_bg  pixels");

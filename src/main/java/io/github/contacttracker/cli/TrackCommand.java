@@ -162,6 +162,7 @@ final class TrackCommand extends ContactTrackerCli.Subcommand {
 		final ImagePlusFrames frames = ImagePlusFrames.of(imp, options.given(settingOptions.get(TrackingSettings.CHANNEL))
 			? settings.channel() : 0);
 		final StringBuilder notice = new StringBuilder();
+		if (!frames.colourChoice().isEmpty()) notice.append("contact-tracker: ").append(frames.colourChoice());
 		final SettingValues used = measured(input, imp, frames, settings, notice);
 		final Outputs files = new Outputs(outputs.csv(), outputs.trackMateXml(), outputs.trackMateXml() == null ? null
 			: ImageSource.of(input, frames.width(), frames.height(), frames.frameCount()));
@@ -195,6 +196,7 @@ final class TrackCommand extends ContactTrackerCli.Subcommand {
 			imp.getBitDepth() != 32, settings, options.given(settingOptions.get(TrackingSettings.THRESHOLD)), options
 				.given(settingOptions.get(TrackingSettings.R_OUT)), options.given(settingOptions.get(
 					TrackingSettings.PARTICLES)));
+		if (notice.length() > 0 && !r.notice().isEmpty()) notice.append('\n');
 		notice.append(r.notice());
 		return r.settings();
 	}

@@ -46,10 +46,11 @@ import net.imglib2.type.numeric.RealType;
  * multi-channel image one channel is tracked. An image with both Z and T above 1 is refused: the method is 2D.
  * <p>
  * <b>Colour.</b> An RGB image (colour cameras; MJPEG, which codes even grey movies in colour) has three channels,
- * 1 red, 2 green, 3 blue, tracked as 8-bit grey. Without a chosen channel it is tracked as grey only when its
- * first frame is grey (red, green and blue equal at every pixel: then each frame's mean of the three, exactly the
- * grey of a grey movie); a colour image is refused with the channels' contrast, since their mean would add the
- * noise of channels without signal to the one that holds it.
+ * 1 red, 2 green, 3 blue, tracked as 8-bit grey. Without a chosen channel, an image whose first frame is grey (red,
+ * green and blue equal at every pixel) is tracked as grey (each frame's mean of the three, exactly the grey of a
+ * grey movie); a colour one in the channel that holds the particles' contrast, when one does ({@link #dominant}: the
+ * mean would add the noise of channels without signal to it), else in the mean, and {@link #colourChoice} says
+ * which.
  * <p>
  * <b>Values.</b> Frames hold the image's own values: for 8- and 16-bit images with a calibration function (ImageJ
  * stores signed 16-bit data with an offset of 32768 and such a function), each frame is converted to those values,
@@ -74,16 +75,19 @@ public final class ImagePlusFrames {
 	private final int colour;
 	/** Whether each frame is inverted ({@link Inversion}: dark particles). */
 	private final boolean dark;
+	/** How the colour tracked was chosen, when nobody chose it in a colour image; empty otherwise. */
+	private final String colourChoice;
 	private final boolean virtual;
 	private final Map<Integer, RandomAccessibleInterval<? extends RealType<?>>> cache;
 	private int reads;
 
 	private ImagePlusFrames(final ImageStack stack, final int[] stackIndex, final float[] cTable,
 		final Calibration calibration, final int width, final int height, final int channel, final int colour,
-		final boolean dark)
+		final boolean dark, final String colourChoice)
 	{
 		this.colour = colour;
 		this.dark = dark;
+		this.colourChoice = colourChoice;
 		this.stack = stack;
 		this.stackIndex = stackIndex;
 		this.cTable = cTable;
@@ -106,7 +110,7 @@ public final class ImagePlusFrames {
 	/**
 	 * @param imp the image
 	 * @param channel the 1-based channel to track (of an RGB image: 1 red, 2 green, 3 blue); 0 accepts only
-	 *        single-channel images and RGB ones whose first frame is grey
+	 *        single-channel images and RGB ones (of which a colour is chosen: {@link #colourChoice})
 	 * @throws InvalidInputException with a one-line message when the image cannot be tracked
 	 */
 	public static ImagePlusFrames of(final ImagePlus imp, final int channel) {
@@ -145,13 +149,19 @@ public final class ImagePlusFrames {
 		final int[] index = new int[count];
 		for (int t = 1; t <= count; t++)
 			index[t - 1] = nt > 1 ? imp.getStackIndex(c, 1, t) : imp.getStackIndex(c, t, 1);
+		int colour = rgb ? channel : -1;
+		String colourChoice = "";
 		if (rgb && channel == 0) {
 			final ImageProcessor first = imp.getStack().getProcessor(index[0]);
 			if (first == null) throw new InvalidInputException("cannot read frame 1 of " + name);
 			final double[] spread = colourSpread((int[]) first.getPixels());
-			if (spread != null) throw new InvalidInputException(name + " has colour frames (red, green and blue " +
-				"differ): choose the channel to track (channel = 1 red, 2 green, 3 blue; their spread in frame 1: " +
-				String.format(java.util.Locale.ROOT, "%.1f, %.1f, %.1f", spread[0], spread[1], spread[2]) + " grey levels)");
+			if (spread != null) {
+				colour = dominant(spread);
+				colourChoice = name + " has colour frames: tracked in " + (colour == 0 ? "the mean of red, green and " +
+					"blue" : COLOURS[colour - 1] + ", the channel with the particles' contrast") + String.format(
+						java.util.Locale.ROOT, " (the channels' spread in frame 1: %.1f, %.1f, %.1f grey levels); --channel 1, " +
+							"2 or 3 tracks red, green or blue", spread[0], spread[1], spread[2]);
+			}
 		}
 		final ij.measure.Calibration cal = imp.getCalibration();
 		// a calibration function (signed 16-bit data, or one the user set) maps stored to real values
@@ -161,8 +171,28 @@ public final class ImagePlusFrames {
 		final String unit = cal.scaled() ? cal.getXUnit() : "pixel";
 		final String timeUnit = cal.frameInterval > 0 ? cal.getTimeUnit() : "frame";
 		return new ImagePlusFrames(imp.getStack(), index, cTable, new Calibration(cal.scaled() ? pw : 1, cal.scaled()
-			? ph : 1, unit, dt, timeUnit), imp.getWidth(), imp.getHeight(), rgb ? Math.max(channel, 1) : c, rgb ? channel
-				: -1, dark);
+			? ph : 1, unit, dt, timeUnit), imp.getWidth(), imp.getHeight(), rgb ? Math.max(colour, 1) : c, colour, dark,
+			colourChoice);
+	}
+
+	private static final String[] COLOURS = { "red", "green", "blue" };
+
+	/**
+	 * How much more a channel must vary over the frame than each of the others to be taken alone when none was
+	 * chosen: the first frame of the paper authors' colour movie (a particle in red) has spreads 16.6, 1.0 and 1.2.
+	 */
+	static final double DOMINANT_SPREAD = 2;
+
+	/**
+	 * @return the channel (1-3) whose spread is more than {@link #DOMINANT_SPREAD} times each other's: the one
+	 *         that holds the particles; 0 (their mean) when none is, as in a grey scene through a colour camera,
+	 *         whose channels' noise the mean averages
+	 */
+	private static int dominant(final double[] spread) {
+		for (int c = 0; c < 3; c++)
+			if (spread[c] > DOMINANT_SPREAD * spread[(c + 1) % 3] && spread[c] > DOMINANT_SPREAD * spread[(c + 2) % 3])
+				return c + 1;
+		return 0;
 	}
 
 	/**
@@ -362,6 +392,14 @@ public final class ImagePlusFrames {
 	/** @return the 1-based channel taken */
 	public int channel() {
 		return channel;
+	}
+
+	/**
+	 * @return how the colour tracked was chosen in a colour image without a channel given, in one line (e.g.
+	 *         {@code 'movie.avi' has colour frames: tracked in red, ...}); empty when there was no choice to make
+	 */
+	public String colourChoice() {
+		return colourChoice;
 	}
 
 	/**

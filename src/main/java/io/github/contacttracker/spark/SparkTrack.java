@@ -279,7 +279,9 @@ public final class SparkTrack {
 			pipeline.checkThreshold(source);
 			final StackTracker.ProfileStage stage = StackTracker.withThreads(1, () -> new StackTracker(measured.settings()
 				.parameters()).profileStage(frames.frameCount(), frameFunction(source), () -> false));
-			return new MoviePlan(index, movie, uri, MoviePlan.ship(measured.settings()), channelGiven, measured.notice(),
+			final String notice = (frames.colourChoice().isEmpty() ? "" : "contact-tracker: " + frames.colourChoice() +
+				(measured.notice().isEmpty() ? "" : "\n")) + measured.notice();
+			return new MoviePlan(index, movie, uri, MoviePlan.ship(measured.settings()), channelGiven, notice,
 				frames.frameCount(), frames.width(), frames.height(), frames.calibration(), stage, null);
 		}
 		catch (final InvalidInputException | IOException | UncheckedIOException e) {

@@ -178,11 +178,8 @@ class ContactTrackerCliTest {
 		assertBadInput("must be a number", csv, "track", tif.toString(), "--threshold", "high", "--r-out", "61");
 		final Path rgb = dir.resolve("rgb.tif");
 		final ColorProcessor colour = new ColorProcessor(20, 20);
-		colour.set(3, 4, 0xc80000); // one red pixel: a colour image, whose channel must be chosen
+		colour.set(3, 4, 0xc80000); // one red pixel: a colour image of three channels
 		ImageFiles.saveTiff(new ImagePlus("rgb", colour), rgb);
-		assertBadInput("'rgb.tif' has colour frames (red, green and blue differ): choose the channel to track " +
-			"(channel = 1 red, 2 green, 3 blue; their spread in frame 1: 10.0, 0.0, 0.0 grey levels)", csv, "track", rgb
-				.toString(), "--threshold", "1", "--r-out", "5", "--csv", csv.toString());
 		assertBadInput("channel 4 does not exist: 'rgb.tif' has 3 channels", csv, "track", rgb.toString(),
 			"--channel", "4", "--threshold", "1", "--r-out", "5", "--csv", csv.toString());
 		final Path nan = dir.resolve("nan.tif");
