@@ -96,7 +96,8 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 	static final String DOI_TEXT = "doi:10.1088/1361-648X/aa908e";
 
 	private static final String SHORT_INFO = "<html><body style='font-family:Arial; font-size:8pt'>"
-		+ "Centres of bright particles, also when they touch: pixels at or above the <b>threshold</b> form one "
+		+ "Centres of bright particles (dark ones with <b>Particles</b> dark), also when they touch: pixels at or "
+		+ "above the <b>threshold</b> form one "
 		+ "active area per particle; each centre is found by radial symmetry and refined away from the neighbours "
 		+ "(within <b>r_out</b>, where a particle's image ends). <b>fit</b> (default) is unbiased at contact.<br>"
 		+ "Y&uuml;cel &amp; Okumu&#351;o&#287;lu, J. Phys.: Condens. Matter 29, 465101 (2017),<br>"
