@@ -74,10 +74,10 @@ public final class MeasuredSettings {
 			v = v.withText(TrackingSettings.PARTICLES, TrackingSettings.DARK);
 			said.append(" --particles dark");
 		}
+		final RandomAccessibleInterval seen = v.dark() ? Inversion.of((RandomAccessibleInterval) first) : first;
 		final ProfileAnalysis.Result r;
 		try {
-			r = ProfileAnalysis.analyse((RandomAccessibleInterval) (v.dark() ? Inversion.of(
-				(RandomAccessibleInterval) first) : first), v.diameter(), 0);
+			r = ProfileAnalysis.analyse(seen, v.diameter(), 0);
 		}
 		catch (final InvalidInputException e) {
 			if (thresholdGiven && rOutGiven) return new Result(settings, "contact-tracker: " + name + ": the diameter " +
@@ -89,8 +89,7 @@ public final class MeasuredSettings {
 		if (!thresholdGiven) {
 			v = v.with(TrackingSettings.THRESHOLD, r.suggestedThreshold(integerData));
 			said.append(" --threshold ").append(optionValue(v.get(TrackingSettings.THRESHOLD)));
-			final double[] range = ImagePlusFrames.range((RandomAccessibleInterval) (v.dark() ? Inversion.of(
-				(RandomAccessibleInterval) first) : first), 0);
+			final double[] range = ImagePlusFrames.range(seen, 0);
 			// above every pixel: what the helper took for particles' cores are not (on the authors' 1.avi inverted,
 			// the bright rings around dark cores)
 			if (v.get(TrackingSettings.THRESHOLD) > range[1]) throw new InvalidInputException("cannot measure " +
