@@ -32,7 +32,6 @@ import java.util.Locale;
 import ij.ImagePlus;
 import io.github.contacttracker.advisor.ProfileAnalysis;
 import io.github.contacttracker.core.InvalidInputException;
-import io.github.contacttracker.core.image.Inversion;
 import io.github.contacttracker.io.AtomicFile;
 import io.github.contacttracker.io.ImageFiles;
 import io.github.contacttracker.io.ImagePlusFrames;
@@ -98,7 +97,7 @@ public final class ProfileCommand extends ContactTrackerCli.Subcommand {
 			particlesOption)).dark();
 		final ImagePlusFrames plain = ImagePlusFrames.of(imp, options.value(channelOption));
 		// as 'track' measures: dark where the frame looks so, unless bright or dark was said
-		final boolean dark = said || !given && frame >= 1 && frame <= plain.frameCount() && Inversion.looksDark(plain
+		final boolean dark = said || !given && frame >= 1 && frame <= plain.frameCount() && ProfileAnalysis.looksDark(plain
 			.frame(frame - 1));
 		final ImagePlusFrames frames = dark ? ImagePlusFrames.of(imp, options.value(channelOption), true) : plain;
 		if (frame < 1 || frame > frames.frameCount())

@@ -151,8 +151,9 @@ public final class ImagePlusFrames {
 			index[t - 1] = nt > 1 ? imp.getStackIndex(c, 1, t) : imp.getStackIndex(c, t, 1);
 		int colour = rgb ? channel : -1;
 		String colourChoice = "";
+		ImageProcessor first = null;
 		if (rgb && channel == 0) {
-			final ImageProcessor first = imp.getStack().getProcessor(index[0]);
+			first = imp.getStack().getProcessor(index[0]);
 			if (first == null) throw new InvalidInputException("cannot read frame 1 of " + name);
 			final double[] spread = colourSpread((int[]) first.getPixels());
 			if (spread != null) {
@@ -170,9 +171,15 @@ public final class ImagePlusFrames {
 		final double dt = cal.frameInterval > 0 ? cal.frameInterval : 1;
 		final String unit = cal.scaled() ? cal.getXUnit() : "pixel";
 		final String timeUnit = cal.frameInterval > 0 ? cal.getTimeUnit() : "frame";
-		return new ImagePlusFrames(imp.getStack(), index, cTable, new Calibration(cal.scaled() ? pw : 1, cal.scaled()
-			? ph : 1, unit, dt, timeUnit), imp.getWidth(), imp.getHeight(), rgb ? Math.max(colour, 1) : c, colour, dark,
-			colourChoice);
+		final ImagePlusFrames frames = new ImagePlusFrames(imp.getStack(), index, cTable, new Calibration(cal.scaled()
+			? pw : 1, cal.scaled() ? ph : 1, unit, dt, timeUnit), imp.getWidth(), imp.getHeight(), rgb ? Math.max(colour,
+				1) : c, colour, dark, colourChoice);
+		// the first frame of a movie on disk, read for its colours, is kept: the helper and the tracker read it next
+		if (first != null && frames.virtual) synchronized (frames.cache) {
+			frames.reads++;
+			frames.remember(0, first);
+		}
+		return frames;
 	}
 
 	private static final String[] COLOURS = { "red", "green", "blue" };

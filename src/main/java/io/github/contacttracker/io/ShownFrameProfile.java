@@ -29,7 +29,6 @@ import java.util.Locale;
 import ij.ImagePlus;
 import io.github.contacttracker.advisor.ProfileAnalysis;
 import io.github.contacttracker.core.InvalidInputException;
-import io.github.contacttracker.core.image.Inversion;
 import io.github.contacttracker.core.Numbers;
 import net.imglib2.RandomAccessibleInterval;
 import net.imglib2.type.numeric.RealType;
@@ -67,13 +66,13 @@ public record ShownFrameProfile(ProfileAnalysis.Result result, String title, int
 	 * A diameter given is used; if the helper cannot measure with it (typically one left in the fields from another
 	 * image, e.g. twice these particles' size on a dense monolayer: no background within reach), the diameter is
 	 * estimated instead and {@link #summary()} and {@link #logText} say so ({@link #rejectedDiameter()}). Particles
-	 * said bright on a frame that looks dark ({@link Inversion#looksDark}) are measured as dark ones, as {@code track}
+	 * said bright on a frame that looks dark ({@link ProfileAnalysis#looksDark}) are measured as dark ones, as {@code track}
 	 * measures them when neither they nor the threshold are given, and the summary says so ({@link #darkFound()}):
 	 * the buttons set the setting with the values.
 	 *
 	 * @param imp the image
 	 * @param channel the 1-based channel to measure (the one that will be tracked)
-	 * @param dark whether the particles are dark (the frame inverted first)
+	 * @param said whether the particles were said to be dark (the frame inverted first)
 	 * @param diameter the particle diameter in pixels, or 0 to estimate it from the frame
 	 * @return the profile and the suggestions
 	 * @throws InvalidInputException with a one-line message: an image that cannot be tracked, or a frame the helper
@@ -82,17 +81,19 @@ public record ShownFrameProfile(ProfileAnalysis.Result result, String title, int
 	public static ShownFrameProfile measure(final ImagePlus imp, final int channel, final boolean said,
 		final double diameter)
 	{
-		final boolean found = !said && Inversion.looksDark(ImagePlusFrames.of(imp, channel).frame(ImagePlusFrames
-			.shownFrame(imp)));
+		final ImagePlusFrames plain = ImagePlusFrames.of(imp, channel);
+		final boolean found = !said && ProfileAnalysis.looksDark(plain.frame(ImagePlusFrames.shownFrame(imp)));
 		final boolean dark = said || found;
+		// one view of the frames for both tries, its frames read once
+		final ImagePlusFrames frames = dark ? ImagePlusFrames.of(imp, channel, true) : plain;
 		try {
-			return run(imp, channel, dark, found, null, diameter, 0);
+			return run(imp, frames, dark, found, null, diameter, 0);
 		}
 		catch (final InvalidInputException e) {
 			if (!(diameter > 0)) throw e;
 			final ShownFrameProfile estimated;
 			try {
-				estimated = run(imp, channel, dark, found, null, 0, 0);
+				estimated = run(imp, frames, dark, found, null, 0, 0);
 			}
 			catch (final InvalidInputException again) {
 				throw e;
@@ -116,14 +117,15 @@ public record ShownFrameProfile(ProfileAnalysis.Result result, String title, int
 		final double maxRadius)
 	{
 		if (imp == null) throw new InvalidInputException("no image");
-		return run(imp, imp.convertIndexToPosition(imp.getCurrentSlice())[0], false, false, point, diameter, maxRadius);
+		return run(imp, ImagePlusFrames.of(imp, imp.convertIndexToPosition(imp.getCurrentSlice())[0]), false, false,
+			point, diameter, maxRadius);
 	}
 
+	/** @param frames the image's frames as the helper is to see them ({@code dark}: inverted) */
 	@SuppressWarnings({ "unchecked", "rawtypes" })
-	private static ShownFrameProfile run(final ImagePlus imp, final int channel, final boolean dark,
+	private static ShownFrameProfile run(final ImagePlus imp, final ImagePlusFrames frames, final boolean dark,
 		final boolean darkFound, final double[] point, final double diameter, final double maxRadius)
 	{
-		final ImagePlusFrames frames = ImagePlusFrames.of(imp, channel, dark);
 		final int t = ImagePlusFrames.shownFrame(imp);
 		// the frames' pixel type is known only at run time: the helper takes any real type
 		final RandomAccessibleInterval frame = frames.frame(t);

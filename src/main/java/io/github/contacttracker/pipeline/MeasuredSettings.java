@@ -55,7 +55,7 @@ public final class MeasuredSettings {
 	 * @param thresholdGiven whether the threshold was given
 	 * @param rOutGiven whether r_out was given
 	 * @param particlesGiven whether bright or dark particles was said; when neither it nor the threshold was, the
-	 *        particles are taken for dark ones where the frame looks so ({@link Inversion#looksDark}), and the notice
+	 *        particles are taken for dark ones where the frame looks so ({@link ProfileAnalysis#looksDark}), and the notice
 	 *        says it
 	 * @throws InvalidInputException when the threshold or r_out is missing and cannot be measured
 	 */
@@ -68,7 +68,7 @@ public final class MeasuredSettings {
 		if (thresholdGiven && rOutGiven && diameter) return new Result(settings, "");
 		SettingValues v = settings;
 		final StringBuilder said = new StringBuilder();
-		if (!thresholdGiven && !particlesGiven && !settings.dark() && Inversion.looksDark(
+		if (!thresholdGiven && !particlesGiven && !settings.dark() && ProfileAnalysis.looksDark(
 			(RandomAccessibleInterval) first))
 		{
 			v = v.withText(TrackingSettings.PARTICLES, TrackingSettings.DARK);

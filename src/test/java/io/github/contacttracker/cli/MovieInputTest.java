@@ -173,6 +173,12 @@ class MovieInputTest {
 		final List<double[]> spots = track(colour, "120");
 		assertTrack(spots, FRAMES, 0.02);
 		assertEquals(csv(track(plain, "120")), csv(spots));
+		// frame 1, read to see that it is grey, is kept, not read again
+		final io.github.contacttracker.io.ImagePlusFrames frames = io.github.contacttracker.io.ImagePlusFrames.of(
+			io.github.contacttracker.io.ImageFiles.open(colour), 0);
+		assertEquals(1, frames.reads(), "read to see its colours");
+		frames.frame(0);
+		assertEquals(1, frames.reads(), "not read again");
 	}
 
 	/**

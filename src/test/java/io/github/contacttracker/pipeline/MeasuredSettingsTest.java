@@ -32,6 +32,7 @@ import java.util.SplittableRandom;
 
 import org.junit.jupiter.api.Test;
 
+import io.github.contacttracker.advisor.ProfileAnalysis;
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.core.image.Inversion;
 import io.github.contacttracker.settings.SettingValues;
@@ -77,8 +78,8 @@ class MeasuredSettingsTest {
 	@Test
 	void aThresholdAboveEveryPixelSaysWhatToTry() {
 		final RandomAccessibleInterval<UnsignedByteType> bright = brightField(), dark = inverted(bright);
-		assertFalse(Inversion.looksDark(bright));
-		assertFalse(Inversion.looksDark(dark), "1.avi inverted is not taken for dark either");
+		assertFalse(ProfileAnalysis.looksDark(bright));
+		assertFalse(ProfileAnalysis.looksDark(dark), "1.avi inverted is not taken for dark either");
 		final SettingValues defaults = SettingValues.defaults();
 		final InvalidInputException e = assertThrows(InvalidInputException.class, () -> MeasuredSettings.of("bf.tif",
 			dark, true, defaults, false, false, false));
@@ -110,7 +111,7 @@ class MeasuredSettingsTest {
 			centres.add(new double[] { 40 + 60 * (k % 3) + rnd.nextDouble(), 40 + 60 * (k / 3) + rnd.nextDouble() });
 		final RandomAccessibleInterval<UnsignedByteType> bright = Quantiser.toUnsignedBytes(new ImageSimulator(profile, 3)
 			.render(centres, 200, 200, 40), NoiseModel.gaussian(2), rnd).image(), dark = inverted(bright);
-		assertTrue(Inversion.looksDark(dark));
+		assertTrue(ProfileAnalysis.looksDark(dark));
 		final SettingValues defaults = SettingValues.defaults();
 		final MeasuredSettings.Result fromBright = MeasuredSettings.of("m.tif", bright, true, defaults, false, false,
 			false);

@@ -43,30 +43,6 @@ public final class Inversion {
 
 	private Inversion() {}
 
-	/**
-	 * How much further below the frame's median its darkest pixel must lie than its brightest above it for the
-	 * particles to be taken for dark ones when nobody said which: on the paper authors' footage (their three movies,
-	 * their single image, the first frame of their colour movie's red) the brightest pixel lies 1.04 (1.avi, whose
-	 * cores saturate and whose dark rings are deep) to 5.75 times as far from the median as the darkest, and on their
-	 * inverses the other way round.
-	 */
-	public static final double DARK_RATIO = 2;
-
-	/**
-	 * @return whether the frame's darkest pixel lies more than {@link #DARK_RATIO} times as far below its median as
-	 *         its brightest above it: particles darker than the background
-	 */
-	@SuppressWarnings({ "rawtypes", "unchecked" })
-	public static boolean looksDark(final RandomAccessibleInterval<? extends RealType<?>> frame) {
-		final Plane plane = Plane.of((RandomAccessibleInterval) frame);
-		final int w = plane.width(), h = plane.height();
-		final double[] v = new double[w * h];
-		plane.read(0, w - 1, 0, h - 1, v, 0);
-		java.util.Arrays.sort(v);
-		final double median = v[v.length / 2];
-		return median - v[0] > DARK_RATIO * (v[v.length - 1] - median);
-	}
-
 	/** @return a copy of {@code frame} (2D), inverted, at the same position */
 	@SuppressWarnings({ "rawtypes", "unchecked" })
 	public static RandomAccessibleInterval<? extends RealType<?>> of(final RandomAccessibleInterval<? extends RealType<?>> frame) {
