@@ -78,7 +78,7 @@ public final class TrackingSettings {
 
 	/** Help text of {@link #PARTICLES}, a constant so that annotations (SciJava's {@code @Parameter}) can use it. */
 	public static final String HELP_PARTICLES = "bright: particles brighter than the background at their centre; " +
-		"dark: darker, and the image is inverted first (as Edit > Invert: 255 - v for 8 bits, 65535 - v for 16 bits, " +
+		"dark: darker, and the image is inverted first (255 - v for 8 bits, as Edit > Invert; 65535 - v for 16 bits, " +
 		"-v for 32 bits): the threshold and every grey level are then the inverted image's. Measured with the " +
 		"threshold (dark where the frame looks so) when neither is given.";
 

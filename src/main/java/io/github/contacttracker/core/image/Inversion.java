@@ -34,10 +34,13 @@ import net.imglib2.type.numeric.real.FloatType;
 import net.imglib2.view.Views;
 
 /**
- * Dark particles (darker than the background where they are centred) made bright, as ImageJ's <i>Edit › Invert</i>
- * does: {@code 255 - v} for 8-bit pixels, {@code 65535 - v} for 16-bit ones, {@code -v} for any other type (as
- * 32-bit floats). The clip levels trade places with the values (a pixel saturated white reads 0, the floor), so
- * the censoring of clipped pixels still applies. The frame is copied, never changed.
+ * Dark particles (darker than the background where they are centred) made bright: {@code 255 - v} for 8-bit pixels,
+ * as ImageJ 1.54p's <i>Edit › Invert</i> does; {@code 65535 - v} for 16-bit ones (ImageJ's "full range" 16-bit
+ * inversion: by default it inverts within the image's own minimum and maximum, which would make the threshold's
+ * meaning depend on each frame's extremes); {@code -v} for any other type (as 32-bit floats; ImageJ inverts those
+ * within their range too). A fixed value minus {@code v} for every frame, so a threshold means the same in each.
+ * The clip levels trade places with the values (a pixel saturated white reads 0, the floor), so the censoring of
+ * clipped pixels still applies. The frame is copied, never changed.
  */
 public final class Inversion {
 
