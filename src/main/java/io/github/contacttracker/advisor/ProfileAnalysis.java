@@ -27,6 +27,7 @@ import java.util.Arrays;
 import java.util.Comparator;
 import java.util.List;
 import java.util.Locale;
+import java.util.function.DoubleToIntFunction;
 
 import io.github.contacttracker.core.Connectivity;
 import io.github.contacttracker.core.Flag;
@@ -177,6 +178,15 @@ public final class ProfileAnalysis {
 		public double suggestedROut() {
 			return Math.ceil(rOut - 1e-9);
 		}
+
+		/**
+		 * @param threshold the threshold the movie is tracked at (given, or {@link #suggestedThreshold})
+		 * @return the {@code min_area} for particles of this profile at that threshold ({@link ProfileAnalysis#minArea}):
+		 *         the default unless they are so small that their active areas come near it
+		 */
+		public int suggestedMinArea(final double threshold) {
+			return minArea(ProfileAnalysis.activeRadius(radius, level, count, threshold));
+		}
 	}
 
 	/**
@@ -293,9 +303,9 @@ public final class ProfileAnalysis {
 		final Pooled pooled = m.pooled();
 		final double[] centre = m.centres().get(0);
 		final double rOut = m.reach() + R_OUT_MARGIN_PX;
-		final Threshold t = threshold(plane, pooled, diameter, m.reach(), centre, findings);
 		final double[] level = levels(pooled);
-		final double activeRadius = activeRadius(pooled, level, t.threshold());
+		final Threshold t = threshold(plane, pooled, level, diameter, m.reach(), centre, findings);
+		final double activeRadius = activeRadius(pooled.radius, level, pooled.count, t.threshold());
 		if (activeRadius == 0) findings.add(new Finding.ThresholdAboveCentre());
 		if (rOut > diameter) findings.add(new Finding.ROutAboveDiameter(rOut, diameter));
 		final List<double[]> inFrame = new ArrayList<>();
@@ -304,7 +314,7 @@ public final class ProfileAnalysis {
 		return new Result(centre[0] + plane.minX(), centre[1] + plane.minY(), m.refined(), diameter, sized.estimated(),
 			m.centres().size(), m.radiusCap(), pooled.radius, level, pooled.count, pooled.background, pooled.noise, t
 				.peak(), m.reach(), rOut, t.bridge(), t.atContact(), t.threshold(), activeRadius, inFrame, findings, kinds(
-					kindFrames, t.threshold(), rOut));
+					kindFrames, t.threshold(), rOut, minArea(activeRadius)));
 	}
 
 	/**
@@ -315,10 +325,10 @@ public final class ProfileAnalysis {
 	 * that cannot be read) is left out: the kinds are a report, and the profile itself is measured.
 	 */
 	private static <T extends RealType<T>> ParticleKinds kinds(final List<? extends RandomAccessibleInterval<T>> frames,
-		final double threshold, final double rOut)
+		final double threshold, final double rOut, final int minArea)
 	{
-		final ContactTracker tracker = new ContactTracker(TrackerParameters.of(threshold, rOut).withMethod(
-			Method.PAPER));
+		final ContactTracker tracker = new ContactTracker(TrackerParameters.of(threshold, rOut).withMinArea(minArea)
+			.withMethod(Method.PAPER));
 		final List<KindFeatures> features = new ArrayList<>();
 		int used = 0;
 		for (final RandomAccessibleInterval<T> frame : frames) {
@@ -451,18 +461,21 @@ public final class ProfileAnalysis {
 	 * particle (bright fringes between touching particles in bright field are brighter than the sum of two
 	 * profiles), up to half the cores' height.
 	 */
-	private static Threshold threshold(final Plane plane, final Pooled pooled, final double diameter,
-		final double reach, final double[] centre, final List<Finding> findings)
+	private static Threshold threshold(final Plane plane, final Pooled pooled, final double[] level,
+		final double diameter, final double reach, final double[] centre, final List<Finding> findings)
 	{
 		final double bridge = pooled.background + Math.max(0, brightestBetween(pooled, diameter, reach));
 		final double atContact = bridge + THRESHOLD_MARGIN_SIGMAS * pooled.noise;
-		final double[] gap = textureGap(plane, atContact, pooled.background);
+		// the active areas that count as particles at a threshold: as the tracker will keep them (small particles' are
+		// smaller than the default min_area: counting only the larger ones would judge the merges alone)
+		final DoubleToIntFunction minArea = th -> minArea(activeRadius(pooled.radius, level, pooled.count, th));
+		final double[] gap = textureGap(plane, atContact, pooled.background, minArea.applyAsInt(atContact));
 		final double clear = Math.max(atContact, Double.isNaN(gap[0]) ? atContact : pooled.background + (gap[0] +
 			gap[1]) / 2);
 		if (clear > atContact) findings.add(new Finding.BackgroundTexture(atContact, (int) gap[2], gap[0], gap[1]));
 		final double peak = peak(plane, centre[0], centre[1], Math.max(2, diameter / 4));
 		final double ceiling = pooled.background + 0.5 * (peak - pooled.background);
-		final double[] shaped = roundFrom(plane, clear, ceiling, Math.max(0.5, pooled.noise / 2));
+		final double[] shaped = roundFrom(plane, clear, ceiling, Math.max(0.5, pooled.noise / 2), minArea);
 		final double threshold = shaped[0];
 		if (threshold > clear) findings.add(new Finding.RaisedUntilRound(clear, (int) shaped[1], (int) shaped[2]));
 		else if (shaped[1] > 0) findings.add(new Finding.NotRound((int) shaped[1], (int) shaped[2], ceiling));
@@ -477,21 +490,40 @@ public final class ProfileAnalysis {
 		return level;
 	}
 
-	/** @return where the profile falls below the threshold (px, interpolated; 0 when even the centre is below) */
-	private static double activeRadius(final Pooled pooled, final double[] level, final double threshold) {
+	/**
+	 * @param radius each ring's mean radius, {@code level} its grey level, {@code count} its pixels (as in {@link Result})
+	 * @return where the profile falls below the threshold (px, interpolated; 0 when even the centre is below)
+	 */
+	private static double activeRadius(final double[] radius, final double[] level, final int[] count,
+		final double threshold)
+	{
 		double activeRadius = 0;
 		int previous = -1;
 		for (int k = 0; k < level.length; k++) {
-			if (pooled.count[k] == 0) continue;
+			if (count[k] == 0) continue;
 			if (level[k] < threshold) {
-				if (previous >= 0) activeRadius = pooled.radius[previous] + (pooled.radius[k] - pooled.radius[previous]) *
-					(level[previous] - threshold) / (level[previous] - level[k]);
+				if (previous >= 0) activeRadius = radius[previous] + (radius[k] - radius[previous]) * (level[previous] -
+					threshold) / (level[previous] - level[k]);
 				break;
 			}
-			activeRadius = pooled.radius[k];
+			activeRadius = radius[k];
 			previous = k;
 		}
 		return activeRadius;
+	}
+
+	/**
+	 * The {@code min_area} for particles whose active areas at a threshold have radius {@code activeRadius}: half
+	 * their area {@code pi r^2}, at most the default {@value TrackerParameters#DEFAULT_MIN_AREA} px (0: the default).
+	 * The default was set for particles tens of pixels across; particles a few pixels across have active areas near
+	 * it, and the default dropped a quarter of them (in-focus particles of 15-19 px in trackpy's bulk_water sample,
+	 * whose profile's active area is 28 px at the helper's threshold). A component of less than half a particle's
+	 * area is noise or a fringe: the threshold lies 3 noise levels above the brightest point between two particles.
+	 */
+	public static int minArea(final double activeRadius) {
+		if (!(activeRadius > 0)) return TrackerParameters.DEFAULT_MIN_AREA;
+		return (int) Math.max(TrackerParameters.MIN_AREA_AT_LEAST, Math.min(TrackerParameters.DEFAULT_MIN_AREA, Math
+			.floor(Math.PI * activeRadius * activeRadius / 2)));
 	}
 
 	/**
@@ -601,15 +633,16 @@ public final class ProfileAnalysis {
 	 * texture (bright-field halos and rings, their sums between particles, an uneven background), above it the
 	 * particles' cores. On the authors' movies such texture rises 10-14 grey levels above the background and the
 	 * cores 120-140; a threshold just above the sum of two profiles at contact picks up dozens of texture spots.
+	 * Components below {@code minArea} pixels are left out, as the tracker drops them.
 	 *
 	 * @return {@code {highest texture peak, lowest core peak, texture components}} above the background, or NaNs
 	 *         when there is no such gap
 	 */
-	static double[] textureGap(final Plane plane, final double threshold, final double background) {
+	static double[] textureGap(final Plane plane, final double threshold, final double background, final int minArea) {
 		final List<Region> regions = ComponentLabeling.label(plane, threshold, Connectivity.EIGHT);
 		final DoubleList heights = new DoubleList();
 		for (final Region r : regions) {
-			if (r.area() < TrackerParameters.DEFAULT_MIN_AREA) continue;
+			if (r.area() < minArea) continue;
 			double peak = Double.NEGATIVE_INFINITY;
 			for (int k = 0; k < r.runCount(); k++)
 				for (int x = r.runStart(k); x <= r.runEnd(k); x++)
@@ -632,26 +665,29 @@ public final class ProfileAnalysis {
 
 	/**
 	 * The lowest threshold from {@code from} up to {@code ceiling} (in steps of {@code step}) at which at most
-	 * {@value #MAX_NOT_ROUND_PERCENT}% of the frame's active areas (of at least the default {@code min_area}, away from
-	 * the border) fail the outline tests of merge detection ({@link ComponentShape}: elongated, or with a bay).
+	 * {@value #MAX_NOT_ROUND_PERCENT}% of the frame's active areas (of at least {@code minArea} px at that threshold,
+	 * away from the border) fail the outline tests of merge detection ({@link ComponentShape}: elongated, or with a
+	 * bay).
 	 *
 	 * @return {@code {threshold, active areas that fail at the threshold from, active areas there}}; the threshold
 	 *         is {@code from} when no step up to the ceiling does better
 	 */
-	static double[] roundFrom(final Plane plane, final double from, final double ceiling, final double step) {
-		final int[] first = notRound(plane, from);
+	static double[] roundFrom(final Plane plane, final double from, final double ceiling, final double step,
+		final DoubleToIntFunction minArea)
+	{
+		final int[] first = notRound(plane, from, minArea.applyAsInt(from));
 		for (double t = from; t <= ceiling; t += step) {
-			final int[] n = t == from ? first : notRound(plane, t);
+			final int[] n = t == from ? first : notRound(plane, t, minArea.applyAsInt(t));
 			if (n[0] * 100 <= MAX_NOT_ROUND_PERCENT * n[1]) return new double[] { t, first[0], first[1] };
 		}
 		return new double[] { from, first[0], first[1] };
 	}
 
 	/** @return {@code {active areas that fail the outline tests, active areas}} at a threshold */
-	private static int[] notRound(final Plane plane, final double threshold) {
+	private static int[] notRound(final Plane plane, final double threshold, final int minArea) {
 		int bad = 0, all = 0;
 		for (final Region r : ComponentLabeling.label(plane, threshold, Connectivity.EIGHT)) {
-			if (r.area() < TrackerParameters.DEFAULT_MIN_AREA || r.minX() == 0 || r.minY() == 0 || r.maxX() == plane
+			if (r.area() < minArea || r.minX() == 0 || r.minY() == 0 || r.maxX() == plane
 				.width() - 1 || r.maxY() == plane.height() - 1) continue;
 			all++;
 			if (ComponentShape.of(r).outlineMerged(false)) bad++;

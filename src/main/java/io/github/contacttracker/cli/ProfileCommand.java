@@ -136,8 +136,9 @@ public final class ProfileCommand extends ContactTrackerCli.Subcommand {
 		for (final Path t : targets)
 			out.println("  wrote " + t);
 		out.println(SUGGESTION + " --threshold " + MeasuredSettings.optionValue(threshold) + " --r-out " + MeasuredSettings
-			.optionValue(rOut) + " --diameter " + MeasuredSettings.optionValue(r.suggestedDiameter()) + (dark
-				? " --particles dark" : ""));
+			.optionValue(rOut) + " --diameter " + MeasuredSettings.optionValue(r.suggestedDiameter()) + (r
+				.suggestedMinArea(threshold) < TrackingSettings.MIN_AREA.defaultValue() ? " --min-area " + r
+					.suggestedMinArea(threshold) : "") + (dark ? " --particles dark" : ""));
 		return 0;
 	}
 

@@ -31,9 +31,11 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashMap;
+import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 
 import ij.ImagePlus;
 import io.github.contacttracker.core.InvalidInputException;
@@ -192,10 +194,11 @@ final class TrackCommand extends ContactTrackerCli.Subcommand {
 	private SettingValues measured(final Path input, final ImagePlus imp, final ImagePlusFrames frames,
 		final SettingValues settings, final StringBuilder notice)
 	{
+		final Set<Setting<?>> given = new HashSet<>();
+		for (final Map.Entry<Setting<?>, Option<String>> s : settingOptions.entrySet())
+			if (options.given(s.getValue())) given.add(s.getKey());
 		final MeasuredSettings.Result r = MeasuredSettings.of(input.getFileName().toString(), frames.frames().get(0),
-			imp.getBitDepth() != 32, settings, options.given(settingOptions.get(TrackingSettings.THRESHOLD)), options
-				.given(settingOptions.get(TrackingSettings.R_OUT)), options.given(settingOptions.get(
-					TrackingSettings.PARTICLES)));
+			imp.getBitDepth() != 32, settings, given);
 		if (notice.length() > 0 && !r.notice().isEmpty()) notice.append('\n');
 		notice.append(r.notice());
 		return r.settings();

@@ -30,6 +30,7 @@ import ij.ImagePlus;
 import io.github.contacttracker.advisor.ProfileAnalysis;
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.core.Numbers;
+import io.github.contacttracker.core.TrackerParameters;
 import net.imglib2.RandomAccessibleInterval;
 import net.imglib2.type.numeric.RealType;
 
@@ -169,6 +170,20 @@ public record ShownFrameProfile(ProfileAnalysis.Result result, String title, int
 		return result.suggestedROut();
 	}
 
+	/**
+	 * @return the {@code min_area} for the particles at the suggested threshold
+	 *         ({@link ProfileAnalysis.Result#suggestedMinArea}): below the default only for particles a few pixels
+	 *         across, and only then do the buttons lower the field to it
+	 */
+	public int minArea() {
+		return result.suggestedMinArea(threshold());
+	}
+
+	/** @return whether {@link #minArea()} is below the default {@code min_area} (the particles are that small) */
+	public boolean smallParticles() {
+		return minArea() < TrackerParameters.DEFAULT_MIN_AREA;
+	}
+
 	/** @return the particle diameter (px): as given, or the estimate rounded to 0.01 px */
 	public double diameter() {
 		return result.diameterEstimated() ? Math.round(result.diameter() * 100) / 100.0 : result.diameter();
@@ -184,7 +199,7 @@ public record ShownFrameProfile(ProfileAnalysis.Result result, String title, int
 				? "dark particles (the frame looks so), " : dark ? "dark particles, " : "", Numbers.fmt(
 				threshold(), 3), Numbers.fmt(rOut(), 3), Numbers.fmt(diameter(), 3), rejectedDiameter > 0 ? "estimated: " +
 					Numbers.fmt(rejectedDiameter, 3) + " px given did not fit" : result.diameterEstimated() ? "estimated"
-						: "given");
+						: "given") + (smallParticles() ? ", min area " + minArea() + " px (small particles)" : "");
 	}
 
 	/** @return {@link #summary()} and, if the helper warns, how many warnings the Log window holds */

@@ -22,19 +22,22 @@
 package io.github.contacttracker.pipeline;
 
 import java.math.BigDecimal;
+import java.util.Set;
 
 import io.github.contacttracker.advisor.ProfileAnalysis;
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.core.image.Inversion;
 import io.github.contacttracker.io.ImagePlusFrames;
+import io.github.contacttracker.settings.Setting;
 import io.github.contacttracker.settings.SettingValues;
 import io.github.contacttracker.settings.TrackingSettings;
 import net.imglib2.RandomAccessibleInterval;
 
 /**
  * The settings of a run with what the user did not give measured from the movie's first frame by the profile
- * helper, as {@code profile} suggests it: the threshold and r_out (an error if they cannot be measured), and the
- * diameter (merge detection and RADIUS use it; without it the movie is still tracked). The command line's
+ * helper, as {@code profile} suggests it: the threshold and r_out (an error if they cannot be measured), the
+ * diameter (merge detection and RADIUS use it; without it the movie is still tracked), and for particles so small
+ * that their active areas come near the default {@code min_area} a smaller one. The command line's
  * {@code track} and the Spark job both use it, so that they track a movie with the same settings.
  */
 public final class MeasuredSettings {
@@ -52,18 +55,18 @@ public final class MeasuredSettings {
 	 * @param first the movie's first frame
 	 * @param integerData whether the pixels are integers (the threshold is then suggested as a whole number)
 	 * @param settings the settings given (the others at their defaults)
-	 * @param thresholdGiven whether the threshold was given
-	 * @param rOutGiven whether r_out was given
-	 * @param particlesGiven whether bright or dark particles was said; when neither it nor the threshold was, the
-	 *        particles are taken for dark ones where the frame looks so ({@link ProfileAnalysis#looksDark}), and the notice
-	 *        says it
+	 * @param given the settings the user gave. Of these the threshold, r_out, the particles and {@code min_area}
+	 *        count: when neither the particles (bright or dark) nor the threshold was given, the particles are taken
+	 *        for dark ones where the frame looks so ({@link ProfileAnalysis#looksDark}); when {@code min_area} was not,
+	 *        it is lowered for small particles ({@link ProfileAnalysis.Result#suggestedMinArea}); the notice says so
 	 * @throws InvalidInputException when the threshold or r_out is missing and cannot be measured
 	 */
 	@SuppressWarnings({ "unchecked", "rawtypes" })
 	public static Result of(final String name, final RandomAccessibleInterval<?> first, final boolean integerData,
-		final SettingValues settings, final boolean thresholdGiven, final boolean rOutGiven,
-		final boolean particlesGiven)
+		final SettingValues settings, final Set<Setting<?>> given)
 	{
+		final boolean thresholdGiven = given.contains(TrackingSettings.THRESHOLD), rOutGiven = given.contains(
+			TrackingSettings.R_OUT), particlesGiven = given.contains(TrackingSettings.PARTICLES);
 		final boolean diameter = settings.diameter() > 0;
 		if (thresholdGiven && rOutGiven && diameter) return new Result(settings, "");
 		SettingValues v = settings;
@@ -105,6 +108,11 @@ public final class MeasuredSettings {
 		if (!diameter) {
 			v = v.with(TrackingSettings.DIAMETER, r.suggestedDiameter());
 			said.append(" --diameter ").append(optionValue(v.diameter()));
+		}
+		final int minArea = r.suggestedMinArea(v.get(TrackingSettings.THRESHOLD));
+		if (!given.contains(TrackingSettings.MIN_AREA) && minArea < v.get(TrackingSettings.MIN_AREA)) {
+			v = v.with(TrackingSettings.MIN_AREA, minArea);
+			said.append(" --min-area ").append(minArea);
 		}
 		return new Result(v, "contact-tracker: " + name + ": measured on frame 1 by the profile helper:" + said +
 			" (given values win; 'contact-tracker profile " + name + "' shows how)");

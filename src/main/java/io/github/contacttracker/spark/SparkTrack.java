@@ -32,6 +32,7 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.function.IntFunction;
+import java.util.stream.Collectors;
 
 import org.apache.spark.HashPartitioner;
 import org.apache.spark.SparkConf;
@@ -61,6 +62,7 @@ import io.github.contacttracker.pipeline.MeasuredSettings;
 import io.github.contacttracker.pipeline.Outputs;
 import io.github.contacttracker.pipeline.TrackingPipeline;
 import io.github.contacttracker.pipeline.TrackingResult;
+import io.github.contacttracker.settings.Setting;
 import io.github.contacttracker.settings.SettingValues;
 import io.github.contacttracker.settings.TrackingSettings;
 import scala.Tuple2;
@@ -168,8 +170,11 @@ public final class SparkTrack {
 		final JavaSparkContext sc = JavaSparkContext.fromSparkContext(spark.sparkContext());
 		final String failFirst = sc.getConf().get(FAIL_FIRST_ATTEMPT, "");
 		final Map<String, Object> given = MoviePlan.ship(o.settings());
-		final boolean thresholdGiven = o.given(TrackingSettings.THRESHOLD), rOutGiven = o.given(TrackingSettings.R_OUT),
-			channelGiven = o.given(TrackingSettings.CHANNEL), particlesGiven = o.given(TrackingSettings.PARTICLES);
+		final boolean channelGiven = o.given(TrackingSettings.CHANNEL);
+		// by name: a setting is not serializable, the tasks get the names
+		final ArrayList<String> givenNames = new ArrayList<>();
+		for (final Setting<?> s : o.given.keySet())
+			givenNames.add(s.name());
 		final long jobStart = System.currentTimeMillis();
 		final List<Tuple2<Integer, String>> movies = new ArrayList<>();
 		for (int m = 0; m < o.movies.size(); m++)
@@ -177,7 +182,7 @@ public final class SparkTrack {
 
 		// stage 1: a task per movie
 		final List<MoviePlan> plans = new ArrayList<>(sc.parallelize(movies, movies.size()).map(m -> plan(m._1, m._2,
-			given, thresholdGiven, rOutGiven, channelGiven, particlesGiven)).collect());
+			given, givenNames, channelGiven)).collect());
 		plans.sort((a, b) -> Integer.compare(a.index(), b.index()));
 		final Broadcast<List<MoviePlan>> shared = sc.broadcast(plans);
 
@@ -263,7 +268,7 @@ public final class SparkTrack {
 
 	/** Stage 1 of one movie (on an executor): open, measure, check, profile; a bad movie gives a failed plan. */
 	private static MoviePlan plan(final int index, final String movie, final Map<String, Object> given,
-		final boolean thresholdGiven, final boolean rOutGiven, final boolean channelGiven, final boolean particlesGiven)
+		final List<String> givenNames, final boolean channelGiven)
 	{
 		final String uri = uri(movie);
 		try {
@@ -273,7 +278,8 @@ public final class SparkTrack {
 			final ImagePlusFrames frames = open.frames();
 			final String path = movie.replaceAll("/+$", "");
 			final MeasuredSettings.Result measured = MeasuredSettings.of(path.substring(path.lastIndexOf('/') + 1), frames
-				.frames().get(0), !open.floats(), settings, thresholdGiven, rOutGiven, particlesGiven);
+				.frames().get(0), !open.floats(), settings, givenNames.stream().map(TrackingSettings::named).collect(
+					Collectors.toSet()));
 			final TrackingPipeline pipeline = new TrackingPipeline(measured.settings());
 			final FrameSource source = pipeline.frames(FrameSource.of(frames, movie));
 			pipeline.checkThreshold(source);

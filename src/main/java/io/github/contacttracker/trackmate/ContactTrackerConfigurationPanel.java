@@ -313,7 +313,8 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 	/**
 	 * What the button does, at once on the calling thread (for tests): runs the profile helper on the most isolated
 	 * particles of the frame on display, in the target channel, and fills in the threshold, {@code r_out} and the
-	 * diameter with its suggestions; a diameter already given (above 0) is kept and used (estimated instead if the
+	 * diameter with its suggestions, and lowers {@code min_area} for particles so small that the default would drop
+	 * some; a diameter already given (above 0) is kept and used (estimated instead if the
 	 * helper cannot measure with it: {@link ShownFrameProfile#measure}). {@code r_out} and the
 	 * diameter are shown in the image's units like every length here. When the helper finds nothing to measure the
 	 * fields stay as they were. The outcome is shown under the button and written to ImageJ's Log window, with the
@@ -352,6 +353,8 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 			fields.get(TrackingSettings.THRESHOLD).show(p.threshold());
 			fields.get(TrackingSettings.R_OUT).show(p.rOut());
 			fields.get(TrackingSettings.DIAMETER).show(p.diameter());
+			if (p.smallParticles()) fields.get(TrackingSettings.MIN_AREA).show(Math.min((Integer) fields.get(
+				TrackingSettings.MIN_AREA).value(), p.minArea()));
 			ij.IJ.log(p.logText(ContactTrackerDetectorFactory.SHORT_NAME + ": measured"));
 			return showMessage("Measured " + p.status());
 		};

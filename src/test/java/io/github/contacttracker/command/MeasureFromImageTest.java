@@ -141,6 +141,27 @@ class MeasureFromImageTest extends WithContext {
 		assertEquals("bright", b.getInput("particles"));
 	}
 
+	/**
+	 * Particles a few pixels across: the button lowers Min area to the helper's (half the particles' active area), and
+	 * says so; a lower one is kept.
+	 */
+	@Test
+	void minAreaIsLoweredForSmallParticles() throws Exception {
+		final ImagePlus imp = ProfileScenes.tiny("tiny");
+		final Module m = dialog(imp);
+		assertEquals(TrackingSettings.MIN_AREA.defaultValue(), value(m, "min_area"), 0);
+		final String log = press(m);
+		final ProfileAnalysis.Result r = helper(imp, 0, 0);
+		final int minArea = r.suggestedMinArea(r.suggestedThreshold(true));
+		assertTrue(minArea < TrackingSettings.MIN_AREA.defaultValue(), "small particles: " + minArea);
+		assertEquals(minArea, value(m, "min_area"), 0);
+		assertTrue(log.replace("\n    ", " ").contains(", min area " + minArea + " px (small particles)"), log);
+		final Module lower = dialog(imp);
+		lower.setInput("min_area", minArea - 1);
+		press(lower);
+		assertEquals(minArea - 1, value(lower, "min_area"), 0, "a lower min area is left alone");
+	}
+
 	@Test
 	void aGivenDiameterIsKeptAndUsed() throws Exception {
 		final ImagePlus imp = ProfileScenes.particles("particles", 1, Calibration.PIXELS);

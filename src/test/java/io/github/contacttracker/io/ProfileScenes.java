@@ -30,6 +30,7 @@ import io.github.contacttracker.sim.GaussianBesselProfile;
 import io.github.contacttracker.sim.NoiseModel;
 import io.github.contacttracker.sim.ParticleType;
 import io.github.contacttracker.sim.SimulatedStack;
+import io.github.contacttracker.sim.SmallParticles;
 import net.imglib2.img.array.ArrayImg;
 
 /**
@@ -66,6 +67,14 @@ public final class ProfileScenes {
 			images.add(SimulatedStack.renderFrame(SMALL, c, SIZE, SIZE, SMALL.noise(), rnd, 8).image());
 		}
 		return ImageFiles.timeSeries(title, images, cal);
+	}
+
+	/**
+	 * @return one frame of particles a few pixels across ({@link SmallParticles}): their active areas come near the
+	 *         default {@code min_area}, and the buttons lower it
+	 */
+	public static ImagePlus tiny(final String title) {
+		return ImageFiles.timeSeries(title, SmallParticles.simulate(1, 11).frames(), Calibration.PIXELS);
 	}
 
 	/**

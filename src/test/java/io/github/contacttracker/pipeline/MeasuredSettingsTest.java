@@ -28,6 +28,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Set;
 import java.util.SplittableRandom;
 
 import org.junit.jupiter.api.Test;
@@ -41,6 +42,7 @@ import io.github.contacttracker.sim.ImageSimulator;
 import io.github.contacttracker.sim.NoiseModel;
 import io.github.contacttracker.sim.Quantiser;
 import io.github.contacttracker.sim.RadialProfile;
+import io.github.contacttracker.sim.SmallParticles;
 import net.imglib2.RandomAccessibleInterval;
 import net.imglib2.type.numeric.integer.UnsignedByteType;
 
@@ -82,17 +84,16 @@ class MeasuredSettingsTest {
 		assertFalse(ProfileAnalysis.looksDark(dark), "1.avi inverted is not taken for dark either");
 		final SettingValues defaults = SettingValues.defaults();
 		final InvalidInputException e = assertThrows(InvalidInputException.class, () -> MeasuredSettings.of("bf.tif",
-			dark, true, defaults, false, false, false));
+			dark, true, defaults, Set.of()));
 		assertTrue(e.getMessage().startsWith("cannot measure --threshold on the first frame of bf.tif: the helper's "),
 			e.getMessage());
 		assertTrue(e.getMessage().contains(" lies above its every pixel ("), e.getMessage());
 		assertTrue(e.getMessage().contains("; if the particles are darker than the background, give --particles dark;"),
 			e.getMessage());
 
-		final MeasuredSettings.Result fromBright = MeasuredSettings.of("bf.tif", bright, true, defaults, false, false,
-			false);
+		final MeasuredSettings.Result fromBright = MeasuredSettings.of("bf.tif", bright, true, defaults, Set.of());
 		final MeasuredSettings.Result told = MeasuredSettings.of("bf.tif", dark, true, defaults.withText(
-			TrackingSettings.PARTICLES, TrackingSettings.DARK), false, false, true);
+			TrackingSettings.PARTICLES, TrackingSettings.DARK), Set.of(TrackingSettings.PARTICLES));
 		assertEquals(fromBright.settings().withText(TrackingSettings.PARTICLES, TrackingSettings.DARK), told.settings());
 		assertEquals(fromBright.notice(), told.notice(), "nothing measured about the polarity: it was given");
 	}
@@ -113,14 +114,36 @@ class MeasuredSettingsTest {
 			.render(centres, 200, 200, 40), NoiseModel.gaussian(2), rnd).image(), dark = inverted(bright);
 		assertTrue(ProfileAnalysis.looksDark(dark));
 		final SettingValues defaults = SettingValues.defaults();
-		final MeasuredSettings.Result fromBright = MeasuredSettings.of("m.tif", bright, true, defaults, false, false,
-			false);
-		final MeasuredSettings.Result fromDark = MeasuredSettings.of("m.tif", dark, true, defaults, false, false, false);
+		final MeasuredSettings.Result fromBright = MeasuredSettings.of("m.tif", bright, true, defaults, Set.of());
+		final MeasuredSettings.Result fromDark = MeasuredSettings.of("m.tif", dark, true, defaults, Set.of());
 		assertEquals(fromBright.settings().withText(TrackingSettings.PARTICLES, TrackingSettings.DARK), fromDark
 			.settings());
 		assertEquals(fromBright.notice().replace("profile helper:", "profile helper: --particles dark"), fromDark
 			.notice());
 		final SettingValues given = defaults.with(TrackingSettings.THRESHOLD, 100.0).with(TrackingSettings.R_OUT, 20.0);
-		assertFalse(MeasuredSettings.of("m.tif", dark, true, given, true, true, false).settings().dark());
+		assertFalse(MeasuredSettings.of("m.tif", dark, true, given, Set.of(TrackingSettings.THRESHOLD,
+			TrackingSettings.R_OUT)).settings().dark());
+	}
+	/**
+	 * Particles a few pixels across: their active areas come near the default {@code min_area}, so a smaller one is
+	 * measured with the other values and said; one given is kept, and so is the default for large particles.
+	 */
+	@Test
+	void aSmallerMinAreaIsMeasuredForSmallParticlesUnlessGiven() {
+		final RandomAccessibleInterval<UnsignedByteType> small = SmallParticles.simulate(1, 11).frames().get(0);
+		final SettingValues defaults = SettingValues.defaults();
+		final MeasuredSettings.Result measured = MeasuredSettings.of("s.tif", small, true, defaults, Set.of());
+		final int minArea = measured.settings().get(TrackingSettings.MIN_AREA);
+		assertTrue(minArea < TrackingSettings.MIN_AREA.defaultValue(), "lowered: " + minArea);
+		assertEquals(ProfileAnalysis.analyse(small, 0, 0).suggestedMinArea(measured.settings().get(
+			TrackingSettings.THRESHOLD)), minArea, "the helper's, at the threshold used");
+		assertTrue(measured.notice().contains(" --min-area " + minArea + " (given values win"), measured.notice());
+		final MeasuredSettings.Result given = MeasuredSettings.of("s.tif", small, true, defaults.with(
+			TrackingSettings.MIN_AREA, 20), Set.of(TrackingSettings.MIN_AREA));
+		assertEquals(20, given.settings().get(TrackingSettings.MIN_AREA));
+		assertFalse(given.notice().contains("--min-area"), given.notice());
+		final MeasuredSettings.Result large = MeasuredSettings.of("bf.tif", brightField(), true, defaults, Set.of());
+		assertEquals(TrackingSettings.MIN_AREA.defaultValue(), large.settings().get(TrackingSettings.MIN_AREA));
+		assertFalse(large.notice().contains("--min-area"), large.notice());
 	}
 }

@@ -45,6 +45,7 @@ import io.github.contacttracker.advisor.ProfileAnalysis;
 import io.github.contacttracker.io.Calibration;
 import io.github.contacttracker.io.ImagePlusFrames;
 import io.github.contacttracker.io.ProfileScenes;
+import io.github.contacttracker.settings.TrackingSettings;
 import net.imglib2.RandomAccessibleInterval;
 import net.imglib2.type.NativeType;
 import net.imglib2.type.numeric.RealType;
@@ -123,6 +124,20 @@ class MeasurePanelTest {
 		assertEquals(r.suggestedThreshold(true), number(panel.getSettings(), "GREY_THRESHOLD"), 0);
 		assertEquals(r.suggestedROut(), number(panel.getSettings(), "R_OUT"), 0);
 		assertTrue(message.startsWith("Measured 'particles': dark particles (the frame looks so), threshold "), message);
+	}
+
+	/** Particles a few pixels across: the button lowers MIN_AREA to the helper's, and says so. */
+	@Test
+	void minAreaIsLoweredForSmallParticles() {
+		final ImagePlus imp = ProfileScenes.tiny("tiny");
+		final ContactTrackerConfigurationPanel panel = panel(imp);
+		assertEquals(TrackingSettings.MIN_AREA.defaultValue(), number(panel.getSettings(), "MIN_AREA"), 0);
+		final String message = panel.measureFromImage();
+		final ProfileAnalysis.Result r = helper(imp, 0, 0);
+		final int minArea = r.suggestedMinArea(r.suggestedThreshold(true));
+		assertTrue(minArea < TrackingSettings.MIN_AREA.defaultValue(), "small particles: " + minArea);
+		assertEquals(minArea, number(panel.getSettings(), "MIN_AREA"), 0);
+		assertTrue(message.contains(", min area " + minArea + " px (small particles)"), message);
 	}
 
 	@Test
