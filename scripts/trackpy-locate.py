@@ -5,7 +5,9 @@ Not part of the test suite (needs Python with numpy, trackpy, and PyAV for AVI o
 pip install trackpy av tifffile). Times the import, the decoding and `trackpy.locate(frame, diameter)` with
 trackpy's defaults, and prints them on standard error. Pair it with our command line in one run, e.g.
     farm-bench -n 3 --vs "scripts/trackpy-locate.py 1.avi --diameter 35" -- scripts/contact-tracker track 1.avi --csv out.csv
-(the diameter: the particles' diameter in pixels, rounded up to odd, as trackpy wants).
+(the diameter: the particles' diameter in pixels, rounded up to odd, as trackpy wants). Dark particles on a bright
+background: --invert (trackpy's invert=True); --minmass sets trackpy's minmass, e.g. its tutorial's values for its
+own bulk_water sample: --diameter 11 --invert --minmass 20.
 """
 import sys
 import time
@@ -19,6 +21,8 @@ t1 = time.time()
 ap = argparse.ArgumentParser()
 ap.add_argument("movie", help="AVI (decoded to grey with PyAV) or TIFF stack")
 ap.add_argument("--diameter", type=int, default=35, help="trackpy's feature diameter (odd, px)")
+ap.add_argument("--invert", action="store_true", help="dark particles on a bright background (trackpy's invert=True)")
+ap.add_argument("--minmass", type=float, default=None, help="trackpy's minmass (default: trackpy's)")
 args = ap.parse_args()
 if args.movie.lower().endswith(".avi"):
     import av
@@ -32,7 +36,8 @@ else:
     if frames.ndim == 2:
         frames = frames[None]
 t2 = time.time()
-spots = sum(len(tp.locate(frame, args.diameter)) for frame in frames)
+extra = {} if args.minmass is None else {"minmass": args.minmass}
+spots = sum(len(tp.locate(frame, args.diameter, invert=args.invert, **extra)) for frame in frames)
 t3 = time.time()
 print(f"trackpy: {len(frames)} frames, {spots} spots; import {t1 - t0:.2f} s, read {t2 - t1:.2f} s, "
       f"locate {t3 - t2:.2f} s, total {t3 - t0:.2f} s", file=sys.stderr)
