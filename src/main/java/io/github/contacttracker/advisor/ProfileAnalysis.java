@@ -516,9 +516,10 @@ public final class ProfileAnalysis {
 	 * The {@code min_area} for particles whose active areas at a threshold have radius {@code activeRadius}: half
 	 * their area {@code pi r^2}, at most the default {@value TrackerParameters#DEFAULT_MIN_AREA} px (0: the default).
 	 * The default was set for particles tens of pixels across; particles a few pixels across have active areas near
-	 * it, and the default dropped a quarter of them (in-focus particles of 15-19 px in trackpy's bulk_water sample,
-	 * whose profile's active area is 28 px at the helper's threshold). A component of less than half a particle's
-	 * area is noise or a fringe: the threshold lies 3 noise levels above the brightest point between two particles.
+	 * it, and the default dropped many (in trackpy's bulk_water sample in-focus particles of 15-19 px, where the
+	 * profile's active disc holds 28 px at the helper's threshold; 69 of 126 simulated spots 7.5 px across). A
+	 * component of less than half a particle's area is noise or a fringe: the threshold lies 3 noise levels above the
+	 * brightest point between two particles.
 	 */
 	public static int minArea(final double activeRadius) {
 		if (!(activeRadius > 0)) return TrackerParameters.DEFAULT_MIN_AREA;

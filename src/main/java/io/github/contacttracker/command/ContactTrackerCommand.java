@@ -482,8 +482,9 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 	/**
 	 * The dialog's "Measure from the image" button: runs the profile helper on the most isolated particles of the
 	 * frame on display, in the channel to be tracked, and fills {@code threshold}, {@code r_out} and {@code diameter}
-	 * with its suggestions, and lowers {@code min_area} for particles so small that the default would drop some; a diameter already given (above 0) is kept and used, or estimated instead if the helper
-	 * cannot measure with it ({@link ShownFrameProfile#measure}). What was measured, with the helper's
+	 * with its suggestions, and lowers {@code min_area} for particles so small that the default would drop some; a
+	 * diameter already given (above 0) is kept and used, or estimated instead if the helper cannot measure with it
+	 * ({@link ShownFrameProfile#measure}). What was measured, with the helper's
 	 * warnings, goes to the Log window and the status bar. When the helper finds nothing to measure, the fields stay
 	 * as they were and the status bar and the Log say why in one line.
 	 */
