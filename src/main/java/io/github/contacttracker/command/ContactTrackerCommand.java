@@ -44,6 +44,7 @@ import java.util.concurrent.Future;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.BooleanSupplier;
 
+import net.imglib2.Interval;
 import org.scijava.ItemIO;
 import org.scijava.app.StatusService;
 import org.scijava.command.Command;
@@ -72,7 +73,9 @@ import io.github.contacttracker.io.ShownFrameProfile;
 
 /**
  * <i>Plugins &gt; Tracking &gt; Contact Tracker</i>: localizes the particles of every frame of the image with the
- * close-contact radial-symmetry method; shows the spots as a results table and as ROIs on the image.
+ * close-contact radial-symmetry method; shows the spots as a results table and as ROIs on the image. With an area
+ * selection on the image, only the selection's bounding rectangle is tracked (as TrackMate detects within it), its
+ * edges cutting particles as the frame's do; the spots keep the image's coordinates.
  * <p>
  * The {@code @Parameter} field names are the keys of an ImageJ macro call, e.g.
  * {@code run("Contact Tracker", "threshold=110 r_out=55 min_area=20");}. After a run, ImageJ's system Results
@@ -339,6 +342,7 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 		final TrackerParameters params = settings.parameters();
 		checkOwnInputs(true);
 		final ImagePlusFrames frames = ImagePlusFrames.of(imp, channel);
+		final Interval region = ImagePlusFrames.selection(imp);
 		final File csvFile = given(csv), xmlFile = given(trackmate_xml);
 		final Outputs outputs = new Outputs(csvFile == null ? null : csvFile.toPath(), xmlFile == null ? null : xmlFile
 			.toPath(), xmlFile == null ? null : source(imp, frames));
@@ -348,8 +352,8 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 		final BooleanSupplier cancelled = () -> isCanceled() || caller.isInterrupted() || IJ.escapePressed();
 		progress(0, count);
 		// checks, tracking and both files, all or nothing; nothing is shown before everything is computed
-		final TrackingResult result = new TrackingPipeline(settings).run(FrameSource.of(frames, imp.getTitle()),
-			outputs, threads > 0 ? threads : Prefs.getThreads(), overlay, this::progress, cancelled);
+		final TrackingResult result = new TrackingPipeline(settings).run(FrameSource.of(frames, imp.getTitle()).within(
+			region), outputs, threads > 0 ? threads : Prefs.getThreads(), overlay, this::progress, cancelled);
 		final List<FrameResult> found = result.frames();
 		final List<Localization> all = result.spots();
 		final TitledResultsTable spotTable = SpotTables.spots(all, frames.calibration(), imp.getTitle());
@@ -376,6 +380,7 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 		// short lines: ImageJ's Log window cuts long ones
 		final List<String> lines = new java.util.ArrayList<>(result.summaryLines(imp.getTitle()));
 		lines.set(0, TITLE + ": " + lines.get(0));
+		if (region != null) lines.add(1, "  within the selection: " + ImagePlusFrames.describe(region));
 		final String unit = frames.calibration().unit();
 		lines.add("  positions, RADIUS, SIGMA in " + (unit == null || unit.isEmpty() ? "pixels" : unit) + "; r_out " +
 			"and areas in pixels");
@@ -410,10 +415,12 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 		}
 		final SettingValues settings;
 		final ImagePlusFrames frames;
+		final Interval region;
 		try {
 			// the values are read here, on the dialog's thread, as they are now
 			settings = settings();
 			frames = ImagePlusFrames.of(imp, channel);
+			region = ImagePlusFrames.selection(imp);
 		}
 		catch (final RuntimeException e) {
 			// while values are being typed they are often invalid: say why, keep the last preview
@@ -428,20 +435,23 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 				thread.setDaemon(true);
 				return thread;
 			});
-			pendingPreview = previewer.submit(() -> previewFrame(generation, settings, frames, t));
+			pendingPreview = previewer.submit(() -> previewFrame(generation, settings, frames, region, t));
 		}
 	}
 
-	/** Tracks frame {@code t} and shows it, unless a newer preview (or the run, or Cancel) came meanwhile. */
+	/**
+	 * Tracks frame {@code t} (within {@code region}, or all of it when null) and shows it, unless a newer preview (or
+	 * the run, or Cancel) came meanwhile.
+	 */
 	private void previewFrame(final int generation, final SettingValues settings, final ImagePlusFrames frames,
-		final int t)
+		final Interval region, final int t)
 	{
 		if (generation != previewGeneration.get()) return; // superseded before it started
 		final FrameResult r;
 		try {
 			// the frame alone, through the same pipeline as a run (no file, no data-range pass over the stack)
-			r = new TrackingPipeline(settings).run(FrameSource.of(frames, imp.getTitle()).only(t), Outputs.NONE, 1, true,
-				null, () -> generation != previewGeneration.get()).frames().get(0);
+			r = new TrackingPipeline(settings).run(FrameSource.of(frames, imp.getTitle()).within(region).only(t),
+				Outputs.NONE, 1, true, null, () -> generation != previewGeneration.get()).frames().get(0);
 		}
 		catch (final RuntimeException | IOException e) {
 			if (generation == previewGeneration.get() && status != null) status.showStatus(TITLE + " preview: " + e
@@ -458,7 +468,8 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 			SpotOverlay.show(imp, SpotOverlay.rois(List.of(r), settings.parameters().rOut(), settings.diameter(), r_out_circles, (roi,
 				frame) -> placer.place(roi, t)));
 		}
-		if (status != null) status.showStatus(TITLE + " preview: " + r.spots().size() + " spots on frame " + (t + 1));
+		if (status != null) status.showStatus(TITLE + " preview: " + r.spots().size() + " spots on frame " + (t + 1) +
+			(region == null ? "" : " within the selection"));
 	}
 
 	/** Waits for the preview asked for last (for tests and scripts); returns at once when none is pending. */

@@ -29,11 +29,15 @@ import java.util.Map;
 
 import ij.ImagePlus;
 import ij.ImageStack;
+import ij.gui.Roi;
 import ij.process.ImageProcessor;
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.core.image.Inversion;
+import net.imglib2.Interval;
 import net.imglib2.RandomAccessibleInterval;
 import net.imglib2.img.array.ArrayImgs;
+import net.imglib2.util.Intervals;
+import net.imglib2.view.Views;
 import net.imglib2.type.numeric.RealType;
 
 /**
@@ -418,6 +422,42 @@ public final class ImagePlusFrames {
 	 */
 	public double[] frameRange(final int t) {
 		return range(frame(t), t);
+	}
+
+	/**
+	 * The part of an image the Fiji command tracks and its button measures: the bounding rectangle of its area
+	 * selection, as TrackMate detects within it. Only the Fiji front ends ask: an image opened from a file may carry
+	 * a selection saved with it, which the command line does not use.
+	 *
+	 * @return the rectangle (x and y, pixel indices) of the image's area selection within the image, or {@code null}
+	 *         when it has none (no selection, or a line or points)
+	 * @throws InvalidInputException when the selection lies wholly outside the image
+	 */
+	public static Interval selection(final ImagePlus imp) {
+		final Roi roi = imp.getRoi();
+		if (roi == null || !roi.isArea()) return null;
+		final java.awt.Rectangle b = roi.getBounds().intersection(new java.awt.Rectangle(imp.getWidth(), imp
+			.getHeight()));
+		if (b.isEmpty()) throw new InvalidInputException("the selection on '" + imp.getTitle() + "' lies outside the " +
+			"image");
+		return Intervals.createMinSize(b.x, b.y, b.width, b.height);
+	}
+
+	/**
+	 * @param region the part to keep ({@link #selection}), or {@code null} for all
+	 * @return {@code frame} cut to {@code region}, its pixels at their places in the frame (a view)
+	 */
+	@SuppressWarnings({ "rawtypes", "unchecked" })
+	public static RandomAccessibleInterval<? extends RealType<?>> within(
+		final RandomAccessibleInterval<? extends RealType<?>> frame, final Interval region)
+	{
+		return region == null ? frame : (RandomAccessibleInterval) Views.interval((RandomAccessibleInterval) frame,
+			region);
+	}
+
+	/** @return how {@code region} ({@link #selection}) is named in messages, e.g. {@code x 10-109, y 20-79} */
+	public static String describe(final Interval region) {
+		return "x " + region.min(0) + "-" + region.max(0) + ", y " + region.min(1) + "-" + region.max(1);
 	}
 
 	/**

@@ -31,6 +31,7 @@ import io.github.contacttracker.advisor.ProfileAnalysis;
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.core.Numbers;
 import io.github.contacttracker.core.TrackerParameters;
+import net.imglib2.Interval;
 import net.imglib2.RandomAccessibleInterval;
 import net.imglib2.type.numeric.RealType;
 
@@ -54,9 +55,10 @@ import net.imglib2.type.numeric.RealType;
  * @param rejection why it could not, {@code null} if none
  * @param dark whether the frame was measured inverted: dark particles
  * @param darkFound whether that was found ({@link #measure}: the particles were said bright, the frame looks dark)
+ * @param region the part of the frame measured ({@link ImagePlusFrames#selection}), {@code null} for all of it
  */
 public record ShownFrameProfile(ProfileAnalysis.Result result, String title, int frame, int frameCount, int channel,
-	boolean integerData, double rejectedDiameter, String rejection, boolean dark, boolean darkFound)
+	boolean integerData, double rejectedDiameter, String rejection, boolean dark, boolean darkFound, Interval region)
 {
 
 	/** Longest line written to ImageJ's Log window: it does not wrap, and a default Log window is about this wide. */
@@ -83,24 +85,27 @@ public record ShownFrameProfile(ProfileAnalysis.Result result, String title, int
 		final double diameter)
 	{
 		final ImagePlusFrames plain = ImagePlusFrames.of(imp, channel);
-		final boolean found = !said && ProfileAnalysis.looksDark(plain.frame(ImagePlusFrames.shownFrame(imp)));
+		// within the selection, as the dialog tracks (text burned into a corner of the frame left out, say)
+		final Interval region = ImagePlusFrames.selection(imp);
+		final boolean found = !said && ProfileAnalysis.looksDark(ImagePlusFrames.within(plain.frame(ImagePlusFrames
+			.shownFrame(imp)), region));
 		final boolean dark = said || found;
 		// one view of the frames for both tries, its frames read once
 		final ImagePlusFrames frames = dark ? ImagePlusFrames.of(imp, channel, true) : plain;
 		try {
-			return run(imp, frames, dark, found, null, diameter, 0);
+			return run(imp, frames, region, dark, found, null, diameter, 0);
 		}
 		catch (final InvalidInputException e) {
 			if (!(diameter > 0)) throw e;
 			final ShownFrameProfile estimated;
 			try {
-				estimated = run(imp, frames, dark, found, null, 0, 0);
+				estimated = run(imp, frames, region, dark, found, null, 0, 0);
 			}
 			catch (final InvalidInputException again) {
 				throw e;
 			}
 			return new ShownFrameProfile(estimated.result, estimated.title, estimated.frame, estimated.frameCount,
-				estimated.channel, estimated.integerData, diameter, e.getMessage(), dark, found);
+				estimated.channel, estimated.integerData, diameter, e.getMessage(), dark, found, region);
 		}
 	}
 
@@ -118,23 +123,27 @@ public record ShownFrameProfile(ProfileAnalysis.Result result, String title, int
 		final double maxRadius)
 	{
 		if (imp == null) throw new InvalidInputException("no image");
-		return run(imp, ImagePlusFrames.of(imp, imp.convertIndexToPosition(imp.getCurrentSlice())[0]), false, false,
-			point, diameter, maxRadius);
+		return run(imp, ImagePlusFrames.of(imp, imp.convertIndexToPosition(imp.getCurrentSlice())[0]), null, false,
+			false, point, diameter, maxRadius);
 	}
 
-	/** @param frames the image's frames as the helper is to see them ({@code dark}: inverted) */
+	/**
+	 * @param frames the image's frames as the helper is to see them ({@code dark}: inverted)
+	 * @param region the part of each frame to measure, {@code null} for all
+	 */
 	@SuppressWarnings({ "unchecked", "rawtypes" })
-	private static ShownFrameProfile run(final ImagePlus imp, final ImagePlusFrames frames, final boolean dark,
-		final boolean darkFound, final double[] point, final double diameter, final double maxRadius)
+	private static ShownFrameProfile run(final ImagePlus imp, final ImagePlusFrames frames, final Interval region,
+		final boolean dark, final boolean darkFound, final double[] point, final double diameter,
+		final double maxRadius)
 	{
 		final int t = ImagePlusFrames.shownFrame(imp);
 		// the frames' pixel type is known only at run time: the helper takes any real type
-		final RandomAccessibleInterval frame = frames.frame(t);
-		final List kindFrames = kindFrames(frames, t);
+		final RandomAccessibleInterval frame = ImagePlusFrames.within(frames.frame(t), region);
+		final List kindFrames = kindFrames(frames, t, region);
 		final ProfileAnalysis.Result r = point == null ? ProfileAnalysis.analyse(frame, diameter, maxRadius,
 			kindFrames) : ProfileAnalysis.analyse(frame, point[0], point[1], diameter, maxRadius, kindFrames);
 		return new ShownFrameProfile(r, imp.getTitle(), t, frames.frameCount(), frames.channel(), imp
-			.getBitDepth() != 32, 0, null, dark, darkFound);
+			.getBitDepth() != 32, 0, null, dark, darkFound, region);
 	}
 
 	/**
@@ -145,12 +154,19 @@ public record ShownFrameProfile(ProfileAnalysis.Result result, String title, int
 	public static List<RandomAccessibleInterval<? extends RealType<?>>> kindFrames(final ImagePlusFrames frames,
 		final int t)
 	{
+		return kindFrames(frames, t, null);
+	}
+
+	/** As {@link #kindFrames(ImagePlusFrames, int)}, each frame cut to {@code region} (null: all of it). */
+	private static List<RandomAccessibleInterval<? extends RealType<?>>> kindFrames(final ImagePlusFrames frames,
+		final int t, final Interval region)
+	{
 		final List<Integer> indices = ProfileAnalysis.kindFrames(t, frames.frameCount());
 		return new AbstractList<>() {
 
 			@Override
 			public RandomAccessibleInterval<? extends RealType<?>> get(final int i) {
-				return frames.frame(indices.get(i));
+				return ImagePlusFrames.within(frames.frame(indices.get(i)), region);
 			}
 
 			@Override
@@ -194,8 +210,9 @@ public record ShownFrameProfile(ProfileAnalysis.Result result, String title, int
 	 *         {@code (estimated: 65.29 px given did not fit)} when a diameter given could not be measured with
 	 */
 	public String summary() {
-		return String.format(Locale.ROOT, "'%s'%s%s: %sthreshold %s, r_out %s px, diameter %s px (%s)", title,
-			frameCount > 1 ? ", frame " + (frame + 1) : "", channel > 1 ? ", channel " + channel : "", darkFound
+		return String.format(Locale.ROOT, "'%s'%s%s%s: %sthreshold %s, r_out %s px, diameter %s px (%s)", title,
+			frameCount > 1 ? ", frame " + (frame + 1) : "", channel > 1 ? ", channel " + channel : "", region == null ? ""
+				: " within the selection (" + ImagePlusFrames.describe(region) + ")", darkFound
 				? "dark particles (the frame looks so), " : dark ? "dark particles, " : "", Numbers.fmt(
 				threshold(), 3), Numbers.fmt(rOut(), 3), Numbers.fmt(diameter(), 3), rejectedDiameter > 0 ? "estimated: " +
 					Numbers.fmt(rejectedDiameter, 3) + " px given did not fit" : result.diameterEstimated() ? "estimated"

@@ -26,6 +26,7 @@ import java.util.function.IntFunction;
 import io.github.contacttracker.core.image.Inversion;
 import io.github.contacttracker.io.Calibration;
 import io.github.contacttracker.io.ImagePlusFrames;
+import net.imglib2.Interval;
 import net.imglib2.RandomAccessibleInterval;
 import net.imglib2.type.numeric.RealType;
 
@@ -78,6 +79,18 @@ public interface FrameSource {
 	default FrameSource inverted() {
 		return of(frameCount(), t -> Inversion.of(frame(t)), calibration(), name(), checksDataRange() ? t -> ImagePlusFrames
 			.range(Inversion.of(frame(t)), t) : null);
+	}
+
+	/**
+	 * @param region the part of each frame to track (x and y, pixel indices; {@link ImagePlusFrames#selection}), or
+	 *        {@code null} for all
+	 * @return these frames cut to {@code region}: spots keep the frame's coordinates, a particle cut by the region's
+	 *         edge is flagged as one cut by the frame's, and the data range is the region's
+	 */
+	default FrameSource within(final Interval region) {
+		if (region == null) return this;
+		return of(frameCount(), t -> ImagePlusFrames.within(frame(t), region), calibration(), name(), checksDataRange()
+			? t -> ImagePlusFrames.range(ImagePlusFrames.within(frame(t), region), t) : null);
 	}
 
 	/** @return an ImageJ image's frames as a source, read when needed, the data range checked */

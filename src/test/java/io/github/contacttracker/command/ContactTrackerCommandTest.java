@@ -756,6 +756,56 @@ class ContactTrackerCommandTest extends WithContext {
 		assertTrue(imp.getOverlay().contains(mine));
 	}
 
+	/**
+	 * An area selection (a rectangle drawn to leave out a timestamp burned into a corner, say): only its bounding
+	 * rectangle is tracked, as TrackMate detects within it. The particle wholly inside keeps its place (in the
+	 * image's coordinates) to within its error; one the selection's edge cuts is flagged AT_BORDER, as at the frame's
+	 * edge; the others are not tracked; the Log says so. A line selection changes nothing.
+	 */
+	@Test
+	@SuppressWarnings({ "unchecked", "rawtypes" })
+	void anAreaSelectionIsTrackedWithin() throws Exception {
+		// particles (D = 20 px) at (40, 40), (160, 40), (40, 160), a pair about (130, 130)
+		final ImagePlus imp = io.github.contacttracker.io.ProfileScenes.particles("scene", 1, Calibration.PIXELS);
+		final io.github.contacttracker.advisor.ProfileAnalysis.Result r = io.github.contacttracker.advisor.ProfileAnalysis
+			.analyse((net.imglib2.RandomAccessibleInterval) ImagePlusFrames.of(imp, 1).frame(0), 0, 0);
+		final Object[] inputs = { "imp", imp, "threshold", r.suggestedThreshold(true), "r_out", r.suggestedROut(),
+			"diameter", r.suggestedDiameter(), "overlay", false };
+		final ResultsTable whole = (ResultsTable) Simulated.run(context, ContactTrackerCommand.class, inputs).getOutput(
+			"spots");
+		assertEquals(5, whole.size());
+		imp.setRoi(new ij.gui.Line(0, 0, 100, 100));
+		assertSameTable(whole, (ResultsTable) Simulated.run(context, ContactTrackerCommand.class, inputs).getOutput(
+			"spots"));
+
+		imp.setRoi(new Roi(0, 0, 100, 165)); // (40, 40) inside; (40, 160) cut by the bottom edge, y 164
+		final java.io.PrintStream out = System.out;
+		final java.io.ByteArrayOutputStream printed = new java.io.ByteArrayOutputStream();
+		System.setOut(new java.io.PrintStream(printed, true, java.nio.charset.StandardCharsets.UTF_8));
+		final Module m;
+		try {
+			m = Simulated.run(context, ContactTrackerCommand.class, inputs);
+		}
+		finally {
+			System.setOut(out);
+		}
+		assertSucceeded(m);
+		final ResultsTable within = (ResultsTable) m.getOutput("spots");
+		assertEquals(2, within.size(), "the particle inside and the one cut by the edge");
+		final int inside = within.getValue("POSITION_Y", 0) < 100 ? 0 : 1, cut = 1 - inside;
+		int same = -1;
+		for (int row = 0; row < whole.size(); row++)
+			if (Math.hypot(whole.getValue("POSITION_X", row) - 40, whole.getValue("POSITION_Y", row) - 40) < 3) same = row;
+		for (final String c : new String[] { "POSITION_X", "POSITION_Y" })
+			assertEquals(whole.getValue(c, same), within.getValue(c, inside), 3 * whole.getValue("SIGMA_X", same), c +
+				": the image's coordinates, the same place");
+		assertEquals(0, within.getValue("FLAG_AT_BORDER", inside));
+		assertEquals(1, within.getValue("FLAG_AT_BORDER", cut), "cut by the selection's edge");
+		assertEquals(40, within.getValue("POSITION_X", cut), 1);
+		final String log = printed.toString(java.nio.charset.StandardCharsets.UTF_8);
+		assertTrue(log.contains("\n  within the selection: x 0-99, y 0-164\n"), log);
+	}
+
 	@Test
 	void summaryGoesToTheLogWindow() throws Exception {
 		// headless, ImageJ's Log window is standard output

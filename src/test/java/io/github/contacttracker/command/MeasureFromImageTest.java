@@ -162,6 +162,32 @@ class MeasureFromImageTest extends WithContext {
 		assertEquals(minArea - 1, value(lower, "min_area"), 0, "a lower min area is left alone");
 	}
 
+	/**
+	 * With an area selection the button measures within it, as the command tracks: the values are the helper's on
+	 * the selection's rectangle, a row of bright marks burned into the top of the frame (like a timestamp's digits)
+	 * left out (with them the threshold reads 67, not 66), and the Log says so.
+	 */
+	@Test
+	@SuppressWarnings({ "unchecked", "rawtypes" })
+	void anAreaSelectionIsMeasuredWithin() throws Exception {
+		final ImagePlus imp = ProfileScenes.particles("stamped", 1, Calibration.PIXELS);
+		for (int k = 0; k < 12; k++)
+			for (int y = 4; y < 11; y++)
+				for (int x = 6 + 6 * k; x < 10 + 6 * k; x++)
+					imp.getProcessor().set(x, y, 250);
+		imp.setRoi(new ij.gui.Roi(0, 20, 200, 180));
+		final Module m = dialog(imp);
+		final String log = press(m);
+		final net.imglib2.Interval region = ImagePlusFrames.selection(imp);
+		final ProfileAnalysis.Result r = ProfileAnalysis.analyse((RandomAccessibleInterval) ImagePlusFrames.within(
+			ImagePlusFrames.of(imp, 1).frame(0), region), 0, 0);
+		assertEquals(r.suggestedThreshold(true), value(m, "threshold"), 0);
+		assertEquals(r.suggestedROut(), value(m, "r_out"), 0);
+		assertEquals(Math.round(r.diameter() * 100) / 100.0, value(m, "diameter"), 0);
+		assertTrue(log.replace("\n    ", " ").startsWith("Contact Tracker: measured 'stamped' within the selection " +
+			"(x 0-199, y 20-199): threshold"), log);
+	}
+
 	@Test
 	void aGivenDiameterIsKeptAndUsed() throws Exception {
 		final ImagePlus imp = ProfileScenes.particles("particles", 1, Calibration.PIXELS);
