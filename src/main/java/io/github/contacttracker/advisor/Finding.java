@@ -46,6 +46,16 @@ public sealed interface Finding {
 	 */
 	record DiameterFromSpacing(double diameter, double percentile, int spots, double imageAcross) implements Finding {}
 
+	/**
+	 * Spots so close that two particles of the measured profile would have been one spot where the spots were found
+	 * (bright marks burned into the frame, say, such as a timestamp's digits): their distances are left out of the
+	 * spacing the diameter is estimated from.
+	 *
+	 * @param spots how many spots' nearest-neighbour distances were left out
+	 * @param closest the shortest distance two such particles stay apart at (px)
+	 */
+	record SpotsTooClose(int spots, double closest) implements Finding {}
+
 	/** The particle at the point given has an active area that looks merged with a neighbour's. */
 	record MergedAtPoint() implements Finding {}
 

@@ -373,7 +373,7 @@ public final class ProfileAnalysis {
 	 *
 	 * @param near how far from a point given its particle's brightest pixel is looked for (px)
 	 */
-	private record Spots(List<Localization> spots, double[][] xy, double[] nn, double near) {}
+	private record Spots(List<Localization> spots, double[][] xy, double[] nn, double near, double level) {}
 
 	/**
 	 * Step 1: the spots at half height between the frame's median and its brightest pixels (or the brightest pixel
@@ -399,13 +399,14 @@ public final class ProfileAnalysis {
 						median0)));
 			throw new InvalidInputException("no particle brighter than the noise in the frame");
 		}
-		final TrackerParameters find = new TrackerParameters(median0 + 0.5 * (top - median0), 10, 5,
-			Connectivity.EIGHT, TrackerParameters.DEFAULT_MIN_SECOND_AREA, Method.FIRST);
+		final double level = median0 + 0.5 * (top - median0);
+		final TrackerParameters find = new TrackerParameters(level, 10, 5, Connectivity.EIGHT,
+			TrackerParameters.DEFAULT_MIN_SECOND_AREA, Method.FIRST);
 		final List<Localization> spots = new ContactTracker(find).analyse(plane, 0, false).spots();
 		final double[][] xy = new double[spots.size()][];
 		for (int k = 0; k < xy.length; k++)
 			xy[k] = new double[] { spots.get(k).x() - plane.minX(), spots.get(k).y() - plane.minY() };
-		return new Spots(spots, xy, nearestNeighbourDistances(xy), near);
+		return new Spots(spots, xy, nearestNeighbourDistances(xy), near, level);
 	}
 
 	/** The diameter the profile was measured with, whether it was estimated, and the profile. */
@@ -426,23 +427,63 @@ public final class ProfileAnalysis {
 			findings.addAll(m.findings());
 			return new Sized(diameterGiven, false, m);
 		}
-		final double fromSpots = s.xy().length >= 2 ? quantile(s.nn().clone(), DIAMETER_PERCENTILE / 100)
-			: Double.NaN;
+		double[] spacing = s.nn().clone();
+		double fromSpots = spacing.length >= 2 ? quantile(spacing.clone(), DIAMETER_PERCENTILE / 100) : Double.NaN;
 		final double[] radii = new double[s.spots().size()];
 		for (int k = 0; k < radii.length; k++)
 			radii[k] = Math.sqrt(s.spots().get(k).activeArea() / Math.PI);
 		final double fromCores = PROVISIONAL_CORE_RADII * quantile(radii, 0.5);
-		final double provisional = Double.isFinite(fromSpots) ? Math.min(fromSpots, fromCores) : fromCores;
+		double provisional = Double.isFinite(fromSpots) ? Math.min(fromSpots, fromCores) : fromCores;
 		Measured m = measure(plane, s, at, provisional, maxRadiusGiven, true);
+		// Two particles of this profile closer than 'closest' would have been one spot where the spots were found; spots
+		// that close are not both such particles (bright marks burned into the frame: a timestamp's digits 6 px apart
+		// among particles 20-50 px across gave a diameter of 5.6 px and a threshold above every pixel). Their distances
+		// are left out of the spacing, and the profile measured again. Not when no two spots are left: in a field with
+		// no background between the particles (a lattice at contact) the profile holds the neighbours' light, and two
+		// of it would never stay apart.
+		final double closest = fromSpots > 0 && !apart(m, fromSpots, s.level()) ? closestApart(m, fromSpots, s.level())
+			: 0;
+		final double[] kept = Arrays.stream(spacing).filter(d -> d >= closest).toArray();
+		if (closest > 0 && kept.length >= 2) {
+			findings.add(new Finding.SpotsTooClose(spacing.length - kept.length, closest));
+			spacing = kept;
+			fromSpots = quantile(kept.clone(), DIAMETER_PERCENTILE / 100);
+			provisional = Math.min(fromSpots, fromCores);
+			m = measure(plane, s, at, provisional, maxRadiusGiven, true);
+		}
 		final double own = 2 * m.imageEdge();
 		final boolean fromImage = !(fromSpots < own);
 		final double diameter = fromImage ? own : fromSpots;
 		if (Math.abs(diameter - provisional) > 0.01 * provisional) m = measure(plane, s, at, diameter, maxRadiusGiven,
 			true);
 		findings.add(fromImage ? new Finding.DiameterFromImage(diameter, own / 2) : new Finding.DiameterFromSpacing(
-			diameter, DIAMETER_PERCENTILE, s.xy().length, own));
+			diameter, DIAMETER_PERCENTILE, spacing.length, own));
 		findings.addAll(m.findings());
 		return new Sized(diameter, true, m);
+	}
+
+	/**
+	 * @return whether two particles of {@code m}'s profile {@code distance} apart (and three in a triangle) stay apart
+	 *         at {@code level}: the brightest point between them lies below it
+	 */
+	private static boolean apart(final Measured m, final double distance, final double level) {
+		return m.pooled().background + brightestBetween(m.pooled(), distance, m.reach()) < level;
+	}
+
+	/**
+	 * @return the shortest distance (to {@value #BRIDGE_STEP_PX} px, above {@code from}, at which they are not) at
+	 *         which particles of {@code m}'s profile stay {@link #apart} at {@code level}; beyond twice the profile's
+	 *         reach if they never do within it
+	 */
+	private static double closestApart(final Measured m, final double from, final double level) {
+		double lo = from, hi = 2 * m.reach() + 1;
+		if (!apart(m, hi, level)) return hi;
+		while (hi - lo > BRIDGE_STEP_PX) {
+			final double mid = (lo + hi) / 2;
+			if (apart(m, mid, level)) hi = mid;
+			else lo = mid;
+		}
+		return hi;
 	}
 
 	/**

@@ -129,6 +129,10 @@ public final class ProfileReport {
 			return diameterEstimated(f.diameter(), "the " + fmt(f.percentile()) + "-th percentile of the " + f.spots() +
 				" spots' nearest-neighbour distances, closer than the particles' image reaches (" + fmt2(f
 					.imageAcross()) + " px across)");
+		if (finding instanceof Finding.SpotsTooClose f)
+			return f.spots() + " spots lie closer to another than two such particles can and still be told apart (" +
+				fmt2(f.closest()) + " px): left out of the spacing; bright marks in the frame (a timestamp, a scale " +
+				"bar)? In Fiji, select the region to track";
 		if (finding instanceof Finding.MergedAtPoint)
 			return "the particle's active area looks merged with a neighbour's: pick an isolated particle";
 		if (finding instanceof Finding.NotRefined)

@@ -33,6 +33,8 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.SplittableRandom;
 import java.util.stream.Stream;
+
+import ij.ImagePlus;
 import javax.imageio.IIOImage;
 import javax.imageio.ImageIO;
 import javax.imageio.ImageWriteParam;
@@ -47,6 +49,7 @@ import io.github.contacttracker.core.image.NoiseEstimate;
 import io.github.contacttracker.core.image.Plane;
 import io.github.contacttracker.core.track.FrameResult;
 import io.github.contacttracker.core.track.StackTracker;
+import io.github.contacttracker.io.ImagePlusFrames;
 import io.github.contacttracker.sim.GaussianBesselProfile;
 import io.github.contacttracker.sim.ImageSimulator;
 import io.github.contacttracker.sim.NoiseFreeImage;
@@ -183,6 +186,30 @@ class ProfileSuggestionTest {
 		assertTrue(suggested[3] <= suggested[1], "one spot per particle at most: " + suggested[3]);
 		assertTrue(errors[0] < 1.3 * errors[1], "centres within their reported errors: rms " + errors[0] + " px, " +
 			"reported " + errors[1]);
+	}
+
+	/**
+	 * Bright marks burned into the frame, as a timestamp's digits (12 marks 5 x 6 px, 7 px apart, brighter than the
+	 * particles), among particles 20 px across: the marks' spacing is no particle's (two particles of the measured
+	 * profile 6 px apart would be one spot), so it is left out of the diameter's estimate, and said.
+	 */
+	@Test
+	void marksBurnedIntoTheFrameDoNotSetTheDiameter() {
+		final ImagePlus imp = io.github.contacttracker.io.ProfileScenes.particles("stamped", 1,
+			io.github.contacttracker.io.Calibration.PIXELS);
+		for (int k = 0; k < 12; k++)
+			for (int y = 4; y < 10; y++)
+				for (int x = 6 + 7 * k; x < 11 + 7 * k; x++)
+					imp.getProcessor().set(x, y, 250);
+		@SuppressWarnings({ "unchecked", "rawtypes" })
+		final ProfileAnalysis.Result r = ProfileAnalysis.analyse((RandomAccessibleInterval) ImagePlusFrames.of(imp, 1)
+			.frame(0), 0, 0);
+		// measured: 19.88 px, 12 spots left out; before, 6.99 px (the marks' spacing) and a threshold above the centre
+		assertEquals(io.github.contacttracker.io.ProfileScenes.SMALL.diameterPx(), r.diameter(), 0.1 * 20,
+			"the particles' diameter, not the marks' spacing");
+		assertTrue(r.findings().stream().anyMatch(f -> f instanceof Finding.SpotsTooClose c && c.spots() == 12), r
+			.findings().toString());
+		assertTrue(r.threshold() < r.peak(), "a threshold the particles rise above");
 	}
 
 	/**
