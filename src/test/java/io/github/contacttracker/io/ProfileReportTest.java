@@ -64,6 +64,9 @@ class ProfileReportTest {
 		expected.put(new Finding.DiameterFromSpacing(34.0589, 10, 85, 42.9791), "the diameter (34.06 px) is estimated " +
 			"as the 10-th percentile of the 85 spots' nearest-neighbour distances, closer than the particles' image " +
 			"reaches (42.98 px across): give it if you know it");
+		expected.put(new Finding.SpotsTooClose(18, 17.5712), "18 spots lie closer to another than two such particles " +
+			"can and still be told apart (17.57 px): left out of the spacing; bright marks in the frame (a timestamp, a " +
+			"scale bar)? In Fiji, select the region to track");
 		expected.put(new Finding.MergedAtPoint(), "the particle's active area looks merged with a neighbour's: pick an " +
 			"isolated particle");
 		expected.put(new Finding.NotRefined(), "could not refine the centre; the profile is taken around the point " +
