@@ -157,7 +157,8 @@ public final class ProfileReport {
 				"threshold is raised until they are round";
 		if (finding instanceof Finding.NotRound f)
 			return f.notRound() + " of the frame's " + f.areas() + " active areas have the shape of no single particle " +
-				"up to " + fmt2(f.ceiling()) + " (half the cores' height): they will be flagged MERGED";
+				"up to " + fmt2(f.ceiling()) + " (half the cores' height): they will be flagged MERGED, or dropped when " +
+				"smaller than two particles' active areas (fringes, marks)";
 		if (finding instanceof Finding.ThresholdAboveCentre)
 			return "the suggested threshold is above the particle's centre: at contact no threshold separates two such " +
 				"particles (the profile is too long-ranged for the method)";

@@ -85,7 +85,8 @@ class ProfileReportTest {
 			"have the shape of no single particle (bright fringes between touching particles, or particles merged): the " +
 			"threshold is raised until they are round");
 		expected.put(new Finding.NotRound(3, 120, 131.456), "3 of the frame's 120 active areas have the shape of no " +
-			"single particle up to 131.5 (half the cores' height): they will be flagged MERGED");
+			"single particle up to 131.5 (half the cores' height): they will be flagged MERGED, or dropped when smaller " +
+			"than two particles' active areas (fringes, marks)");
 		expected.put(new Finding.ThresholdAboveCentre(), "the suggested threshold is above the particle's centre: at " +
 			"contact no threshold separates two such particles (the profile is too long-ranged for the method)");
 		expected.put(new Finding.ROutAboveDiameter(42.1634, 30), "r_out (42.16 px) is larger than the diameter (30 px): " +
