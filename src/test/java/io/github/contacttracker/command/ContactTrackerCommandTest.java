@@ -804,6 +804,11 @@ class ContactTrackerCommandTest extends WithContext {
 		assertEquals(40, within.getValue("POSITION_X", cut), 1);
 		final String log = printed.toString(java.nio.charset.StandardCharsets.UTF_8);
 		assertTrue(log.contains("\n  within the selection: x 0-99, y 0-164\n"), log);
+
+		imp.setRoi(new Roi(250, 250, 20, 20)); // (ImageJ keeps a selection off the image)
+		final Module outside = Simulated.run(context, ContactTrackerCommand.class, inputs);
+		assertTrue(((Cancelable) outside).isCanceled());
+		assertEquals("the selection on 'scene' lies outside the image", ((Cancelable) outside).getCancelReason());
 	}
 
 	@Test
