@@ -187,6 +187,14 @@ public final class ProfileAnalysis {
 		public int suggestedMinArea(final double threshold) {
 			return minArea(ProfileAnalysis.activeRadius(radius, level, count, threshold));
 		}
+
+		/**
+		 * @return whether the particles are so small that {@link #suggestedMinArea} at {@code threshold} lies below
+		 *         the default {@code min_area} (only then is it suggested)
+		 */
+		public boolean smallParticles(final double threshold) {
+			return suggestedMinArea(threshold) < TrackerParameters.DEFAULT_MIN_AREA;
+		}
 	}
 
 	/**
@@ -441,15 +449,16 @@ public final class ProfileAnalysis {
 		// are left out of the spacing, and the profile measured again. Not when no two spots are left: in a field with
 		// no background between the particles (a lattice at contact) the profile holds the neighbours' light, and two
 		// of it would never stay apart.
-		final double closest = fromSpots > 0 && !apart(m, fromSpots, s.level()) ? closestApart(m, fromSpots, s.level())
-			: 0;
-		final double[] kept = Arrays.stream(spacing).filter(d -> d >= closest).toArray();
-		if (closest > 0 && kept.length >= 2) {
-			findings.add(new Finding.SpotsTooClose(spacing.length - kept.length, closest));
-			spacing = kept;
-			fromSpots = quantile(kept.clone(), DIAMETER_PERCENTILE / 100);
-			provisional = Math.min(fromSpots, fromCores);
-			m = measure(plane, s, at, provisional, maxRadiusGiven, true);
+		if (fromSpots > 0 && !apart(m, fromSpots, s.level())) {
+			final double closest = closestApart(m, fromSpots, s.level());
+			final double[] kept = Arrays.stream(spacing).filter(d -> d >= closest).toArray();
+			if (kept.length >= 2) {
+				findings.add(new Finding.SpotsTooClose(spacing.length - kept.length, closest));
+				spacing = kept;
+				fromSpots = quantile(kept.clone(), DIAMETER_PERCENTILE / 100);
+				provisional = Math.min(fromSpots, fromCores);
+				m = measure(plane, s, at, provisional, maxRadiusGiven, true);
+			}
 		}
 		final double own = 2 * m.imageEdge();
 		final boolean fromImage = !(fromSpots < own);

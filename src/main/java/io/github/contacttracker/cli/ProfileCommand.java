@@ -135,10 +135,9 @@ public final class ProfileCommand extends ContactTrackerCli.Subcommand {
 		}
 		for (final Path t : targets)
 			out.println("  wrote " + t);
-		final int minArea = r.suggestedMinArea(threshold);
 		out.println(SUGGESTION + " --threshold " + MeasuredSettings.optionValue(threshold) + " --r-out " + MeasuredSettings
-			.optionValue(rOut) + " --diameter " + MeasuredSettings.optionValue(r.suggestedDiameter()) + (minArea <
-				TrackingSettings.MIN_AREA.defaultValue() ? " --min-area " + minArea : "") + (dark ? " --particles dark" : ""));
+			.optionValue(rOut) + " --diameter " + MeasuredSettings.optionValue(r.suggestedDiameter()) + (r.smallParticles(
+				threshold) ? " --min-area " + r.suggestedMinArea(threshold) : "") + (dark ? " --particles dark" : ""));
 		return 0;
 	}
 

@@ -28,7 +28,6 @@ import java.util.Locale;
 import io.github.contacttracker.advisor.Finding;
 import io.github.contacttracker.advisor.ProfileAnalysis;
 import io.github.contacttracker.core.Numbers;
-import io.github.contacttracker.core.TrackerParameters;
 import io.github.contacttracker.core.kind.Kinds;
 
 /**
@@ -63,11 +62,11 @@ public final class ProfileReport {
 			ProfileAnalysis.THRESHOLD_MARGIN_SIGMAS, r.atContact(), r.threshold() > r.atContact() ? String.format(
 				Locale.ROOT, ", raised to %.2f (see the warnings)", r.threshold()) : "", fmt(r.suggestedThreshold(
 					integerData))));
-		final int minArea = r.suggestedMinArea(r.suggestedThreshold(integerData));
+		final double threshold = r.suggestedThreshold(integerData);
 		lines.add(String.format(Locale.ROOT, "  active area radius at this threshold: %.2f px (D/2 = %.2f px)%s", r
-			.activeRadius(), r.diameter() / 2, minArea < TrackerParameters.DEFAULT_MIN_AREA ? String.format(
-				Locale.ROOT, "; area %.1f px, below twice the default min_area -> min_area = %d (half the area)", Math.PI *
-					r.activeRadius() * r.activeRadius(), minArea) : ""));
+			.activeRadius(), r.diameter() / 2, r.smallParticles(threshold) ? String.format(Locale.ROOT,
+				"; area %.1f px, below twice the default min_area -> min_area = %d (half the area)", Math.PI * r
+					.activeRadius() * r.activeRadius(), r.suggestedMinArea(threshold)) : ""));
 		for (final String k : kinds(r.kinds()))
 			lines.add("  " + k);
 		for (final String w : warnings(r))

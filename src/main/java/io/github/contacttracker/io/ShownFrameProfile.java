@@ -30,7 +30,6 @@ import ij.ImagePlus;
 import io.github.contacttracker.advisor.ProfileAnalysis;
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.core.Numbers;
-import io.github.contacttracker.core.TrackerParameters;
 import net.imglib2.Interval;
 import net.imglib2.RandomAccessibleInterval;
 import net.imglib2.type.numeric.RealType;
@@ -197,7 +196,7 @@ public record ShownFrameProfile(ProfileAnalysis.Result result, String title, int
 
 	/** @return whether {@link #minArea()} is below the default {@code min_area} (the particles are that small) */
 	public boolean smallParticles() {
-		return minArea() < TrackerParameters.DEFAULT_MIN_AREA;
+		return result.smallParticles(threshold());
 	}
 
 	/** @return the particle diameter (px): as given, or the estimate rounded to 0.01 px */
