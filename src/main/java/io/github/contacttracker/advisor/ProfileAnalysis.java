@@ -1085,11 +1085,14 @@ public final class ProfileAnalysis {
 		return median - v[0] > DARK_RATIO * (v[v.length - 1] - median);
 	}
 
-	/** The {@code q}-quantile (0..1) of the values (sorted in place), by linear interpolation. */
+	/**
+	 * The {@code q}-quantile of the values (sorted in place), by linear interpolation; {@code q} is clamped to
+	 * [0, 1] (a rank asked of a sample smaller than it, such as the 20th brightest of 17 pixels, is its extreme).
+	 */
 	static double quantile(final double[] values, final double q) {
 		if (values.length == 0) return Double.NaN;
 		Arrays.sort(values);
-		final double pos = q * (values.length - 1);
+		final double pos = (q > 0 ? Math.min(q, 1) : 0) * (values.length - 1);
 		final int i = (int) Math.floor(pos);
 		if (i >= values.length - 1) return values[values.length - 1];
 		return values[i] + (pos - i) * (values[i + 1] - values[i]);
