@@ -100,8 +100,7 @@ final class PotentialCommand extends ContactTrackerCli.Subcommand {
 		if (spots.size() == 0)
 			throw new InvalidInputException(input + ": no spot left (" + spots.flaggedLeftOut() + " flagged, " + spots
 				.earlyLeftOut() + " before the start frame)");
-		final FieldOfView field = width != null ? FieldOfView.of(width, height) : FieldOfView.inferred(spots.allX(),
-			spots.allY());
+		final FieldOfView field = width != null ? FieldOfView.of(width, height) : spots.inferredField();
 		PairCorrelation.Result result = PairCorrelation.compute(spots, field, bin, rMax);
 		if (zero != null) result = result.withZero(zero[0], zero[1]);
 

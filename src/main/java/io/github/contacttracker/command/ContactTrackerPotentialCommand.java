@@ -35,6 +35,8 @@ import org.scijava.plugin.Plugin;
 import org.scijava.widget.FileWidget;
 
 import ij.IJ;
+import ij.ImagePlus;
+import ij.WindowManager;
 import ij.gui.Plot;
 import ij.measure.ResultsTable;
 import io.github.contacttracker.io.PotentialPlots;
@@ -50,7 +52,10 @@ import io.github.contacttracker.potential.SpotSet;
  * <p>
  * The spots come from the {@code csv} file (ours or TrackMate's spot export) when one is given, else from the
  * open table titled {@code table} (by default ImageJ's Results table, which Contact Tracker fills with the spots;
- * Contact Tracker's own spots table or a CSV file opened in Fiji work too). The table is named by its title, not
+ * Contact Tracker's own spots table or a CSV file opened in Fiji work too). When the Results table no longer holds
+ * spots (the Profile's suggestion or another command replaced them), the spots Contact Tracker found last are
+ * used, and the Log says so. The field of view is the one given, else the real size of the image tracked last,
+ * or of the open image, when the spots lie on it (not the spots' extent), else inferred from the spots. The table is named by its title, not
  * taken as a {@code ResultsTable} input: Fiji fills a command's single {@code ResultsTable} input with the Results
  * table itself, which would win over {@code csv=} and {@code table=}. Macro:
  * {@code run("Contact Tracker Pair Potential", "bin=0.05 r_max=10 zero_from=8 zero_to=10");}; {@code bin=0} and
@@ -97,10 +102,13 @@ public class ContactTrackerPotentialCommand extends OwnCommand {
 		description = DialogHelp.TIP + "Largest distance; at most the smaller side of the field of view; 0 takes half of it")
 	private double r_max = 0;
 
-	@Parameter(validater = "validateInputs", label = "Field width (0 = infer from spots)", min = "0")
+	@Parameter(validater = "validateInputs", label = "Field width (0 = the image's)", min = "0",
+		description = DialogHelp.TIP + "The field of view the spots were found in, in the spots' units; 0 takes the open " +
+			"image's size when the spots lie on it, else infers it from the spots")
 	private double width = 0;
 
-	@Parameter(validater = "validateInputs", label = "Field height (0 = infer from spots)", min = "0")
+	@Parameter(validater = "validateInputs", label = "Field height (0 = the image's)", min = "0",
+		description = DialogHelp.TIP + "See the width")
 	private double height = 0;
 
 	@Parameter(validater = "validateInputs", label = "Start frame", min = "0",
@@ -169,6 +177,7 @@ public class ContactTrackerPotentialCommand extends OwnCommand {
 		if ((width > 0) != (height > 0))
 			throw new InvalidInputException("give both the field's width and height, or neither (0: inferred)");
 		String unit = "";
+		final SpotTables.LastRun last = SpotTables.lastRun();
 		final Map<String, double[]> columns;
 		final String source;
 		if (csv != null && !csv.getPath().isBlank()) {
@@ -180,12 +189,21 @@ public class ContactTrackerPotentialCommand extends OwnCommand {
 		else {
 			final String title = table == null || table.isBlank() ? RESULTS : table.trim();
 			// the Results table has no window headless (nor before it is shown): ImageJ keeps it in a static
-			final ResultsTable rt = title.equals(RESULTS) ? ResultsTable.getResultsTable() : ResultsTable
-				.getResultsTable(title);
+			ResultsTable rt = title.equals(RESULTS) ? ResultsTable.getResultsTable() : ResultsTable.getResultsTable(
+				title);
+			String from = title;
+			if (title.equals(RESULTS) && (rt == null || rt.getColumnIndex(SpotSet.X) == ResultsTable.COLUMN_NOT_FOUND)) {
+				// another command (the Profile's suggestion, Analyze Particles) replaced the spots there
+				if (last == null) throw new InvalidInputException("the Results table holds no spots (no column " + SpotSet.X +
+					"): run Contact Tracker first, or name its spots table ('" + SpotTables.SPOTS_TITLE + ": ...') or a " +
+					"spots CSV");
+				rt = last.spots();
+				from = rt.getTitle() + " (Results holds no spots)";
+			}
 			if (rt == null) throw new InvalidInputException("no open table titled '" + title + "': track first, open " +
 				"a spots CSV, or give the csv file");
 			columns = columns(rt);
-			source = title;
+			source = from;
 		}
 		final SpotSet set;
 		try {
@@ -195,8 +213,26 @@ public class ContactTrackerPotentialCommand extends OwnCommand {
 			throw new InvalidInputException(source + ": " + e.getMessage());
 		}
 		if (set.size() == 0) throw new InvalidInputException(source + ": no spot left");
-		final FieldOfView field = width > 0 ? FieldOfView.of(width, height) : FieldOfView.inferred(set.allX(), set
-			.allY());
+		// the image tracked last, else the open one, when the spots lie on it
+		final ImagePlus open = WindowManager.getCurrentImage();
+		final String image;
+		final FieldOfView field;
+		if (width > 0) {
+			image = null;
+			field = FieldOfView.of(width, height);
+		}
+		else if (last != null && onImage(set, last.field())) {
+			image = last.image();
+			field = last.field();
+		}
+		else if (open != null && onImage(set, imageField(open))) {
+			image = open.getTitle();
+			field = imageField(open);
+		}
+		else {
+			image = null;
+			field = set.inferredField();
+		}
 		// 0 = chosen from the field: half its smaller side (the edge correction holds up to all of it), 50 bins
 		final double rMax = r_max > 0 ? r_max : field.maxDistance() / 2;
 		final double width = bin > 0 ? bin : rMax / AUTO_BINS;
@@ -207,6 +243,7 @@ public class ContactTrackerPotentialCommand extends OwnCommand {
 		final StringBuilder b = new StringBuilder(PLOT_TITLE + ": " + source);
 		for (final String line : PotentialReport.lines(set, r, unit.isEmpty() ? "" : unit))
 			b.append("\n  ").append(line);
+		if (image != null) b.append("\n  field of view: the image '").append(image).append("', its real size");
 		final String warning = PotentialReport.fieldWarning(set, field);
 		if (warning != null) b.append("\n  warning: ").append(warning);
 		if (bin == 0 || r_max == 0) b.append(String.format(java.util.Locale.ROOT, "%n  bin %s, r_max %s (chosen from " +
@@ -217,6 +254,23 @@ public class ContactTrackerPotentialCommand extends OwnCommand {
 			((TitledResultsTable) potential).show();
 			plot.show();
 		}
+	}
+
+	/** @return the image's field of view, in its calibrated units (the spots' units) */
+	private static FieldOfView imageField(final ImagePlus image) {
+		final ij.measure.Calibration c = image.getCalibration();
+		return FieldOfView.ofImage(image.getWidth(), image.getHeight(), c.pixelWidth, c.pixelHeight);
+	}
+
+	/** @return whether every spot (used or flagged) lies on the image's field */
+	private static boolean onImage(final SpotSet set, final FieldOfView f) {
+		if (set.size() + set.flaggedLeftOut() < 2) return false;
+		final FieldOfView spots = set.inferredField();
+		// the field inferred from the spots widens their extent a little: compare their extent itself
+		final double n = set.size() + set.flaggedLeftOut();
+		final double gapX = spots.width() / (n + 1), gapY = spots.height() / (n + 1);
+		return f.depth(spots.x0() + gapX, spots.y0() + gapY) >= 0 && f.depth(spots.x0() + spots.width() - gapX, spots
+			.y0() + spots.height() - gapY) >= 0;
 	}
 
 	private static String num(final double v) {

@@ -30,6 +30,7 @@ import io.github.contacttracker.core.Flag;
 import io.github.contacttracker.core.Localization;
 import io.github.contacttracker.io.Calibration;
 import io.github.contacttracker.io.SpotColumn;
+import io.github.contacttracker.potential.FieldOfView;
 
 /**
  * The ImageJ results tables of Contact Tracker. The spots table has the columns of the command line's CSV
@@ -74,18 +75,45 @@ public final class SpotTables {
 		PAIR_FIRST_PASS_DISTANCE, PAIR_FLAGGED };
 	private static final List<String> PAIR_INTEGERS = List.of(PAIR_FRAME, PAIR_ID_A, PAIR_ID_B, PAIR_FLAGGED);
 
+	/**
+	 * Contact Tracker's last run: its spots table, what Pair Potential reads when ImageJ's Results table, where the
+	 * run put the spots too, has since been given something else (the Profile's suggestion); and the image's field
+	 * of view, the real size the spots were found in. One run, held like ImageJ's own Results table, for the
+	 * session.
+	 *
+	 * @param spots the spots table
+	 * @param image the image's title
+	 * @param field the image's field of view, in the spots' units
+	 */
+	public record LastRun(ResultsTable spots, String image, FieldOfView field) {}
+
+	private static volatile LastRun lastRun;
+
 	private SpotTables() {}
+
+	/** Forgets the last run (a session that tracked nothing yet). */
+	static void forgetLastRun() {
+		lastRun = null;
+	}
+
+	/** @return Contact Tracker's last run in this session, or null */
+	public static LastRun lastRun() {
+		return lastRun;
+	}
 
 	/**
 	 * @param imageTitle the image's title, in the table's: one table (and window) per image
-	 * @return the spots table: one row per spot, IDs 0, 1, ... in list order
+	 * @param width the image's width in pixels
+	 * @param height its height
+	 * @return the spots table: one row per spot, IDs 0, 1, ... in list order; also {@link #lastRun()} from now on
 	 */
 	public static TitledResultsTable spots(final List<Localization> spots, final Calibration cal,
-		final String imageTitle)
+		final String imageTitle, final int width, final int height)
 	{
 		final TitledResultsTable rt = new TitledResultsTable(spotsTitle(imageTitle));
 		rt.showRowNumbers(false);
 		fillSpots(rt, spots, cal);
+		lastRun = new LastRun(rt, imageTitle, FieldOfView.ofImage(width, height, cal.pixelWidth(), cal.pixelHeight()));
 		return rt;
 	}
 

@@ -33,26 +33,52 @@ import io.github.contacttracker.core.InvalidInputException;
  * </pre>
  *
  * whose integral is {@link #pairFractionWithin(double)}. This is the exact pair-geometry edge correction: the
- * {@code 2 pi r} of an unbounded plane, reduced by the pairs a shell loses where it leaves the rectangle. Only
- * the size matters, not the position of the rectangle. The formula holds up to {@code min(W, H)}; beyond it the
- * shells would leave the field on two opposite sides, and g(r) that far out means little, so it is refused.
+ * {@code 2 pi r} of an unbounded plane, reduced by the pairs a shell loses where it leaves the rectangle. For
+ * g(r) only the size matters; the corner {@code (x0, y0)} places the rectangle among the spots, which matters
+ * when spots at its border were left out and the field shrinks to where spots were kept ({@link #inset}). A
+ * field given by its size alone has its corner at {@code (0, 0)}; an image's starts half a pixel before its first
+ * pixel's centre ({@link #ofImage}). The formula holds up to
+ * {@code min(W, H)}; beyond it the shells would leave the field on two opposite sides, and g(r) that far out
+ * means little, so it is refused.
  *
+ * @param x0 the smallest x of the field, in the spots' units
+ * @param y0 the smallest y of the field
  * @param width width, in the spots' units
  * @param height height, in the spots' units
  * @param inferred whether the size was inferred from the spots rather than given
  */
-public record FieldOfView(double width, double height, boolean inferred) {
+public record FieldOfView(double x0, double y0, double width, double height, boolean inferred) implements
+	java.io.Serializable
+{
 
 	/** @throws IllegalArgumentException when a side is not a positive finite number */
 	public FieldOfView {
 		if (!(width > 0) || !(height > 0) || !Double.isFinite(width) || !Double.isFinite(height))
 			throw new InvalidInputException("the field of view must have a positive width and height, not " + width +
 				" x " + height);
+		if (!Double.isFinite(x0) || !Double.isFinite(y0))
+			throw new InvalidInputException("the field of view's corner must be finite, not " + x0 + ", " + y0);
+	}
+
+	/** A field whose corner is at {@code (0, 0)}. */
+	public FieldOfView(final double width, final double height, final boolean inferred) {
+		this(0, 0, width, height, inferred);
 	}
 
 	/** @return a field of the given size (given by the user, not inferred) */
 	public static FieldOfView of(final double width, final double height) {
 		return new FieldOfView(width, height, false);
+	}
+
+	/**
+	 * @param width the image's width in pixels
+	 * @param height its height in pixels
+	 * @param dx a pixel's width in the spots' units
+	 * @param dy a pixel's height
+	 * @return the image's field, in the spots' coordinates (pixel {@code (0, 0)}'s centre at {@code (0, 0)})
+	 */
+	public static FieldOfView ofImage(final int width, final int height, final double dx, final double dy) {
+		return new FieldOfView(-0.5 * dx, -0.5 * dy, width * dx, height * dy, false);
 	}
 
 	/**
@@ -96,7 +122,26 @@ public record FieldOfView(double width, double height, boolean inferred) {
 		if (!(w > 0) || !(h > 0))
 			throw new InvalidInputException("cannot infer the field of view: all spots lie on one line; give its " +
 				"width and height");
-		return new FieldOfView(w, h, true);
+		return new FieldOfView(x0 - (x1 - x0) / (n - 1), y0 - (y1 - y0) / (n - 1), w, h, true);
+	}
+
+	/**
+	 * @param margin a distance {@code >= 0}
+	 * @return the field shrunk by {@code margin} on every side (the same corner rule and inferred state)
+	 * @throws IllegalArgumentException when nothing is left
+	 */
+	public FieldOfView inset(final double margin) {
+		if (!(margin >= 0)) throw new InvalidInputException("an inset must be 0 or more, not " + margin);
+		if (2 * margin >= Math.min(width, height))
+			throw new InvalidInputException(String.format(java.util.Locale.ROOT, "the spots left out at the border " +
+				"reach %s into the field of view (%s x %s): no field is left between them", PairCorrelation.num(margin),
+				PairCorrelation.num(width), PairCorrelation.num(height)));
+		return new FieldOfView(x0 + margin, y0 + margin, width - 2 * margin, height - 2 * margin, inferred);
+	}
+
+	/** @return the distance of {@code (x, y)} inside the field to its nearest edge; negative outside */
+	public double depth(final double x, final double y) {
+		return Math.min(Math.min(x - x0, x0 + width - x), Math.min(y - y0, y0 + height - y));
 	}
 
 	/** @return the area */

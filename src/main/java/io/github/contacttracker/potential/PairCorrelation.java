@@ -36,7 +36,8 @@ import java.util.Locale;
  * an ideal gas of the same particles would give: per frame with {@code n} spots, {@code n (n - 1) / 2} pairs,
  * each at a distance distributed as for two independent uniform points of the same field of view
  * ({@link FieldOfView#pairFractionWithin}: exact for a rectangle, so shells that leave the field need no
- * further correction). {@code g = pairs / expected}.
+ * further correction). {@code g = pairs / expected}. When spots cut by the image's border were left out, the
+ * field shrinks to where the spots kept are uniform ({@link SpotSet#awayFromBorder}): area and counts alike.
  * <p>
  * Error bars are counting statistics: a bin's count is taken as Poisson, so the standard error of {@code U/kT}
  * is {@code 1 / sqrt(pairs)} (and of g, {@code g / sqrt(pairs)}). Pairs are not independent (one particle is in
@@ -95,9 +96,11 @@ public final class PairCorrelation {
 	 * @param uZero the constant subtracted from {@code -ln g} to give U (0 unless a zero range was set)
 	 * @param zeroFrom lower end of the zero range (NaN when none)
 	 * @param zeroTo upper end of the zero range (NaN when none)
+	 * @param borderReach how far the field was shrunk on every side because spots at its border were left out
+	 * @param nearBorderLeftOut spots left out for lying within that reach, though not flagged themselves
 	 */
 	public record Result(List<Bin> bins, FieldOfView field, int frames, int spots, double framePairs, double uZero,
-		double zeroFrom, double zeroTo)
+		double zeroFrom, double zeroTo, double borderReach, int nearBorderLeftOut)
 	{
 
 		/** Copies the bins. */
@@ -148,24 +151,29 @@ public final class PairCorrelation {
 			if (pairs == 0)
 				throw new InvalidInputException(String.format(Locale.ROOT,
 					"no pair in the zero range %s to %s: U cannot be set to 0 there", num(from), num(to)));
-			return new Result(bins, field, frames, spots, framePairs, -Math.log(pairs / expected), from, to);
+			return new Result(bins, field, frames, spots, framePairs, -Math.log(pairs / expected), from, to, borderReach,
+				nearBorderLeftOut);
 		}
 	}
 
 	private PairCorrelation() {}
 
 	/**
-	 * @param spots the spots, by frame
-	 * @param field the field of view they were found in
+	 * @param all the spots, by frame
+	 * @param found the field of view they were found in
 	 * @param binWidth bin width, in the spots' units
 	 * @param rMax the largest distance: bins cover {@code [0, k binWidth)} with {@code k = floor(rMax / binWidth)}
-	 * @return g(r) and U(r), without a zero shift
+	 * @return g(r) and U(r), without a zero shift, of the spots away from the border when some at the border were
+	 *         left out ({@link SpotSet#awayFromBorder})
 	 * @throws IllegalArgumentException for bad bins, {@code rMax} beyond the field's smaller side, or no frame
 	 *         with two spots
 	 */
-	public static Result compute(final SpotSet spots, final FieldOfView field, final double binWidth,
+	public static Result compute(final SpotSet all, final FieldOfView found, final double binWidth,
 		final double rMax)
 	{
+		final SpotSet.AwayFromBorder away = all.awayFromBorder(found);
+		final SpotSet spots = away.spots();
+		final FieldOfView field = away.field();
 		final int count = bins(field, binWidth, rMax);
 		final long[] pairs = new long[count];
 		double framePairs = 0;
@@ -176,7 +184,8 @@ public final class PairCorrelation {
 			for (int k = 0; k < count; k++)
 				pairs[k] += own[k];
 		}
-		return fromCounts(pairs, framePairs, spots.frames().size(), spots.size(), field, binWidth);
+		return fromCounts(pairs, framePairs, spots.frames().size(), spots.size(), field, binWidth, away.reach(), spots
+			.nearBorderLeftOut());
 	}
 
 	/**
@@ -244,6 +253,20 @@ public final class PairCorrelation {
 	public static Result fromCounts(final long[] pairs, final double framePairs, final int frames, final int spots,
 		final FieldOfView field, final double binWidth)
 	{
+		return fromCounts(pairs, framePairs, frames, spots, field, binWidth, 0, 0);
+	}
+
+	/**
+	 * As {@link #fromCounts(long[], double, int, int, FieldOfView, double)}, for spots counted within a field
+	 * shrunk from the border ({@link SpotSet#awayFromBorder}).
+	 *
+	 * @param borderReach how far the field was shrunk on every side (0: not; NaN: not, the flagged spots lay too
+	 *          deep)
+	 * @param nearBorderLeftOut spots left out for lying within that reach, though not flagged themselves
+	 */
+	public static Result fromCounts(final long[] pairs, final double framePairs, final int frames, final int spots,
+		final FieldOfView field, final double binWidth, final double borderReach, final int nearBorderLeftOut)
+	{
 		if (framePairs == 0)
 			throw new InvalidInputException("no frame has two spots: there is no pair to count");
 		final int count = pairs.length;
@@ -255,7 +278,8 @@ public final class PairCorrelation {
 			bins.add(new Bin(lo, hi, pairs[k], framePairs * (within - below)));
 			below = within;
 		}
-		return new Result(bins, field, frames, spots, framePairs, 0, Double.NaN, Double.NaN);
+		return new Result(bins, field, frames, spots, framePairs, 0, Double.NaN, Double.NaN, borderReach,
+			nearBorderLeftOut);
 	}
 
 	/** @return {@code v} with at most 6 significant digits and no trailing zeros, for messages */

@@ -31,22 +31,27 @@ public final class PotentialReport {
 	private PotentialReport() {}
 
 	/**
-	 * @param spots the spots used
+	 * @param spots the spots selected
 	 * @param r the result
 	 * @param unit the spots' unit ("" when unknown)
-	 * @return lines: spots used and left out, the field of view (given or inferred), pairs, the zero of U
+	 * @return lines: spots used and left out, the field of view (given or inferred, and shrunk from the border),
+	 *         pairs, the zero of U
 	 */
 	public static List<String> lines(final SpotSet spots, final PairCorrelation.Result r, final String unit) {
 		final List<String> out = new ArrayList<>();
 		out.add(String.format(Locale.ROOT, "%d spots in %d frames used (of %d rows; left out: %d flagged%s, %d " +
-			"before the start frame)", spots.size(), spots.frames().size(), spots.rows(), spots.flaggedLeftOut(), spots
-				.flagColumns().isEmpty() ? "" : " by " + String.join("/", spots.flagColumns()), spots.earlyLeftOut()));
+			"before the start frame%s)", r.spots(), r.frames(), spots.rows(), spots.flaggedLeftOut(), spots
+				.flagColumns().isEmpty() ? "" : " by " + String.join("/", spots.flagColumns()), spots.earlyLeftOut(), r
+					.borderReach() > 0 ? ", " + r.nearBorderLeftOut() + " as near the border as flagged ones" : ""));
 		final String u = unit.isEmpty() ? "" : " " + unit;
 		final FieldOfView f = r.field();
-		out.add(String.format(Locale.ROOT, "field of view %s x %s%s, %s", PairCorrelation.num(f.width()),
+		out.add(String.format(Locale.ROOT, "field of view %s x %s%s, %s%s", PairCorrelation.num(f.width()),
 			PairCorrelation.num(f.height()), u, f.inferred()
 				? "INFERRED from the spots (their bounding box): give the width and height if you know them"
-				: "as given"));
+				: "as given", r.borderReach() > 0 ? String.format(Locale.ROOT, "; less %s%s on every side, where spots " +
+					"cut by the border were left out", PairCorrelation.num(r.borderReach()), u) : Double.isNaN(r.borderReach())
+						? "; NOT shrunk for the spots left out at the border: some lie too deep inside it to mark its edge " +
+							"(tracked within a selection? give its size)" : ""));
 		out.add(String.format(Locale.ROOT, "%d pairs closer than %s%s (%s pairs of the same frame in all)", r.pairs(),
 			PairCorrelation.num(r.bins().get(r.bins().size() - 1).rHigh()), u, PairCorrelation.num(r.framePairs())));
 		if (!Double.isNaN(r.zeroFrom()))

@@ -23,6 +23,7 @@ package io.github.contacttracker.potential;
 
 import io.github.contacttracker.core.InvalidInputException;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.Collections;
 import java.util.List;
 import java.util.Locale;
@@ -66,14 +67,24 @@ public final class SpotSet {
 		}
 	}
 
+	/** The column of the flag that marks a spot cut by the image's border. */
+	public static final String BORDER_FLAG = FLAG_PREFIX + Flag.AT_BORDER.name();
+
+	/** The deepest a band of spots cut by the border may reach into the field, as a fraction of its smaller side. */
+	public static final double DEEPEST_BORDER = 0.25;
+
 	private final List<Integer> frameNumbers;
 	private final List<double[][]> frames;
-	private final int rows, flaggedLeftOut, earlyLeftOut;
+	private final int rows, flaggedLeftOut, earlyLeftOut, nearBorderLeftOut;
 	private final List<String> flagColumns;
+	/** Spots left out for a warning flag: {@code {x, y, 1 when flagged at the border else 0}} each. */
+	private final List<double[]> flagged;
 
 	private SpotSet(final TreeMap<Integer, List<double[]>> byFrame, final int rows, final int flaggedLeftOut,
-		final int earlyLeftOut, final List<String> flagColumns)
+		final int earlyLeftOut, final List<String> flagColumns, final List<double[]> flagged, final int nearBorderLeftOut)
 	{
+		this.flagged = List.copyOf(flagged);
+		this.nearBorderLeftOut = nearBorderLeftOut;
 		this.frameNumbers = List.copyOf(byFrame.keySet());
 		final List<double[][]> f = new ArrayList<>();
 		for (final List<double[]> spots : byFrame.values()) {
@@ -106,7 +117,7 @@ public final class SpotSet {
 			byFrame.put(f, scaled);
 			n += positions.get(f).size();
 		}
-		return new SpotSet(byFrame, n, 0, 0, List.of());
+		return new SpotSet(byFrame, n, 0, 0, List.of(), List.of(), 0);
 	}
 
 	/**
@@ -120,23 +131,25 @@ public final class SpotSet {
 		final boolean firstPass, final double scale)
 	{
 		final TreeMap<Integer, List<double[]>> byFrame = new TreeMap<>();
+		final List<double[]> leftOut = new ArrayList<>();
 		int flagged = 0, early = 0;
 		for (final Localization s : spots) {
 			if (s.frame() < selection.startFrame()) {
 				early++;
 				continue;
 			}
+			final double x = (firstPass ? s.firstX() : s.x()) * scale, y = (firstPass ? s.firstY() : s.y()) * scale;
 			if (selection.dropFlagged() && s.isFlagged()) {
 				flagged++;
+				leftOut.add(new double[] { x, y, s.has(Flag.AT_BORDER) ? 1 : 0 });
 				continue;
 			}
-			byFrame.computeIfAbsent(s.frame(), k -> new ArrayList<>()).add(firstPass ? new double[] { s.firstX() *
-				scale, s.firstY() * scale } : new double[] { s.x() * scale, s.y() * scale });
+			byFrame.computeIfAbsent(s.frame(), k -> new ArrayList<>()).add(new double[] { x, y });
 		}
 		final List<String> flagColumns = new ArrayList<>();
 		if (selection.dropFlagged()) for (final Flag f : Flag.values())
 			if (f.isWarning()) flagColumns.add(FLAG_PREFIX + f.name());
-		return new SpotSet(byFrame, spots.size(), flagged, early, flagColumns);
+		return new SpotSet(byFrame, spots.size(), flagged, early, flagColumns, leftOut, 0);
 	}
 
 	/**
@@ -153,6 +166,8 @@ public final class SpotSet {
 			if (key.startsWith(FLAG_PREFIX) && isWarning(key.substring(FLAG_PREFIX.length()))) flagKeys.add(key);
 		Collections.sort(flagKeys);
 		final TreeMap<Integer, List<double[]>> byFrame = new TreeMap<>();
+		final List<double[]> leftOut = new ArrayList<>();
+		final double[] border = columns.get(BORDER_FLAG);
 		int flagged = 0, early = 0;
 		for (int i = 0; i < rows; i++) {
 			final double f = frame[i];
@@ -168,11 +183,13 @@ public final class SpotSet {
 			}
 			if (selection.dropFlagged() && isFlagged(columns, flagKeys, i)) {
 				flagged++;
+				leftOut.add(new double[] { x[i], y[i], border != null && Double.isFinite(border[i]) && border[i] != 0 ? 1
+					: 0 });
 				continue;
 			}
 			byFrame.computeIfAbsent((int) f, k -> new ArrayList<>()).add(new double[] { x[i], y[i] });
 		}
-		return new SpotSet(byFrame, rows, flagged, early, selection.dropFlagged() ? flagKeys : List.of());
+		return new SpotSet(byFrame, rows, flagged, early, selection.dropFlagged() ? flagKeys : List.of(), leftOut, 0);
 	}
 
 	private static double[] column(final Map<String, double[]> columns, final String key) {
@@ -237,6 +254,100 @@ public final class SpotSet {
 	public List<String> flagColumns() {
 		return flagColumns;
 	}
+
+	/**
+	 * @return the spots left out because they lie as close to the border as spots flagged there, though not
+	 *         flagged themselves ({@link #awayFromBorder})
+	 */
+	public int nearBorderLeftOut() {
+		return nearBorderLeftOut;
+	}
+
+	/**
+	 * The field of view inferred from every spot with a position, used or left out for a flag (so that spots left
+	 * out at the border still mark where the field ends), as {@link FieldOfView#inferred(double[], double[])}.
+	 *
+	 * @return the inferred field
+	 * @throws IllegalArgumentException for fewer than 2 such spots, or all on one line
+	 */
+	public FieldOfView inferredField() {
+		final double[] x = allX(), y = allY();
+		final double[] ax = Arrays.copyOf(x, x.length + flagged.size()), ay = Arrays.copyOf(y, y.length + flagged
+			.size());
+		for (int i = 0; i < flagged.size(); i++) {
+			ax[x.length + i] = flagged.get(i)[0];
+			ay[y.length + i] = flagged.get(i)[1];
+		}
+		return FieldOfView.inferred(ax, ay);
+	}
+
+	/**
+	 * The spots and field that describe one uniform population when spots flagged at the image's border were left
+	 * out. Left out, those spots thin the particles near the edge: the counts lose them, and unless the field
+	 * shrinks with them an ideal gas would give g below 1 at the reference's scale and above 1 after U's zero is
+	 * set. The border's reach is the deepest such spot's distance to the field's edge; every spot closer to the
+	 * edge than that is left out too, and the field shrinks by it on every side, so that the spots kept are as
+	 * dense at the new edge as in the middle.
+	 *
+	 * @param field the field the spots were found in
+	 * @return this set and {@code field} when no spot was left out at the border, or when one lies deeper in the
+	 *         field than a border band can ({@link #DEEPEST_BORDER} of its smaller side: the reach is NaN then); else
+	 *         the spots and field inside the border's reach
+	 * @throws IllegalArgumentException when the border's reach leaves no field
+	 */
+	public AwayFromBorder awayFromBorder(final FieldOfView field) {
+		double deepest = Double.NEGATIVE_INFINITY;
+		for (final double[] s : flagged)
+			if (s[2] != 0) deepest = Math.max(deepest, field.depth(s[0], s[1]));
+		final double reach = borderReach(field, deepest);
+		if (!(reach > 0)) return new AwayFromBorder(this, field, reach);
+		final FieldOfView inner = field.inset(reach);
+		final TreeMap<Integer, List<double[]>> byFrame = new TreeMap<>();
+		int near = 0;
+		for (int k = 0; k < frames.size(); k++) {
+			final double[][] f = frames.get(k);
+			final List<double[]> kept = new ArrayList<>();
+			for (int i = 0; i < f[0].length; i++)
+				if (inner.depth(f[0][i], f[1][i]) >= 0) kept.add(new double[] { f[0][i], f[1][i] });
+				else near++;
+			if (!kept.isEmpty()) byFrame.put(frameNumbers.get(k), kept);
+		}
+		return new AwayFromBorder(new SpotSet(byFrame, rows, flaggedLeftOut, earlyLeftOut, flagColumns, flagged,
+			nearBorderLeftOut + near), inner, reach);
+	}
+
+	/**
+	 * The rule of {@link #awayFromBorder}, for a front end that gathers the spots in parts.
+	 *
+	 * @param field the field the spots were found in
+	 * @param deepest the largest {@link FieldOfView#depth} of a spot left out for being cut by the border;
+	 *          negative infinity when there is none
+	 * @return how far to shrink the field on every side: 0 when no spot was left out at the border, NaN when one
+	 *         lies too deep in the field to mark its border ({@link #DEEPEST_BORDER} of its smaller side: a
+	 *         selection's border, or a table of other origin)
+	 */
+	public static double borderReach(final FieldOfView field, final double deepest) {
+		if (deepest == Double.NEGATIVE_INFINITY) return 0;
+		if (deepest > DEEPEST_BORDER * field.maxDistance()) return Double.NaN;
+		return Math.max(0, deepest);
+	}
+
+	/**
+	 * @return the spots left out for a warning flag, each {@code {x, y, 1 when flagged at the border else 0}}
+	 */
+	public List<double[]> flaggedPositions() {
+		return flagged;
+	}
+
+	/**
+	 * Spots and the field they are uniform in, when spots at the border were left out.
+	 *
+	 * @param spots the spots kept
+	 * @param field the field they fill
+	 * @param reach how far the field was shrunk on every side (0 when no spot was left out at the border, NaN
+	 *          when such spots lay too deep in the field to mark its border)
+	 */
+	public record AwayFromBorder(SpotSet spots, FieldOfView field, double reach) {}
 
 	/** @return x of every spot used, frame after frame */
 	public double[] allX() {

@@ -143,17 +143,32 @@ final class SparkPotential {
 			1 + columns.indexOf(SpotSet.FRAME))).longValue()).map(g -> frame(g._2, names, new SpotSet.Selection(startFrame, dropFlagged))).filter(f -> f != null)
 			.persist(StorageLevel.MEMORY_AND_DISK());
 		try {
-			final FieldOfView f = field != null ? field : inferred(frames);
+			final FieldOfView found = field != null ? field : inferred(frames);
+			// spots left out at the border: the field shrinks with them, as the command line's (SpotSet.awayFromBorder)
+			final double deepest = frames.map(xy -> {
+				double d = Double.NEGATIVE_INFINITY;
+				for (int i = 0; i < xy[2].length; i++)
+					if (xy[4][i] != 0) d = Math.max(d, found.depth(xy[2][i], xy[3][i]));
+				return d;
+			}).reduce(Math::max);
+			final double reach = SpotSet.borderReach(found, deepest);
+			final FieldOfView f = reach > 0 ? found.inset(reach) : found;
 			final int bins = PairCorrelation.bins(f, binWidth, rMax);
-			final Tuple2<long[], double[]> sums = frames.map(xy -> new Tuple2<>(PairCorrelation.framePairs(xy[0], xy[1],
-				binWidth, bins), new double[] { 0.5 * xy[0].length * (xy[0].length - 1.0), 1, xy[0].length })).reduce((a,
-					b) -> {
-						final long[] p = a._1.clone();
-						for (int k = 0; k < p.length; k++)
-							p[k] += b._1[k];
-						return new Tuple2<>(p, new double[] { a._2[0] + b._2[0], a._2[1] + b._2[1], a._2[2] + b._2[2] });
-					});
-			return PairCorrelation.fromCounts(sums._1, sums._2[0], (int) sums._2[1], (int) sums._2[2], f, binWidth);
+			final Tuple2<long[], double[]> sums = frames.map(all -> {
+				final double[][] xy = reach > 0 ? within(all, f) : all;
+				final int n = xy[0].length;
+				return new Tuple2<>(PairCorrelation.framePairs(xy[0], xy[1], binWidth, bins), new double[] { 0.5 * n * (n -
+					1.0), n > 0 ? 1 : 0, n, all[0].length - n });
+			}).reduce((a, b) -> {
+				final long[] p = a._1.clone();
+				for (int k = 0; k < p.length; k++)
+					p[k] += b._1[k];
+				return new Tuple2<>(p, new double[] { a._2[0] + b._2[0], a._2[1] + b._2[1], a._2[2] + b._2[2], a._2[3] +
+					b._2[3] });
+			});
+			if (sums._2[2] == 0) throw new InvalidInputException("no spot left in the table");
+			return PairCorrelation.fromCounts(sums._1, sums._2[0], (int) sums._2[1], (int) sums._2[2], f, binWidth, reach,
+				(int) sums._2[3]);
 		}
 		catch (final UnsupportedOperationException e) { // reduce of no frame
 			throw new InvalidInputException("no spot left in the table");
@@ -171,7 +186,24 @@ final class SparkPotential {
 		return all;
 	}
 
-	/** @return one frame's selected spots {x, y}, or null when none is left */
+	/** @return the frame's spots {x, y} inside the field */
+	private static double[][] within(final double[][] xy, final FieldOfView f) {
+		int n = 0;
+		for (int i = 0; i < xy[0].length; i++)
+			if (f.depth(xy[0][i], xy[1][i]) >= 0) n++;
+		final double[][] out = new double[2][n];
+		for (int i = 0, k = 0; i < xy[0].length; i++)
+			if (f.depth(xy[0][i], xy[1][i]) >= 0) {
+				out[0][k] = xy[0][i];
+				out[1][k++] = xy[1][i];
+			}
+		return out;
+	}
+
+	/**
+	 * @return one frame's selected spots {x, y} and its spots left out for a flag {x, y, 1 at the border else 0}, as
+	 *         five arrays; null when the frame has neither
+	 */
 	private static double[][] frame(final Iterable<Row> rows, final String[] names,
 		final SpotSet.Selection selection)
 	{
@@ -184,20 +216,32 @@ final class SparkPotential {
 				v[i] = list.get(i).isNullAt(c + 1) ? Double.NaN : list.get(i).getDouble(c + 1);
 			columns.put(names[c], v);
 		}
-		final List<double[][]> kept = SpotSet.fromColumns(columns, selection).frames();
-		return kept.isEmpty() ? null : kept.get(0);
+		final SpotSet set = SpotSet.fromColumns(columns, selection);
+		final List<double[]> flagged = set.flaggedPositions();
+		if (set.frames().isEmpty() && flagged.isEmpty()) return null;
+		final double[][] out = new double[5][];
+		out[0] = set.frames().isEmpty() ? new double[0] : set.frames().get(0)[0];
+		out[1] = set.frames().isEmpty() ? new double[0] : set.frames().get(0)[1];
+		for (int a = 0; a < 3; a++) {
+			out[2 + a] = new double[flagged.size()];
+			for (int i = 0; i < flagged.size(); i++)
+				out[2 + a][i] = flagged.get(i)[a];
+		}
+		return out;
 	}
 
 	private static FieldOfView inferred(final JavaRDD<double[][]> frames) {
 		final double[] e = frames.map(xy -> {
+			// every spot with a position, used or left out for a flag, as SpotSet.inferredField
 			final double[] r = { Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.POSITIVE_INFINITY,
-				Double.NEGATIVE_INFINITY, xy[0].length };
-			for (int i = 0; i < xy[0].length; i++) {
-				r[0] = Math.min(r[0], xy[0][i]);
-				r[1] = Math.max(r[1], xy[0][i]);
-				r[2] = Math.min(r[2], xy[1][i]);
-				r[3] = Math.max(r[3], xy[1][i]);
-			}
+				Double.NEGATIVE_INFINITY, xy[0].length + xy[2].length };
+			for (int part = 0; part < 4; part += 2)
+				for (int i = 0; i < xy[part].length; i++) {
+					r[0] = Math.min(r[0], xy[part][i]);
+					r[1] = Math.max(r[1], xy[part][i]);
+					r[2] = Math.min(r[2], xy[part + 1][i]);
+					r[3] = Math.max(r[3], xy[part + 1][i]);
+				}
 			return r;
 		}).reduce((a, b) -> new double[] { Math.min(a[0], b[0]), Math.max(a[1], b[1]), Math.min(a[2], b[2]), Math.max(
 			a[3], b[3]), a[4] + b[4] });

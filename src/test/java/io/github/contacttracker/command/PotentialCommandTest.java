@@ -150,4 +150,56 @@ class PotentialCommandTest extends WithContext {
 			"no open table titled 'no such table'"));
 		assertFalse(((ContactTrackerPotentialCommand) ok.getDelegateObject()).isCanceled());
 	}
+
+	/**
+	 * Track, then the Profile with its defaults (its suggestion replaces the spots in ImageJ's Results table), then
+	 * Pair Potential with its defaults: it reads the spots Contact Tracker found last, says so, and takes the
+	 * open image's real size as the field of view, not the spots' extent.
+	 */
+	@Test
+	void theDefaultsWorkRightAfterTheProfile() throws Exception {
+		context.service(org.scijava.prefs.PrefService.class).clearAll();
+		final ij.ImagePlus imp = Simulated.image();
+		final Module track = Simulated.run(context, ContactTrackerCommand.class, "imp", imp, "threshold", Simulated.TYPE
+			.threshold(), "r_out", Simulated.TYPE.rOut(), "overlay", false, "table", false);
+		assertNull(((ContactTrackerCommand) track.getDelegateObject()).getCancelReason());
+		final int spots = ((ResultsTable) track.getOutput("spots")).size();
+		assertEquals(2 * Simulated.FRAMES, spots);
+
+		final double[] p = Simulated.truth(0).get(0);
+		imp.setRoi(new ij.gui.PointRoi((int) Math.round(p[0]), (int) Math.round(p[1])));
+		final Module profile = Simulated.run(context, ContactTrackerProfileCommand.class, "imp", imp, "plot", false);
+		assertFalse(((org.scijava.Cancelable) profile).isCanceled(), () -> ((org.scijava.Cancelable) profile)
+			.getCancelReason());
+		assertEquals(-1, ResultsTable.getResultsTable().getColumnIndex("POSITION_X"), "the suggestion replaced the spots");
+
+		ij.WindowManager.setTempCurrentImage(imp);
+		try {
+			final Module m = Simulated.run(context, ContactTrackerPotentialCommand.class, "show", false);
+			assertNull(((ContactTrackerPotentialCommand) m.getDelegateObject()).getCancelReason());
+			final ResultsTable out = (ResultsTable) m.getOutput("potential");
+			// r_max half the image's smaller side in microns: the image's size, not the spots' extent
+			final double side = Math.min(imp.getWidth(), imp.getHeight()) * imp.getCalibration().pixelWidth;
+			assertEquals(side / 2 * (1 - 0.5 / ContactTrackerPotentialCommand.AUTO_BINS), out.getValue("R", out.size() -
+				1), 1e-9);
+			long pairs = 0;
+			for (int i = 0; i < out.size(); i++)
+				pairs += (long) out.getValue("PAIRS", i);
+			assertTrue(pairs <= Simulated.FRAMES, "one pair per frame at most: " + pairs);
+		}
+		finally {
+			ij.WindowManager.setTempCurrentImage(null);
+		}
+
+		// with no spots tracked in this session, the reason names what to do
+		final ResultsTable none = ResultsTable.getResultsTable();
+		none.reset();
+		none.incrementCounter();
+		none.addValue("THRESHOLD", 1);
+		SpotTables.forgetLastRun();
+		final String reason = ((ContactTrackerPotentialCommand) Simulated.run(context,
+			ContactTrackerPotentialCommand.class, "show", false).getDelegateObject()).getCancelReason();
+		assertTrue(reason.startsWith("the Results table holds no spots (no column POSITION_X): run Contact Tracker " +
+			"first"), reason);
+	}
 }

@@ -189,4 +189,84 @@ class PairCorrelationTest {
 		assertTrue(tooFar.contains("r_max 7 exceeds the smaller side") && tooFar.contains("6"), tooFar);
 		assertThrows(IllegalArgumentException.class, () -> FieldOfView.of(0, 3));
 	}
+
+	/**
+	 * An ideal gas whose spots near the border are flagged there, as the tracker flags particles whose active area
+	 * the border cuts (all within 4 units of an edge, half of those 4 to 6 units in) and left out: g = 1 within its
+	 * errors in every bin, with the field given and with it inferred, because the area shrinks with the counts.
+	 * Counting the same spots against the whole field gives g well above 1 (the density the reference assumes is
+	 * too low), which is what the shrinking corrects.
+	 */
+	@Test
+	void idealGasWithBorderSpotsLeftOutGivesGOfOne() {
+		final double w = 100, h = 80;
+		final SplittableRandom random = new SplittableRandom(40);
+		final List<Double> xs = new ArrayList<>(), ys = new ArrayList<>(), frames = new ArrayList<>(), border =
+			new ArrayList<>();
+		for (int f = 0; f < 300; f++)
+			for (int i = 0; i < 60; i++) {
+				final double x = random.nextDouble(w), y = random.nextDouble(h);
+				final double depth = Math.min(Math.min(x, w - x), Math.min(y, h - y));
+				xs.add(x);
+				ys.add(y);
+				frames.add((double) f);
+				border.add(depth < 4 || depth < 6 && random.nextBoolean() ? 1.0 : 0.0);
+			}
+		final java.util.Map<String, double[]> columns = new java.util.LinkedHashMap<>();
+		columns.put(SpotSet.X, xs.stream().mapToDouble(Double::doubleValue).toArray());
+		columns.put(SpotSet.Y, ys.stream().mapToDouble(Double::doubleValue).toArray());
+		columns.put(SpotSet.FRAME, frames.stream().mapToDouble(Double::doubleValue).toArray());
+		columns.put(SpotSet.BORDER_FLAG, border.stream().mapToDouble(Double::doubleValue).toArray());
+		final SpotSet set = SpotSet.fromColumns(columns, SpotSet.Selection.DEFAULT);
+		final long flagged = border.stream().filter(b -> b != 0).count();
+		assertEquals(flagged, set.flaggedLeftOut());
+
+		for (final FieldOfView field : List.of(FieldOfView.of(w, h), set.inferredField())) {
+			final PairCorrelation.Result r = PairCorrelation.compute(set, field, 1, 30);
+			// the border reaches as deep as the deepest flagged spot: just under 6
+			assertEquals(6, r.borderReach(), 0.1, "reach with " + field);
+			assertEquals(w - 2 * r.borderReach(), r.field().width(), 0.15);
+			assertEquals(h - 2 * r.borderReach(), r.field().height(), 0.15);
+			// every spot is used, flagged, or as near the border as flagged ones
+			assertEquals(xs.size(), r.spots() + set.flaggedLeftOut() + r.nearBorderLeftOut());
+			assertTrue(r.nearBorderLeftOut() > 0);
+			double chi2 = 0;
+			for (final PairCorrelation.Bin b : r.bins()) {
+				final double z = (b.pairs() - b.expected()) / Math.sqrt(b.expected());
+				assertTrue(Math.abs(z) < 4, field + ": bin at " + b.r() + ": g = " + b.g() + ", z = " + z);
+				chi2 += z * z;
+			}
+			assertTrue(chi2 / r.bins().size() < 1.6, field + ": chi2 per bin " + chi2 / r.bins().size());
+			// over all bins together: 1 within 1% (the total's own error is about 0.3%)
+			long pairs = 0;
+			double expected = 0;
+			for (final PairCorrelation.Bin b : r.bins()) {
+				pairs += b.pairs();
+				expected += b.expected();
+			}
+			assertEquals(1, pairs / expected, 0.01, field.toString());
+		}
+
+		// the spots kept, counted against the whole field: g far from 1, what the shrinking corrects
+		final SpotSet kept = SpotSet.fromColumns(columnsWithout(columns, SpotSet.BORDER_FLAG, border),
+			new SpotSet.Selection(0, false));
+		final PairCorrelation.Result whole = PairCorrelation.compute(kept, FieldOfView.of(w, h), 1, 30);
+		assertTrue(whole.bins().get(5).g() > 1.15, "whole-field g " + whole.bins().get(5).g());
+	}
+
+	/** @return the columns with the rows flagged in {@code flag} removed, and that column dropped */
+	private static java.util.Map<String, double[]> columnsWithout(final java.util.Map<String, double[]> columns,
+		final String flag, final List<Double> flags)
+	{
+		final java.util.Map<String, double[]> out = new java.util.LinkedHashMap<>();
+		for (final var e : columns.entrySet()) {
+			if (e.getKey().equals(flag)) continue;
+			final double[] v = e.getValue();
+			final double[] kept = new double[(int) flags.stream().filter(b -> b == 0).count()];
+			for (int i = 0, k = 0; i < v.length; i++)
+				if (flags.get(i) == 0) kept[k++] = v[i];
+			out.put(e.getKey(), kept);
+		}
+		return out;
+	}
 }
