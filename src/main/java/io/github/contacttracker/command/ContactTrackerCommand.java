@@ -23,14 +23,17 @@ package io.github.contacttracker.command;
 
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.pipeline.FrameSource;
+import io.github.contacttracker.pipeline.MeasuredSettings;
 import io.github.contacttracker.pipeline.Outputs;
 import io.github.contacttracker.pipeline.TrackingPipeline;
 import io.github.contacttracker.pipeline.TrackingResult;
 import io.github.contacttracker.settings.Setting;
 import io.github.contacttracker.settings.SettingValues;
 import io.github.contacttracker.settings.TrackingSettings;
+import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.Map;
+import java.util.Set;
 import java.awt.GraphicsEnvironment;
 import java.io.File;
 import java.io.IOException;
@@ -338,10 +341,11 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 	}
 
 	private void analyse() throws IOException {
-		final SettingValues settings = settings();
-		final TrackerParameters params = settings.parameters();
 		checkOwnInputs(true);
 		final ImagePlusFrames frames = ImagePlusFrames.of(imp, channel);
+		final String measured = measureWhatTheMacroLeftOut(frames);
+		final SettingValues settings = settings();
+		final TrackerParameters params = settings.parameters();
 		final Interval region = ImagePlusFrames.selection(imp);
 		final File csvFile = given(csv), xmlFile = given(trackmate_xml);
 		final Outputs outputs = new Outputs(csvFile == null ? null : csvFile.toPath(), xmlFile == null ? null : xmlFile
@@ -382,6 +386,7 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 		final List<String> lines = new java.util.ArrayList<>(result.summaryLines(imp.getTitle()));
 		lines.set(0, TITLE + ": " + lines.get(0));
 		if (region != null) lines.add(1, "  within the selection: " + ImagePlusFrames.describe(region));
+		if (measured != null) lines.add(1, measured);
 		final String unit = frames.calibration().unit();
 		lines.add("  positions, RADIUS, SIGMA in " + (unit == null || unit.isEmpty() ? "pixels" : unit) + "; r_out " +
 			"and areas in pixels");
@@ -395,6 +400,47 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 			status.showStatus(lines.get(0));
 		}
 		MacroFailure.succeeded();
+	}
+
+	/**
+	 * A macro that gives no threshold or no r_out gets what it leaves out of them, the diameter and (for small
+	 * particles) min_area measured on the first frame by the profile helper, as the command line's {@code track}
+	 * does ({@link MeasuredSettings}): the fixed defaults fit no particular movie. What the macro gives wins. The
+	 * inputs are set to the values used.
+	 *
+	 * @return the line saying what was measured, or null when nothing was (no macro, or every value given)
+	 */
+	private String measureWhatTheMacroLeftOut(final ImagePlusFrames frames) {
+		final String options = own.macroOptions();
+		if (options == null) return null;
+		final Set<Setting<?>> given = new HashSet<>();
+		for (final Setting<?> s : TrackingSettings.ALL)
+			if (ij.Macro.getValue(options, s.name(), null) != null) given.add(s);
+		if (given.contains(TrackingSettings.THRESHOLD) && given.contains(TrackingSettings.R_OUT)) return null;
+		final SettingValues before = settings();
+		final MeasuredSettings.Result r;
+		try {
+			r = MeasuredSettings.of(imp.getTitle(), frames.frame(0), imp.getBitDepth() != 32, before, given);
+		}
+		catch (final InvalidInputException e) {
+			throw new InvalidInputException("the macro gives no threshold and r_out, and they cannot be measured: " + e
+				.getMessage());
+		}
+		final SettingValues after = r.settings();
+		if (r.notice().isEmpty()) return null;
+		final StringBuilder b = new StringBuilder();
+		for (final Setting<?> s : TrackingSettings.ALL)
+			if (!String.valueOf(before.get(s)).equals(String.valueOf(after.get(s)))) {
+				b.append(' ').append(s.name()).append('=').append(after.get(s) instanceof Double d ? MeasuredSettings
+					.optionValue(d) : String.valueOf(after.get(s)));
+			}
+		threshold = after.get(TrackingSettings.THRESHOLD);
+		r_out = after.get(TrackingSettings.R_OUT);
+		diameter = after.diameter();
+		min_area = after.get(TrackingSettings.MIN_AREA);
+		particles = after.dark() ? TrackingSettings.DARK : particles;
+		return "  not given by the macro, measured on frame 1 by the profile helper:" + b + " (give them to use " +
+			"your own)";
 	}
 
 	/**

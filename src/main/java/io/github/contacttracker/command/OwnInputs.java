@@ -97,6 +97,11 @@ final class OwnInputs {
 		fallbacks.putIfAbsent(name, fallback);
 	}
 
+	/** @return the ImageJ macro options of this run, or null when no macro runs the command */
+	String macroOptions() {
+		return macroOptions;
+	}
+
 	/** @return the first problem of this run (a macro value that does not convert, else a refused input), or null */
 	String problem() {
 		if (macroProblem != null) return macroProblem;

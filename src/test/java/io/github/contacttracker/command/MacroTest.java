@@ -22,6 +22,7 @@
 package io.github.contacttracker.command;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -252,6 +253,38 @@ class MacroTest {
 		assertEquals(TrackerParameters.DEFAULT_MIN_AREA, FijiMacroBridge.last().getInput("min_area"),
 			"a key left out takes the documented default");
 		assertEquals(TrackingSettings.KINDS.defaultValue(), FijiMacroBridge.last().getInput("kinds"));
+	}
+
+	/**
+	 * A macro without values measures them on the first frame, as the command line's track does (the same
+	 * values), says so in the Log, and finds the particles: one spot per particle, where the fixed defaults fit no
+	 * movie.
+	 */
+	@Test
+	void aMacroWithoutValuesMeasuresThemAsTrackDoes() throws Exception {
+		final ImagePlus imp = Simulated.image();
+		final io.github.contacttracker.pipeline.MeasuredSettings.Result expected = io.github.contacttracker.pipeline
+			.MeasuredSettings.of(imp.getTitle(), ImagePlusFrames.of(imp, 0).frame(0), true,
+				io.github.contacttracker.settings.SettingValues.defaults(), java.util.Set.of());
+		WindowManager.setTempCurrentImage(imp);
+		final String printed;
+		try {
+			printed = macro("run('Contact Tracker', 'overlay=false');");
+		}
+		finally {
+			WindowManager.setTempCurrentImage(null);
+		}
+		final org.scijava.module.Module m = FijiMacroBridge.last();
+		assertFalse(((Cancelable) m).isCanceled(), () -> ((Cancelable) m).getCancelReason());
+		assertEquals(expected.settings().get(TrackingSettings.THRESHOLD), (Double) m.getInput("threshold"), 0);
+		assertEquals(expected.settings().get(TrackingSettings.R_OUT), (Double) m.getInput("r_out"), 0);
+		assertEquals(expected.settings().diameter(), (Double) m.getInput("diameter"), 0);
+		assertNotEquals(TrackingSettings.THRESHOLD.defaultValue(), (Double) m.getInput("threshold"));
+		assertTrue(printed.contains("not given by the macro, measured on frame 1 by the profile helper: threshold=" +
+			io.github.contacttracker.pipeline.MeasuredSettings.optionValue(expected.settings().get(
+				TrackingSettings.THRESHOLD))), printed);
+		// two particles per frame, each found once
+		assertEquals(2 * Simulated.FRAMES, ResultsTable.getResultsTable().size(), printed);
 	}
 
 	/** Profile's suggestion reaches the macro through the Results table: nResults 1, getResult of each column. */
