@@ -103,7 +103,7 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 
 	/** A new command (SciJava makes one per run). */
 	public ContactTrackerCommand() {
-		super("Finds the centres of particles, also where they touch, in every frame", DialogHelp.TRACKER_PAGE);
+		super(TITLE, "Finds the centres of particles, also where they touch, in every frame", DialogHelp.TRACKER_PAGE);
 	}
 
 
@@ -182,7 +182,9 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 		description = DialogHelp.TIP + "List the distances of spot pairs of the same frame closer than this in a second table")
 	private double pair_cutoff = 0;
 
-	@Parameter(label = "Show overlay")
+	@Parameter(label = "Show overlay", description = DialogHelp.TIP + "Marks each spot on the image: its final centre " +
+		"as a cross, its first-pass centre as a dot, a circle of its radius coloured by its flags; the legend is drawn " +
+		"on the image")
 	private boolean overlay = true;
 
 	@Parameter(label = "Show r_out circles and second areas",
@@ -190,7 +192,8 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 			"outline of its second active area (the pixels the final centre comes from)")
 	private boolean r_out_circles = false;
 
-	@Parameter(label = "Show table")
+	@Parameter(label = "Show table", description = DialogHelp.TIP + "Opens the spots table (one row per spot: FRAME, " +
+		"SLICE, position, radius, errors, flags), beside the image; the Results table gets what 'Results table gets' says")
 	private boolean table = true;
 
 	@Parameter(validater = "validateInputs", label = "Results table gets", choices = { RESULTS_SPOTS, RESULTS_PAIRS, RESULTS_NONE },
@@ -227,11 +230,9 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 	private Future<?> pendingPreview;
 
 	/** The dialog goes beside the image, not over it: its preview and its Measure button work on the image. */
-	private final DialogBesideImage besideImage = new DialogBesideImage(TITLE, () -> imp);
-
 	@Override
-	protected void initialized() {
-		besideImage.arm();
+	protected ImagePlus image() {
+		return imp;
 	}
 
 	@Override
@@ -594,11 +595,11 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 	}
 
 	/**
-	 * Cancels with a one-line reason, logged as an error (the Console in Fiji, stderr headless), and stops the
+	 * Cancels with a one-line reason, shown once ({@link #errorOnce}: stderr headless), and stops the
 	 * calling ImageJ macro, if any, as ImageJ's own commands do ({@link MacroFailure}).
 	 */
 	private void fail(final String reason) {
-		log.error(TITLE + ": " + reason);
+		errorOnce(TITLE + ": " + reason);
 		stop(reason);
 		final boolean redirected = MacroFailure.macroRunning() && IJ.redirectingErrorMessages();
 		if (MacroFailure.report(TITLE, imp == null ? null : imp.getTitle(), reason) && redirected && !RESULTS_NONE

@@ -71,7 +71,8 @@ public class ContactTrackerPotentialCommand extends OwnCommand {
 
 	/** A new command (SciJava makes one per run). */
 	public ContactTrackerPotentialCommand() {
-		super("g(r) and U(r)/kT from tracked spots: a CSV file, or an open table", DialogHelp.POTENTIAL_PAGE);
+		super(PLOT_TITLE, "g(r) and U(r)/kT from tracked spots: a CSV file, or an open table",
+			DialogHelp.POTENTIAL_PAGE);
 	}
 
 
@@ -143,13 +144,14 @@ public class ContactTrackerPotentialCommand extends OwnCommand {
 
 	@Override
 	public void run() {
+		besideImage.disarm(); // in case there was no dialog (a macro, a script)
 		try {
 			if (own.problem() != null) throw new InvalidInputException(own.problem());
 			analyse();
 			MacroFailure.succeeded();
 		}
 		catch (final InvalidInputException | IOException e) {
-			log.error(PLOT_TITLE + ": " + e.getMessage());
+			errorOnce(PLOT_TITLE + ": " + e.getMessage());
 			cancel(e.getMessage());
 			MacroFailure.report(PLOT_TITLE, null, e.getMessage());
 		}

@@ -65,7 +65,8 @@ public class ContactTrackerProfileCommand extends OwnCommand {
 
 	/** A new command (SciJava makes one per run). */
 	public ContactTrackerProfileCommand() {
-		super("First click on an isolated particle with the point tool: its profile suggests threshold and r_out", DialogHelp.PROFILE_PAGE);
+		super(PLOT_TITLE, "First click on an isolated particle with the point tool: its profile " +
+			"suggests threshold and r_out", DialogHelp.PROFILE_PAGE);
 	}
 
 
@@ -118,15 +119,22 @@ public class ContactTrackerProfileCommand extends OwnCommand {
 	@Parameter(label = "Profile", type = ItemIO.OUTPUT)
 	private Plot profile;
 
+	/** The dialog goes beside the image with the marked particle, not over it. */
+	@Override
+	protected ImagePlus image() {
+		return imp;
+	}
+
 	@Override
 	public void run() {
+		besideImage.disarm(); // in case there was no dialog (a macro, a script)
 		try {
 			if (own.problem() != null) throw new InvalidInputException(own.problem());
 			analyse();
 			MacroFailure.succeeded();
 		}
 		catch (final InvalidInputException e) {
-			log.error(PLOT_TITLE + ": " + e.getMessage());
+			errorOnce(PLOT_TITLE + ": " + e.getMessage());
 			cancel(e.getMessage());
 			MacroFailure.report(PLOT_TITLE, imp == null ? null : imp.getTitle(), e.getMessage());
 		}

@@ -22,6 +22,8 @@
 package io.github.contacttracker.command;
 
 import java.awt.AWTEvent;
+import java.awt.Component;
+import java.awt.Container;
 import java.awt.Dialog;
 import java.awt.Dimension;
 import java.awt.GraphicsConfiguration;
@@ -34,14 +36,17 @@ import java.awt.event.AWTEventListener;
 import java.awt.event.WindowEvent;
 import java.util.function.Supplier;
 
+import javax.swing.JScrollPane;
+
 import ij.ImagePlus;
 
 /**
- * Puts a command's dialog beside its image instead of over it. SciJava's Swing dialog (the input harvester's) is
+ * Sizes a command's dialog to its rows and puts it beside its image instead of over it. SciJava's Swing dialog (the input harvester's) is
  * modal and opens in the middle of the screen, where it covered the image that its Preview draws on and that its
  * "Measure from the image" button measures (seen in a real ImageJ2 + imagej-legacy 2.0.3). The command arms this
- * before its dialog exists (from its initializer); when the dialog of that title opens, it is moved beside the
- * image's window, on the side with room for it, and this disarms itself. No dialog (a macro, a script, headless):
+ * before its dialog exists (from its initializer); when the dialog of that title opens, it is sized to show every
+ * row without blank space ({@link #fitted}) and moved beside the image's window, on the side with room for it,
+ * and this disarms itself. No dialog (a macro, a script, headless):
  * {@link #disarm()} when the command runs.
  */
 final class DialogBesideImage implements AWTEventListener {
@@ -101,17 +106,69 @@ final class DialogBesideImage implements AWTEventListener {
 		disarm();
 		final ImagePlus imp = image.get();
 		final Window window = imp == null ? null : imp.getWindow();
-		if (window == null || !window.isShowing()) return;
-		final GraphicsConfiguration gc = window.getGraphicsConfiguration();
+		final boolean besideWindow = window != null && window.isShowing();
+		final Rectangle screen = usableScreen((besideWindow ? window : dialog).getGraphicsConfiguration());
+		final JScrollPane scroll = firstScrollPane(dialog);
+		if (scroll != null) {
+			// every row shown, no blank space: the dialog as large as its rows, as far as the screen allows
+			final Dimension size = fitted(dialog.getSize(), scroll.getViewport().getExtentSize(), scroll.getViewport()
+				.getView() == null ? scroll.getViewport().getExtentSize() : scroll.getViewport().getView()
+					.getPreferredSize(), screen);
+			if (!size.equals(dialog.getSize())) {
+				dialog.setSize(size);
+				dialog.validate();
+			}
+		}
+		if (!besideWindow) return;
+		final Rectangle at = beside(window.getBounds(), dialog.getSize(), screen);
+		if (at != null) dialog.setLocation(at.x, at.y);
+	}
+
+	/** @return the screen's bounds less its task bars */
+	private static Rectangle usableScreen(final GraphicsConfiguration gc) {
 		final Rectangle screen = gc.getBounds();
 		final Insets insets = Toolkit.getDefaultToolkit().getScreenInsets(gc);
 		screen.x += insets.left;
 		screen.y += insets.top;
 		screen.width -= insets.left + insets.right;
 		screen.height -= insets.top + insets.bottom;
-		final Rectangle at = beside(window.getBounds(), dialog.getSize(), screen);
-		if (at != null) dialog.setLocation(at.x, at.y);
+		return screen;
 	}
+
+	/** @return the first scroll pane in the dialog (the one the dialog's rows are in), or null */
+	private static JScrollPane firstScrollPane(final Container c) {
+		for (final Component child : c.getComponents()) {
+			if (child instanceof JScrollPane s) return s;
+			if (child instanceof Container inner) {
+				final JScrollPane s = firstScrollPane(inner);
+				if (s != null) return s;
+			}
+		}
+		return null;
+	}
+
+	/**
+	 * The size of a dialog whose rows lie in a scroll pane, grown or shrunk so that the pane shows all of its rows
+	 * and nothing more (the Threads row was hidden under a scroll with screen to spare; other dialogs carried
+	 * 200 px of blank space), kept within the screen. Not wider than now unless a row is cut.
+	 *
+	 * @param dialog the dialog's size
+	 * @param viewport the size the scroll pane shows
+	 * @param rows the size its rows need
+	 * @param screen the usable screen
+	 * @return the dialog's new size
+	 */
+	static Dimension fitted(final Dimension dialog, final Dimension viewport, final Dimension rows,
+		final Rectangle screen)
+	{
+		final int h = dialog.height + rows.height - viewport.height;
+		final int w = dialog.width + Math.max(0, rows.width - viewport.width);
+		return new Dimension(Math.min(w, screen.width), Math.max(Math.min(h, screen.height), Math.min(dialog.height,
+			MIN_HEIGHT)));
+	}
+
+	/** A dialog is never shrunk below this height (px): its buttons and a few rows. */
+	static final int MIN_HEIGHT = 160;
 
 	/**
 	 * Where a dialog goes beside an image's window: to its right if the dialog fits there on the screen, else to its

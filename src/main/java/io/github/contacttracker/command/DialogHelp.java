@@ -21,16 +21,18 @@
  */
 package io.github.contacttracker.command;
 
+import java.awt.GraphicsEnvironment;
 import java.io.IOException;
-import java.net.URL;
-
-import org.scijava.log.LogService;
-import org.scijava.platform.PlatformService;
+import java.nio.charset.StandardCharsets;
+import java.util.List;
 
 import ij.IJ;
+import ij.text.TextWindow;
 
 /**
- * Help on our dialogs: tooltips wrapped to a readable width, the manual's pages for the Help buttons.
+ * Help on our dialogs: tooltips wrapped to a readable width, and the Help buttons' pages of the manual, which
+ * ships inside the plugin's jar (the user documentation, under {@link #MANUAL}): a Help button shows its
+ * command's section in a text window, with no network and no address that may not exist.
  * <p>
  * SciJava's Swing dialog puts a parameter's description as the tooltip of its label, on one line however long:
  * up to about 1,200 px wide. Swing renders a tooltip that starts with {@code <html>} as HTML, and a paragraph of a
@@ -41,27 +43,65 @@ final class DialogHelp {
 	/** Prefix of every description: wraps the tooltip at about 320 px. */
 	static final String TIP = "<html><p width=320>";
 
-	/** The manual (the project's README). */
-	static final String MANUAL = "https://github.com/contact-tracker/contact-tracker";
-	/** The manual's pages (README sections) of the three commands. */
-	static final String TRACKER_PAGE = MANUAL + "#fiji", PROFILE_PAGE = MANUAL +
-		"#contact-tracker-profile-choosing-threshold-and-r_out", POTENTIAL_PAGE = MANUAL + "#pair-potentials";
+	/** Where the manual's pages lie in the jar (the documentation's Markdown files, as written). */
+	static final String MANUAL = "/io/github/contacttracker/manual/";
+
+	/**
+	 * One section of the manual.
+	 *
+	 * @param file the manual's file ({@code fiji.md})
+	 * @param heading the section's heading, as written after its {@code #}s
+	 */
+	record Page(String file, String heading) {
+
+		/** @return the section: from its heading to the next heading of the same or a higher level; null if absent */
+		String text() {
+			final java.io.InputStream in = DialogHelp.class.getResourceAsStream(MANUAL + file);
+			if (in == null) return null;
+			final List<String> lines;
+			try (in) {
+				lines = new String(in.readAllBytes(), StandardCharsets.UTF_8).lines().toList();
+			}
+			catch (final IOException e) {
+				return null;
+			}
+			int level = 0;
+			final StringBuilder b = new StringBuilder();
+			boolean fenced = false;
+			for (final String line : lines) {
+				if (line.startsWith("```")) fenced = !fenced;
+				final int hashes = fenced ? 0 : line.length() - line.replaceFirst("^#+ ", "").length() - 1;
+				if (level == 0) {
+					if (hashes > 0 && line.substring(hashes + 1).trim().equals(heading)) level = hashes;
+					else continue;
+				}
+				else if (hashes > 0 && hashes <= level) break;
+				b.append(line).append('\n');
+			}
+			return level == 0 ? null : b.toString();
+		}
+	}
+
+	/** The pages of the three commands. */
+	static final Page TRACKER_PAGE = new Page("fiji.md", "Contact Tracker"), PROFILE_PAGE = new Page("fiji.md",
+		"Contact Tracker Profile: choosing `threshold` and `r_out`"), POTENTIAL_PAGE = new Page("potentials.md",
+			"Pair potentials");
 
 	private DialogHelp() {}
 
 	/**
-	 * Opens a page of the manual in the web browser (a Help button's callback); says so in the Log, with the
-	 * address, when it cannot.
+	 * Shows a section of the manual in a text window (a Help button's callback); headless, or when the section is
+	 * missing, says in the Log where the manual is.
 	 */
-	static void open(final PlatformService platform, final LogService log, final String page) {
-		try {
-			if (platform == null) throw new IOException("no platform service");
-			platform.open(new URL(page));
+	static void open(final Page page) {
+		final String text = page.text();
+		if (text == null || GraphicsEnvironment.isHeadless()) {
+			IJ.log("Contact Tracker: the manual's section '" + page.heading() + "' is " + page.file() + " in the " +
+				"plugin's jar (" + MANUAL.substring(1) + page.file() + ")" + (text == null ? ", missing from this jar"
+					: ""));
+			return;
 		}
-		catch (final IOException e) {
-			IJ.log("Contact Tracker: the manual is at " + page + " (" + e.getMessage() + ")");
-			if (log != null) log.debug(e);
-		}
+		new TextWindow("Contact Tracker manual: " + page.heading().replace("`", ""), text, 640, 560);
 	}
 
 	/** @return a description without the {@link #TIP} prefix */

@@ -26,7 +26,6 @@ import org.scijava.command.ContextCommand;
 import org.scijava.event.EventService;
 import org.scijava.log.LogService;
 import org.scijava.module.ModuleService;
-import org.scijava.platform.PlatformService;
 import org.scijava.plugin.Parameter;
 import org.scijava.widget.Button;
 
@@ -46,11 +45,8 @@ abstract class OwnCommand extends ContextCommand {
 	private String header;
 
 	@Parameter(label = "Help", callback = "openManual", persist = false, required = false,
-		description = DialogHelp.TIP + "Opens the manual's page on this command in the web browser")
+		description = DialogHelp.TIP + "Shows the manual's section on this command (it comes with the plugin)")
 	private Button help;
-
-	@Parameter(required = false)
-	private PlatformService platform;
 
 	@Parameter(required = false)
 	private EventService events;
@@ -61,15 +57,25 @@ abstract class OwnCommand extends ContextCommand {
 	/** This run's checks: refused values, a macro's values and left-out keys. */
 	protected final OwnInputs own = new OwnInputs(this);
 
-	private final String page;
+	/** The dialog sized to its rows and beside the command's image, not over it. */
+	protected final DialogBesideImage besideImage;
+
+	private final DialogHelp.Page page;
 
 	/**
+	 * @param title the dialog's title (the command's label)
 	 * @param header what the command does, one line (plain text)
 	 * @param page the manual's page on it ({@link DialogHelp})
 	 */
-	OwnCommand(final String header, final String page) {
+	OwnCommand(final String title, final String header, final DialogHelp.Page page) {
 		this.header = "<html><b>" + header + "</b></html>";
 		this.page = page;
+		this.besideImage = new DialogBesideImage(title, this::image);
+	}
+
+	/** @return the command's image, beside which its dialog goes (null: none, the dialog is only sized) */
+	protected ij.ImagePlus image() {
+		return null;
 	}
 
 	/**
@@ -78,16 +84,23 @@ abstract class OwnCommand extends ContextCommand {
 	 */
 	private void macroInputs() {
 		own.start(events, modules);
-		initialized();
+		besideImage.arm();
 	}
 
-	/** Called by the initializer, before SciJava fills in the inputs and shows the dialog (if any). */
-	protected void initialized() {
-		// nothing by default
+	/**
+	 * Reports a run's failure where nothing else does: headless, to the log (standard error). With a screen the
+	 * cancel reason is already shown in a dialog (a macro's in ImageJ's Macro Error, {@link MacroFailure}): the
+	 * Console opening over it would show the same line a second time.
+	 *
+	 * @param line the command's title and the one-line reason
+	 */
+	protected void errorOnce(final String line) {
+		if (java.awt.GraphicsEnvironment.isHeadless()) log.error(line);
+		else log.debug(line);
 	}
 
 	/** The Help button: the manual's page on this command. */
 	private void openManual() {
-		DialogHelp.open(platform, log, page);
+		DialogHelp.open(page);
 	}
 }

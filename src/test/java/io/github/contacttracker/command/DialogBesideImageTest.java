@@ -84,4 +84,26 @@ class DialogBesideImageTest {
 		assertFalse(d.armed());
 		d.disarm();
 	}
+
+	/** The rows hidden under a scroll with screen to spare: the dialog grows until every row shows. */
+	@Test
+	void aDialogGrowsToShowEveryRow() {
+		assertEquals(new Dimension(623, 737), DialogBesideImage.fitted(new Dimension(623, 637), new Dimension(600, 500),
+			new Dimension(600, 600), SCREEN));
+		// not beyond the screen
+		assertEquals(SCREEN.height, DialogBesideImage.fitted(new Dimension(623, 637), new Dimension(600, 500),
+			new Dimension(600, 1600), SCREEN).height);
+		// a row cut on the right widens it
+		assertEquals(643, DialogBesideImage.fitted(new Dimension(623, 637), new Dimension(600, 500), new Dimension(620,
+			500), SCREEN).width);
+	}
+
+	/** 200 px of blank space below the rows: the dialog shrinks to them, not below a usable height. */
+	@Test
+	void aDialogShrinksToItsRows() {
+		assertEquals(new Dimension(623, 437), DialogBesideImage.fitted(new Dimension(623, 637), new Dimension(600, 500),
+			new Dimension(580, 300), SCREEN));
+		assertEquals(DialogBesideImage.MIN_HEIGHT, DialogBesideImage.fitted(new Dimension(623, 637), new Dimension(600,
+			500), new Dimension(580, 10), SCREEN).height);
+	}
 }

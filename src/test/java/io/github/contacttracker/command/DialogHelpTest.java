@@ -23,6 +23,7 @@ package io.github.contacttracker.command;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
@@ -122,23 +123,28 @@ class DialogHelpTest {
 		}
 	}
 
-	/** The Help buttons' pages are sections of the README that exist (GitHub's heading anchors). */
+	/**
+	 * The Help buttons' pages are sections of the manual bundled in the jar (the documentation's own files), each
+	 * found from its heading up to the next of its level.
+	 */
 	@Test
-	void helpPagesExistInTheManual() throws Exception {
-		final Set<String> anchors = new HashSet<>();
-		for (final String line : Files.readAllLines(Path.of(System.getProperty("basedir", ".")).resolve("README.md")))
-			if (line.startsWith("#")) {
-				final String slug = line.replaceFirst("^#+\\s*", "").toLowerCase(Locale.ROOT).replaceAll("[^a-z0-9 _-]", "")
-					.replace(' ', '-');
-				String a = slug;
-				for (int k = 1; anchors.contains(a); k++)
-					a = slug + "-" + k;
-				anchors.add(a);
-			}
-		for (final String page : List.of(DialogHelp.TRACKER_PAGE, DialogHelp.PROFILE_PAGE, DialogHelp.POTENTIAL_PAGE)) {
-			assertTrue(page.startsWith(DialogHelp.MANUAL + "#"), page);
-			assertTrue(anchors.contains(page.substring(page.indexOf('#') + 1)), page + " not in " + anchors);
+	void helpPagesAreSectionsOfTheBundledManual() throws Exception {
+		for (final DialogHelp.Page page : List.of(DialogHelp.TRACKER_PAGE, DialogHelp.PROFILE_PAGE,
+			DialogHelp.POTENTIAL_PAGE))
+		{
+			final String text = page.text();
+			assertNotNull(text, page.toString());
+			assertTrue(text.startsWith("#") && text.lines().findFirst().get().endsWith(page.heading()), text);
+			assertTrue(text.lines().count() > 20, page + ": " + text.lines().count() + " lines");
+			// the same as the documentation's file, from the heading on
+			final String doc = Files.readString(Path.of(System.getProperty("basedir", ".")).resolve("src/site/markdown")
+				.resolve(page.file()));
+			assertTrue(doc.contains(text), page.toString());
 		}
+		// the tracker's section ends where the Profile's begins (same level)
+		assertTrue(!DialogHelp.TRACKER_PAGE.text().contains("## Contact Tracker Profile"));
+		assertTrue(DialogHelp.TRACKER_PAGE.text().contains("### The overlay"));
+		assertNull(new DialogHelp.Page("fiji.md", "No such section").text());
 		for (final Class<? extends Command> c : COMMANDS)
 			assertTrue(info(c).getInput("help") != null);
 		for (final Object command : List.of(new ContactTrackerCommand(), new ContactTrackerPotentialCommand()))
