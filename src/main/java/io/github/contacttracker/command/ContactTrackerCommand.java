@@ -73,6 +73,7 @@ import io.github.contacttracker.core.track.FrameResult;
 import io.github.contacttracker.io.ImagePlusFrames;
 import io.github.contacttracker.io.ImageSource;
 import io.github.contacttracker.io.ShownFrameProfile;
+import io.github.contacttracker.io.WindowsBeside;
 
 /**
  * <i>Plugins &gt; Tracking &gt; Contact Tracker</i>: localizes the particles of every frame of the image with the
@@ -378,8 +379,14 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 			default -> null;
 		};
 		if (table && !GraphicsEnvironment.isHeadless()) {
+			// beside the image and the dialog, not over them
 			spotTable.show();
-			if (pairTable != null) pairTable.show();
+			final java.awt.Window spotWindow = WindowManager.getWindow(spotTable.getTitle());
+			WindowsBeside.move(spotWindow, imp);
+			if (pairTable != null) {
+				pairTable.show();
+				WindowsBeside.move(WindowManager.getWindow(pairTable.getTitle()), imp, spotWindow);
+			}
 			// refresh an open Results window; none is opened, the named tables show the same
 			if (system != null && WindowManager.getWindow("Results") != null) system.show("Results");
 		}
@@ -395,7 +402,7 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 		final String summary = String.join("\n", lines);
 		log.info(summary);
 		// the Log window (standard output headless): where ImageJ users and batch macros see results
-		IJ.log(summary);
+		WindowsBeside.log(summary, imp);
 		if (status != null) {
 			status.showProgress(count, count);
 			status.showStatus(lines.get(0));
@@ -554,7 +561,7 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 		}
 		catch (final InvalidInputException e) {
 			final String message = TITLE + ": cannot measure from the image: " + e.getMessage();
-			IJ.log(message);
+			WindowsBeside.log(message, imp);
 			if (status != null) status.showStatus(message);
 			return;
 		}
@@ -563,7 +570,7 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 		r_out = p.rOut();
 		diameter = p.diameter();
 		if (p.smallParticles()) min_area = Math.min(min_area, p.minArea());
-		IJ.log(p.logText(TITLE + ": measured"));
+		WindowsBeside.log(p.logText(TITLE + ": measured"), imp);
 		if (status != null) status.showStatus(TITLE + ": measured " + p.status());
 		preview(); // the dialog previews its values as they change; these changed without an edit
 	}

@@ -41,6 +41,7 @@ import ij.gui.Plot;
 import ij.measure.ResultsTable;
 import io.github.contacttracker.io.PotentialPlots;
 import io.github.contacttracker.io.SpotTableCsv;
+import io.github.contacttracker.io.WindowsBeside;
 import io.github.contacttracker.potential.FieldOfView;
 import io.github.contacttracker.potential.PairCorrelation;
 import io.github.contacttracker.potential.PotentialReport;
@@ -250,11 +251,13 @@ public class ContactTrackerPotentialCommand extends OwnCommand {
 		if (warning != null) b.append("\n  warning: ").append(warning);
 		if (bin == 0 || r_max == 0) b.append(String.format(java.util.Locale.ROOT, "%n  bin %s, r_max %s (chosen from " +
 			"the field of view)", num(width), num(rMax)));
-		IJ.log(b.toString());
+		WindowsBeside.log(b.toString(), null);
 		if (results) PotentialColumns.fill(ResultsTable.getResultsTable(), r);
 		if (show && !GraphicsEnvironment.isHeadless()) {
+			// the table and the plot beside each other, not one over the other
 			((TitledResultsTable) potential).show();
-			plot.show();
+			final java.awt.Window tableWindow = WindowManager.getWindow(potential.getTitle());
+			WindowsBeside.move(plot.show(), null, tableWindow);
 		}
 	}
 

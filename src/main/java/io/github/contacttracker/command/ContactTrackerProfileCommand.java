@@ -45,6 +45,7 @@ import io.github.contacttracker.core.Numbers;
 import io.github.contacttracker.io.ProfilePlots;
 import io.github.contacttracker.io.ProfileReport;
 import io.github.contacttracker.io.ShownFrameProfile;
+import io.github.contacttracker.io.WindowsBeside;
 
 /**
  * <i>Plugins &gt; Tracking &gt; Contact Tracker Profile</i>: the parameter helper. The user marks an isolated
@@ -165,7 +166,7 @@ public class ContactTrackerProfileCommand extends OwnCommand {
 		profile = ProfilePlots.plot(r, PLOT_TITLE + ": " + imp.getTitle(), suggested_threshold, suggested_r_out);
 		report(p, point);
 		if (results) toResultsTable(p);
-		if (plot && !GraphicsEnvironment.isHeadless()) profile.show();
+		if (plot && !GraphicsEnvironment.isHeadless()) WindowsBeside.move(profile.show(), imp);
 	}
 
 	/** @return the marked point in pixel units, TrackMate's convention (pixel (0,0)'s centre at 0,0) */
@@ -195,7 +196,7 @@ public class ContactTrackerProfileCommand extends OwnCommand {
 			b.append(ShownFrameProfile.wrap(line, ShownFrameProfile.LOG_WIDTH, "    ")).append('\n');
 		b.append(String.format(Locale.ROOT, "  macro: run(\"Contact Tracker\", \"threshold=%s r_out=%.0f diameter=%s\");",
 			Numbers.fmt(suggested_threshold, 3), suggested_r_out, Numbers.fmt(p.diameter(), 3)));
-		IJ.log(b.toString());
+		WindowsBeside.log(b.toString(), imp);
 	}
 
 	/** One row in ImageJ's Results table: what a macro reads with {@code getResult("THRESHOLD", 0)}. */

@@ -28,7 +28,6 @@ import java.awt.Dialog;
 import java.awt.Dimension;
 import java.awt.GraphicsConfiguration;
 import java.awt.GraphicsEnvironment;
-import java.awt.Insets;
 import java.awt.Rectangle;
 import java.awt.Toolkit;
 import java.awt.Window;
@@ -39,6 +38,7 @@ import java.util.function.Supplier;
 import javax.swing.JScrollPane;
 
 import ij.ImagePlus;
+import io.github.contacttracker.io.WindowsBeside;
 
 /**
  * Sizes a command's dialog to its rows and puts it beside its image instead of over it. SciJava's Swing dialog (the input harvester's) is
@@ -107,7 +107,7 @@ final class DialogBesideImage implements AWTEventListener {
 		final ImagePlus imp = image.get();
 		final Window window = imp == null ? null : imp.getWindow();
 		final boolean besideWindow = window != null && window.isShowing();
-		final Rectangle screen = usableScreen((besideWindow ? window : dialog).getGraphicsConfiguration());
+		final Rectangle screen = WindowsBeside.usableScreen((besideWindow ? window : dialog).getGraphicsConfiguration());
 		final JScrollPane scroll = firstScrollPane(dialog);
 		if (scroll != null) {
 			// every row shown, no blank space: the dialog as large as its rows, as far as the screen allows
@@ -122,17 +122,6 @@ final class DialogBesideImage implements AWTEventListener {
 		if (!besideWindow) return;
 		final Rectangle at = beside(window.getBounds(), dialog.getSize(), screen);
 		if (at != null) dialog.setLocation(at.x, at.y);
-	}
-
-	/** @return the screen's bounds less its task bars */
-	private static Rectangle usableScreen(final GraphicsConfiguration gc) {
-		final Rectangle screen = gc.getBounds();
-		final Insets insets = Toolkit.getDefaultToolkit().getScreenInsets(gc);
-		screen.x += insets.left;
-		screen.y += insets.top;
-		screen.width -= insets.left + insets.right;
-		screen.height -= insets.top + insets.bottom;
-		return screen;
 	}
 
 	/** @return the first scroll pane in the dialog (the one the dialog's rows are in), or null */

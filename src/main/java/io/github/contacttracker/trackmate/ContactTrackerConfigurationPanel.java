@@ -64,6 +64,7 @@ import fiji.plugin.trackmate.util.DetectionPreview;
 import ij.ImagePlus;
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.io.ShownFrameProfile;
+import io.github.contacttracker.io.WindowsBeside;
 
 /**
  * TrackMate's configuration panel for {@link ContactTrackerDetectorFactory}, laid out like TrackMate's own
@@ -344,7 +345,8 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 		}
 		catch (final InvalidInputException e) {
 			return () -> {
-				ij.IJ.log(ContactTrackerDetectorFactory.SHORT_NAME + ": cannot measure from the image: " + e.getMessage());
+				WindowsBeside.log(ContactTrackerDetectorFactory.SHORT_NAME + ": cannot measure from the image: " + e
+					.getMessage(), imp, javax.swing.SwingUtilities.getWindowAncestor(this));
 				return showMessage("Not measured: " + e.getMessage());
 			};
 		}
@@ -355,7 +357,9 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 			fields.get(TrackingSettings.DIAMETER).show(p.diameter());
 			if (p.smallParticles()) fields.get(TrackingSettings.MIN_AREA).show(Math.min((Integer) fields.get(
 				TrackingSettings.MIN_AREA).value(), p.minArea()));
-			ij.IJ.log(p.logText(ContactTrackerDetectorFactory.SHORT_NAME + ": measured"));
+			// beside TrackMate's wizard and the image, not over the wizard's Preview and Next
+			WindowsBeside.log(p.logText(ContactTrackerDetectorFactory.SHORT_NAME + ": measured"), imp, javax.swing
+				.SwingUtilities.getWindowAncestor(this));
 			return showMessage("Measured " + p.status());
 		};
 	}
