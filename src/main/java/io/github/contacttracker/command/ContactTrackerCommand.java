@@ -387,6 +387,10 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 				pairTable.show();
 				WindowsBeside.move(WindowManager.getWindow(pairTable.getTitle()), imp, spotWindow);
 			}
+		}
+		if (overlay && !GraphicsEnvironment.isHeadless()) OverlayLegend.show(imp, r_out_circles, table ? WindowManager
+			.getWindow(spotTable.getTitle()) : null);
+		if (table && !GraphicsEnvironment.isHeadless()) {
 			// refresh an open Results window; none is opened, the named tables show the same
 			if (system != null && WindowManager.getWindow("Results") != null) system.show("Results");
 		}

@@ -47,11 +47,12 @@ import io.github.contacttracker.io.ShownFrameProfile;
 /**
  * The ROIs Contact Tracker draws on an image: per spot, the particle's outline (a circle of the spot's
  * {@code RADIUS} around its centre: cyan, or thicker in its flag's colour when the spot is flagged,
- * {@link #flagColor}), the final centre (red cross) and, drawn over it, the first-pass centre (yellow dot). For
+ * {@link #flagColor}), the first-pass centre (yellow dot) and, drawn over it, the final centre (red cross). For
  * diagnostics, on request, the {@code r_out} disc around the first-pass centre (grey-blue) and the second active
  * area's outline (green, 1.5 px): they showed how the method works, but a clipped crescent at contact read as a
  * failed detection and overlapping large discs cluttered the image. The centres' colours are {@link OverlayPng}'s.
- * Each ROI sits on its frame; {@link #legend} says what the colours mean.
+ * Each ROI sits on its frame; {@link #legend} says what the colours mean, in the Log and in a legend window
+ * ({@link OverlayLegend}).
  * <p>
  * Coordinates: spots are in TrackMate's convention (pixel (0,0)'s centre at 0,0); ImageJ puts pixel (0,0)'s
  * centre at 0.5,0.5, so centres and discs are drawn at {@code position + 0.5}. The outline follows pixel edges.
@@ -131,6 +132,14 @@ public final class SpotOverlay {
 		return OverlayPng.DISC;
 	}
 
+	/** @return the warning flags in the order their colour wins, each with its colour */
+	static Map<Flag, Color> flagColors() {
+		final Map<Flag, Color> out = new java.util.LinkedHashMap<>();
+		for (final Flag f : FLAG_ORDER)
+			out.put(f, FLAG_COLORS.get(f));
+		return out;
+	}
+
 	/**
 	 * @param diagnostics whether the r_out discs and second areas are drawn
 	 * @return short lines for the Log: what each colour means
@@ -205,16 +214,17 @@ public final class SpotOverlay {
 					add(rois, outline, Kind.SECOND_AREA, id, name + " " + Kind.SECOND_AREA.label(), s, placer);
 				}
 
+				// the dot before the cross, so that the result, the cross, is drawn on top (the dot hid it at 100%);
+				// where the two centres are less than a pixel apart the dot shows between the cross's arms
+				final PointRoi first = new PointRoi(s.firstX() + 0.5, s.firstY() + 0.5);
+				first.setPointType(PointRoi.DOT);
+				first.setSize(1); // small: the cross's centre stays visible over it
+				add(rois, first, Kind.FIRST_PASS, id, name + " " + Kind.FIRST_PASS.label(), s, placer);
+
 				final PointRoi last = new PointRoi(s.x() + 0.5, s.y() + 0.5);
 				last.setPointType(PointRoi.CROSS);
 				last.setSize(3); // large
 				add(rois, last, Kind.FINAL, id, name + " " + Kind.FINAL.label() + flags, s, placer);
-
-				// after the cross, so that it is drawn on top: the two centres are often less than a pixel apart
-				final PointRoi first = new PointRoi(s.firstX() + 0.5, s.firstY() + 0.5);
-				first.setPointType(PointRoi.DOT);
-				first.setSize(2); // medium: a small dot vanished under the cross
-				add(rois, first, Kind.FIRST_PASS, id, name + " " + Kind.FIRST_PASS.label(), s, placer);
 			}
 		}
 		return rois;

@@ -36,7 +36,8 @@ import io.github.contacttracker.potential.FieldOfView;
  * The ImageJ results tables of Contact Tracker. The spots table has the columns of the command line's CSV
  * ({@link SpotColumn}) with the same values, one row per spot, the row index being the spot's ID; positions are in
  * calibrated units. Its columns are ordered for a reader ({@link #DISPLAY_ORDER}: position, its error and the
- * flags first); the CSV keeps TrackMate's key order, which TrackMate's importer expects.
+ * flags first), with the 1-based {@link #SLICE} beside the 0-based {@code FRAME}; the CSV keeps TrackMate's key
+ * order, which TrackMate's importer expects.
  * <p>
  * The same content can be written into ImageJ's system results table ({@link #toSystemTable}), which a macro
  * reads with {@code nResults} and {@code getResult}.
@@ -45,6 +46,11 @@ public final class SpotTables {
 
 	/** Title of the spots table, followed by {@code ": "} and the image's title: one table per image. */
 	public static final String SPOTS_TITLE = "Contact Tracker spots";
+	/**
+	 * The frame counted from 1, beside TrackMate's 0-based {@code FRAME}: what ImageJ's slider shows (1/30 for
+	 * {@code FRAME} 0).
+	 */
+	public static final String SLICE = "SLICE";
 	/** The readable flags column: the warning flags' names, "-" for none (the 0/1 columns stay for macros). */
 	public static final String FLAGS = "FLAGS";
 	/** Title of the pair-distance table. */
@@ -167,12 +173,17 @@ public final class SpotTables {
 			rt.incrementCounter();
 			for (final SpotColumn c : DISPLAY_ORDER) {
 				rt.addValue(c.key(), c.value(spots.get(id), id, cal));
+				if (c == SpotColumn.FRAME) rt.addValue(SLICE, spots.get(id).frame() + 1);
 				if (c == FLAGS_AFTER) rt.addValue(FLAGS, flagWords(spots.get(id)));
 			}
 		}
 		final List<String> keys = new ArrayList<>(), integers = new ArrayList<>();
 		for (final SpotColumn c : DISPLAY_ORDER) {
 			keys.add(c.key());
+			if (c == SpotColumn.FRAME) {
+				keys.add(SLICE);
+				integers.add(SLICE);
+			}
 			if (c == FLAGS_AFTER) keys.add(FLAGS);
 			if (c.isInteger()) integers.add(c.key());
 		}

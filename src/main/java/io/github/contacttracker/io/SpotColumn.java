@@ -26,7 +26,10 @@ import io.github.contacttracker.core.Localization;
 
 /**
  * The columns of every spot table we write (CSV, ImageJ results table, TrackMate XML features), in order:
- * TrackMate's own keys first, then ours. One definition serves all outputs so they cannot drift apart.
+ * TrackMate's own keys first, then ours. One definition serves all outputs so they cannot drift apart. The short
+ * names head TrackMate's spot table, as its own do ("Mean ch1", "Circ."): words a person reads, with the unit in
+ * the name only where TrackMate's dimension gives none (pixel counts); lengths and positions take TrackMate's
+ * dimensions, so its table shows the image's unit under them.
  */
 public enum SpotColumn {
 	ID("ID", "Spot ID", "ID", Dimension.NONE, true),
@@ -38,22 +41,22 @@ public enum SpotColumn {
 	RADIUS("RADIUS", "Radius", "R", Dimension.LENGTH, false),
 	QUALITY("QUALITY", "Quality", "Quality", Dimension.QUALITY, false),
 	VISIBILITY("VISIBILITY", "Visibility", "Visibility", Dimension.NONE, true),
-	FIRST_PASS_X("FIRST_PASS_X", "First-pass X", "X1", Dimension.POSITION, false),
-	FIRST_PASS_Y("FIRST_PASS_Y", "First-pass Y", "Y1", Dimension.POSITION, false),
+	FIRST_PASS_X("FIRST_PASS_X", "First-pass X", "1st-pass X", Dimension.POSITION, false),
+	FIRST_PASS_Y("FIRST_PASS_Y", "First-pass Y", "1st-pass Y", Dimension.POSITION, false),
 	// "SE", not "dX": TrackMate's table shows short names, and dX reads as a displacement
 	SIGMA_X("SIGMA_X", "Std. error X", "SE X", Dimension.LENGTH, false),
 	SIGMA_Y("SIGMA_Y", "Std. error Y", "SE Y", Dimension.LENGTH, false),
-	ACTIVE_AREA("ACTIVE_AREA", "Active area (px)", "A", Dimension.NONE, true),
-	ACTIVE_RADIUS("ACTIVE_RADIUS", "Active-area radius", "Ra", Dimension.LENGTH, false),
-	SECOND_AREA("SECOND_AREA", "Second active area (px)", "A2", Dimension.NONE, true),
+	ACTIVE_AREA("ACTIVE_AREA", "Active area (px)", "Area (px)", Dimension.NONE, true),
+	ACTIVE_RADIUS("ACTIVE_RADIUS", "Active-area radius", "Area radius", Dimension.LENGTH, false),
+	SECOND_AREA("SECOND_AREA", "Second active area (px)", "2nd area (px)", Dimension.NONE, true),
 	ITERATIONS("ITERATIONS", "Solves", "Solves", Dimension.NONE, true),
-	FLAG_SECOND_PASS("FLAG_SECOND_PASS", "Second pass applied", "2nd", Dimension.NONE, true),
-	FLAG_FELL_BACK("FLAG_FELL_BACK", "Fell back to first pass", "Fallback", Dimension.NONE, true),
-	FLAG_DEGENERATE("FLAG_DEGENERATE", "Degenerate system", "Degen", Dimension.NONE, true),
-	FLAG_AT_BORDER("FLAG_AT_BORDER", "Touches border", "Border", Dimension.NONE, true),
+	FLAG_SECOND_PASS("FLAG_SECOND_PASS", "Second pass applied", "2nd pass", Dimension.NONE, true),
+	FLAG_FELL_BACK("FLAG_FELL_BACK", "Fell back to first pass", "Fell back", Dimension.NONE, true),
+	FLAG_DEGENERATE("FLAG_DEGENERATE", "Degenerate system", "Degenerate", Dimension.NONE, true),
+	FLAG_AT_BORDER("FLAG_AT_BORDER", "Touches border", "At border", Dimension.NONE, true),
 	FLAG_MERGED("FLAG_MERGED", "Suspected merge", "Merged", Dimension.NONE, true),
-	FLAG_NOT_CONVERGED("FLAG_NOT_CONVERGED", "Not converged", "NoConv", Dimension.NONE, true),
-	FLAG_UNMODELLED_NEIGHBOUR("FLAG_UNMODELLED_NEIGHBOUR", "Neighbour not modelled", "Unmod", Dimension.NONE, true),
+	FLAG_NOT_CONVERGED("FLAG_NOT_CONVERGED", "Not converged", "Not conv.", Dimension.NONE, true),
+	FLAG_UNMODELLED_NEIGHBOUR("FLAG_UNMODELLED_NEIGHBOUR", "Neighbour not modelled", "Unmodelled", Dimension.NONE, true),
 	// last, so that the columns before keep their places in files written before kinds
 	KIND("KIND", "Particle kind", "Kind", Dimension.NONE, true);
 

@@ -84,7 +84,7 @@ public class ContactTrackerSpotFeatures<T extends RealType<T> & NativeType<T>> i
 				features.add(px);
 				final String axis = px.equals(SIGMA_X_MPX) ? "X" : "Y";
 				NAMES.put(px, "Std. error " + axis + " (1/1000 px)");
-				SHORT_NAMES.put(px, "SE " + axis + " mpx");
+				SHORT_NAMES.put(px, "SE " + axis + " (px/1000)");
 				DIMENSIONS.put(px, Dimension.NONE);
 				IS_INT.put(px, false);
 			}

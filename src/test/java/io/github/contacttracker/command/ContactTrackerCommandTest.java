@@ -203,9 +203,15 @@ class ContactTrackerCommandTest extends WithContext {
 			"every CSV column once");
 		final List<String> keys = new ArrayList<>(SpotTables.DISPLAY_ORDER.stream().map(SpotColumn::key).toList());
 		keys.add(keys.indexOf("SIGMA_Y") + 1, SpotTables.FLAGS);
-		assertEquals(keys, Arrays.asList(rt.getHeadings()), "the CSV's columns and the flags in words, for reading");
-		assertEquals(List.of("ID", "FRAME", "POSITION_X", "POSITION_Y", "RADIUS", "QUALITY", "SIGMA_X", "SIGMA_Y",
-			"FLAGS"), Arrays.asList(rt.getHeadings()).subList(0, 9), "where, how big and bright, how precise, flags");
+		keys.add(keys.indexOf("FRAME") + 1, SpotTables.SLICE);
+		assertEquals(keys, Arrays.asList(rt.getHeadings()), "the CSV's columns, the slice and the flags in words");
+		assertEquals(List.of("ID", "FRAME", "SLICE", "POSITION_X", "POSITION_Y", "RADIUS", "QUALITY", "SIGMA_X",
+			"SIGMA_Y", "FLAGS"), Arrays.asList(rt.getHeadings()).subList(0, 10), "where, how big and bright, how " +
+				"precise, flags");
+		// the 1-based slice ImageJ's slider shows, beside TrackMate's 0-based frame
+		for (int id = 0; id < spots.size(); id++)
+			assertEquals(rt.getValue("FRAME", id) + 1, rt.getValue(SpotTables.SLICE, id), 0);
+		assertEquals("1", rt.getStringValue(SpotTables.SLICE, 0));
 		for (int id = 0; id < spots.size(); id++)
 			assertEquals(spots.get(id).isFlagged() ? spots.get(id).flagSet().stream().filter(f -> f.isWarning()).map(
 				f -> f.description()).collect(java.util.stream.Collectors.joining("; ")) : "-", rt.getStringValue(
@@ -609,9 +615,20 @@ class ContactTrackerCommandTest extends WithContext {
 		// with a diameter given, the circle is the particle's (RADIUS = D/2, as in the table), not its active area's
 		assertEquals(17, SpotOverlay.rois(List.of(new FrameResult(List.of(ok), List.of(), List.of(), 1, 0, false)), 8,
 			17, false, (roi, frame) -> {}).get(0).getFloatBounds().width, 1e-12);
-		// the first-pass dot comes after (is drawn over) the final cross
-		assertEquals(SpotOverlay.Kind.FINAL, SpotOverlay.kind(rois.get(1)));
-		assertEquals(SpotOverlay.Kind.FIRST_PASS, SpotOverlay.kind(rois.get(2)));
+		// the final cross comes after (is drawn over) the first-pass dot: the result stays visible
+		assertEquals(SpotOverlay.Kind.FIRST_PASS, SpotOverlay.kind(rois.get(1)));
+		assertEquals(SpotOverlay.Kind.FINAL, SpotOverlay.kind(rois.get(2)));
+		assertTrue(((ij.gui.PointRoi) rois.get(1)).getSize() < ((ij.gui.PointRoi) rois.get(2)).getSize());
+		// the legend window's picture: every mark in its colour, one row each, flags included
+		final ij.process.ColorProcessor legend = OverlayLegend.picture(false);
+		final java.util.Set<Integer> colours = new java.util.HashSet<>();
+		for (final int p : (int[]) legend.getPixels())
+			colours.add(p & 0xffffff);
+		for (final OverlayLegend.Row row : OverlayLegend.rows(false))
+			assertTrue(colours.contains(row.color().getRGB() & 0xffffff), row.text());
+		assertEquals(3 + SpotOverlay.flagColors().size(), OverlayLegend.rows(false).size());
+		assertEquals(OverlayLegend.rows(false).size() + 2, OverlayLegend.rows(true).size());
+		assertTrue(legend.getHeight() >= OverlayLegend.rows(false).size() * OverlayLegend.ROW);
 		assertTrue(fellBackCircle.getStrokeWidth() > okCircle.getStrokeWidth());
 		assertTrue(fellBackCircle.getName().contains("fell back to first pass"), fellBackCircle.getName());
 		assertTrue(mergedCircle.getName().contains("suspected merge, touches border") || mergedCircle.getName().contains(
