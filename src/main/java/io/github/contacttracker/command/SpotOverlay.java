@@ -43,6 +43,7 @@ import io.github.contacttracker.core.image.Region;
 import io.github.contacttracker.core.track.FrameResult;
 import io.github.contacttracker.io.OverlayPng;
 import io.github.contacttracker.io.ShownFrameProfile;
+import io.github.contacttracker.pipeline.KindRadii;
 
 /**
  * The ROIs Contact Tracker draws on an image: per spot, the particle's outline (a circle of the spot's
@@ -178,8 +179,9 @@ public final class SpotOverlay {
 	/**
 	 * @param results one result per frame, in frame order
 	 * @param rOut the {@code r_out} used (px)
-	 * @param diameter the particle diameter given (px; 0 = none): the particle circles' diameter, as the table's
-	 *        {@code RADIUS} is half of it (else each spot's own {@code RADIUS}, its active area's)
+	 * @param diameter the particle diameter given (px; 0 = none): the particle circles' radius is the table's
+	 *        {@code RADIUS}, half of it, each kind its own ({@link KindRadii}; else each spot's own, its active
+	 *        area's)
 	 * @param diagnostics whether to draw the r_out discs and the second active areas too
 	 * @param placer puts each ROI on its frame
 	 * @return the ROIs, spot by spot (IDs counted over all frames, as in the spots table)
@@ -188,6 +190,7 @@ public final class SpotOverlay {
 		final boolean diagnostics, final FramePlacer placer)
 	{
 		final List<Roi> rois = new ArrayList<>();
+		final double[] radii = diameter > 0 ? KindRadii.of(all(results), diameter) : null;
 		int id = 0;
 		for (final FrameResult r : results) {
 			final List<Localization> spots = r.spots();
@@ -196,7 +199,7 @@ public final class SpotOverlay {
 				final String name = "spot " + id;
 				final String flags = flagText(s);
 
-				final double radius = diameter > 0 ? diameter / 2 : s.radius();
+				final double radius = radii != null ? radii[s.kind()] : s.radius();
 				final Roi particle = new OvalRoi(s.x() + 0.5 - radius, s.y() + 0.5 - radius, 2 * radius, 2 * radius);
 				add(rois, particle, Kind.PARTICLE, id, name + " " + Kind.PARTICLE.label() + flags, s, placer);
 				if (s.isFlagged()) {
@@ -228,6 +231,13 @@ public final class SpotOverlay {
 			}
 		}
 		return rois;
+	}
+
+	private static List<Localization> all(final List<FrameResult> results) {
+		final List<Localization> all = new ArrayList<>();
+		for (final FrameResult r : results)
+			all.addAll(r.spots());
+		return all;
 	}
 
 	/**

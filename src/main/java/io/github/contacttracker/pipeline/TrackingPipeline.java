@@ -172,13 +172,17 @@ public final class TrackingPipeline {
 			"of '%s'", Numbers.fmt(t), Numbers.fmt(min), Numbers.fmt(max), source.name()));
 	}
 
-	/** @return the spots, their radius set to half the particle diameter when one was given */
+	/**
+	 * @return the spots, their radius set from the particle diameter when one was given: half of it, each kind its
+	 *         own when several were found ({@link KindRadii})
+	 */
 	private List<Localization> withDiameter(final List<Localization> spots) {
 		final double diameter = settings.diameter();
 		if (diameter <= 0) return spots;
+		final double[] radius = KindRadii.of(spots, diameter);
 		final List<Localization> out = new ArrayList<>(spots.size());
 		for (final Localization s : spots)
-			out.add(s.withRadius(diameter / 2));
+			out.add(s.withRadius(radius[s.kind()]));
 		return out;
 	}
 
