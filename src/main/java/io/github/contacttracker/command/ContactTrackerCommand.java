@@ -49,6 +49,7 @@ import java.util.function.BooleanSupplier;
 
 import net.imglib2.Interval;
 import org.scijava.ItemIO;
+import org.scijava.ItemVisibility;
 import org.scijava.app.StatusService;
 import org.scijava.command.Command;
 import org.scijava.command.Previewable;
@@ -113,6 +114,9 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 
 	private static final String TITLE = "Contact Tracker";
 
+	/** The messages' first texts, replaced once the dialog is open. */
+	static final String ORIGIN_UNKNOWN = "<html>Values: ...</html>", PREVIEW_OFF = "<html>Preview: off</html>";
+
 	/** The dialog's format of lengths in pixels: to 0.01 px, as the helper suggests them (SciJava's "format:"). */
 	static final String LENGTH_FORMAT = "format:0.0#";
 
@@ -122,6 +126,11 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 
 	@Parameter(label = "Image", persist = false)
 	private ImagePlus imp;
+
+	// Where the values below come from (ValuesOrigin), set when the dialog opens and as they change. A message: not
+	// remembered, no macro key.
+	@Parameter(visibility = ItemVisibility.MESSAGE, persist = false, required = false)
+	private String origin = ORIGIN_UNKNOWN;
 
 	// The tracking settings: names, help and defaults from the settings descriptor (TrackingSettings); a test pins
 	// every one of these inputs to it.
@@ -179,6 +188,10 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 			"typing is never held up, and a newer value replaces a preview still running")
 	private boolean preview = false;
 
+	// What the preview is doing, and its spot count: in the dialog, where the person looks (a message)
+	@Parameter(visibility = ItemVisibility.MESSAGE, persist = false, required = false)
+	private String preview_note = PREVIEW_OFF;
+
 	@Parameter(validater = "validateInputs", label = "Pair cutoff (calibrated units, 0 = none)", min = "0",
 		description = DialogHelp.TIP + "List the distances of spot pairs of the same frame closer than this in a second table")
 	private double pair_cutoff = 0;
@@ -234,6 +247,48 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 	@Override
 	protected ImagePlus image() {
 		return imp;
+	}
+
+	/** The dialog is open, its values loaded: it says where they come from. */
+	@Override
+	protected void dialogOpened() {
+		showOrigin();
+	}
+
+	/** @return the values the helper fills in, on this image */
+	private ValuesOrigin.Values helperValues() {
+		return new ValuesOrigin.Values(imp == null ? "" : imp.getTitle(), threshold, r_out, diameter);
+	}
+
+	/** Says in the dialog where its values come from ({@link ValuesOrigin}). */
+	private void showOrigin() {
+		if (imp == null) return;
+		note(true, ValuesOrigin.describe(helperValues(), new ValuesOrigin.Values(imp.getTitle(),
+			TrackingSettings.THRESHOLD.defaultValue(), TrackingSettings.R_OUT.defaultValue(), TrackingSettings.DIAMETER
+				.defaultValue())));
+	}
+
+	/**
+	 * Sets one of the dialog's two message rows, in the field (what SciJava shows when it redraws the dialog) and
+	 * in the open dialog at once.
+	 *
+	 * @param ofOrigin the values' origin row, else the preview's
+	 */
+	private synchronized void note(final boolean ofOrigin, final String text) {
+		final String was = ofOrigin ? origin : preview_note;
+		if (ofOrigin) origin = text;
+		else preview_note = text;
+		besideImage.relabel(was, text);
+	}
+
+	/** @return the preview row's text: HTML, escaped */
+	private static String previewText(final String text) {
+		return "<html>Preview: " + text.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;") + "</html>";
+	}
+
+	/** @return the dialog's message rows: the values' origin and the preview's state (for tests) */
+	String[] notes() {
+		return new String[] { origin, preview_note };
 	}
 
 	@Override
@@ -346,6 +401,7 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 		checkOwnInputs(true);
 		final ImagePlusFrames frames = ImagePlusFrames.of(imp, channel);
 		final String measured = measureWhatTheMacroLeftOut(frames);
+		ValuesOrigin.run(helperValues());
 		final SettingValues settings = settings();
 		final TrackerParameters params = settings.parameters();
 		final Interval region = ImagePlusFrames.selection(imp);
@@ -466,10 +522,12 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 	public void preview() {
 		final int generation = previewGeneration.incrementAndGet();
 		if (imp == null) return;
+		showOrigin(); // the dialog calls this on every change
 		if (!preview) {
 			synchronized (this) {
 				clearPreview(true);
 			}
+			note(false, PREVIEW_OFF);
 			return;
 		}
 		final SettingValues settings;
@@ -484,10 +542,12 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 		catch (final RuntimeException e) {
 			// while values are being typed they are often invalid: say why, keep the last preview
 			if (status != null) status.showStatus(TITLE + " preview: " + e.getMessage());
+			note(false, previewText("not run, " + e.getMessage()));
 			return;
 		}
 		final int t = ImagePlusFrames.shownFrame(imp);
 		if (status != null) status.showStatus(TITLE + " preview: tracking frame " + (t + 1) + "...");
+		note(false, previewText("working on frame " + (t + 1) + "..."));
 		synchronized (this) {
 			if (previewer == null) previewer = Executors.newSingleThreadExecutor(r -> {
 				final Thread thread = new Thread(r, TITLE + " preview");
@@ -506,6 +566,7 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 		final Interval region, final int t)
 	{
 		if (generation != previewGeneration.get()) return; // superseded before it started
+		final long start = System.nanoTime();
 		final FrameResult r;
 		try {
 			// the frame alone, through the same pipeline as a run (no file, no data-range pass over the stack)
@@ -513,8 +574,10 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 				Outputs.NONE, 1, true, null, () -> generation != previewGeneration.get()).frames().get(0);
 		}
 		catch (final RuntimeException | IOException e) {
-			if (generation == previewGeneration.get() && status != null) status.showStatus(TITLE + " preview: " + e
-				.getMessage());
+			if (generation == previewGeneration.get()) {
+				if (status != null) status.showStatus(TITLE + " preview: " + e.getMessage());
+				note(false, previewText("not run, " + e.getMessage()));
+			}
 			return;
 		}
 		synchronized (this) {
@@ -527,8 +590,11 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 			SpotOverlay.show(imp, SpotOverlay.rois(List.of(r), settings.parameters().rOut(), settings.diameter(), r_out_circles, (roi,
 				frame) -> placer.place(roi, t)));
 		}
-		if (status != null) status.showStatus(TITLE + " preview: " + r.spots().size() + " spots on frame " + (t + 1) +
-			(region == null ? "" : " within the selection"));
+		final String count = r.spots().size() + " spots on frame " + (t + 1) + (region == null ? ""
+			: " within the selection");
+		if (status != null) status.showStatus(TITLE + " preview: " + count);
+		note(false, previewText(String.format(java.util.Locale.ROOT, "%s (%.1f s)", count, (System.nanoTime() - start) *
+			1e-9)));
 	}
 
 	/** Waits for the preview asked for last (for tests and scripts); returns at once when none is pending. */
@@ -574,6 +640,8 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 		r_out = p.rOut();
 		diameter = p.diameter();
 		if (p.smallParticles()) min_area = Math.min(min_area, p.minArea());
+		ValuesOrigin.measured(helperValues());
+		showOrigin();
 		WindowsBeside.log(p.logText(TITLE + ": measured"), imp);
 		if (status != null) status.showStatus(TITLE + ": measured " + p.status());
 		preview(); // the dialog previews its values as they change; these changed without an edit

@@ -35,7 +35,9 @@ import java.awt.event.AWTEventListener;
 import java.awt.event.WindowEvent;
 import java.util.function.Supplier;
 
+import javax.swing.JLabel;
 import javax.swing.JScrollPane;
+import javax.swing.SwingUtilities;
 
 import ij.ImagePlus;
 import io.github.contacttracker.io.WindowsBeside;
@@ -56,15 +58,49 @@ final class DialogBesideImage implements AWTEventListener {
 
 	private final String title;
 	private final Supplier<ImagePlus> image;
+	private final Runnable opened;
 	private boolean armed; // guarded by DialogBesideImage.class
+	/** The dialog, once open. */
+	private volatile Dialog dialog;
 
 	/**
 	 * @param title the dialog's title (the command's label)
 	 * @param image the command's image, read when the dialog opens (SciJava fills it in before the dialog)
+	 * @param opened what the command does when its dialog has opened (on the event thread)
 	 */
-	DialogBesideImage(final String title, final Supplier<ImagePlus> image) {
+	DialogBesideImage(final String title, final Supplier<ImagePlus> image, final Runnable opened) {
 		this.title = title;
 		this.image = image;
+		this.opened = opened;
+	}
+
+	/**
+	 * Changes the text of one of the dialog's message rows (SciJava shows a message input as a label, drawn when the
+	 * dialog opens): what a command learns while its dialog is open (a preview's spot count) shows in the dialog.
+	 * Nothing happens before the dialog opens, or headless.
+	 *
+	 * @param from the row's text now
+	 * @param to its new text
+	 */
+	void relabel(final String from, final String to) {
+		final Dialog d = dialog;
+		if (d == null || from.equals(to)) return;
+		SwingUtilities.invokeLater(() -> {
+			final JLabel label = label(d, from);
+			if (label != null) label.setText(to);
+		});
+	}
+
+	/** @return the first label with this text in the container, or null */
+	private static JLabel label(final Container c, final String text) {
+		for (final Component child : c.getComponents()) {
+			if (child instanceof JLabel l && text.equals(l.getText())) return l;
+			if (child instanceof Container inner) {
+				final JLabel l = label(inner, text);
+				if (l != null) return l;
+			}
+		}
+		return null;
 	}
 
 	/** The one armed, if any: a run cancelled before its dialog must not place the next run's dialog. */
@@ -104,6 +140,8 @@ final class DialogBesideImage implements AWTEventListener {
 		final Dialog dialog = (Dialog) event.getSource();
 		if (!title.equals(dialog.getTitle())) return;
 		disarm();
+		this.dialog = dialog;
+		opened.run();
 		final ImagePlus imp = image.get();
 		final Window window = imp == null ? null : imp.getWindow();
 		final boolean besideWindow = window != null && window.isShowing();

@@ -70,7 +70,12 @@ abstract class OwnCommand extends ContextCommand {
 	OwnCommand(final String title, final String header, final DialogHelp.Page page) {
 		this.header = "<html><b>" + header + "</b></html>";
 		this.page = page;
-		this.besideImage = new DialogBesideImage(title, this::image);
+		this.besideImage = new DialogBesideImage(title, this::image, this::dialogOpened);
+	}
+
+	/** Called when the command's dialog has opened, its inputs shown (on the event thread). */
+	protected void dialogOpened() {
+		// nothing by default
 	}
 
 	/** @return the command's image, beside which its dialog goes (null: none, the dialog is only sized) */

@@ -575,7 +575,7 @@ class ContactTrackerCommandTest extends WithContext {
 		// the dialog remembers its values like Fiji's, except the image and the output files (and the measure
 		// button, which has no value, and the Preview box, so that opening the dialog never starts tracking)
 		final List<String> notRemembered = List.of("imp", "csv", "trackmate_xml", "measure", "preview", "header",
-			"help");
+			"help", "origin", "preview_note");
 		m.getInfo().inputs().forEach(item -> {
 			if (!org.scijava.service.Service.class.isAssignableFrom(item.getType()) && item.getType() != Context.class)
 				assertEquals(!notRemembered.contains(item.getName()), item.isPersisted(), item.getName());
@@ -620,15 +620,15 @@ class ContactTrackerCommandTest extends WithContext {
 		assertEquals(SpotOverlay.Kind.FINAL, SpotOverlay.kind(rois.get(2)));
 		assertTrue(((ij.gui.PointRoi) rois.get(1)).getSize() < ((ij.gui.PointRoi) rois.get(2)).getSize());
 		// the legend window's picture: every mark in its colour, one row each, flags included
-		final ij.process.ColorProcessor legend = OverlayLegend.picture(false);
+		final ij.process.ColorProcessor picture = OverlayLegend.picture(false);
 		final java.util.Set<Integer> colours = new java.util.HashSet<>();
-		for (final int p : (int[]) legend.getPixels())
+		for (final int p : (int[]) picture.getPixels())
 			colours.add(p & 0xffffff);
 		for (final OverlayLegend.Row row : OverlayLegend.rows(false))
 			assertTrue(colours.contains(row.color().getRGB() & 0xffffff), row.text());
 		assertEquals(3 + SpotOverlay.flagColors().size(), OverlayLegend.rows(false).size());
 		assertEquals(OverlayLegend.rows(false).size() + 2, OverlayLegend.rows(true).size());
-		assertTrue(legend.getHeight() >= OverlayLegend.rows(false).size() * OverlayLegend.ROW);
+		assertTrue(picture.getHeight() >= OverlayLegend.rows(false).size() * OverlayLegend.ROW);
 		assertTrue(fellBackCircle.getStrokeWidth() > okCircle.getStrokeWidth());
 		assertTrue(fellBackCircle.getName().contains("fell back to first pass"), fellBackCircle.getName());
 		assertTrue(mergedCircle.getName().contains("suspected merge, touches border") || mergedCircle.getName().contains(
@@ -703,6 +703,66 @@ class ContactTrackerCommandTest extends WithContext {
 		final Module after = modules.run(info, true, "imp", Simulated.image(), "threshold", THRESHOLD, "overlay",
 			false).get();
 		assertEquals(25, after.getInput("min_area"));
+	}
+
+	/**
+	 * The dialog's two message rows: where its values come from, and what the preview does, with its spot count,
+	 * inside the dialog (not only in the status bar).
+	 */
+	@Test
+	void theDialogSaysWhereItsValuesComeFromAndWhatThePreviewFound() throws Exception {
+		ij.Prefs.set(ValuesOrigin.MEASURED, null);
+		ij.Prefs.set(ValuesOrigin.RUN, null);
+		final ImagePlus imp = Simulated.image();
+		imp.setT(2);
+		final Module m = context.service(ModuleService.class).createModule(context.service(CommandService.class)
+			.getCommand(ContactTrackerCommand.class));
+		m.setInput("imp", imp);
+		final ContactTrackerCommand command = (ContactTrackerCommand) m.getDelegateObject();
+		m.preview();
+		command.awaitPreview();
+		assertTrue(command.notes()[0].contains("the defaults"), command.notes()[0]);
+		assertEquals(ContactTrackerCommand.PREVIEW_OFF, command.notes()[1]);
+
+		m.setInput("threshold", THRESHOLD);
+		m.setInput("r_out", R_OUT);
+		m.setInput("preview", true);
+		m.preview();
+		command.awaitPreview();
+		assertTrue(command.notes()[0].contains("as set by hand"), command.notes()[0]);
+		assertTrue(command.notes()[1].matches("<html>Preview: 2 spots on frame 2 \\(\\d+\\.\\d s\\)</html>"),
+			command.notes()[1]);
+
+		// values measured on another image are said to be so, in the dialog opened on this one
+		ValuesOrigin.measured(new ValuesOrigin.Values("other.avi", THRESHOLD, R_OUT, 0));
+		m.preview();
+		command.awaitPreview();
+		assertTrue(command.notes()[0].contains("measured on 'other.avi', <b>another image: press Measure"), command
+			.notes()[0]);
+		ValuesOrigin.measured(new ValuesOrigin.Values(imp.getTitle(), THRESHOLD, R_OUT, 0));
+		m.preview();
+		command.awaitPreview();
+		assertEquals("<html>Values: measured on this image</html>", command.notes()[0]);
+		// invalid values: the preview says why it did not run
+		m.setInput("r_out", -1.0);
+		m.preview();
+		assertTrue(command.notes()[1].startsWith("<html>Preview: not run, "), command.notes()[1]);
+		command.cancel();
+		ij.Prefs.set(ValuesOrigin.MEASURED, null);
+	}
+
+	/** The origin's words for each case, from the values alone. */
+	@Test
+	void valuesOriginInWords() {
+		final ValuesOrigin.Values defaults = new ValuesOrigin.Values("a.avi", 100, 20, 0), mine = new ValuesOrigin.Values(
+			"a.avi", 186, 43, 34.06), theirs = new ValuesOrigin.Values("b.avi", 186, 43, 34.06);
+		assertTrue(ValuesOrigin.describe(defaults, defaults, theirs, theirs).contains("the defaults"));
+		assertTrue(ValuesOrigin.describe(mine, defaults, mine, null).contains("measured on this image"));
+		assertTrue(ValuesOrigin.describe(mine, defaults, theirs, null).contains("measured on 'b.avi', <b>another image"));
+		assertTrue(ValuesOrigin.describe(mine, defaults, null, theirs).contains("from the last run, on 'b.avi', " +
+			"<b>another image"));
+		assertTrue(ValuesOrigin.describe(mine, defaults, null, mine).contains("as in the last run on this image"));
+		assertTrue(ValuesOrigin.describe(mine, defaults, null, null).contains("as set by hand"));
 	}
 
 	@Test

@@ -79,7 +79,7 @@ class DialogBesideImageTest {
 	@Test
 	void headlessNothingWatches() {
 		if (!GraphicsEnvironment.isHeadless()) return;
-		final DialogBesideImage d = new DialogBesideImage("Contact Tracker", () -> null);
+		final DialogBesideImage d = new DialogBesideImage("Contact Tracker", () -> null, () -> {});
 		d.arm();
 		assertFalse(d.armed());
 		d.disarm();
