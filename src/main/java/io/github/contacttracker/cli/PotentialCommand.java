@@ -129,10 +129,6 @@ final class PotentialCommand extends ContactTrackerCli.Subcommand {
 		if (warning != null) err.println("contact-tracker: warning: " + warning);
 		if (field.inferred()) err.println("contact-tracker: note: field of view inferred from the spots (" + String
 			.format(Locale.ROOT, "%.6g x %.6g", field.width(), field.height()) + "); give --width and --height to set it");
-		else if (spots.flaggedLeftOut() > 0)
-			err.println("contact-tracker: note: " + spots.flaggedLeftOut() + " flagged spots left out; if they lie along " +
-				"the border (FLAG_AT_BORDER), the kept spots cover less than the field given: leave out --width/--height " +
-				"to infer it");
 		return 0;
 	}
 

@@ -257,7 +257,8 @@ public class ContactTrackerPotentialCommand extends OwnCommand {
 			// the table and the plot beside each other, not one over the other
 			((TitledResultsTable) potential).show();
 			final java.awt.Window tableWindow = WindowManager.getWindow(potential.getTitle());
-			WindowsBeside.move(plot.show(), null, tableWindow);
+			WindowsBeside.move(tableWindow, WindowManager.getCurrentImage());
+			WindowsBeside.move(plot.show(), WindowManager.getCurrentImage(), tableWindow);
 		}
 	}
 

@@ -65,7 +65,8 @@ public final class ProfilePlots {
 			}
 		final double pad = 0.05 * (hi - lo);
 		lo -= pad;
-		hi += pad;
+		// headroom above every curve and level for the legend (top right): it covered the profile
+		hi += pad + LEGEND_ROOM * (hi - lo);
 		final double right = r.maxRadius();
 		final Plot p = new Plot(title, "distance from centre (px)", "grey level");
 		p.setLimits(0, right, lo, hi);
@@ -93,6 +94,9 @@ public final class ProfilePlots {
 			"suggested threshold\tsuggested r_out\tD/2", "top-right");
 		return p;
 	}
+
+	/** The plot's height above the data kept free for the legend, as a fraction of the data's range. */
+	static final double LEGEND_ROOM = 0.75;
 
 	/** Writes the plot as a PNG, atomically. */
 	public static void writePng(final Plot plot, final Path file) throws IOException {

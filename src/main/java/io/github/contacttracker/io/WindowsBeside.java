@@ -65,7 +65,9 @@ public final class WindowsBeside {
 
 	/**
 	 * Moves a window clear of the image's window, every showing dialog and the windows given, if it covers one of
-	 * them and a clear place exists on the screen (else to where it covers least).
+	 * them, and as far as it can clear of every other window (our tables, the Log, plots: they matter less), to the
+	 * first clear place beside them on the screen (else to where it covers least, the image and dialogs weighing
+	 * most).
 	 *
 	 * @param w the window (null, hidden or headless: nothing happens)
 	 * @param imp the image worked on (may be null)
@@ -78,33 +80,47 @@ public final class WindowsBeside {
 			.getBounds());
 		for (final Window k : keep)
 			if (k != null && k != w && k.isShowing()) avoid.add(k.getBounds());
-		for (final Window d : Window.getWindows())
-			if (d instanceof Dialog && d != w && d.isShowing()) avoid.add(d.getBounds());
-		final Point at = place(w.getBounds(), avoid, usableScreen(w.getGraphicsConfiguration()));
+		final List<Rectangle> rather = new ArrayList<>();
+		for (final Window d : Window.getWindows()) {
+			if (d == w || !d.isShowing() || d == ij.IJ.getInstance()) continue;
+			if (d instanceof Dialog) avoid.add(d.getBounds());
+			else if (!avoid.contains(d.getBounds())) rather.add(d.getBounds());
+		}
+		final Point at = place(w.getBounds(), avoid, rather, usableScreen(w.getGraphicsConfiguration()));
 		if (at != null) w.setLocation(at);
 	}
 
+	/** How much more covering the image or a dialog weighs than covering another window. */
+	static final long MUST = 1000;
+
 	/**
-	 * Where a window goes: where it is if it covers none of {@code avoid}; else the first place beside one of them
-	 * (right, left, below, above of each in turn, the first most wanted) that is on the screen and covers none; else
-	 * the place among those that covers least.
+	 * Where a window goes: where it is if it covers none of {@code avoid} nor of {@code rather}; else the first place
+	 * beside one of them (right, left, below, above of each in turn, the first most wanted) that is on the screen and
+	 * covers none; else the place among those that covers least ({@code avoid} weighing {@link #MUST} times more).
 	 *
 	 * @param window the window's bounds
 	 * @param avoid what it must not cover, most important first
+	 * @param rather what it had better not cover
 	 * @param screen the usable screen
 	 * @return its new top-left corner, or null to leave it where it is
 	 */
-	static Point place(final Rectangle window, final List<Rectangle> avoid, final Rectangle screen) {
-		if (covered(window, avoid) == 0) return null;
+	static Point place(final Rectangle window, final List<Rectangle> avoid, final List<Rectangle> rather,
+		final Rectangle screen)
+	{
+		final long now = MUST * covered(window, avoid) + covered(window, rather);
+		if (now == 0) return null;
 		final Dimension d = window.getSize();
+		final List<Rectangle> all = new ArrayList<>(avoid);
+		all.addAll(rather);
 		Point best = null;
-		long least = Long.MAX_VALUE;
-		for (final Rectangle r : avoid) {
+		long least = now;
+		for (final Rectangle r : all) {
 			final Point[] beside = { new Point(r.x + r.width + GAP, r.y), new Point(r.x - GAP - d.width, r.y), new Point(
 				r.x, r.y + r.height + GAP), new Point(r.x, r.y - GAP - d.height) };
 			for (final Point p : beside) {
 				final Point on = onScreen(p, d, screen);
-				final long c = covered(new Rectangle(on, d), avoid);
+				final Rectangle at = new Rectangle(on, d);
+				final long c = MUST * covered(at, avoid) + covered(at, rather);
 				if (c < least) {
 					least = c;
 					best = on;

@@ -84,6 +84,9 @@ public class ContactTrackerDetectorFactory<T extends RealType<T> & NativeType<T>
 		+ "radius; QUALITY how clearly it stands out of the noise "
 		+ "(0 to 1; particles 1); SIGMA_X/Y the standard errors; FLAG_... what happened. 2D images and "
 		+ "time-lapses only.</p>"
+		+ "<p>"
+		+ "A colour (RGB) movie, e.g. an AVI, is refused by TrackMate itself: convert it first with "
+		+ "<i>Image &gt; Type &gt; 8-bit</i> (Contact Tracker's own command takes one colour channel instead).</p>"
 		+ "</html>";
 
 	/**

@@ -201,6 +201,14 @@ class ProfileHelperTest extends WithContext {
 		assertTrue(plot.getPlotObjectStyle(3).startsWith(ij.plugin.Colors.colorToString(
 			io.github.contacttracker.io.ProfilePlots.NOISE_BAND_LOW) + ","), plot.getPlotObjectStyle(3));
 		assertFalse(plot.getPlotObjectStyle(2).split(",")[0].equals(plot.getPlotObjectStyle(3).split(",")[0]));
+		// the legend (top right) has the top of the plot to itself: the profile, the threshold and the noise band
+		// all lie in the lower 60%
+		final double[] limits = plot.getLimits();
+		final double top = limits[2] + 0.6 * (limits[3] - limits[2]);
+		for (final double v : r.level())
+			if (Double.isFinite(v)) assertTrue(v <= top, v + " above " + top);
+		assertTrue((double) m.getOutput("suggested_threshold") <= top);
+		assertTrue(r.background() + r.noise() <= top);
 
 		// without a point: a clear message
 		imp.deleteRoi();
