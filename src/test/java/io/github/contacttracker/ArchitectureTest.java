@@ -48,7 +48,7 @@ class ArchitectureTest {
 
 	/** The core's rooms, bottom first; each uses only rooms to its left. The packages outside see the core as one. */
 	private static final List<String> CORE = List.of("core", "core.math", "core.image", "core.profile", "core.radial",
-		"core.kind", "core.fit", "core.track");
+		"core.kind", "core.fit", "core.detect", "core.track");
 
 	/** Which of our packages each package may use ({@code core} standing for all of the core's rooms). */
 	private static final Map<String, Set<String>> ALLOWED = Map.ofEntries( //
@@ -59,8 +59,10 @@ class ArchitectureTest {
 		Map.entry("core.radial", Set.of("core", "core.math", "core.image", "core.profile")), //
 		Map.entry("core.kind", Set.of("core", "core.math", "core.image", "core.profile", "core.radial")), //
 		Map.entry("core.fit", Set.of("core", "core.math", "core.image", "core.profile", "core.radial", "core.kind")), //
-		Map.entry("core.track", Set.of("core", "core.math", "core.image", "core.profile", "core.radial", "core.kind",
+		Map.entry("core.detect", Set.of("core", "core.math", "core.image", "core.profile", "core.radial", "core.kind",
 			"core.fit")), //
+		Map.entry("core.track", Set.of("core", "core.math", "core.image", "core.profile", "core.radial", "core.kind",
+			"core.fit", "core.detect")), //
 		Map.entry("advisor", Set.of("core")), //
 		Map.entry("sim", Set.of("core")), //
 		Map.entry("potential", Set.of("core")), //

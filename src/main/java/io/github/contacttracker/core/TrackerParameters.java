@@ -36,9 +36,11 @@ package io.github.contacttracker.core;
  *        particle, whatever its gradient lines do (the component's shape, {@code core.radial.ComponentShape})
  * @param kinds kinds of particle the profile methods tell apart, each with its own measured profile: 0 found
  *        automatically (by size and brightness, {@code core.kind.Kinds}), 1 all alike, or that many
+ * @param detection how the profile methods find the particles: by their image ({@link Detection#IMAGE}, given a
+ *        diameter) or by the threshold's components; the paper's method and the first pass always use the threshold
  */
 public record TrackerParameters(double threshold, double rOut, int minArea, Connectivity connectivity,
-	int minSecondArea, Method method, double diameter, int kinds)
+	int minSecondArea, Method method, double diameter, int kinds, Detection detection)
 {
 	/** Default {@code min_area} (px). */
 	public static final int DEFAULT_MIN_AREA = 20;
@@ -87,6 +89,23 @@ public record TrackerParameters(double threshold, double rOut, int minArea, Conn
 			throw new InvalidInputException("diameter must be >= 0 pixels (0 = not given), not " + diameter);
 		if (kinds < 0 || kinds > KINDS_AT_MOST) throw new InvalidInputException("kinds must be " + KINDS_ALLOWED +
 			", not " + kinds);
+		if (detection == null) throw new InvalidInputException("detection must be given (image or threshold)");
+	}
+
+	/** Parameters with the {@link Detection#DEFAULT default detection}. */
+	public TrackerParameters(final double threshold, final double rOut, final int minArea,
+		final Connectivity connectivity, final int minSecondArea, final Method method, final double diameter,
+		final int kinds)
+	{
+		this(threshold, rOut, minArea, connectivity, minSecondArea, method, diameter, kinds, Detection.DEFAULT);
+	}
+
+	/**
+	 * @return whether this frame's particles are found by their image: a profile method (or the iterative pass that
+	 *         starts it), {@link Detection#IMAGE}, and a diameter to set the filter's scale
+	 */
+	public boolean detectsByImage() {
+		return detection == Detection.IMAGE && diameter > 0 && (method.needsProfile() || method == Method.ITERATIVE);
 	}
 
 	/** Parameters without a diameter (not known). */
@@ -110,23 +129,27 @@ public record TrackerParameters(double threshold, double rOut, int minArea, Conn
 	}
 
 	public TrackerParameters withMinArea(final int a) {
-		return new TrackerParameters(threshold, rOut, a, connectivity, minSecondArea, method, diameter, kinds);
+		return new TrackerParameters(threshold, rOut, a, connectivity, minSecondArea, method, diameter, kinds, detection);
 	}
 
 	public TrackerParameters withMinSecondArea(final int a) {
-		return new TrackerParameters(threshold, rOut, minArea, connectivity, a, method, diameter, kinds);
+		return new TrackerParameters(threshold, rOut, minArea, connectivity, a, method, diameter, kinds, detection);
 	}
 
 	public TrackerParameters withDiameter(final double d) {
-		return new TrackerParameters(threshold, rOut, minArea, connectivity, minSecondArea, method, d, kinds);
+		return new TrackerParameters(threshold, rOut, minArea, connectivity, minSecondArea, method, d, kinds, detection);
 	}
 
 	public TrackerParameters withMethod(final Method m) {
-		return new TrackerParameters(threshold, rOut, minArea, connectivity, minSecondArea, m, diameter, kinds);
+		return new TrackerParameters(threshold, rOut, minArea, connectivity, minSecondArea, m, diameter, kinds, detection);
+	}
+
+	public TrackerParameters withDetection(final Detection d) {
+		return new TrackerParameters(threshold, rOut, minArea, connectivity, minSecondArea, method, diameter, kinds, d);
 	}
 
 	/** @param k kinds of particle: 0 found automatically, 1 all alike, or that many */
 	public TrackerParameters withKinds(final int k) {
-		return new TrackerParameters(threshold, rOut, minArea, connectivity, minSecondArea, method, diameter, k);
+		return new TrackerParameters(threshold, rOut, minArea, connectivity, minSecondArea, method, diameter, k, detection);
 	}
 }

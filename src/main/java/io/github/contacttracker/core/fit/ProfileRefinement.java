@@ -86,9 +86,36 @@ public final class ProfileRefinement implements Refinement {
 	public Outcome refine(final Plane plane, final Particle[] ps, final TrackerParameters params,
 		final KindProfiles given, final double noise)
 	{
-		final Outcome iterative = SecondPass.iterate(ps, params);
+		return fit(plane, ps, params, given, noise).outcome();
+	}
+
+	/**
+	 * The outcome of a refinement and the profiles it drew the particles with (those given, or measured on the
+	 * frame; {@code null} when none could be measured and the iterative centres were kept).
+	 */
+	public record Fitted(Outcome outcome, KindProfiles profiles) {}
+
+	/**
+	 * As {@link #refine(Plane, Particle[], TrackerParameters, KindProfiles, double)}, with the profiles used: a
+	 * detection that adds or removes particles after the fit refits with them.
+	 */
+	public Fitted fit(final Plane plane, final Particle[] ps, final TrackerParameters params,
+		final KindProfiles given, final double noise)
+	{
+		return fit(plane, ps, params, given, noise, true);
+	}
+
+	/**
+	 * @param iterate whether the fit starts from the iterative second passes (else from the first passes: particles
+	 *        seeded by the image, each on its own pixels, start where their seeds put them)
+	 */
+	public Fitted fit(final Plane plane, final Particle[] ps, final TrackerParameters params,
+		final KindProfiles given, final double noise, final boolean iterate)
+	{
+		final Outcome iterative = iterate ? SecondPass.iterate(ps, params) : Refinement.FIRST_PASS.refine(plane, ps,
+			params, null, noise);
 		Estimate[] e = iterative.estimates();
-		if (ps.length == 0) return iterative;
+		if (ps.length == 0) return new Fitted(iterative, given);
 		// each particle's kind, among the movie's kinds or this frame's
 		final Kinds kinds;
 		final int[] kind;
@@ -119,7 +146,7 @@ public final class ProfileRefinement implements Refinement {
 					final Estimate[] kept = e.clone();
 					for (int k = 0; k < kept.length; k++)
 						kept[k] = kept[k].withFlags(kept[k].flags() | Flag.FELL_BACK.bit());
-					return new Outcome(kept, iterative.discs(), kind);
+					return new Fitted(new Outcome(kept, iterative.discs(), kind), null);
 				}
 			}
 			final EmpiricalProfile[] of = profiles.byParticle(kind);
@@ -160,7 +187,7 @@ public final class ProfileRefinement implements Refinement {
 		if (!settled) for (int k = 0; k < e.length; k++)
 			e[k] = e[k].withFlags(e[k].flags() | Flag.NOT_CONVERGED.bit());
 		flagUnmodelledNeighbours(ps, e, params.rOut());
-		return new Outcome(e, iterative.discs(), kind);
+		return new Fitted(new Outcome(e, iterative.discs(), kind), profiles);
 	}
 
 	/**

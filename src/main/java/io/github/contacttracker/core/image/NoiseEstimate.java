@@ -64,6 +64,40 @@ public final class NoiseEstimate {
 				sum += Math.abs(r);
 				n++;
 			}
-		return Math.sqrt(Math.PI / 2) * sum / (6.0 * n);
+		final double immerkaer = Math.sqrt(Math.PI / 2) * sum / (6.0 * n);
+		return Math.max(immerkaer, clipped(p, stride));
+	}
+
+	/** A frame whose background is clipped at the pixel type's floor has at least this share of its pixels there. */
+	static final double CLIPPED_SHARE = 0.2;
+
+	/**
+	 * The noise of a background clipped at the pixel type's floor (confocal images: a background of 0 with its
+	 * noise's lower half cut off), which the differences of neighbours underestimate (half the pixels are equal): the
+	 * pixels above the floor near it are the upper half of the background's noise, a half-normal distribution whose
+	 * median is 0.6745 sigma. Its median over the sampled pixels above the floor, the particles' pixels among them
+	 * (they raise it, so a frame of many particles gets a larger estimate, never a smaller one); 0 when fewer than
+	 * {@link #CLIPPED_SHARE} of the sampled pixels sit at the floor.
+	 */
+	private static double clipped(final Plane p, final int stride) {
+		final double floor = p.floor();
+		if (!Double.isFinite(floor)) return 0;
+		final int w = p.width(), h = p.height();
+		int at = 0, n = 0;
+		double[] above = new double[64];
+		int m = 0;
+		for (int y = 0; y < h; y += stride)
+			for (int x = (y / stride) % stride; x < w; x += stride) {
+				final double v = p.get(x, y);
+				n++;
+				if (v <= floor) at++;
+				else {
+					if (m == above.length) above = java.util.Arrays.copyOf(above, 2 * m);
+					above[m++] = v - floor;
+				}
+			}
+		if (n == 0 || at < CLIPPED_SHARE * n || m == 0) return 0;
+		java.util.Arrays.sort(above, 0, m);
+		return above[m / 2] / 0.6745;
 	}
 }

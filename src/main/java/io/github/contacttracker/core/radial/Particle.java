@@ -91,6 +91,43 @@ public final class Particle {
 		return new Particle(region, field, q, centroidX, centroidY, atBorder, shape, first);
 	}
 
+	/**
+	 * A particle found by its image ({@code core.detect}): the first pass on {@code region}, the pixels around a
+	 * seed that lie nearer to it than to any other seed, with the pixels' excess over the region's least value as
+	 * the centroid's weights. Where the gradient lines give no centre, the seed is the first centre (it is a
+	 * particle's peak at sub-pixel precision, not a guess, so the particle stays reliable and is fitted).
+	 *
+	 * @param atBorder whether the particle lies so near the frame's edge that its image is cut
+	 * @return the particle, or {@code null} when the region is empty
+	 */
+	public static Particle atSeed(final Plane plane, final Region region, final double seedX, final double seedY,
+		final boolean atBorder)
+	{
+		if (region.area() == 0) return null;
+		double base = Double.POSITIVE_INFINITY;
+		for (int r = 0; r < region.runCount(); r++)
+			for (int xx = region.runStart(r); xx <= region.runEnd(r); xx++)
+				base = Math.min(base, plane.get(xx, region.runY(r)));
+		final GradientField field = GradientField.compute(plane, region);
+		double q = 0, qx = 0, qy = 0;
+		for (int r = 0; r < region.runCount(); r++) {
+			final int yy = region.runY(r);
+			for (int xx = region.runStart(r); xx <= region.runEnd(r); xx++) {
+				final double v = plane.get(xx, yy) - base;
+				q += v;
+				qx += v * xx;
+				qy += v * yy;
+			}
+		}
+		final Solve solve = Solve.on(field, null, seedX, seedY);
+		final boolean solved = solve.solution().lines() > 0 && solve.solution().ok() && Math.hypot(solve.solution()
+			.x() - seedX, solve.solution().y() - seedY) <= Math.sqrt(region.area() / Math.PI);
+		final Estimate first = solved ? Estimate.first(solve.solution().x(), solve.solution().y(), 0, region.area(),
+			solve) : Estimate.first(seedX, seedY, 0, region.area(), null);
+		final ComponentShape shape = ComponentShape.of(region);
+		return new Particle(region, field, q, q > 0 ? qx / q : seedX, q > 0 ? qy / q : seedY, atBorder, shape, first);
+	}
+
 	/** @return this particle with {@code flags} (border, merge) added to its first-pass estimate */
 	public Particle withShapeFlags(final int flags) {
 		return new Particle(region, field, quality, centroidX, centroidY, atBorder, shape, first.withFlags(

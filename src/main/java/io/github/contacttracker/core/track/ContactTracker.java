@@ -28,6 +28,8 @@ import io.github.contacttracker.core.Flag;
 import io.github.contacttracker.core.Localization;
 import io.github.contacttracker.core.Method;
 import io.github.contacttracker.core.TrackerParameters;
+import io.github.contacttracker.core.detect.ImageDetection;
+import io.github.contacttracker.core.detect.ModelSelection;
 import io.github.contacttracker.core.fit.ProfileRefinement;
 import io.github.contacttracker.core.kind.KindProfiles;
 import io.github.contacttracker.core.image.ComponentLabeling;
@@ -131,12 +133,30 @@ public final class ContactTracker {
 		final KindProfiles profile)
 	{
 		final int[] discarded = new int[1];
-		final List<Particle> found = firstPasses(plane, params, discarded);
 		final double noise = NoiseEstimate.sigma(plane);
-		final Particle[] ps = withShapeFlags(found, noise, params, discarded);
+		final Particle[] ps;
+		final Refinement.Outcome outcome;
+		double[] significance = null;
 		final Refinement refinement = refinement(params.method());
-		final Refinement.Outcome outcome = refinement instanceof ProfileRefinement profiled ? profiled.refine(plane,
-			ps, params, profile, noise) : refinement.refine(plane, ps, params, null, noise);
+		if (params.detectsByImage()) {
+			if (refinement instanceof ProfileRefinement profiled) {
+				final ModelSelection.Result r = ModelSelection.track(plane, params, profiled, profile, noise, () ->
+					withShapeFlags(firstPasses(plane, params, new int[1]), noise, params, new int[1]));
+				ps = r.particles();
+				outcome = r.outcome();
+				significance = r.significance();
+				discarded[0] = r.removed();
+			}
+			else {
+				ps = ImageDetection.particles(plane, params.diameter(), noise);
+				outcome = refinement.refine(plane, ps, params, null, noise);
+			}
+		}
+		else {
+			ps = withShapeFlags(firstPasses(plane, params, discarded), noise, params, discarded);
+			outcome = refinement instanceof ProfileRefinement profiled ? profiled.refine(plane, ps, params, profile,
+				noise) : refinement.refine(plane, ps, params, null, noise);
+		}
 		final int[] kinds = outcome.kinds();
 		final Estimate[] est = outcome.estimates();
 		final List<Localization> spots = new ArrayList<>(ps.length);
@@ -153,9 +173,10 @@ public final class ContactTracker {
 				sx = noise * Math.sqrt(cov[0]);
 				sy = noise * Math.sqrt(cov[1]);
 			}
+			final double quality = significance != null ? significance(significance[k]) : quality(p.quality(), p.region()
+				.area(), noise);
 			spots.add(new Localization(frameIndex, e.x() + dx, e.y() + dy, p.first().x() + dx, p.first().y() + dy,
-				p.region().area(), e.secondArea(), quality(p.quality(), p.region().area(), noise), Math.sqrt(p.region()
-					.area() / Math.PI), e.flags(),
+				p.region().area(), e.secondArea(), quality, Math.sqrt(p.region().area() / Math.PI), e.flags(),
 				e.iterations(), sx, sy, e.amplitude(), e.scale(), kinds == null ? 0 : kinds[k]));
 			if (keepRegions) {
 				active.add(p.region().translate(dx, dy));
@@ -183,6 +204,15 @@ public final class ContactTracker {
 	static double quality(final double excess, final int area, final double noise) {
 		if (!(noise > 0)) return 1;
 		return Math.min(1, excess / (noise * Math.sqrt(area)) / FULL_SIGNIFICANCE);
+	}
+
+	/**
+	 * A spot's {@code QUALITY} when found by its image: its significance ({@link ModelSelection}), how much its light
+	 * lowers the residuals in noise units, which ranks particles above noise without a ceiling; 0 where it was not
+	 * measured (a spot the fit did not draw).
+	 */
+	static double significance(final double z) {
+		return Double.isNaN(z) ? 0 : Math.min(z, Double.MAX_VALUE);
 	}
 
 	/** Fewest round active areas in a frame for their sizes to tell what a merge must hold. */

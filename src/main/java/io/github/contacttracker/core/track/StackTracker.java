@@ -242,7 +242,10 @@ public final class StackTracker {
 		// A dense field needs fewer frames for as many particles (the rounds' cost follows the frames): how many is
 		// estimated from the iterative centres of two sample frames, the first and the middle one, and only the frames
 		// kept are then run (on the authors' 1.avi 4 of 15: the iterative pass on all had been 8% of the time).
-		final ContactTracker iterativeTracker = new ContactTracker(params.withMethod(Method.ITERATIVE));
+		// (the iterative start from the threshold's components: seeds of the image that are no particles, such as the
+		// fringes where bright-field halos meet, are told apart by the profile, which is not known yet)
+		final ContactTracker iterativeTracker = new ContactTracker(params.withMethod(Method.ITERATIVE).withDetection(
+			io.github.contacttracker.core.Detection.THRESHOLD));
 		final int[] probe = sample.length <= 2 ? range(sample.length) : new int[] { 0, sample.length / 2 };
 		final List<FrameResult> probed = pass(iterativeTracker, null, at(sample, probe), frame,
 			false, progress, cancelled);
@@ -371,9 +374,11 @@ public final class StackTracker {
 	}
 
 	/**
-	 * The moves of the spots between two results of the same frames (spots in the same order), in frame order, each
-	 * in units of its {@link GroupFit#settled tolerance}; NaN for a spot whose centre is not the fit's own. Frames
-	 * whose spots differ in number: every move infinite.
+	 * The moves of the spots between two results of the same frames, in frame order, each in units of its
+	 * {@link GroupFit#settled tolerance}; NaN for a spot whose centre is not the fit's own. Where a frame's spots are
+	 * the same in number they are in the same order; where not (a detection by the image added or removed a particle
+	 * as the profile changed), each spot's move is from the nearest spot before, and a spot with none within its
+	 * particle's size (a particle added) has NaN: the others' moves say whether the frame settled.
 	 */
 	static double[] moves(final List<FrameResult> before, final List<FrameResult> after) {
 		int n = 0;
@@ -383,15 +388,28 @@ public final class StackTracker {
 		int i = 0;
 		for (int t = 0; t < before.size(); t++) {
 			final List<Localization> a = before.get(t).spots(), b = after.get(t).spots();
-			if (a.size() != b.size()) {
-				java.util.Arrays.fill(moves, Double.POSITIVE_INFINITY);
-				return moves;
+			final boolean same = a.size() == b.size();
+			for (int k = 0; k < b.size(); k++, i++) {
+				final Localization now = b.get(k), then = same ? a.get(k) : nearest(a, now);
+				moves[i] = fitted(now) && then != null ? Math.hypot(then.x() - now.x(), then.y() - now.y()) / GroupFit
+					.settled(now.sigmaX(), now.sigmaY()) : Double.NaN;
 			}
-			for (int k = 0; k < a.size(); k++, i++)
-				moves[i] = fitted(b.get(k)) ? Math.hypot(a.get(k).x() - b.get(k).x(), a.get(k).y() - b.get(k).y()) /
-					GroupFit.settled(b.get(k).sigmaX(), b.get(k).sigmaY()) : Double.NaN;
 		}
 		return moves;
+	}
+
+	/** @return the spot of {@code spots} nearest to {@code l} within {@code l}'s radius, or null */
+	private static Localization nearest(final List<Localization> spots, final Localization l) {
+		Localization best = null;
+		double d = Math.max(1, l.radius());
+		for (final Localization s : spots) {
+			final double e = Math.hypot(s.x() - l.x(), s.y() - l.y());
+			if (e < d) {
+				d = e;
+				best = s;
+			}
+		}
+		return best;
 	}
 
 	/**

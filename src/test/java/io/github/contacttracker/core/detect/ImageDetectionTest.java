@@ -1,0 +1,142 @@
+/*-
+ * #%L
+ * Contact Tracker: sub-pixel localization of colloidal particles, also when they touch.
+ * %%
+ * Copyright (C) 2026 Contact Tracker developers
+ * %%
+ * This program is free software: you can redistribute it and/or modify
+ * it under the terms of the GNU General Public License as
+ * published by the Free Software Foundation, either version 3 of the
+ * License, or (at your option) any later version.
+ * 
+ * This program is distributed in the hope that it will be useful,
+ * but WITHOUT ANY WARRANTY; without even the implied warranty of
+ * MERCHANTABILITY or FITNESS FOR A PARTICULAR PURPOSE.  See the
+ * GNU General Public License for more details.
+ * 
+ * You should have received a copy of the GNU General Public
+ * License along with this program.  If not, see
+ * <http://www.gnu.org/licenses/gpl-3.0.html>.
+ * #L%
+ */
+package io.github.contacttracker.core.detect;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Random;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
+
+import io.github.contacttracker.core.Detection;
+import io.github.contacttracker.core.Localization;
+import io.github.contacttracker.core.TestImages;
+import io.github.contacttracker.core.TrackerParameters;
+import io.github.contacttracker.core.track.ContactTracker;
+import io.github.contacttracker.core.track.FrameResult;
+import io.github.contacttracker.core.track.StackTracker;
+import net.imglib2.img.array.ArrayImg;
+import net.imglib2.img.basictypeaccess.array.ByteArray;
+import net.imglib2.type.numeric.integer.UnsignedByteType;
+
+/**
+ * Detection by the image against ground truth, on the footage a threshold cannot cut into one component per
+ * particle: blurred discs (fluorescent beads, microgels) pushed into overlap, dim 16-bit spots, particles on a ramp
+ * and on a background clipped at 0. Each scene is also tracked by the threshold, to show what the image adds.
+ */
+class ImageDetectionTest {
+
+	/** A blurred disc of radius 5 px (D = 10), blur 1.5 px, 120 grey levels on 30, noise 3 (8 bits). */
+	private static Scenes.Frame pair(final double separation, final long seed, final double rampX) {
+		final double d = 10;
+		final List<Scenes.Truth> t = List.of(new Scenes.Truth(40 - separation * d / 2 + 0.3, 30.2, 120, 5),
+			new Scenes.Truth(40 + separation * d / 2 + 0.3, 30.2, 120, 5));
+		return new Scenes.Frame(Scenes.noisy(Scenes.render(80, 60, (x, y) -> 30 + rampX * x, t, Scenes.blurredDisc(1,
+			0.3), 2), 3, 0, 255, seed), 80, 60, t, d);
+	}
+
+	private static List<Localization> track(final Scenes.Frame f, final double threshold, final double rOut,
+		final Detection detection)
+	{
+		final TrackerParameters p = TrackerParameters.of(threshold, rOut).withDiameter(f.diameter()).withDetection(
+			detection);
+		return new ContactTracker(p).track(TestImages.bytes(f.pixels(), f.width(), f.height()), 0);
+	}
+
+	@ParameterizedTest
+	@ValueSource(doubles = { 2, 1.5, 1.2, 1.0, 0.7, 0.6 })
+	void aPairIsTwoSpotsDownToOverlapWhereTheThresholdMergesIt(final double separation) {
+		final Scenes.Frame f = pair(separation, 7, 0);
+		final Scenes.Score image = Scenes.score(f, track(f, 90, 11.5, Detection.IMAGE), 5, 0);
+		assertEquals(2, image.found(), "two spots: " + image);
+		assertEquals(2, image.matched(), image.toString());
+		assertTrue(image.worstError() < 0.05, "each within 0.05 px of its particle: " + image);
+		if (separation <= 1.2) {
+			final Scenes.Score threshold = Scenes.score(f, track(f, 90, 11.5, Detection.THRESHOLD), 5, 0);
+			assertTrue(threshold.matched() < 2 || threshold.worstError() > 1, "the threshold merges them: " + threshold);
+		}
+	}
+
+	/** A tweezer-like movie: the pair pushed from two diameters apart to 0.96 diameters, on a ramp. */
+	@Test
+	void aPairPushedTogetherStaysTwoSpotsInEveryFrame() {
+		final int frames = 24;
+		final List<Scenes.Frame> fs = new ArrayList<>();
+		final List<ArrayImg<UnsignedByteType, ByteArray>> imgs = new ArrayList<>();
+		for (int t = 0; t < frames; t++) {
+			final Scenes.Frame f = pair(2.0 - 1.04 * t / (frames - 1), 100 + t, 0.2);
+			fs.add(f);
+			imgs.add(TestImages.bytes(f.pixels(), f.width(), f.height()));
+		}
+		final TrackerParameters p = TrackerParameters.of(90, 11.5).withDiameter(10).withDetection(Detection.IMAGE);
+		final List<FrameResult> res = new StackTracker(p).track(imgs, false);
+		for (int t = 0; t < frames; t++) {
+			final Scenes.Score s = Scenes.score(fs.get(t), res.get(t).spots(), 5, 0);
+			assertEquals(2, s.found(), "frame " + t + ": " + s);
+			assertEquals(0, s.flagged(), "frame " + t + ": " + s);
+			assertTrue(s.worstError() < 0.06, "frame " + t + ": " + s);
+		}
+	}
+
+	@Test
+	void dimSpotsAreFoundWhereTheThresholdFindsNone() {
+		final List<Scenes.Truth> t = new ArrayList<>();
+		final Random r = new Random(3);
+		for (int i = 0; i < 60; i++)
+			t.add(new Scenes.Truth(5 + r.nextDouble() * 190, 5 + r.nextDouble() * 190, 50, 1));
+		// Gaussian spots of sigma 1 px, 50 grey levels on 500 with noise 10: a peak SNR of 5
+		final double[] img = Scenes.noisy(Scenes.render(200, 200, (x, y) -> 500, t, Scenes.blurredDisc(0, 1), 5), 10, 0,
+			65535, 9);
+		final Scenes.Frame f = new Scenes.Frame(img, 200, 200, t, 4);
+		final TrackerParameters p = TrackerParameters.of(525, 6).withDiameter(4);
+		final Scenes.Score image = Scenes.score(f, new ContactTracker(p.withDetection(Detection.IMAGE)).track(TestImages
+			.shorts(img, 200, 200), 0), 2, 0);
+		final Scenes.Score threshold = Scenes.score(f, new ContactTracker(p.withDetection(Detection.THRESHOLD)).track(
+			TestImages.shorts(img, 200, 200), 0), 2, 0);
+		assertTrue(image.recall() >= 0.95, "recall: " + image);
+		assertEquals(0, image.spurious(), image.toString());
+		assertTrue(threshold.recall() < 0.1, "the threshold: " + threshold);
+	}
+
+	@Test
+	void aRampAndABackgroundClippedAtZeroDoNotDecideWhichParticlesAreFound() {
+		final List<Scenes.Truth> t = new ArrayList<>();
+		final Random r = new Random(4);
+		for (int i = 0; i < 25; i++)
+			t.add(new Scenes.Truth(10 + r.nextDouble() * 180, 10 + r.nextDouble() * 180, 60 + 60 * r.nextDouble(), 4));
+		final Scenes.Frame ramp = new Scenes.Frame(Scenes.noisy(Scenes.render(200, 200, (x, y) -> 10 + 0.5 * x, t,
+			Scenes.blurredDisc(1, 0.3), 2), 3, 0, 255, 12), 200, 200, t, 8);
+		final Scenes.Score onRamp = Scenes.score(ramp, track(ramp, 100, 10, Detection.IMAGE), 4, 0);
+		assertTrue(onRamp.matched() >= 24, "on a ramp: " + onRamp);
+		assertEquals(0, onRamp.spurious(), onRamp.toString());
+		final Scenes.Frame clipped = new Scenes.Frame(Scenes.noisy(Scenes.render(200, 200, (x, y) -> 0, t, Scenes
+			.blurredDisc(1, 0.3), 2), 3, 0, 255, 13), 200, 200, t, 8);
+		final Scenes.Score atZero = Scenes.score(clipped, track(clipped, 30, 10, Detection.IMAGE), 4, 0);
+		assertTrue(atZero.matched() >= 23, "clipped at 0: " + atZero);
+		assertTrue(atZero.spurious() <= 1, atZero.toString());
+	}
+}
