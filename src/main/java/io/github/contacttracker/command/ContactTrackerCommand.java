@@ -170,6 +170,10 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 		description = DialogHelp.TIP + TrackingSettings.HELP_PARTICLES)
 	private String particles = TrackingSettings.PARTICLES.defaultValue();
 
+	@Parameter(validater = "validateInputs", label = "Detection", choices = { "threshold", TrackingSettings.IMAGE },
+		description = DialogHelp.TIP + TrackingSettings.HELP_DETECTION)
+	private String detection = TrackingSettings.DETECTION.defaultValue();
+
 	@Parameter(validater = "validateInputs", label = "Channel", min = "" + TrackingSettings.CHANNEL_AT_LEAST, description = DialogHelp.TIP + TrackingSettings.HELP_CHANNEL)
 	private int channel = TrackingSettings.CHANNEL.defaultValue();
 
@@ -327,7 +331,7 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 			.with(TrackingSettings.MIN_AREA, min_area).with(TrackingSettings.MIN_SECOND_AREA, min_second_area).withText(
 				TrackingSettings.CONNECTIVITY, connectivity).withText(TrackingSettings.METHOD, method).with(
 					TrackingSettings.DIAMETER, diameter).with(TrackingSettings.KINDS, kinds).withText(TrackingSettings.PARTICLES,
-						particles).with(TrackingSettings.CHANNEL, channel);
+						particles).withText(TrackingSettings.DETECTION, detection).with(TrackingSettings.CHANNEL, channel);
 	}
 
 	/** @return the parameters as the core takes them, validated */
@@ -372,6 +376,7 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 			case "diameter" -> diameter;
 			case "kinds" -> kinds;
 			case "particles" -> particles;
+			case "detection" -> detection;
 			case "channel" -> channel;
 			default -> throw new IllegalStateException("no input for the setting " + s.name());
 		};

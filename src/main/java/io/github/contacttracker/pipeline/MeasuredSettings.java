@@ -83,6 +83,8 @@ public final class MeasuredSettings {
 			r = ProfileAnalysis.analyse(seen, v.diameter(), 0);
 		}
 		catch (final InvalidInputException e) {
+			if (v.get(TrackingSettings.DETECTION).equals(TrackingSettings.IMAGE) && diameter) return byImage(name, seen, v,
+				thresholdGiven, rOutGiven, said, e);
 			if (thresholdGiven && rOutGiven) return new Result(settings, "contact-tracker: " + name + ": the diameter " +
 				"could not be measured (" + InvalidInputException.oneLine(e.getMessage()) + "); tracked without it (give --diameter)");
 			throw new InvalidInputException("cannot measure " + (thresholdGiven ? "" : "--threshold ") + (thresholdGiven ||
@@ -95,6 +97,10 @@ public final class MeasuredSettings {
 			final double[] range = ImagePlusFrames.range(seen, 0);
 			// above every pixel: what the helper took for particles' cores are not (on the authors' 1.avi inverted,
 			// the bright rings around dark cores)
+			if (v.get(TrackingSettings.THRESHOLD) > range[1] && v.get(TrackingSettings.DETECTION).equals(
+				TrackingSettings.IMAGE) && diameter) return byImage(name, seen, settings, false, rOutGiven, new StringBuilder(
+					particlesGiven || !v.dark() ? "" : " --particles dark"), new InvalidInputException("its threshold " +
+						optionValue(v.get(TrackingSettings.THRESHOLD)) + " lies above every pixel"));
 			if (v.get(TrackingSettings.THRESHOLD) > range[1]) throw new InvalidInputException("cannot measure " +
 				"--threshold on the first frame of " + name + ": the helper's " + optionValue(v.get(
 					TrackingSettings.THRESHOLD)) + " lies above its every pixel (" + optionValue(range[1]) + ")" + (v.dark()
@@ -116,6 +122,31 @@ public final class MeasuredSettings {
 		}
 		return new Result(v, "contact-tracker: " + name + ": measured on frame 1 by the profile helper:" + said +
 			" (given values win; 'contact-tracker profile " + name + "' shows how)");
+	}
+
+	/**
+	 * Detection by the image needs the diameter, not the threshold: where the helper cannot measure (a dense field
+	 * without an isolated particle), a missing threshold is the frame's median (the threshold's components then
+	 * only start the profile where they are single particles) and a missing r_out one diameter (a particle's image
+	 * reaches about a radius beyond its edge), said in the notice.
+	 */
+	@SuppressWarnings({ "rawtypes", "unchecked" })
+	private static Result byImage(final String name, final RandomAccessibleInterval seen, final SettingValues given,
+		final boolean thresholdGiven, final boolean rOutGiven, final StringBuilder said, final InvalidInputException why)
+	{
+		SettingValues v = given;
+		if (!thresholdGiven) {
+			final double[] range = ImagePlusFrames.range(seen, 0);
+			v = v.with(TrackingSettings.THRESHOLD, 0.5 * (range[0] + range[1]));
+			said.append(" --threshold ").append(optionValue(v.get(TrackingSettings.THRESHOLD)));
+		}
+		if (!rOutGiven) {
+			v = v.with(TrackingSettings.R_OUT, Math.max(3, v.diameter()));
+			said.append(" --r-out ").append(optionValue(v.get(TrackingSettings.R_OUT)));
+		}
+		return new Result(v, "contact-tracker: " + name + ": the profile helper could not measure (" +
+			InvalidInputException.oneLine(why.getMessage()) + "); detection by the image with the diameter given:" +
+			said + " (given values win)");
 	}
 
 	/** @return a number as an option's value: exact, shortest, no exponent ({@code 174}, {@code 31.65}) */

@@ -91,7 +91,7 @@ public final class SettingValues {
 		return new TrackerParameters(get(TrackingSettings.THRESHOLD), get(TrackingSettings.R_OUT), get(
 			TrackingSettings.MIN_AREA), Connectivity.parse(String.valueOf(get(TrackingSettings.CONNECTIVITY))), get(
 				TrackingSettings.MIN_SECOND_AREA), Method.parse(get(TrackingSettings.METHOD)), get(TrackingSettings.DIAMETER),
-			get(TrackingSettings.KINDS));
+			get(TrackingSettings.KINDS), io.github.contacttracker.core.Detection.of(get(TrackingSettings.DETECTION)));
 	}
 
 	/** @return the 1-based channel */

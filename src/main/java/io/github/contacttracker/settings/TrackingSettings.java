@@ -82,6 +82,15 @@ public final class TrackingSettings {
 		"-v for 32 bits): the threshold and every grey level are then the inverted image's. Measured with the " +
 		"threshold (dark where the frame looks so) when neither is given.";
 
+	/** Help text of {@link #DETECTION}, a constant so that annotations (SciJava's {@code @Parameter}) can use it. */
+	public static final String HELP_DETECTION = "How the profile methods (fit, deblend) find the particles: threshold, " +
+		"each connected area at or above the threshold is one particle; image, the peaks of the image filtered at the " +
+		"particles' diameter, split, added and removed by the fit, which finds touching particles that every " +
+		"threshold merges, dim particles and particles on uneven or clipped backgrounds (needs the diameter).";
+
+	/** The value of {@link #DETECTION} that finds particles by their image. */
+	public static final String IMAGE = "image";
+
 	/** The value of {@link #PARTICLES} for dark particles. */
 	public static final String DARK = "dark";
 
@@ -152,9 +161,17 @@ public final class TrackingSettings {
 	public static final Setting<String> PARTICLES = Setting.choice("particles", "Particles", HELP_PARTICLES,
 		String.class, "bright", List.of("bright", DARK)).optionalInMaps();
 
+	/**
+	 * How the profile methods find the particles ({@link io.github.contacttracker.core.Detection}). Added after
+	 * settings maps without it were written: a TrackMate map that lacks {@code DETECTION} means the threshold.
+	 */
+	public static final Setting<String> DETECTION = Setting.choice("detection", "Detection", HELP_DETECTION,
+		String.class, io.github.contacttracker.core.Detection.DEFAULT.key(), List.of("threshold", IMAGE))
+		.optionalInMaps();
+
 	/** Every setting, in the order front ends list them. */
 	public static final List<Setting<?>> ALL = List.of(THRESHOLD, R_OUT, MIN_AREA, MIN_SECOND_AREA, CONNECTIVITY,
-		METHOD, DIAMETER, KINDS, PARTICLES, CHANNEL);
+		METHOD, DIAMETER, KINDS, PARTICLES, DETECTION, CHANNEL);
 
 	/**
 	 * @return the setting named {@code name} ({@code r_out}), or {@code null}

@@ -385,12 +385,12 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 		final JScrollPane scroll = new JScrollPane(info, ScrollPaneConstants.VERTICAL_SCROLLBAR_AS_NEEDED,
 			ScrollPaneConstants.HORIZONTAL_SCROLLBAR_NEVER);
 		scroll.setBorder(BorderFactory.createEmptyBorder());
-		// three lines, the rest by scrolling: the settings (ten rows with the channel) and TrackMate's Preview need the
+		// two lines, the rest by scrolling: the settings (eleven rows with the channel) and TrackMate's Preview need the
 		// wizard's height
-		scroll.setPreferredSize(new Dimension(280, 52));
+		scroll.setPreferredSize(new Dimension(280, 34));
 		// the wizard is a little shorter than the panel's preferred size, so GridBagLayout falls back to minimum
 		// sizes: keep the text readable and let TrackMate's histogram give way instead
-		scroll.setMinimumSize(new Dimension(200, 52));
+		scroll.setMinimumSize(new Dimension(200, 34));
 		return scroll;
 	}
 

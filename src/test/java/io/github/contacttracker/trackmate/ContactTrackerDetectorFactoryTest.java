@@ -174,6 +174,7 @@ class ContactTrackerDetectorFactoryTest {
 		final Map<String, Object> expected = new HashMap<>(olderSettings());
 		expected.put("KINDS", 0);
 		expected.put("PARTICLES", "bright"); // added later still: bright, as every earlier version tracked
+		expected.put("DETECTION", "threshold"); // and later: by the threshold, as every earlier version found them
 		assertEquals(expected, map);
 		assertEquals(0, TrackMateSettings.parameters(map).kinds());
 
