@@ -101,7 +101,7 @@ class TrackingPipelineTest {
 			false, null, () -> false);
 		assertEquals(3, r.frames().size());
 		assertEquals(6, r.spots().size(), "a pair in each of three frames");
-		assertEquals(List.of("spots.csv", "spots.xml"), files());
+		assertEquals(List.of("spots.csv", "spots.settings.txt", "spots.xml"), files());
 		final StringWriter csv = new StringWriter();
 		SpotCsvWriter.write(csv, r.spots(), CAL);
 		assertEquals(csv.toString(), Files.readString(dir.resolve("spots.csv")));

@@ -57,6 +57,7 @@ import net.imglib2.img.array.ArrayImg;
 import net.imglib2.img.array.ArrayImgs;
 import net.imglib2.img.basictypeaccess.array.ByteArray;
 import net.imglib2.type.numeric.integer.UnsignedByteType;
+import io.github.contacttracker.settings.SettingsOf;
 
 /**
  * TrackMate's spots equal the command line's CSV, value for value, for the same movie and settings, with every
@@ -109,7 +110,7 @@ class DetectorMatchesCommandLineTest {
 		assertEquals(3 * FRAMES, rows.size(), "three particles in every frame");
 
 		final SpotGlobalDetector<UnsignedByteType> detector = new ContactTrackerDetectorFactory<UnsignedByteType>()
-			.getDetector(img, TrackMateSettings.toMap(params, 1), ContactTrackerDetectorTest.trackMateInterval(img, 0,
+			.getDetector(img, SettingsOf.map(params, 1), ContactTrackerDetectorTest.trackMateInterval(img, 0,
 				FRAMES - 1));
 		assertTrue(detector.checkInput() && detector.process(), () -> detector.getErrorMessage());
 		final SpotCollection spots = detector.getResult();
