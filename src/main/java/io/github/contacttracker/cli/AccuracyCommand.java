@@ -41,6 +41,8 @@ import io.github.contacttracker.io.AtomicFile;
 import io.github.contacttracker.sim.ParticleType;
 import io.github.contacttracker.sim.Scenario;
 import io.github.contacttracker.sim.SimulatedStack;
+import io.github.contacttracker.settings.CommandOptions;
+import io.github.contacttracker.settings.Option;
 
 /**
  * {@code accuracy}: the paper's protocol for every method: two and three particles of the 5.53 um-like and

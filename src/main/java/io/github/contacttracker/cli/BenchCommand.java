@@ -45,6 +45,8 @@ import io.github.contacttracker.sim.SimulatedStack;
 import net.imglib2.img.array.ArrayImg;
 import net.imglib2.img.basictypeaccess.array.ByteArray;
 import net.imglib2.type.numeric.integer.UnsignedByteType;
+import io.github.contacttracker.settings.CommandOptions;
+import io.github.contacttracker.settings.Option;
 
 /**
  * {@code bench}: speed of each method on a simulated 512x512 8-bit stack with 12 particles (4 touching pairs),

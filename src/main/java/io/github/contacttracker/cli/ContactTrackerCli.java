@@ -32,6 +32,8 @@ import java.util.concurrent.CancellationException;
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.io.AtomicFile;
 import io.github.contacttracker.io.ProjectVersion;
+import io.github.contacttracker.settings.CommandOptions;
+import io.github.contacttracker.settings.Option;
 
 /**
  * The command line: {@code contact-tracker demo | track | simulate | bench | accuracy | potential |

@@ -40,6 +40,8 @@ import io.github.contacttracker.sim.PaperParticles;
 import io.github.contacttracker.sim.ParticleType;
 import io.github.contacttracker.sim.Scenario;
 import io.github.contacttracker.sim.SimulatedStack;
+import io.github.contacttracker.settings.CommandOptions;
+import io.github.contacttracker.settings.Option;
 
 /**
  * {@code demo}: the paper's two scenarios for 5.53 um particles, from well apart to contact, tracked with the

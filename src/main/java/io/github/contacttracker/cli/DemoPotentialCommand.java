@@ -39,6 +39,8 @@ import io.github.contacttracker.io.SpotCsvWriter;
 import io.github.contacttracker.potential.PairCorrelation;
 import io.github.contacttracker.sim.FluidMovie;
 import io.github.contacttracker.sim.ParticleType;
+import io.github.contacttracker.settings.CommandOptions;
+import io.github.contacttracker.settings.Option;
 
 /**
  * {@code demo-potential}: a simulated 2D fluid with a known pair potential (hard core + short-range attraction),

@@ -39,6 +39,8 @@ import io.github.contacttracker.sim.PaperParticles;
 import io.github.contacttracker.sim.ParticleType;
 import io.github.contacttracker.sim.Scenario;
 import io.github.contacttracker.sim.SimulatedStack;
+import io.github.contacttracker.settings.CommandOptions;
+import io.github.contacttracker.settings.Option;
 
 /** {@code simulate --scenario pair|triple --separation R --out stack.tif --truth truth.csv}. */
 final class SimulateCommand extends ContactTrackerCli.Subcommand {

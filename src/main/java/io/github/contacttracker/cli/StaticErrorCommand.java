@@ -33,6 +33,8 @@ import io.github.contacttracker.core.Numbers;
 import io.github.contacttracker.io.SpotTableCsv;
 import io.github.contacttracker.potential.SpotSet;
 import io.github.contacttracker.potential.StaticError;
+import io.github.contacttracker.settings.CommandOptions;
+import io.github.contacttracker.settings.Option;
 
 /**
  * {@code contact-tracker static-error SPOTS.csv}: how accurate the positions of a movie are, from the particles'

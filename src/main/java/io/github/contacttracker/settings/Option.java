@@ -19,7 +19,7 @@
  * <http://www.gnu.org/licenses/gpl-3.0.html>.
  * #L%
  */
-package io.github.contacttracker.cli;
+package io.github.contacttracker.settings;
 
 import java.nio.file.Path;
 import java.util.List;
@@ -43,22 +43,22 @@ import java.util.function.Function;
  *        it in its own words)
  * @param negatable whether a flag also has a {@code --no-} form that sets it to false
  */
-record Option<T>(List<String> names, String label, String description, Function<String, T> converter,
+public record Option<T>(List<String> names, String label, String description, Function<String, T> converter,
 	boolean required, String defaultValue, boolean defaultInHelp, boolean negatable)
 {
 
 	/** The prefix of a negatable flag's negative form. */
-	static final String NEGATION = "--no-";
+	public static final String NEGATION = "--no-";
 
 	/** The converters of the typed options: Java's syntax ({@code +5}, {@code 2e-3}, {@code NaN}), nothing else. */
-	static final Function<String, Integer> INT = checked(Integer::valueOf, "an int");
-	static final Function<String, Long> LONG = checked(Long::valueOf, "a long");
-	static final Function<String, Double> DOUBLE = checked(Double::valueOf, "a double");
-	static final Function<String, Path> PATH = checked(Path::of, "a path");
-	static final Function<String, Boolean> BOOLEAN = checked(Option::bool, "a boolean");
+	public static final Function<String, Integer> INT = checked(Integer::valueOf, "an int");
+	public static final Function<String, Long> LONG = checked(Long::valueOf, "a long");
+	public static final Function<String, Double> DOUBLE = checked(Double::valueOf, "a double");
+	public static final Function<String, Path> PATH = checked(Path::of, "a path");
+	public static final Function<String, Boolean> BOOLEAN = checked(Option::bool, "a boolean");
 
 	/** Checks what the parser relies on: a positional parameter has a label, only a long-named flag is negatable. */
-	Option {
+	public Option {
 		names = List.copyOf(names);
 		if (names.isEmpty() && label == null) throw new IllegalArgumentException("a positional parameter needs a label");
 		if (negatable && (label != null || !names.get(names.size() - 1).startsWith("--")))
@@ -115,6 +115,11 @@ record Option<T>(List<String> names, String label, String description, Function<
 		return new Option<>(List.of(), label, description, PATH, true, null, false, false);
 	}
 
+	/** @return a required positional parameter taken as it is written (a path or a URI: {@code hdfs://host/a.tif}) */
+	public static Option<String> positionalText(final String label, final String description) {
+		return new Option<>(List.of(), label, description, Function.identity(), true, null, false, false);
+	}
+
 	/** @return this option, which the command cannot run without */
 	public Option<T> asRequired() {
 		return new Option<>(names, label, description, converter, true, defaultValue, defaultInHelp, negatable);
@@ -151,34 +156,34 @@ record Option<T>(List<String> names, String label, String description, Function<
 	}
 
 	/** @return whether this is a positional parameter, not an option */
-	boolean positional() {
+	public boolean positional() {
 		return names.isEmpty();
 	}
 
 	/** @return whether this option takes no value */
-	boolean isFlag() {
+	public boolean isFlag() {
 		return label == null;
 	}
 
 	/** @return the name that messages use: the long one ({@code --help}), or the label of a positional parameter */
-	String mainName() {
+	public String mainName() {
 		return positional() ? label : names.get(names.size() - 1);
 	}
 
 	/** @return the one-letter name ({@code -h}), or null */
-	String shortName() {
+	public String shortName() {
 		return !positional() && !names.get(0).startsWith("--") ? names.get(0) : null;
 	}
 
 	/** @return how the help and the messages write it: {@code --reps=N}, {@code --[no-]progress}, {@code MOVIE} */
-	String synopsis() {
+	public String synopsis() {
 		if (positional()) return label;
 		if (negatable) return "--[no-]" + mainName().substring(2);
 		return mainName() + (isFlag() ? "" : "=" + label);
 	}
 
 	/** @return the help text, the default appended where the description does not explain it */
-	String help() {
+	public String help() {
 		return defaultInHelp ? description + " Default:" + CommandOptions.NO_BREAK + defaultValue + "." : description;
 	}
 }

@@ -19,7 +19,7 @@
  * <http://www.gnu.org/licenses/gpl-3.0.html>.
  * #L%
  */
-package io.github.contacttracker.cli;
+package io.github.contacttracker.settings;
 
 import java.util.ArrayList;
 import java.util.Comparator;
@@ -34,9 +34,10 @@ import java.util.stream.Collectors;
 import java.util.stream.Stream;
 
 /**
- * The options of one command of the command line: declared by the command ({@link #add}), parsed from its
- * arguments ({@link #parse}), read back typed ({@link #value}) and described in its help ({@link #usage}). Every
- * command has {@code -h}/{@code --help}.
+ * The options of one command of the command line or of the Spark job: declared by the command ({@link #add}),
+ * parsed from its arguments ({@link #parse}), read back typed ({@link #value}) and described in its help
+ * ({@link #usage}). Every command has {@code -h}/{@code --help}; the tracking settings' options are declared once
+ * for all of them by {@link SettingOptions}.
  * <p>
  * Our own small parser rather than a library's, because start-up is part of every run (a cluster job runs one
  * process per movie) and a general parser library cost about 0.1 s of it: class files too old for class-data
@@ -44,19 +45,19 @@ import java.util.stream.Stream;
  * <p>
  * Syntax: {@code --name VALUE} or {@code --name=VALUE}; a flag takes no value ({@code --name=true|false} is also
  * read), a negatable flag also {@code --no-name}; positional parameters in order, anywhere among the options;
- * {@code --} ends the options. Each option at most once. Errors are {@link BadOptionException}s with a one-line
+ * {@code --} ends the options. Each option at most once, but those declared repeatable ({@link #addRepeatable}). Errors are {@link BadOptionException}s with a one-line
  * message for the user.
  */
-final class CommandOptions {
+public final class CommandOptions {
 
 	/** The help is wrapped to this many columns. */
-	static final int WIDTH = 100;
+	public static final int WIDTH = 100;
 
 	/** Options written up to this long set the column of the descriptions; longer ones stick out into it. */
 	private static final int LONG_COLUMN_MAX = 20;
 
 	/** Stands for a space where the help must not break a line (as in {@code Default: 0.0.}); printed as a space. */
-	static final char NO_BREAK = '\u00a0';
+	public static final char NO_BREAK = '\u00a0';
 
 	private static final String NEWLINE = System.lineSeparator();
 
@@ -76,12 +77,14 @@ final class CommandOptions {
 	private final List<Object> repeated = new ArrayList<>();
 	private boolean repeatLast;
 	private final Set<Option<?>> given = Collections.newSetFromMap(new IdentityHashMap<>());
+	/** Options that may be given more than once ({@link #addRepeatable}), and their values in order. */
+	private final Map<Option<?>, List<Object>> repeatable = new IdentityHashMap<>();
 
 	/**
 	 * @param commandLine how the command is called, e.g. {@code contact-tracker demo}
 	 * @param description the help's paragraphs; the first one also lists the command in its parent's help
 	 */
-	CommandOptions(final String commandLine, final String... description) {
+	public CommandOptions(final String commandLine, final String... description) {
 		this.commandLine = commandLine;
 		this.description = List.of(description);
 	}
@@ -91,7 +94,7 @@ final class CommandOptions {
 	 *
 	 * @return {@code option}, to read its value with later
 	 */
-	<T> Option<T> add(final Option<T> option) {
+	public <T> Option<T> add(final Option<T> option) {
 		for (final String name : option.names())
 			if (named(name) != null) throw new IllegalArgumentException(commandLine + ": " + name + " declared twice");
 		declared.add(option);
@@ -99,44 +102,56 @@ final class CommandOptions {
 	}
 
 	/**
+	 * Declares an option that may be given more than once ({@code --conf A=1 --conf B=2}); {@link #values} reads
+	 * every value given, in order.
+	 *
+	 * @return {@code option}, to read its values with later
+	 */
+	public <T> Option<T> addRepeatable(final Option<T> option) {
+		add(option);
+		repeatable.put(option, new ArrayList<>());
+		return option;
+	}
+
+	/**
 	 * Lets the last positional parameter be given more than once ({@code MOVIE...}); {@link #values} reads them all.
 	 */
-	CommandOptions withRepeatedLastParameter() {
+	public CommandOptions withRepeatedLastParameter() {
 		repeatLast = true;
 		return this;
 	}
 
 	/** Adds {@code -V}/{@code --version}; see {@link #versionRequested()}. */
-	CommandOptions withVersion() {
+	public CommandOptions withVersion() {
 		version = Option.flag(List.of("-V", "--version"), "Print version information and exit.");
 		return this;
 	}
 
 	/** Lists the options in the help in the order they were declared (the help option last), not sorted by name. */
-	CommandOptions inDeclarationOrder() {
+	public CommandOptions inDeclarationOrder() {
 		declarationOrder = true;
 		return this;
 	}
 
 	/** Lists these commands in the help, each with the first paragraph of its description. */
-	CommandOptions withSubcommands(final List<CommandOptions> commands) {
+	public CommandOptions withSubcommands(final List<CommandOptions> commands) {
 		subcommands.addAll(commands);
 		return this;
 	}
 
 	/** Ends the help with this paragraph. */
-	CommandOptions withFooter(final String text) {
+	public CommandOptions withFooter(final String text) {
 		footer = text;
 		return this;
 	}
 
 	/** @return how the command is called, e.g. {@code contact-tracker demo} */
-	String commandLine() {
+	public String commandLine() {
 		return commandLine;
 	}
 
 	/** @return the command's own name, the last word of {@link #commandLine()} */
-	String name() {
+	public String name() {
 		return commandLine.substring(commandLine.lastIndexOf(' ') + 1);
 	}
 
@@ -148,10 +163,11 @@ final class CommandOptions {
 	 * @throws BadOptionException an unknown option, an unconvertible or missing value, a missing required
 	 *         option or parameter, an argument left over
 	 */
-	void parse(final String[] args, final int first) throws BadOptionException {
+	public void parse(final String[] args, final int first) throws BadOptionException {
 		values.clear();
 		given.clear();
 		repeated.clear();
+		repeatable.values().forEach(List::clear);
 		final Option<?> last = lastParameter();
 		final List<Integer> unmatched = new ArrayList<>();
 		final Iterator<Option<?>> positionals = declared.stream().filter(Option::positional).iterator();
@@ -167,7 +183,7 @@ final class CommandOptions {
 					unmatched.add(i);
 					continue;
 				}
-				if (!given.add(option)) throw new BadOptionException("option '" + option.mainName() + "'" + (option
+				if (!given.add(option) && !repeatable.containsKey(option)) throw new BadOptionException("option '" + option.mainName() + "'" + (option
 					.isFlag() ? "" : " (" + option.label() + ")") + " should be specified only once");
 				if (option.isFlag()) {
 					final boolean set = equals < 0 || (Boolean) convert(option, arg.substring(equals + 1));
@@ -179,7 +195,9 @@ final class CommandOptions {
 				final String text = equals < 0 ? args[++i] : arg.substring(equals + 1);
 				if (looksLikeOption(text) && named(text.split("=", 2)[0]) != null) throw new BadOptionException(
 					"Expected parameter for option '" + option.mainName() + "' but found '" + text + "'");
-				values.put(option, convert(option, text));
+				final Object value = convert(option, text);
+				if (repeatable.containsKey(option)) repeatable.get(option).add(value);
+				values.putIfAbsent(option, value);
 			}
 			else if (positionals.hasNext()) {
 				final Option<?> positional = positionals.next();
@@ -198,34 +216,35 @@ final class CommandOptions {
 	}
 
 	/** @return whether {@code -h}/{@code --help} was given */
-	boolean helpRequested() {
+	public boolean helpRequested() {
 		return given.contains(help);
 	}
 
 	/** @return whether {@code -V}/{@code --version} was given (see {@link #withVersion()}) */
-	boolean versionRequested() {
+	public boolean versionRequested() {
 		return version != null && given.contains(version);
 	}
 
 	/** @return whether the option was given on the command line (not only defaulted) */
-	boolean given(final Option<?> option) {
+	public boolean given(final Option<?> option) {
 		checkDeclared(option);
 		return given.contains(option);
 	}
 
 	/** @return the option's value as given, else its default; null when neither */
 	@SuppressWarnings("unchecked")
-	<T> T value(final Option<T> option) {
+	public <T> T value(final Option<T> option) {
 		checkDeclared(option);
 		return (T) values.get(option);
 	}
 
 	/**
-	 * @return every value given to a positional parameter that repeats (see {@link #withRepeatedLastParameter()}), in
-	 *         order; one value (or none) for any other option
+	 * @return every value given to a positional parameter that repeats (see {@link #withRepeatedLastParameter()}) or
+	 *         to a repeatable option ({@link #addRepeatable}), in order; one value (or none) for any other option
 	 */
 	@SuppressWarnings("unchecked")
-	<T> List<T> values(final Option<T> option) {
+	public <T> List<T> values(final Option<T> option) {
+		if (repeatable.containsKey(option)) return (List<T>) List.copyOf(repeatable.get(option));
 		final List<T> all = new ArrayList<>();
 		final T first = value(option);
 		if (first != null) all.add(first);
@@ -235,7 +254,7 @@ final class CommandOptions {
 	}
 
 	/** @return the help: usage line, description, options (and subcommands), wrapped to {@value #WIDTH} columns */
-	String usage() {
+	public String usage() {
 		final String usage = "Usage: " + commandLine;
 		final List<String> lines = new ArrayList<>(row(usage, usage.length() + 1, 0, synopsis()));
 		for (final String paragraph : description)
@@ -260,11 +279,11 @@ final class CommandOptions {
 	}
 
 	/** The user's mistake on the command line, in one line. */
-	static final class BadOptionException extends Exception {
+	public static final class BadOptionException extends Exception {
 
 		private static final long serialVersionUID = 1L;
 
-		BadOptionException(final String message) {
+		public BadOptionException(final String message) {
 			super(message);
 		}
 	}
@@ -386,7 +405,7 @@ final class CommandOptions {
 	}
 
 	/** @return {@code text}'s words in lines of at most {@code firstWidth}, then {@code width} characters */
-	static List<String> wrap(final String text, final int firstWidth, final int width) {
+	public static List<String> wrap(final String text, final int firstWidth, final int width) {
 		final List<String> lines = new ArrayList<>();
 		final StringBuilder line = new StringBuilder();
 		for (final String word : text.strip().split(" +")) {
