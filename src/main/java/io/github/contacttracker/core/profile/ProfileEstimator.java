@@ -21,6 +21,7 @@
  */
 package io.github.contacttracker.core.profile;
 
+import io.github.contacttracker.core.TrackerParameters;
 import java.util.List;
 
 import io.github.contacttracker.core.Flag;
@@ -53,12 +54,8 @@ import net.imglib2.type.numeric.RealType;
  */
 public final class ProfileEstimator {
 
-	/**
-	 * The profile is measured out to this multiple of {@code r_out}: {@code r_out} marks where the light falls
-	 * below the noise, but the faint tail beyond still tilts a neighbour's gradients at the nanometre level, so
-	 * the model must carry it.
-	 */
-	public static final double REACH_FACTOR = 1.5;
+	/** The profile is measured out to this multiple of {@code r_out} (why: {@link TrackerParameters#profileReach()}). */
+	public static final double REACH_FACTOR = TrackerParameters.PROFILE_REACH_FACTOR;
 	/** Knot spacing of the profile spline (px). */
 	public static final double SPACING = 1.0;
 	/** Weight of the smoothness penalty, relative to the mean diagonal of the normal matrix. */
