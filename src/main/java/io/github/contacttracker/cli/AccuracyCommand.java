@@ -43,6 +43,7 @@ import io.github.contacttracker.sim.Scenario;
 import io.github.contacttracker.sim.SimulatedStack;
 import io.github.contacttracker.settings.CommandOptions;
 import io.github.contacttracker.settings.Option;
+import io.github.contacttracker.cli.ContactTrackerCli;
 
 /**
  * {@code accuracy}: the paper's protocol for every method: two and three particles of the 5.53 um-like and

@@ -30,6 +30,7 @@ import java.util.Map;
 import io.github.contacttracker.core.Method;
 import io.github.contacttracker.eval.DistanceError;
 import io.github.contacttracker.eval.SceneStudy;
+import io.github.contacttracker.cli.Report;
 
 /** The markdown pages of {@code accuracy --report}: the paper's protocol, or the harder scenes. */
 final class AccuracyReport {

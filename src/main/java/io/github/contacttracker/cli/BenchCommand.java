@@ -47,6 +47,8 @@ import net.imglib2.img.basictypeaccess.array.ByteArray;
 import net.imglib2.type.numeric.integer.UnsignedByteType;
 import io.github.contacttracker.settings.CommandOptions;
 import io.github.contacttracker.settings.Option;
+import io.github.contacttracker.cli.ContactTrackerCli;
+import io.github.contacttracker.cli.Report;
 
 /**
  * {@code bench}: speed of each method on a simulated 512x512 8-bit stack with 12 particles (4 touching pairs),

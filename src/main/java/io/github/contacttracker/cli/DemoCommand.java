@@ -42,6 +42,7 @@ import io.github.contacttracker.sim.Scenario;
 import io.github.contacttracker.sim.SimulatedStack;
 import io.github.contacttracker.settings.CommandOptions;
 import io.github.contacttracker.settings.Option;
+import io.github.contacttracker.cli.ContactTrackerCli;
 
 /**
  * {@code demo}: the paper's two scenarios for 5.53 um particles, from well apart to contact, tracked with the

@@ -41,6 +41,7 @@ import io.github.contacttracker.sim.FluidMovie;
 import io.github.contacttracker.sim.ParticleType;
 import io.github.contacttracker.settings.CommandOptions;
 import io.github.contacttracker.settings.Option;
+import io.github.contacttracker.cli.ContactTrackerCli;
 
 /**
  * {@code demo-potential}: a simulated 2D fluid with a known pair potential (hard core + short-range attraction),

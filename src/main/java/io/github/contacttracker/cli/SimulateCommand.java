@@ -41,6 +41,7 @@ import io.github.contacttracker.sim.Scenario;
 import io.github.contacttracker.sim.SimulatedStack;
 import io.github.contacttracker.settings.CommandOptions;
 import io.github.contacttracker.settings.Option;
+import io.github.contacttracker.cli.ContactTrackerCli;
 
 /** {@code simulate --scenario pair|triple --separation R --out stack.tif --truth truth.csv}. */
 final class SimulateCommand extends ContactTrackerCli.Subcommand {

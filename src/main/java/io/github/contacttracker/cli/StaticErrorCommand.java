@@ -35,6 +35,7 @@ import io.github.contacttracker.potential.SpotSet;
 import io.github.contacttracker.potential.StaticError;
 import io.github.contacttracker.settings.CommandOptions;
 import io.github.contacttracker.settings.Option;
+import io.github.contacttracker.cli.ContactTrackerCli;
 
 /**
  * {@code contact-tracker static-error SPOTS.csv}: how accurate the positions of a movie are, from the particles'

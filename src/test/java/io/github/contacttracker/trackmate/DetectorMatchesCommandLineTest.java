@@ -58,6 +58,7 @@ import net.imglib2.img.array.ArrayImgs;
 import net.imglib2.img.basictypeaccess.array.ByteArray;
 import net.imglib2.type.numeric.integer.UnsignedByteType;
 import io.github.contacttracker.settings.SettingsOf;
+import io.github.contacttracker.cli.ContactTrackerLab;
 
 /**
  * TrackMate's spots equal the command line's CSV, value for value, for the same movie and settings, with every
@@ -92,7 +93,7 @@ class DetectorMatchesCommandLineTest {
 
 	private static String cli(final String... args) {
 		final ByteArrayOutputStream out = new ByteArrayOutputStream(), err = new ByteArrayOutputStream();
-		final int status = ContactTrackerCli.run(args, new PrintStream(out, true, StandardCharsets.UTF_8), new PrintStream(
+		final int status = ContactTrackerLab.run(args, new PrintStream(out, true, StandardCharsets.UTF_8), new PrintStream(
 			err, true, StandardCharsets.UTF_8));
 		assertEquals(0, status, () -> err.toString(StandardCharsets.UTF_8));
 		return out.toString(StandardCharsets.UTF_8);
