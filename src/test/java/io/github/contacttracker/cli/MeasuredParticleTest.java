@@ -30,6 +30,7 @@ import org.junit.jupiter.api.io.TempDir;
 
 import io.github.contacttracker.sim.PaperParticles;
 import io.github.contacttracker.sim.ParticleType;
+import io.github.contacttracker.cli.ContactTrackerLab;
 
 /** A particle measured on a movie is the particle the movie shows: checked on a simulated movie of a known one. */
 class MeasuredParticleTest {
@@ -44,9 +45,11 @@ class MeasuredParticleTest {
 	@Test
 	void aSimulatedMovieGivesBackItsParticle() throws Exception {
 		final Path tif = dir.resolve("pair.tif");
-		final Object[] r = ContactTrackerCliTest.run("simulate", "--scenario", "pair", "--separation", "3", "--particle", "2.06", "--frames",
-			"2", "--seed", "5", "--out", tif.toString(), "--truth", dir.resolve("truth.csv").toString());
-		assertEquals(0, r[0], (String) r[2]);
+		final java.io.ByteArrayOutputStream err = new java.io.ByteArrayOutputStream();
+		assertEquals(0, ContactTrackerLab.run(new String[] { "simulate", "--scenario", "pair", "--separation", "3",
+			"--particle", "2.06", "--frames", "2", "--seed", "5", "--out", tif.toString(), "--truth", dir.resolve(
+				"truth.csv").toString() }, new java.io.PrintStream(new java.io.ByteArrayOutputStream()),
+			new java.io.PrintStream(err)), err.toString());
 		final ParticleType truth = PaperParticles.silica206(), measured = MeasuredParticle.of(tif);
 		assertEquals(MeasuredParticle.PIXEL_NM, measured.pixelSizeNm());
 		assertEquals(truth.background(), measured.background(), 1.0, "background");
