@@ -41,8 +41,8 @@ import ij.process.ColorProcessor;
 import ij.process.FloatProcessor;
 import io.github.contacttracker.io.ImageFiles;
 import io.github.contacttracker.io.SpotColumn;
-import io.github.contacttracker.sim.PaperParticles;
-import io.github.contacttracker.cli.ContactTrackerLab;
+import io.github.contacttracker.lab.sim.PaperParticles;
+import io.github.contacttracker.lab.cli.ContactTrackerLab;
 
 class ContactTrackerCliTest {
 

@@ -35,7 +35,7 @@ import ij.ImageStack;
 import ij.io.FileSaver;
 import ij.process.ImageProcessor;
 import io.github.contacttracker.cli.ContactTrackerCli;
-import io.github.contacttracker.cli.ContactTrackerLab;
+import io.github.contacttracker.lab.cli.ContactTrackerLab;
 
 /**
  * The movies the Spark tests track, and the command line to compare with; free of Spark's classes, so that the

@@ -58,7 +58,7 @@ import net.imglib2.img.array.ArrayImgs;
 import net.imglib2.img.basictypeaccess.array.ByteArray;
 import net.imglib2.type.numeric.integer.UnsignedByteType;
 import io.github.contacttracker.settings.SettingsOf;
-import io.github.contacttracker.cli.ContactTrackerLab;
+import io.github.contacttracker.lab.cli.ContactTrackerLab;
 
 /**
  * TrackMate's spots equal the command line's CSV, value for value, for the same movie and settings, with every
