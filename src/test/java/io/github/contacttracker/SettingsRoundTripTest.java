@@ -53,6 +53,7 @@ import ij.io.FileSaver;
 import ij.process.ByteProcessor;
 import io.github.contacttracker.cli.ContactTrackerCli;
 import io.github.contacttracker.command.ContactTrackerCommand;
+import io.github.contacttracker.command.TitledResultsTable;
 import io.github.contacttracker.io.SettingsFile;
 import io.github.contacttracker.settings.Setting;
 import io.github.contacttracker.settings.SettingValues;
@@ -65,8 +66,8 @@ import net.imglib2.type.numeric.integer.UnsignedByteType;
 /**
  * Every setting, each at a value other than its default, goes in through every front end (the command line, the
  * Fiji command, the Spark job, TrackMate's detector settings) and comes back equal from every output that records
- * settings (the CSV's settings file, the TrackMate XML's detector settings, the TrackMate session's marshalled
- * settings). The movie has dark particles in its second channel and a first channel that no threshold of the
+ * settings (the CSV's settings file, the TrackMate XML's detector settings, the Fiji spots table, the TrackMate
+ * session's marshalled settings). The movie has dark particles in its second channel and a first channel that no threshold of the
  * inverted data reaches, so a run that loses {@code particles} or {@code channel} fails or records them wrong.
  */
 class SettingsRoundTripTest {
@@ -127,7 +128,7 @@ class SettingsRoundTripTest {
 	}
 
 	@Test
-	void fijiCommandRecordsEverySettingInTheSettingsFileAndTheXml() throws Exception {
+	void fijiCommandRecordsEverySettingInTheSettingsFileTheXmlAndItsTable() throws Exception {
 		final Path csv = dir.resolve("fiji.csv"), xml = dir.resolve("fiji.xml");
 		final List<Object> inputs = new ArrayList<>(List.of("imp", new ImagePlus(movie.toString()), "table", false,
 			"csv", csv.toFile(), "trackmate_xml", xml.toFile()));
@@ -140,6 +141,7 @@ class SettingsRoundTripTest {
 			final CommandModule m = context.service(CommandService.class).run(ContactTrackerCommand.class, true, inputs
 				.toArray()).get();
 			assertEquals(false, m.isCanceled(), m.getCancelReason());
+			assertEquals(GIVEN, ((TitledResultsTable) m.getOutput("spots")).settings(), "the Fiji table's settings");
 		}
 		finally {
 			context.dispose();

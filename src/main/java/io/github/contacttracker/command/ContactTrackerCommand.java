@@ -351,7 +351,7 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 			region), outputs, threads > 0 ? threads : Prefs.getThreads(), overlay, this::progress, cancelled);
 		final List<FrameResult> found = result.frames();
 		final List<Localization> all = result.spots();
-		final TitledResultsTable spotTable = SpotTables.spots(all, frames.calibration(), imp.getTitle());
+		final TitledResultsTable spotTable = SpotTables.spots(all, frames.calibration(), imp.getTitle(), settings);
 		final List<PairDistances.Pair> pairList = pair_cutoff > 0 ? PairDistances.within(all, frames.calibration(),
 			pair_cutoff) : null;
 		final TitledResultsTable pairTable = pairList == null ? null : SpotTables.pairs(pairList, imp.getTitle());
