@@ -80,7 +80,7 @@ class TrackMateJarIT {
 		try (Stream<Path> files = Files.list(target())) {
 			files.filter(p -> {
 				final String n = p.getFileName().toString();
-				return n.endsWith(".jar") && !n.startsWith("original-") && !n.matches(".*-(sources|tests|test-sources|javadoc|cli|spark)\\.jar");
+				return n.endsWith(".jar") && !n.startsWith("original-") && !n.matches(".*-(sources|tests|test-sources|javadoc|cli|spark|lab)\\.jar");
 			}).forEach(jars::add);
 		}
 		assertEquals(1, jars.size(), "expected exactly one plugin jar in " + target() + ": " + jars);
