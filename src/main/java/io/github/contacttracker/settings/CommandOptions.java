@@ -361,7 +361,8 @@ public final class CommandOptions {
 		final List<Option<?>> sorted = sorted(all().stream().filter(o -> !o.positional()));
 		for (final boolean flags : new boolean[] { true, false })
 			for (final Option<?> option : sorted)
-				if (option.isFlag() == flags && (!flags || option.shortName() == null)) items.add(item(option));
+				if (option.isFlag() == flags && (!flags || option.shortName() == null)) items.add(item(option) + (repeatable
+					.containsKey(option) ? "..." : ""));
 		if (!subcommands.isEmpty()) items.add("[COMMAND]");
 		for (final Option<?> option : declared)
 			if (option.positional()) items.add(item(option) + (repeatLast && option == lastParameter() ? "..." : ""));

@@ -38,6 +38,7 @@ class SparkOptionsTest {
 	void kindsIsAnOptionWithItsHelpAndDefault() {
 		final String usage = SparkOptions.usage();
 		assertTrue(usage.contains("      --kinds=N             Kinds of particle the profile methods"), usage);
+		assertTrue(usage.replaceAll("\\s+", " ").contains(" [--conf=KEY=VALUE]... "), "a repeatable option says so: " + usage);
 		assertTrue(usage.replaceAll("\\s+", " ").contains("The KIND column says each spot's kind. Default: 0."), usage);
 		assertEquals(0, SparkOptions.parse("m.tif", "--out-dir", "out").settings().parameters().kinds());
 	}
