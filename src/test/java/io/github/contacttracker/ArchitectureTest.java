@@ -41,7 +41,7 @@ import org.junit.jupiter.api.Test;
 
 /**
  * The house (src/site/markdown/contributing.md, "The house"): each package uses only the packages below it, so there is no cycle and
- * the front ends never import each other. The core is built of rooms ({@code core} and {@code core.*}) that stand in
+ * the front ends never import each other; the lab ({@code lab.*}) stands on top, used by nothing outside it. The core is built of rooms ({@code core} and {@code core.*}) that stand in
  * the same kind of order, and holds no ImageJ, SciJava or Fiji type. Read from the sources' references to our packages.
  */
 class ArchitectureTest {
@@ -64,19 +64,23 @@ class ArchitectureTest {
 		Map.entry("core.track", Set.of("core", "core.math", "core.image", "core.profile", "core.radial", "core.kind",
 			"core.fit", "core.detect")), //
 		Map.entry("advisor", Set.of("core")), //
-		Map.entry("sim", Set.of("core")), //
 		Map.entry("potential", Set.of("core")), //
 		Map.entry("settings", Set.of("core")), //
 		Map.entry("io", Set.of("core", "settings", "potential", "advisor")), //
-		Map.entry("eval", Set.of("core", "sim", "potential")), //
 		Map.entry("pipeline", Set.of("core", "advisor", "io", "settings")), //
-		Map.entry("cli", Set.of("core", "advisor", "sim", "potential", "settings", "io", "eval", "pipeline")), //
-		Map.entry("command", Set.of("core", "advisor", "sim", "potential", "settings", "io", "eval", "pipeline")), //
+		Map.entry("cli", Set.of("core", "advisor", "potential", "settings", "io", "pipeline")), //
+		Map.entry("command", Set.of("core", "advisor", "potential", "settings", "io", "pipeline")), //
 		Map.entry("trackmate", Set.of("core", "settings", "io", "pipeline")), //
-		Map.entry("spark", Set.of("core", "potential", "settings", "io", "pipeline")));
+		Map.entry("spark", Set.of("core", "potential", "settings", "io", "pipeline")), //
+		// the lab: the simulator, the studies and the research subcommands; nothing outside it uses it
+		Map.entry("lab.sim", Set.of("core")), //
+		Map.entry("lab.eval", Set.of("core", "lab.sim", "potential")), //
+		Map.entry("lab.cli", Set.of("core", "advisor", "potential", "settings", "io", "pipeline", "cli", "lab.sim",
+			"lab.eval")));
 
 	/** A reference to a type of ours: the package (a core room with its name) followed by a type or a wildcard. */
-	private static final Pattern REFERENCE = Pattern.compile("io\\.github\\.contacttracker\\.((?:core\\.)?[a-z]+)\\.(?=[A-Z*])");
+	private static final Pattern REFERENCE = Pattern.compile(
+		"io\\.github\\.contacttracker\\.((?:core\\.|lab\\.)?[a-z]+)\\.(?=[A-Z*])");
 
 	/** ImageJ 1, ImageJ2/SciJava and Fiji packages: none of them in the core. */
 	private static final Pattern FRONT_END_TYPE = Pattern.compile("(?<![\\w.])(ij|net\\.imagej|org\\.scijava|fiji)\\.[a-zA-Z]");
@@ -108,6 +112,17 @@ class ArchitectureTest {
 		}
 		assertEquals(ALLOWED.keySet(), seen, "packages");
 		assertTrue(violations.isEmpty(), String.join("\n", violations));
+	}
+
+	/**
+	 * The lab (simulator, studies, research subcommands) stays out of what users run: no front end, no pipeline, no
+	 * package outside the lab may use it, so the Fiji plugin's jar can leave it out.
+	 */
+	@Test
+	void nothingOutsideTheLabUsesIt() {
+		for (final Map.Entry<String, Set<String>> e : ALLOWED.entrySet())
+			if (!e.getKey().startsWith("lab.")) for (final String used : e.getValue())
+				assertTrue(!used.startsWith("lab."), e.getKey() + " may use " + used);
 	}
 
 	/** The rules themselves have no cycle: following "may use" from any package never comes back to it. */

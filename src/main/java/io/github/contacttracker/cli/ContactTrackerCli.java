@@ -32,10 +32,13 @@ import java.util.concurrent.CancellationException;
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.io.AtomicFile;
 import io.github.contacttracker.io.ProjectVersion;
+import io.github.contacttracker.settings.CommandOptions;
+import io.github.contacttracker.settings.Option;
 
 /**
- * The command line: {@code contact-tracker demo | track | simulate | bench | accuracy | potential |
- * demo-potential | profile}, each subcommand's arguments parsed by its {@link CommandOptions}; every subcommand has
+ * The command line: {@code contact-tracker track | potential | profile}, each subcommand's arguments parsed by its
+ * {@link CommandOptions}; a program built on it adds its own subcommands ({@link Extension}: the lab's research
+ * commands, {@code demo | simulate | bench | accuracy | demo-potential | static-error}). Every subcommand has
  * {@code --help}. Bad input (an unknown or mistyped option, a missing file, an untrackable image) ends with a
  * one-line error on stderr and exit status 2; an unexpected failure with a stack trace and exit status 1.
  */
@@ -53,25 +56,53 @@ public final class ContactTrackerCli {
 	 * A subcommand: its options, declared by the subclass, and its work (run once they are parsed), which writes to
 	 * {@link #out} and returns the exit status.
 	 */
-	abstract static class Subcommand implements Callable<Integer> {
+	public abstract static class Subcommand implements Callable<Integer> {
 
 		/** The command's options, which {@link #call()} reads once they are parsed. */
-		final CommandOptions options;
+		protected final CommandOptions options;
 		/** Where the command's results go. */
-		final PrintStream out;
+		protected final PrintStream out;
 		/** The arguments the command was run with, its name first (for the stamp of a {@link Report}). */
-		List<String> arguments = List.of();
+		protected List<String> arguments = List.of();
 
-		Subcommand(final CommandOptions options, final PrintStream out) {
+		protected Subcommand(final CommandOptions options, final PrintStream out) {
 			this.options = options;
 			this.out = out;
 		}
 
 		/** @return the command's options */
-		final CommandOptions options() {
+		public final CommandOptions options() {
 			return options;
 		}
 	}
+
+	/**
+	 * Subcommands that a program built on this command line adds to it, made by name: the lab's research commands
+	 * (simulation, accuracy studies, benchmarks) join {@code track}, {@code potential} and {@code profile} this way,
+	 * so that this front end needs none of the lab's code.
+	 */
+	public interface Extension {
+
+		/** @return the added commands' names, in the order the help lists them after this command line's own */
+		List<String> names();
+
+		/** @return the command {@code name}, one of {@link #names()} */
+		Subcommand make(String name, PrintStream out, PrintStream err);
+	}
+
+	/** No added subcommand. */
+	private static final Extension NONE = new Extension() {
+
+		@Override
+		public List<String> names() {
+			return List.of();
+		}
+
+		@Override
+		public Subcommand make(final String name, final PrintStream out, final PrintStream err) {
+			return null;
+		}
+	};
 
 	private ContactTrackerCli() {}
 
@@ -84,31 +115,33 @@ public final class ContactTrackerCli {
 	}
 
 	/** The subcommands' names, in the order the help lists them. */
-	private static final List<String> COMMANDS = List.of("demo", "track", "simulate", "bench", "accuracy", "potential",
-		"demo-potential", "static-error", "profile");
+	private static final List<String> COMMANDS = List.of("track", "potential", "profile");
 
 	/**
-	 * @return the subcommand {@code name} (one of {@link #COMMANDS}), or null. Only the one run is made: building a
+	 * @return the subcommand {@code name} (one of {@link #COMMANDS} or of {@code more}), or null. Only the one run is made: building a
 	 *         command's options links lambdas and streams, a few milliseconds each on a fresh JVM
 	 */
-	private static Subcommand subcommand(final String name, final PrintStream out, final PrintStream err) {
+	private static Subcommand subcommand(final String name, final PrintStream out, final PrintStream err,
+		final Extension more)
+	{
 		return switch (name) {
-			case "demo" -> new DemoCommand(out);
 			case "track" -> new TrackCommand(out, err);
-			case "simulate" -> new SimulateCommand(out);
-			case "bench" -> new BenchCommand(out);
-			case "accuracy" -> new AccuracyCommand(out);
 			case "potential" -> new PotentialCommand(out, err);
-			case "demo-potential" -> new DemoPotentialCommand(out);
-			case "static-error" -> new StaticErrorCommand(out);
 			case "profile" -> new ProfileCommand(out);
-			default -> null;
+			default -> more.names().contains(name) ? more.make(name, out, err) : null;
 		};
 	}
 
 	/** @return every subcommand (for the top-level help, which lists them all) */
-	private static List<Subcommand> subcommands(final PrintStream out, final PrintStream err) {
-		return COMMANDS.stream().map(name -> subcommand(name, out, err)).toList();
+	private static List<Subcommand> subcommands(final PrintStream out, final PrintStream err, final Extension more) {
+		return names(more).stream().map(name -> subcommand(name, out, err, more)).toList();
+	}
+
+	/** @return this command line's subcommands' names, then the added ones */
+	private static List<String> names(final Extension more) {
+		final List<String> all = new java.util.ArrayList<>(COMMANDS);
+		all.addAll(more.names());
+		return all;
 	}
 
 	private static CommandOptions root(final List<Subcommand> subcommands) {
@@ -119,27 +152,32 @@ public final class ContactTrackerCli {
 	}
 
 	/** @return {@code --threads N} of the subcommands that simulate and track, added to {@code options} */
-	static Option<Integer> threads(final CommandOptions options) {
+	public static Option<Integer> threads(final CommandOptions options) {
 		return options.add(Option.integer("--threads", "N", "Worker threads (0: all processors).").withDefaultExplained(
 			"0"));
 	}
 
 	/** Runs a command; returns the exit status. */
 	public static int run(final String[] args, final PrintStream out, final PrintStream err) {
+		return run(args, out, err, NONE);
+	}
+
+	/** Runs a command, one of this command line's or of {@code more}; returns the exit status. */
+	public static int run(final String[] args, final PrintStream out, final PrintStream err, final Extension more) {
 		if (args.length == 0) {
-			err.print(root(subcommands(out, err)).usage());
+			err.print(root(subcommands(out, err, more)).usage());
 			return EXIT_BAD_INPUT;
 		}
 		if (args[0].equals("help")) {
-			out.print(root(subcommands(out, err)).usage());
+			out.print(root(subcommands(out, err, more)).usage());
 			return 0;
 		}
-		final Subcommand command = subcommand(args[0], out, err);
+		final Subcommand command = subcommand(args[0], out, err, more);
 		if (command == null && !args[0].startsWith("-")) {
-			err.println("contact-tracker: error: unknown command '" + args[0] + "' (" + String.join(", ", COMMANDS) + ")");
+			err.println("contact-tracker: error: unknown command '" + args[0] + "' (" + String.join(", ", names(more)) + ")");
 			return EXIT_BAD_INPUT;
 		}
-		final CommandOptions root = command == null ? root(subcommands(out, err)) : null;
+		final CommandOptions root = command == null ? root(subcommands(out, err, more)) : null;
 		final CommandOptions options = command == null ? root : command.options();
 		try {
 			options.parse(args, command == null ? 0 : 1);
@@ -192,13 +230,13 @@ public final class ContactTrackerCli {
 	 * @param option the option that names it ({@code --csv}), for the message
 	 * @return {@code file} (null when the option was not given)
 	 */
-	static Path output(final String option, final Path file) {
+	public static Path output(final String option, final Path file) {
 		if (file != null) AtomicFile.checkFolder(option, file);
 		return file;
 	}
 
 	/** @return {@code text} split at commas, each part trimmed */
-	static List<String> list(final String text) {
+	public static List<String> list(final String text) {
 		return List.of(text.split(",")).stream().map(String::trim).toList();
 	}
 }

@@ -38,6 +38,8 @@ import io.github.contacttracker.potential.FieldOfView;
 import io.github.contacttracker.potential.PairCorrelation;
 import io.github.contacttracker.potential.PotentialReport;
 import io.github.contacttracker.potential.SpotSet;
+import io.github.contacttracker.settings.CommandOptions;
+import io.github.contacttracker.settings.Option;
 
 /**
  * {@code potential SPOTS.csv --bin W --r-max R [--csv OUT.csv] [--png OUT.png]}: g(r) and U(r)/kT from a spots

@@ -42,6 +42,8 @@ import io.github.contacttracker.pipeline.MeasuredSettings;
 import io.github.contacttracker.settings.SettingValues;
 import io.github.contacttracker.settings.TrackingSettings;
 import net.imglib2.RandomAccessibleInterval;
+import io.github.contacttracker.settings.CommandOptions;
+import io.github.contacttracker.settings.Option;
 
 /**
  * {@code profile MOVIE [--at X,Y] [--frame N] [--diameter D] [--max-radius R] [--png OUT.png] [--csv OUT.csv]}:

@@ -37,30 +37,30 @@ import io.github.contacttracker.io.ProjectVersion;
  * the command that made it, the project's version, the date and the machine, so that a report in the documentation
  * is never typed by hand and says what it measured: run the command again to update it.
  */
-final class Report {
+public final class Report {
 
 	private final StringBuilder text = new StringBuilder();
 	private final String title;
 
 	/** @param title the page's title (its first line, a level-1 heading) */
-	Report(final String title) {
+	public Report(final String title) {
 		this.title = title;
 	}
 
 	/** Adds a level-2 heading. */
-	Report heading(final String heading) {
+	public Report heading(final String heading) {
 		text.append("## ").append(heading).append("\n\n");
 		return this;
 	}
 
 	/** Adds a paragraph. */
-	Report paragraph(final String paragraph) {
+	public Report paragraph(final String paragraph) {
 		text.append(paragraph).append("\n\n");
 		return this;
 	}
 
 	/** Adds a bullet list. */
-	Report bullets(final List<String> items) {
+	public Report bullets(final List<String> items) {
 		for (final String item : items)
 			text.append("* ").append(item).append('\n');
 		text.append('\n');
@@ -68,7 +68,7 @@ final class Report {
 	}
 
 	/** Adds a table: the header's cells, then each row's ({@code |} in a cell is escaped). */
-	Report table(final List<String> header, final List<List<String>> rows) {
+	public Report table(final List<String> header, final List<List<String>> rows) {
 		row(header);
 		text.append('|');
 		for (int i = 0; i < header.size(); i++)
@@ -88,7 +88,7 @@ final class Report {
 	}
 
 	/** Adds a fenced code block (e.g. the command's own output). */
-	Report code(final String block) {
+	public Report code(final String block) {
 		text.append("```\n").append(block.endsWith("\n") ? block : block + "\n").append("```\n\n");
 		return this;
 	}
@@ -98,7 +98,7 @@ final class Report {
 	 * @param seconds how long the run took
 	 * @return the stamp: the command, the version, the date (UTC), the machine and the run's time
 	 */
-	static String stamp(final List<String> arguments, final double seconds) {
+	public static String stamp(final List<String> arguments, final double seconds) {
 		final StringBuilder command = new StringBuilder("scripts/contact-tracker");
 		for (final String a : arguments)
 			command.append(' ').append(a.isEmpty() || a.matches(".*[\\s'\"$`\\\\|&;<>()*?].*") ? "'" + a.replace("'",
@@ -110,19 +110,19 @@ final class Report {
 	}
 
 	/** Writes the page (title, stamp, then what was added) to {@code file}, all or nothing. */
-	void write(final Path file, final List<String> arguments, final double seconds) throws IOException {
+	public void write(final Path file, final List<String> arguments, final double seconds) throws IOException {
 		final String page = "# " + title + "\n\n" + stamp(arguments, seconds) + "\n\n" + text.toString().stripTrailing() +
 			"\n";
 		AtomicFile.write(file, os -> os.write(page.getBytes(StandardCharsets.UTF_8)));
 	}
 
 	/** @return {@code v} with two decimals and its sign ({@code +1.56}, {@code -0.06}) */
-	static String signed(final double v) {
+	public static String signed(final double v) {
 		return String.format(Locale.ROOT, "%+.2f", v);
 	}
 
 	/** @return {@code v} with two decimals */
-	static String two(final double v) {
+	public static String two(final double v) {
 		return String.format(Locale.ROOT, "%.2f", v);
 	}
 }

@@ -31,11 +31,8 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashMap;
-import java.util.HashSet;
-import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.Set;
 
 import ij.ImagePlus;
 import io.github.contacttracker.core.InvalidInputException;
@@ -48,7 +45,9 @@ import io.github.contacttracker.pipeline.MeasuredSettings;
 import io.github.contacttracker.pipeline.Outputs;
 import io.github.contacttracker.pipeline.TrackingPipeline;
 import io.github.contacttracker.pipeline.TrackingResult;
-import io.github.contacttracker.settings.Setting;
+import io.github.contacttracker.settings.Option;
+import io.github.contacttracker.settings.CommandOptions;
+import io.github.contacttracker.settings.SettingOptions;
 import io.github.contacttracker.settings.SettingValues;
 import io.github.contacttracker.settings.TrackingSettings;
 
@@ -68,7 +67,7 @@ final class TrackCommand extends ContactTrackerCli.Subcommand {
 	private final PrintStream err;
 	private final Option<Path> movieOption;
 	/** Each tracking setting's option, its text read by the setting itself. */
-	private final Map<Setting<?>, Option<String>> settingOptions = new LinkedHashMap<>();
+	private final SettingOptions settingOptions;
 	private final Option<Integer> threadsOption;
 	private final Option<Path> csvOption;
 	private final Option<Path> trackMateXmlOption;
@@ -84,12 +83,7 @@ final class TrackCommand extends ContactTrackerCli.Subcommand {
 				"other in one process: the JVM starts and warms up once.").withRepeatedLastParameter(), out);
 		this.err = err;
 		movieOption = options.add(Option.positionalPath("MOVIE", "The movie, image or folder of frames."));
-		for (final Setting<?> s : TrackingSettings.ALL) {
-			final Option<String> option = Option.text(s.cliOption(), metavar(s), s.help());
-			// the image-specific ones (threshold, r_out) have no default: measured from the movie when not given
-			settingOptions.put(s, options.add(s.isImageSpecific() ? option : option.withDefault(String.valueOf(s
-				.defaultValue()))));
-		}
+		settingOptions = new SettingOptions(options);
 		threadsOption = ContactTrackerCli.threads(options);
 		csvOption = options.add(Option.path("--csv", "OUT.csv", "Write the spots here."));
 		trackMateXmlOption = options.add(Option.path("--trackmate-xml", "OUT.xml", "Also write a TrackMate file (with " +
@@ -100,16 +94,10 @@ final class TrackCommand extends ContactTrackerCli.Subcommand {
 			"stderr; by default only when stderr is a terminal."));
 	}
 
-	private static String metavar(final Setting<?> s) {
-		if (!s.choices().isEmpty()) return String.join("|", s.choices().stream().map(String::valueOf).toList());
-		return s.type() == Integer.class ? "N" : s.name().equals("threshold") ? "T" : s.name().equals("r_out") ? "R" :
-			"X";
-	}
-
 	@Override
 	public Integer call() throws IOException {
 		final List<Path> movies = options.values(movieOption);
-		final SettingValues settings = settings();
+		final SettingValues settings = settingOptions.values();
 		final Path outDir = options.value(outDirOption);
 		final Path csv = options.value(csvOption), xml = options.value(trackMateXmlOption);
 		if (outDir != null && (csv != null || xml != null)) throw new InvalidInputException("--out-dir writes each " +
@@ -161,7 +149,7 @@ final class TrackCommand extends ContactTrackerCli.Subcommand {
 	{
 		final ImagePlus imp = ImageFiles.open(input);
 		// without --channel, a multi-channel image is refused rather than silently reduced to its first channel
-		final ImagePlusFrames frames = ImagePlusFrames.of(imp, options.given(settingOptions.get(TrackingSettings.CHANNEL))
+		final ImagePlusFrames frames = ImagePlusFrames.of(imp, settingOptions.given(TrackingSettings.CHANNEL)
 			? settings.channel() : 0);
 		final StringBuilder notice = new StringBuilder();
 		if (!frames.colourChoice().isEmpty()) notice.append("contact-tracker: ").append(frames.colourChoice());
@@ -194,11 +182,8 @@ final class TrackCommand extends ContactTrackerCli.Subcommand {
 	private SettingValues measured(final Path input, final ImagePlus imp, final ImagePlusFrames frames,
 		final SettingValues settings, final StringBuilder notice)
 	{
-		final Set<Setting<?>> given = new HashSet<>();
-		for (final Map.Entry<Setting<?>, Option<String>> s : settingOptions.entrySet())
-			if (options.given(s.getValue())) given.add(s.getKey());
 		final MeasuredSettings.Result r = MeasuredSettings.of(input.getFileName().toString(), frames.frames().get(0),
-			imp.getBitDepth() != 32, settings, given);
+			imp.getBitDepth() != 32, settings, settingOptions.given());
 		if (notice.length() > 0 && !r.notice().isEmpty()) notice.append('\n');
 		notice.append(r.notice());
 		return r.settings();
@@ -209,21 +194,5 @@ final class TrackCommand extends ContactTrackerCli.Subcommand {
 		final Path fileName = movie.toAbsolutePath().normalize().getFileName();
 		final String name = fileName == null ? "movie" : fileName.toString();
 		return Files.isDirectory(movie) ? name : Outputs.baseName(name);
-	}
-
-	/** @return the tracking settings given on the command line, the others at their defaults */
-	private SettingValues settings() {
-		SettingValues v = SettingValues.defaults();
-		for (final Map.Entry<Setting<?>, Option<String>> setting : settingOptions.entrySet()) {
-			final Setting<?> s = setting.getKey();
-			if (!options.given(setting.getValue())) continue;
-			try {
-				v = v.withText(s, options.value(setting.getValue()));
-			}
-			catch (final InvalidInputException e) {
-				throw new InvalidInputException("option " + s.cliOption() + ": " + e.getMessage(), e);
-			}
-		}
-		return v;
 	}
 }

@@ -325,13 +325,12 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 		}
 	}
 
-	/** @return the tracking settings of this run, each checked by its descriptor ({@link TrackingSettings}) */
+	/** @return the tracking settings of this run, each read and checked by its descriptor ({@link TrackingSettings}) */
 	private SettingValues settings() {
-		return SettingValues.defaults().with(TrackingSettings.THRESHOLD, threshold).with(TrackingSettings.R_OUT, r_out)
-			.with(TrackingSettings.MIN_AREA, min_area).with(TrackingSettings.MIN_SECOND_AREA, min_second_area).withText(
-				TrackingSettings.CONNECTIVITY, connectivity).withText(TrackingSettings.METHOD, method).with(
-					TrackingSettings.DIAMETER, diameter).with(TrackingSettings.KINDS, kinds).withText(TrackingSettings.PARTICLES,
-						particles).withText(TrackingSettings.DETECTION, detection).with(TrackingSettings.CHANNEL, channel);
+		SettingValues v = SettingValues.defaults();
+		for (final Setting<?> s : TrackingSettings.ALL)
+			v = v.withText(s, String.valueOf(input(s)));
+		return v;
 	}
 
 	/** @return the parameters as the core takes them, validated */
@@ -364,22 +363,17 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 		}
 	}
 
-	/** @return the value of the input of a tracking setting */
+	/**
+	 * @return the value of the input of a tracking setting: the field named as the setting (its macro key), which
+	 *         SciJava fills in ({@code CommandMatchesSettingsTest} pins one field to each setting)
+	 */
 	private Object input(final Setting<?> s) {
-		return switch (s.name()) {
-			case "threshold" -> threshold;
-			case "r_out" -> r_out;
-			case "min_area" -> min_area;
-			case "min_second_area" -> min_second_area;
-			case "connectivity" -> connectivity;
-			case "method" -> method;
-			case "diameter" -> diameter;
-			case "kinds" -> kinds;
-			case "particles" -> particles;
-			case "detection" -> detection;
-			case "channel" -> channel;
-			default -> throw new IllegalStateException("no input for the setting " + s.name());
-		};
+		try {
+			return ContactTrackerCommand.class.getDeclaredField(s.name()).get(this);
+		}
+		catch (final ReflectiveOperationException e) {
+			throw new IllegalStateException("no input for the setting " + s.name(), e);
+		}
 	}
 
 	/**
@@ -424,7 +418,7 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 		final List<FrameResult> found = result.frames();
 		final List<Localization> all = result.spots();
 		final TitledResultsTable spotTable = SpotTables.spots(all, frames.calibration(), imp.getTitle(),
-			frames.width(), frames.height());
+			frames.width(), frames.height(), settings);
 		final List<PairDistances.Pair> pairList = pair_cutoff > 0 ? PairDistances.within(all, frames.calibration(),
 			pair_cutoff) : null;
 		final TitledResultsTable pairTable = pairList == null ? null : SpotTables.pairs(pairList, imp.getTitle());

@@ -31,6 +31,7 @@ import io.github.contacttracker.core.Localization;
 import io.github.contacttracker.io.Calibration;
 import io.github.contacttracker.io.SpotColumn;
 import io.github.contacttracker.potential.FieldOfView;
+import io.github.contacttracker.settings.SettingValues;
 
 /**
  * The ImageJ results tables of Contact Tracker. The spots table has the columns of the command line's CSV
@@ -111,12 +112,13 @@ public final class SpotTables {
 	 * @param imageTitle the image's title, in the table's: one table (and window) per image
 	 * @param width the image's width in pixels
 	 * @param height its height
+	 * @param settings the settings the spots were found with, which the table carries
 	 * @return the spots table: one row per spot, IDs 0, 1, ... in list order; also {@link #lastRun()} from now on
 	 */
 	public static TitledResultsTable spots(final List<Localization> spots, final Calibration cal,
-		final String imageTitle, final int width, final int height)
+		final String imageTitle, final int width, final int height, final SettingValues settings)
 	{
-		final TitledResultsTable rt = new TitledResultsTable(spotsTitle(imageTitle));
+		final TitledResultsTable rt = new TitledResultsTable(spotsTitle(imageTitle), settings);
 		rt.showRowNumbers(false);
 		fillSpots(rt, spots, cal);
 		lastRun = new LastRun(rt, imageTitle, FieldOfView.ofImage(width, height, cal.pixelWidth(), cal.pixelHeight()));

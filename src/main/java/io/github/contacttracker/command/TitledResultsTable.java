@@ -22,19 +22,36 @@
 package io.github.contacttracker.command;
 
 import ij.measure.ResultsTable;
+import io.github.contacttracker.settings.SettingValues;
 
 /**
  * A {@link ResultsTable} that knows its title before it is shown. ImageJ sets a table's title only in
  * {@link #show(String)}, which does nothing headless; this table reports the title it was made with until then,
- * so scripts and headless runs see the same title as Fiji's window.
+ * so scripts and headless runs see the same title as Fiji's window. A table of spots also carries the settings
+ * they were found with ({@link #settings()}), as the CSV's settings file does, for scripts to keep with it.
  */
 public final class TitledResultsTable extends ResultsTable {
 
 	private final String defaultTitle;
+	private final SettingValues settings;
 
 	/** @param title the title reported until the table is shown under another */
 	public TitledResultsTable(final String title) {
+		this(title, null);
+	}
+
+	/**
+	 * @param title the title reported until the table is shown under another
+	 * @param settings the settings of the run whose results the table holds, or {@code null}
+	 */
+	public TitledResultsTable(final String title, final SettingValues settings) {
 		this.defaultTitle = title;
+		this.settings = settings;
+	}
+
+	/** @return the settings of the run whose results the table holds, or {@code null} for a table of none */
+	public SettingValues settings() {
+		return settings;
 	}
 
 	@Override

@@ -25,7 +25,10 @@ package io.github.contacttracker.core;
  * Parameters of the localizer, immutable and validated on construction.
  *
  * @param threshold grey level: pixels with {@code I >= threshold} form the active areas
- * @param rOut radius (px) of a particle's effective disc: where its image has returned to background, plus 2 px
+ * @param rOut radius (px) of a particle's effective disc: where its image has returned to background, plus 2 px.
+ *        One measured length that does four jobs, each named by an accessor: {@link #exclusionRadius()} (the
+ *        paper's second pass), {@link #aloneReach()} (merge detection), {@link #groupingDistance()} (the joint fit)
+ *        and {@link #profileReach()} (the measured profile)
  * @param minArea components with fewer active pixels are noise and dropped (px)
  * @param connectivity pixel neighbourhood of the labelling
  * @param minSecondArea below this many pixels in the second active area the spot keeps its first-pass centre
@@ -42,6 +45,13 @@ package io.github.contacttracker.core;
 public record TrackerParameters(double threshold, double rOut, int minArea, Connectivity connectivity,
 	int minSecondArea, Method method, double diameter, int kinds, Detection detection)
 {
+	/**
+	 * How far out the particles' profile is measured and modelled, as a multiple of {@code r_out}: {@code r_out}
+	 * marks where the light falls below the noise, but the faint tail beyond still tilts a neighbour's gradients at
+	 * the nanometre level, so the model must carry it.
+	 */
+	public static final double PROFILE_REACH_FACTOR = 1.5;
+
 	/** Default {@code min_area} (px). */
 	public static final int DEFAULT_MIN_AREA = 20;
 	/** Default {@code min_second_area} (px). */
@@ -106,6 +116,39 @@ public record TrackerParameters(double threshold, double rOut, int minArea, Conn
 	 */
 	public boolean detectsByImage() {
 		return detection == Detection.IMAGE && diameter > 0 && (method.needsProfile() || method == Method.ITERATIVE);
+	}
+
+	/**
+	 * @return the radius (px) of the disc around a neighbour's first-pass centre that the paper's second pass leaves
+	 *         out of a spot's active area: inside it the neighbour's light, not the spot's, sets the gradients
+	 *         ({@code r_out})
+	 */
+	public double exclusionRadius() {
+		return rOut;
+	}
+
+	/**
+	 * @return how far (px) beyond a component's equivalent radius no other particle's first-pass centre may lie for
+	 *         merge detection to call it alone: a particle's image reaches {@code r_out} from its centre, so only
+	 *         then do the component's gradient lines owe nothing to a neighbour, and their failing to meet in one
+	 *         point means several particles ({@code r_out})
+	 */
+	public double aloneReach() {
+		return rOut;
+	}
+
+	/**
+	 * @return the centre distance (px) below which the profile methods fit particles together, and up to which a
+	 *         particle left out of the model is said to disturb a neighbour: each image reaches {@code r_out}, so two
+	 *         closer than twice that share pixels ({@code 2 r_out})
+	 */
+	public double groupingDistance() {
+		return 2 * rOut;
+	}
+
+	/** @return how far (px) from its centre a particle's profile is measured and modelled ({@code 1.5 r_out}) */
+	public double profileReach() {
+		return PROFILE_REACH_FACTOR * rOut;
 	}
 
 	/** Parameters without a diameter (not known). */

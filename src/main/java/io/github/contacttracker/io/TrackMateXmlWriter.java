@@ -22,6 +22,7 @@
 package io.github.contacttracker.io;
 
 import io.github.contacttracker.core.InvalidInputException;
+import io.github.contacttracker.settings.SettingValues;
 import io.github.contacttracker.settings.TrackMateSettings;
 import java.io.IOException;
 import java.nio.file.Path;
@@ -35,7 +36,6 @@ import org.jdom2.output.Format;
 import org.jdom2.output.XMLOutputter;
 
 import io.github.contacttracker.core.Localization;
-import io.github.contacttracker.core.TrackerParameters;
 
 /**
  * Writes spots as a TrackMate session file that TrackMate 8 opens with <i>File &gt; Load a TrackMate file</i>
@@ -75,30 +75,20 @@ public final class TrackMateXmlWriter {
 	private TrackMateXmlWriter() {}
 
 	/**
-	 * Writes the file, atomically (nothing is left behind when writing fails). The target channel recorded is 1.
+	 * Writes the file, atomically (nothing is left behind when writing fails).
 	 *
 	 * @param out the XML file to create or replace
 	 * @param spots the spots, in pixel units, in any frame order; their list positions become their IDs
 	 * @param cal the image's calibration
 	 * @param src the image the spots come from
-	 * @param params the parameters the spots were found with
+	 * @param settings the settings the spots were found with, every one recorded in the detector's settings
 	 * @throws IOException naming the file when writing fails
 	 * @throws IllegalArgumentException when a spot lies outside the image's frames or has a non-finite position
 	 */
 	public static void write(final Path out, final List<Localization> spots, final Calibration cal,
-		final ImageSource src, final TrackerParameters params) throws IOException
+		final ImageSource src, final SettingValues settings) throws IOException
 	{
-		write(out, spots, cal, src, params, TrackMateSettings.DEFAULT_TARGET_CHANNEL);
-	}
-
-	/**
-	 * As {@link #write(Path, List, Calibration, ImageSource, TrackerParameters)}, recording the 1-based channel
-	 * the spots were found in.
-	 */
-	public static void write(final Path out, final List<Localization> spots, final Calibration cal,
-		final ImageSource src, final TrackerParameters params, final int targetChannel) throws IOException
-	{
-		AtomicFile.write(out, body(spots, cal, src, params, targetChannel));
+		AtomicFile.write(out, body(spots, cal, src, settings));
 	}
 
 	/**
@@ -106,9 +96,9 @@ public final class TrackMateXmlWriter {
 	 *         cannot be written fails here, before any file is opened
 	 */
 	public static AtomicFile.Body body(final List<Localization> spots, final Calibration cal, final ImageSource src,
-		final TrackerParameters params, final int targetChannel)
+		final SettingValues settings)
 	{
-		final Document doc = document(spots, cal, src, params, targetChannel);
+		final Document doc = document(spots, cal, src, settings);
 		final XMLOutputter outputter = new XMLOutputter(Format.getPrettyFormat().setEncoding("UTF-8"));
 		return stream -> outputter.output(doc, stream);
 	}
@@ -118,12 +108,12 @@ public final class TrackMateXmlWriter {
 	 * @throws IllegalArgumentException when a spot lies outside the image's frames or has a non-finite position
 	 */
 	public static Document document(final List<Localization> spots, final Calibration cal, final ImageSource src,
-		final TrackerParameters params, final int targetChannel)
+		final SettingValues settings)
 	{
 		final Element root = new Element("TrackMate").setAttribute("version", TRACKMATE_VERSION);
-		root.addContent(new Element("Log").setText(log(spots.size(), cal, src, params, targetChannel)));
+		root.addContent(new Element("Log").setText(log(spots.size(), cal, src, settings)));
 		root.addContent(model(spots, cal, src));
-		root.addContent(settings(cal, src, params, targetChannel));
+		root.addContent(settings(cal, src, settings));
 		root.addContent(new Element("GUIState").setAttribute("state", "ConfigureViews"));
 		root.addContent(new Element("DisplaySettings"));
 		return new Document(root);
@@ -198,9 +188,7 @@ public final class TrackMateXmlWriter {
 		return e;
 	}
 
-	private static Element settings(final Calibration cal, final ImageSource src, final TrackerParameters params,
-		final int targetChannel)
-	{
+	private static Element settings(final Calibration cal, final ImageSource src, final SettingValues values) {
 		final Element settings = new Element("Settings");
 		settings.addContent(new Element("ImageData")
 			.setAttribute("filename", src.filename())
@@ -216,7 +204,7 @@ public final class TrackMateXmlWriter {
 
 		final Element detector = new Element("DetectorSettings")
 			.setAttribute(TrackMateSettings.XML_ATTRIBUTE_DETECTOR_NAME, TrackMateSettings.DETECTOR_KEY);
-		for (final Map.Entry<String, Object> e : TrackMateSettings.toMap(params, targetChannel).entrySet())
+		for (final Map.Entry<String, Object> e : TrackMateSettings.toMap(values).entrySet())
 			detector.setAttribute(e.getKey(), e.getValue().toString());
 		settings.addContent(detector);
 
@@ -234,8 +222,8 @@ public final class TrackMateXmlWriter {
 		return settings;
 	}
 
-	private static String log(final int n, final Calibration cal, final ImageSource src, final TrackerParameters params,
-		final int targetChannel)
+	private static String log(final int n, final Calibration cal, final ImageSource src,
+		final SettingValues settings)
 	{
 		return "Written by Contact Tracker " + ProjectVersion.get() +
 			": radial-symmetry localization of particles near contact (Yucel & Okumusoglu, " +
@@ -243,7 +231,7 @@ public final class TrackMateXmlWriter {
 			n + " spots in " + src.nframes() + " frames of " + (src.filename().isEmpty() ? "an unsaved image"
 				: src.filename()) + ", pixel size " + cal.pixelWidth() + " x " + cal.pixelHeight() + " " + cal.unit() +
 			", frame interval " + cal.frameInterval() + " " + cal.timeUnit() + ".\nDetector settings: " +
-			TrackMateSettings.echo(TrackMateSettings.toMap(params, targetChannel)) + ".\n" +
+			TrackMateSettings.echo(TrackMateSettings.toMap(settings)) + ".\n" +
 			"No tracks: link the spots with a tracker in TrackMate.";
 	}
 }

@@ -95,8 +95,8 @@ public final class MeasuredSettings {
 			v = v.with(TrackingSettings.THRESHOLD, r.suggestedThreshold(integerData));
 			said.append(" --threshold ").append(optionValue(v.get(TrackingSettings.THRESHOLD)));
 			final double[] range = ImagePlusFrames.range(seen, 0);
-			// above every pixel: what the helper took for particles' cores are not (on the authors' 1.avi inverted,
-			// the bright rings around dark cores)
+			// above every pixel: what the helper took for particles' cores are not (e.g. the bright rings around the
+			// dark cores of a bright-field movie, inverted)
 			if (v.get(TrackingSettings.THRESHOLD) > range[1] && v.get(TrackingSettings.DETECTION).equals(
 				TrackingSettings.IMAGE) && diameter) return byImage(name, seen, settings, false, rOutGiven, new StringBuilder(
 					particlesGiven || !v.dark() ? "" : " --particles dark"), new InvalidInputException("its threshold " +

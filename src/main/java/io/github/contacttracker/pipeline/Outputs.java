@@ -27,16 +27,19 @@ import java.util.ArrayList;
 import java.util.List;
 
 import io.github.contacttracker.core.Localization;
-import io.github.contacttracker.core.TrackerParameters;
 import io.github.contacttracker.io.AtomicFile;
 import io.github.contacttracker.io.Calibration;
 import io.github.contacttracker.io.ImageSource;
+import io.github.contacttracker.io.SettingsFile;
 import io.github.contacttracker.io.SpotCsvWriter;
 import io.github.contacttracker.io.TrackMateXmlWriter;
+import io.github.contacttracker.settings.SettingValues;
 
 /**
- * The files a run writes: a spots CSV, a TrackMate XML, both or neither. Their folders are checked before the
- * run ({@link #check()}); the files are written all or none ({@link #write}).
+ * The files a run writes: a spots CSV (with its settings file beside it, {@link SettingsFile}), a TrackMate XML,
+ * both or neither. Their folders are checked before the run ({@link #check()}); the files are written all or none
+ * ({@link #write}). Both record the run's settings as the front end gave them, so that every setting, the dark
+ * particles' inversion too, can be read back.
  *
  * @param csv the spots table, or {@code null}
  * @param trackMateXml the TrackMate file, or {@code null}
@@ -67,20 +70,24 @@ public record Outputs(Path csv, Path trackMateXml, ImageSource source) {
 	/**
 	 * Writes every file, all or none.
 	 *
+	 * @param settings the settings of the run, recorded in the settings file and the XML
+	 *
 	 * @throws IOException naming the file that failed (no file of this run is left behind)
 	 */
-	void write(final List<Localization> spots, final Calibration cal, final TrackerParameters params,
-		final int channel) throws IOException
+	void write(final List<Localization> spots, final Calibration cal, final SettingValues settings)
+		throws IOException
 	{
 		final List<Path> targets = new ArrayList<>();
 		final List<AtomicFile.Body> bodies = new ArrayList<>();
 		if (csv != null) {
 			targets.add(csv);
 			bodies.add(SpotCsvWriter.body(spots, cal));
+			targets.add(SettingsFile.beside(csv));
+			bodies.add(SettingsFile.body(settings));
 		}
 		if (trackMateXml != null) {
 			targets.add(trackMateXml);
-			bodies.add(TrackMateXmlWriter.body(spots, cal, source, params, channel));
+			bodies.add(TrackMateXmlWriter.body(spots, cal, source, settings));
 		}
 		if (!targets.isEmpty()) AtomicFile.writeAll(targets, bodies);
 	}

@@ -133,7 +133,7 @@ public final class TrackingPipeline {
 		final Outputs outputs, final long startNanos) throws IOException
 	{
 		final List<Localization> spots = withDiameter(StackTracker.spots(frames));
-		outputs.write(spots, calibration, params, settings.channel());
+		outputs.write(spots, calibration, settings);
 		int flagged = 0, discarded = 0, ownProfile = 0;
 		for (final Localization s : spots)
 			if (s.isFlagged()) flagged++;

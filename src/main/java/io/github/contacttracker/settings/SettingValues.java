@@ -50,18 +50,6 @@ public final class SettingValues {
 	}
 
 	/**
-	 * @return the values of {@code params} (their kinds too) with the given channel and diameter (0: not given)
-	 * @throws io.github.contacttracker.core.InvalidInputException if the channel or diameter is not allowed
-	 */
-	public static SettingValues of(final TrackerParameters params, final int channel, final double diameter) {
-		return defaults().with(TrackingSettings.THRESHOLD, params.threshold()).with(TrackingSettings.R_OUT, params.rOut())
-			.with(TrackingSettings.MIN_AREA, params.minArea()).with(TrackingSettings.MIN_SECOND_AREA, params
-				.minSecondArea()).with(TrackingSettings.CONNECTIVITY, params.connectivity().neighbours()).with(
-					TrackingSettings.METHOD, params.method().key()).with(TrackingSettings.CHANNEL, channel).with(
-						TrackingSettings.DIAMETER, diameter).with(TrackingSettings.KINDS, params.kinds());
-	}
-
-	/**
 	 * @return a copy with {@code setting} set to {@code value}
 	 * @throws io.github.contacttracker.core.InvalidInputException if the value is not allowed
 	 */

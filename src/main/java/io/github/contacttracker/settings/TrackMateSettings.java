@@ -103,15 +103,6 @@ public final class TrackMateSettings {
 	}
 
 	/**
-	 * @param params the localizer parameters
-	 * @param targetChannel the 1-based channel
-	 * @return a new, modifiable settings map, in {@link #keys()} order, with the parameters' diameter
-	 */
-	public static Map<String, Object> toMap(final TrackerParameters params, final int targetChannel) {
-		return toMap(SettingValues.of(params, targetChannel, params.diameter()));
-	}
-
-	/**
 	 * Checks a settings map: every key present (but those of settings added after maps without them were written,
 	 * {@link Setting#isOptionalInMaps()}: absent, they mean their default), no unknown key, every value non-null, of
 	 * the right type and allowed.

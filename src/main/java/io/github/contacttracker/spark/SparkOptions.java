@@ -25,17 +25,20 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 
 import io.github.contacttracker.core.InvalidInputException;
+import io.github.contacttracker.settings.CommandOptions;
+import io.github.contacttracker.settings.Option;
 import io.github.contacttracker.settings.Setting;
+import io.github.contacttracker.settings.SettingOptions;
 import io.github.contacttracker.settings.SettingValues;
-import io.github.contacttracker.settings.TrackingSettings;
 
 /**
- * The Spark job's command line: the movies, the job's own options, and every tracking option generated from
- * {@link TrackingSettings#ALL} (each {@link Setting#cliOption()} with its help), as {@code contact-tracker track}
- * has them, so the two cannot drift apart. Values are read by the settings themselves (the same checks and
- * messages). Syntax: {@code --name VALUE} or {@code --name=VALUE}, each option at most once.
+ * The Spark job's command line: the movies, the job's own options, and every tracking option, parsed by the
+ * command line's parser ({@link CommandOptions}) with the tracking options declared as {@code contact-tracker track}
+ * declares them ({@link SettingOptions}), so the two take the same options with the same help and messages and
+ * cannot drift apart.
  */
 final class SparkOptions {
 
@@ -51,91 +54,66 @@ final class SparkOptions {
 	int chunk = DEFAULT_CHUNK;
 	/** Spark settings given with {@code --conf KEY=VALUE}, in order. */
 	final Map<String, String> conf = new LinkedHashMap<>();
-	/** The tracking settings given, as text, by setting. */
-	final Map<Setting<?>, String> given = new LinkedHashMap<>();
+	/** The tracking settings given on the command line. */
+	Set<Setting<?>> given = Set.of();
+	private SettingValues settings = SettingValues.defaults();
 
-	/** The job's own options (those with a value), each with its label and help. */
-	private static final String[][] OWN = { //
-		{ "--out-dir", "DIR", "Write each movie's spots to DIR/NAME.csv (NAME: its file name without extension), as " +
-			"'contact-tracker track --out-dir DIR' does. Required." }, //
-		{ "--master", "URL", "Spark master: spark://HOST:7077, local[N], ... Default: the one spark-submit gives, else " +
-			"local[*] (all cores of this machine)." }, //
-		{ "--parquet", "DIR", "Also write every spot, with a MOVIE column, as one Parquet table partitioned by movie. " +
-			"Default: DIR/spots.parquet." }, //
-		{ "--chunk", "N", "Frames per task: a long movie spreads over the cluster in chunks of N frames. Default: " +
-			DEFAULT_CHUNK + "." }, //
-		{ "--conf", "KEY=VALUE", "A Spark setting (spark.executor.memory=8g, ...); may be repeated." } };
+	/** The job's options: its own, then every tracking setting's, as {@code contact-tracker track} declares them. */
+	private static final class Declared {
+
+		final CommandOptions options = new CommandOptions("contact-tracker-spark", "Track movies on Apache Spark, " +
+			"each movie's CSV equal to 'contact-tracker track --out-dir DIR'.", "MOVIE: a TIFF, BigTIFF or OME-TIFF, " +
+				"uncompressed, as a path or a Hadoop URI (file://, hdfs://, s3a://).").withRepeatedLastParameter()
+					.inDeclarationOrder();
+		final Option<String> movie = options.add(Option.positionalText("MOVIE", "A movie, as a path or a Hadoop URI."));
+		final Option<String> outDir = options.add(Option.text("--out-dir", "DIR", "Write each movie's spots to " +
+			"DIR/NAME.csv (NAME: its file name without extension), as 'contact-tracker track --out-dir DIR' does.")
+			.asRequired());
+		final Option<String> master = options.add(Option.text("--master", "URL", "Spark master: spark://HOST:7077, " +
+			"local[N], ... Default: the one spark-submit gives, else local[*] (all cores of this machine)."));
+		final Option<String> parquet = options.add(Option.text("--parquet", "DIR", "Also write every spot, with a " +
+			"MOVIE column, as one Parquet table partitioned by movie. Default: DIR/spots.parquet."));
+		final Option<Integer> chunk = options.add(Option.valued("--chunk", "N", "Frames per task: a long movie " +
+			"spreads over the cluster in chunks of N frames.", SparkOptions::positive).withDefault(String.valueOf(
+				DEFAULT_CHUNK)));
+		final Option<String> conf = options.addRepeatable(Option.text("--conf", "KEY=VALUE", "A Spark setting " +
+			"(spark.executor.memory=8g, ...); may be repeated."));
+		final Option<Boolean> xml = options.add(Option.flag(List.of("--trackmate-xml"), "Also write DIR/NAME.xml, a " +
+			"TrackMate file, as 'track --trackmate-xml' does."));
+		final SettingOptions tracking = new SettingOptions(options);
+	}
 
 	/**
 	 * @throws InvalidInputException one line naming the option and what is wrong
 	 */
 	static SparkOptions parse(final String... args) {
-		final SparkOptions o = new SparkOptions();
-		final Map<String, Setting<?>> settings = new LinkedHashMap<>();
-		for (final Setting<?> s : TrackingSettings.ALL)
-			settings.put(s.cliOption(), s);
-		final List<String> seen = new ArrayList<>();
-		boolean optionsEnded = false;
-		for (int i = 0; i < args.length; i++) {
-			final String arg = args[i];
-			if (optionsEnded || !arg.startsWith("--") || arg.length() == 2) {
-				if (!optionsEnded && arg.equals("--")) optionsEnded = true;
-				else o.movies.add(arg);
-				continue;
-			}
-			final int equals = arg.indexOf('=');
-			final String name = equals < 0 ? arg : arg.substring(0, equals);
-			if (name.equals("--help")) {
-				o.help = true;
-				continue;
-			}
-			if (name.equals("--trackmate-xml")) {
-				o.trackMateXml = true;
-				continue;
-			}
-			if (!settings.containsKey(name) && !ownOption(name)) throw new InvalidInputException("unknown option " + name +
-				" (--help lists them)");
-			if (!name.equals("--conf") && seen.contains(name)) throw new InvalidInputException("option " + name +
-				" should be given only once");
-			seen.add(name);
-			if (equals < 0 && i + 1 == args.length) throw new InvalidInputException("option " + name + " needs a value");
-			final String value = equals < 0 ? args[++i] : arg.substring(equals + 1);
-			final Setting<?> setting = settings.get(name);
-			if (setting != null) {
-				try {
-					SettingValues.defaults().withText(setting, value); // checked now, by the setting itself
-				}
-				catch (final InvalidInputException e) {
-					throw new InvalidInputException("option " + name + ": " + e.getMessage(), e);
-				}
-				o.given.put(setting, value);
-			}
-			else switch (name) {
-				case "--out-dir" -> o.outDir = value;
-				case "--master" -> o.master = value;
-				case "--parquet" -> o.parquet = value;
-				case "--chunk" -> o.chunk = positive(name, value);
-				default -> {
-					final int eq = value.indexOf('=');
-					if (eq <= 0) throw new InvalidInputException("option --conf takes KEY=VALUE, not '" + value + "'");
-					o.conf.put(value.substring(0, eq), value.substring(eq + 1));
-				}
-			}
+		final Declared d = new Declared();
+		try {
+			d.options.parse(args, 0);
 		}
+		catch (final CommandOptions.BadOptionException e) {
+			throw new InvalidInputException(e.getMessage() + " (--help lists the options)", e);
+		}
+		final SparkOptions o = new SparkOptions();
+		o.help = d.options.helpRequested();
 		if (o.help) return o;
-		if (o.movies.isEmpty()) throw new InvalidInputException("no movie given (MOVIE... --out-dir DIR)");
-		if (o.outDir == null) throw new InvalidInputException("--out-dir DIR is required (each movie's spots go to " +
-			"DIR/NAME.csv)");
+		o.movies.addAll(d.options.values(d.movie));
+		o.outDir = d.options.value(d.outDir);
+		o.master = d.options.value(d.master);
+		o.parquet = d.options.value(d.parquet);
+		o.chunk = d.options.value(d.chunk);
+		o.trackMateXml = d.options.value(d.xml);
+		for (final String c : d.options.values(d.conf)) {
+			final int eq = c.indexOf('=');
+			if (eq <= 0) throw new InvalidInputException("option --conf takes KEY=VALUE, not '" + c + "'");
+			o.conf.put(c.substring(0, eq), c.substring(eq + 1));
+		}
+		o.settings = d.tracking.values();
+		o.given = d.tracking.given();
 		return o;
 	}
 
-	private static boolean ownOption(final String name) {
-		for (final String[] own : OWN)
-			if (own[0].equals(name)) return true;
-		return false;
-	}
-
-	private static int positive(final String name, final String value) {
+	private static int positive(final String value) {
 		try {
 			final int n = Integer.parseInt(value);
 			if (n >= 1) return n;
@@ -143,38 +121,21 @@ final class SparkOptions {
 		catch (final NumberFormatException e) {
 			// said below
 		}
-		throw new InvalidInputException("option " + name + ": '" + value + "' is not a whole number >= 1");
+		throw new IllegalArgumentException("'" + value + "' is not a whole number >= 1");
 	}
 
 	/** @return the tracking settings given, the others at their defaults */
 	SettingValues settings() {
-		SettingValues v = SettingValues.defaults();
-		for (final Map.Entry<Setting<?>, String> e : given.entrySet())
-			v = v.withText(e.getKey(), e.getValue());
-		return v;
+		return settings;
 	}
 
 	/** @return whether the setting was given on the command line */
 	boolean given(final Setting<?> s) {
-		return given.containsKey(s);
+		return given.contains(s);
 	}
 
 	/** @return the help, its tracking options from the settings descriptor */
 	static String usage() {
-		final StringBuilder b = new StringBuilder();
-		b.append("Usage: contact-tracker-spark MOVIE... --out-dir DIR [--master URL] [--parquet DIR] [--chunk N] ")
-			.append("[--trackmate-xml] [--conf KEY=VALUE]... [tracking options]\n");
-		b.append("Track movies on Apache Spark, each movie's CSV equal to 'contact-tracker track --out-dir DIR'. MOVIE: ")
-			.append("a TIFF, BigTIFF or OME-TIFF, uncompressed, as a path or a Hadoop URI (file://, hdfs://, s3a://).\n");
-		for (final String[] own : OWN)
-			b.append(String.format("  %s %s%n      %s%n", own[0], own[1], own[2]));
-		b.append("  --trackmate-xml\n      Also write DIR/NAME.xml, a TrackMate file, as 'track --trackmate-xml' does.\n");
-		for (final Setting<?> s : TrackingSettings.ALL)
-			b.append(String.format("  %s %s%n      %s%s%n", s.cliOption(), s.type() == String.class ? String.join("|", s
-				.choices().stream().map(String::valueOf).toList()) : s.type() == Integer.class ? "N" : "X", s.help(), s
-					.isImageSpecific() ? " Default: measured on frame 1 by the profile helper." : " Default: " + s
-						.defaultValue() + "."));
-		b.append("  --help\n      Show this help.\n");
-		return b.toString();
+		return new Declared().options.usage();
 	}
 }

@@ -173,7 +173,7 @@ public final class SparkTrack {
 		final boolean channelGiven = o.given(TrackingSettings.CHANNEL);
 		// by name: a setting is not serializable, the tasks get the names
 		final ArrayList<String> givenNames = new ArrayList<>();
-		for (final Setting<?> s : o.given.keySet())
+		for (final Setting<?> s : o.given)
 			givenNames.add(s.name());
 		final long jobStart = System.currentTimeMillis();
 		final List<Tuple2<Integer, String>> movies = new ArrayList<>();

@@ -55,7 +55,8 @@ public class ContactTrackerSpotFeatures<T extends RealType<T> & NativeType<T>> i
 	/**
 	 * The standard errors in thousandths of a pixel, for TrackMate only: its spot table shows 3 decimals, so the
 	 * calibrated {@code SIGMA_X} of a well-localized particle (a few nm) reads 0.001 um in every row, and in pixels
-	 * the real movie 1.avi's errors read 0.003 to 0.006 (one digit); in thousandths of a pixel they read e.g. 4.412.
+	 * errors of 0.003 to 0.006 px, usual on real footage, read as one digit; in thousandths of a pixel they read e.g.
+	 * 4.412.
 	 */
 	public static final String SIGMA_X_MPX = "SIGMA_X_MPX", SIGMA_Y_MPX = "SIGMA_Y_MPX";
 

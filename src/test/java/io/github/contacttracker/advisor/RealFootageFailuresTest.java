@@ -36,11 +36,11 @@ import io.github.contacttracker.core.TrackerParameters;
 import io.github.contacttracker.core.image.Plane;
 import io.github.contacttracker.core.track.ContactTracker;
 import io.github.contacttracker.core.track.FrameResult;
-import io.github.contacttracker.sim.ImageSimulator;
-import io.github.contacttracker.sim.NoiseFreeImage;
-import io.github.contacttracker.sim.NoiseModel;
-import io.github.contacttracker.sim.Quantiser;
-import io.github.contacttracker.sim.RadialProfile;
+import io.github.contacttracker.lab.sim.ImageSimulator;
+import io.github.contacttracker.lab.sim.NoiseFreeImage;
+import io.github.contacttracker.lab.sim.NoiseModel;
+import io.github.contacttracker.lab.sim.Quantiser;
+import io.github.contacttracker.lab.sim.RadialProfile;
 
 import net.imglib2.img.array.ArrayImg;
 import net.imglib2.img.array.ArrayImgs;

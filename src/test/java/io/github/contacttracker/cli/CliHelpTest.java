@@ -64,6 +64,21 @@ class CliHelpTest {
 			assertTrue(((String) top[1]).contains("  " + command + " "), (String) top[1]);
 	}
 
+	/** The command line alone has no research subcommand: those are the lab's ({@link ContactTrackerLab}). */
+	@Test
+	void theCommandLineAloneKnowsNoLabCommand() {
+		final java.io.ByteArrayOutputStream out = new java.io.ByteArrayOutputStream(), err =
+			new java.io.ByteArrayOutputStream();
+		assertEquals(ContactTrackerCli.EXIT_BAD_INPUT, ContactTrackerCli.run(new String[] { "simulate", "--help" },
+			new java.io.PrintStream(out), new java.io.PrintStream(err)));
+		assertEquals("contact-tracker: error: unknown command 'simulate' (track, potential, profile)", err.toString()
+			.strip());
+		out.reset();
+		assertEquals(0, ContactTrackerCli.run(new String[] { "--help" }, new java.io.PrintStream(out),
+			new java.io.PrintStream(err)));
+		assertTrue(out.toString().contains("  track ") && !out.toString().contains("  demo "), out.toString());
+	}
+
 	@Test
 	void trackHelpIsGeneratedFromTheSettingsDescriptor() {
 		final String help = (String) ContactTrackerCliTest.run("track", "--help")[1];

@@ -41,7 +41,8 @@ import ij.process.ColorProcessor;
 import ij.process.FloatProcessor;
 import io.github.contacttracker.io.ImageFiles;
 import io.github.contacttracker.io.SpotColumn;
-import io.github.contacttracker.sim.PaperParticles;
+import io.github.contacttracker.lab.sim.PaperParticles;
+import io.github.contacttracker.lab.cli.ContactTrackerLab;
 
 class ContactTrackerCliTest {
 
@@ -51,7 +52,7 @@ class ContactTrackerCliTest {
 	/** Runs the CLI; returns {exit status, stdout, stderr}. */
 	static Object[] run(final String... args) {
 		final ByteArrayOutputStream out = new ByteArrayOutputStream(), err = new ByteArrayOutputStream();
-		final int status = ContactTrackerCli.run(args, new PrintStream(out, true, StandardCharsets.UTF_8),
+		final int status = ContactTrackerLab.run(args, new PrintStream(out, true, StandardCharsets.UTF_8),
 			new PrintStream(err, true, StandardCharsets.UTF_8));
 		return new Object[] { status, out.toString(StandardCharsets.UTF_8), err.toString(StandardCharsets.UTF_8) };
 	}

@@ -41,9 +41,9 @@ import org.junit.jupiter.api.io.TempDir;
 
 import io.github.contacttracker.io.Calibration;
 import io.github.contacttracker.io.ImageFiles;
-import io.github.contacttracker.sim.PaperParticles;
-import io.github.contacttracker.sim.ParticleType;
-import io.github.contacttracker.sim.SimulatedStack;
+import io.github.contacttracker.lab.sim.PaperParticles;
+import io.github.contacttracker.lab.sim.ParticleType;
+import io.github.contacttracker.lab.sim.SimulatedStack;
 
 /** {@code contact-tracker profile}: the table, the PNG, the CSV and the line to copy; help and bad options. */
 class ProfileCliTest {

@@ -62,11 +62,39 @@ class CommandJarIT {
 			files.filter(p -> {
 				final String n = p.getFileName().toString();
 				return n.endsWith(".jar") && !n.startsWith("original-") && !n.matches(
-					".*-(sources|tests|test-sources|javadoc|cli|spark)\\.jar");
+					".*-(sources|tests|test-sources|javadoc|cli|spark|lab)\\.jar");
 			}).forEach(jars::add);
 		}
 		assertEquals(1, jars.size(), "expected exactly one plugin jar in " + target + ": " + jars);
 		return jars.get(0);
+	}
+
+	/**
+	 * The plugin jar carries none of the lab (simulator, studies, research subcommands): Fiji users install only what
+	 * tracks their movies. The lab's jar holds it, with its entry point, and names the command line's jar it runs on.
+	 */
+	@Test
+	void pluginJarCarriesNoLabAndTheLabJarRunsBesideTheCommandLine() throws Exception {
+		final Path jar = pluginJar();
+		try (ZipFile zip = new ZipFile(jar.toFile())) {
+			final List<String> lab = zip.stream().map(ZipEntry::getName).filter(n -> n.startsWith(
+				"io/github/contacttracker/lab/")).toList();
+			assertEquals(List.of(), lab, "the lab in " + jar);
+			assertNotNull(zip.getEntry("io/github/contacttracker/cli/ContactTrackerCli.class"));
+		}
+		final String name = jar.getFileName().toString();
+		final Path labJar = jar.resolveSibling(name.substring(0, name.length() - 4) + "-lab.jar");
+		try (ZipFile zip = new ZipFile(labJar.toFile())) {
+			assertNotNull(zip.getEntry("io/github/contacttracker/lab/cli/ContactTrackerLab.class"));
+			assertNotNull(zip.getEntry("io/github/contacttracker/lab/sim/ImageSimulator.class"));
+			assertEquals(List.of(), zip.stream().map(ZipEntry::getName).filter(n -> n.endsWith(".class") && !n
+				.startsWith("io/github/contacttracker/lab/")).toList(), "only the lab in " + labJar);
+			final java.util.jar.Manifest m = new java.util.jar.Manifest(zip.getInputStream(zip.getEntry(
+				"META-INF/MANIFEST.MF")));
+			assertEquals("io.github.contacttracker.lab.cli.ContactTrackerLab", m.getMainAttributes().getValue(
+				"Main-Class"));
+			assertEquals(name.substring(0, name.length() - 4) + "-cli.jar", m.getMainAttributes().getValue("Class-Path"));
+		}
 	}
 
 	@Test

@@ -47,12 +47,12 @@ import io.github.contacttracker.advisor.ProfileAnalysis;
 import io.github.contacttracker.io.Calibration;
 import io.github.contacttracker.io.ImageFiles;
 import io.github.contacttracker.io.ProfileReport;
-import io.github.contacttracker.sim.GaussianBesselProfile;
-import io.github.contacttracker.sim.NoiseModel;
-import io.github.contacttracker.sim.ParticleType;
-import io.github.contacttracker.sim.QuantisedFrame;
-import io.github.contacttracker.sim.RadialProfile;
-import io.github.contacttracker.sim.SimulatedStack;
+import io.github.contacttracker.lab.sim.GaussianBesselProfile;
+import io.github.contacttracker.lab.sim.NoiseModel;
+import io.github.contacttracker.lab.sim.ParticleType;
+import io.github.contacttracker.lab.sim.QuantisedFrame;
+import io.github.contacttracker.lab.sim.RadialProfile;
+import io.github.contacttracker.lab.sim.SimulatedStack;
 import net.imglib2.img.array.ArrayImg;
 
 /**

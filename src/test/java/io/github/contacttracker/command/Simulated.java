@@ -31,10 +31,10 @@ import org.scijava.module.ModuleService;
 import ij.ImagePlus;
 import io.github.contacttracker.io.Calibration;
 import io.github.contacttracker.io.ImageFiles;
-import io.github.contacttracker.sim.PaperParticles;
-import io.github.contacttracker.sim.ParticleType;
-import io.github.contacttracker.sim.Scenario;
-import io.github.contacttracker.sim.SimulatedStack;
+import io.github.contacttracker.lab.sim.PaperParticles;
+import io.github.contacttracker.lab.sim.ParticleType;
+import io.github.contacttracker.lab.sim.Scenario;
+import io.github.contacttracker.lab.sim.SimulatedStack;
 
 /** The simulated 5-frame stack the command tests share, and a headless way to run commands. */
 final class Simulated {

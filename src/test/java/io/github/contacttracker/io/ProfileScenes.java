@@ -26,11 +26,11 @@ import java.util.List;
 import java.util.SplittableRandom;
 
 import ij.ImagePlus;
-import io.github.contacttracker.sim.GaussianBesselProfile;
-import io.github.contacttracker.sim.NoiseModel;
-import io.github.contacttracker.sim.ParticleType;
-import io.github.contacttracker.sim.SimulatedStack;
-import io.github.contacttracker.sim.SmallParticles;
+import io.github.contacttracker.lab.sim.GaussianBesselProfile;
+import io.github.contacttracker.lab.sim.NoiseModel;
+import io.github.contacttracker.lab.sim.ParticleType;
+import io.github.contacttracker.lab.sim.SimulatedStack;
+import io.github.contacttracker.lab.sim.SmallParticles;
 import net.imglib2.img.array.ArrayImg;
 
 /**

@@ -53,6 +53,7 @@ import io.github.contacttracker.core.Flag;
 import io.github.contacttracker.core.Localization;
 import io.github.contacttracker.core.Method;
 import io.github.contacttracker.core.TrackerParameters;
+import io.github.contacttracker.settings.SettingsOf;
 
 /**
  * The TrackMate XML must hold every element and attribute TrackMate 8's reader needs (TmXmlReader), with
@@ -82,7 +83,7 @@ class TrackMateXmlWriterTest {
 
 	private Document writeAndParse(final List<Localization> spots) throws IOException, JDOMException {
 		final Path out = dir.resolve("spots.xml");
-		TrackMateXmlWriter.write(out, spots, CAL, SRC, PARAMS, 2);
+		TrackMateXmlWriter.write(out, spots, CAL, SRC, SettingsOf.values(PARAMS, 2));
 		return new SAXBuilder().build(out.toFile());
 	}
 
@@ -226,7 +227,7 @@ class TrackMateXmlWriterTest {
 		final Map<String, Object> parsed = new HashMap<>();
 		for (final Attribute a : detector.getAttributes())
 			if (!a.getName().equals("DETECTOR_NAME")) parsed.put(a.getName(), TrackMateSettings.parse(a.getName(), a.getValue()));
-		assertEquals(TrackMateSettings.toMap(PARAMS, 2), parsed);
+		assertEquals(SettingsOf.map(PARAMS, 2), parsed);
 		assertNull(TrackMateSettings.check(parsed));
 
 		assertEquals("ConfigureViews", attr(child(root, "GUIState"), "state"));
@@ -342,16 +343,16 @@ class TrackMateXmlWriterTest {
 		final List<Localization> late = List.of(new Localization(3, 1, 1, 1, 1, 30, 30, 1, 3, 0, 1, 0, 0, Double.NaN,
 			Double.NaN, 0));
 		final IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
-			() -> TrackMateXmlWriter.write(out, late, CAL, SRC, PARAMS));
+			() -> TrackMateXmlWriter.write(out, late, CAL, SRC, SettingsOf.values(PARAMS, 1)));
 		assertTrue(e.getMessage().contains("frame 3"), e.getMessage());
 		final List<Localization> nan = List.of(new Localization(0, Double.NaN, 1, 1, 1, 30, 30, 1, 3, 0, 1, 0, 0,
 			Double.NaN, Double.NaN, 0));
-		assertThrows(IllegalArgumentException.class, () -> TrackMateXmlWriter.write(out, nan, CAL, SRC, PARAMS));
+		assertThrows(IllegalArgumentException.class, () -> TrackMateXmlWriter.write(out, nan, CAL, SRC, SettingsOf.values(PARAMS, 1)));
 		assertFalse(Files.exists(out));
 
 		final Path missingFolder = dir.resolve("no/such/folder/out.xml");
 		final IOException io = assertThrows(IOException.class,
-			() -> TrackMateXmlWriter.write(missingFolder, spots(), CAL, SRC, PARAMS));
+			() -> TrackMateXmlWriter.write(missingFolder, spots(), CAL, SRC, SettingsOf.values(PARAMS, 1)));
 		assertTrue(io.getMessage().contains("out.xml"), io.getMessage());
 		try (var files = Files.list(dir)) {
 			assertEquals(0, files.count(), "nothing half-written");
@@ -362,7 +363,7 @@ class TrackMateXmlWriterTest {
 	void replacesAnExistingFileAndRecordsChannelOne() throws Exception {
 		final Path out = dir.resolve("spots.xml");
 		Files.writeString(out, "old");
-		TrackMateXmlWriter.write(out, spots(), CAL, SRC, PARAMS);
+		TrackMateXmlWriter.write(out, spots(), CAL, SRC, SettingsOf.values(PARAMS, 1));
 		final Element detector = new SAXBuilder().build(out.toFile()).getRootElement().getChild("Settings")
 			.getChild("DetectorSettings");
 		assertEquals("1", detector.getAttributeValue("TARGET_CHANNEL"));

@@ -38,11 +38,11 @@ import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.core.image.Inversion;
 import io.github.contacttracker.settings.SettingValues;
 import io.github.contacttracker.settings.TrackingSettings;
-import io.github.contacttracker.sim.ImageSimulator;
-import io.github.contacttracker.sim.NoiseModel;
-import io.github.contacttracker.sim.Quantiser;
-import io.github.contacttracker.sim.RadialProfile;
-import io.github.contacttracker.sim.SmallParticles;
+import io.github.contacttracker.lab.sim.ImageSimulator;
+import io.github.contacttracker.lab.sim.NoiseModel;
+import io.github.contacttracker.lab.sim.Quantiser;
+import io.github.contacttracker.lab.sim.RadialProfile;
+import io.github.contacttracker.lab.sim.SmallParticles;
 import net.imglib2.RandomAccessibleInterval;
 import net.imglib2.type.numeric.integer.UnsignedByteType;
 

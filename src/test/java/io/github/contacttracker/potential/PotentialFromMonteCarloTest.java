@@ -28,8 +28,8 @@ import java.util.List;
 
 import org.junit.jupiter.api.Test;
 
-import io.github.contacttracker.sim.HardCoreAttraction;
-import io.github.contacttracker.sim.MonteCarloFluid;
+import io.github.contacttracker.lab.sim.HardCoreAttraction;
+import io.github.contacttracker.lab.sim.MonteCarloFluid;
 
 /**
  * The estimator on Monte Carlo positions of a dilute fluid with a known potential (no images): the measured U(r)

@@ -94,7 +94,7 @@ class SettingsMatchCoreTest {
 		for (int k = TrackingSettings.KINDS_AT_LEAST; k <= TrackerParameters.KINDS_AT_MOST; k++) {
 			final SettingValues v = SettingValues.defaults().withText(TrackingSettings.KINDS, String.valueOf(k));
 			assertEquals(k, v.parameters().kinds());
-			assertEquals(v, SettingValues.of(v.parameters(), v.channel(), v.diameter()), "kinds " + k + " round trip");
+			assertEquals(v, SettingsOf.values(v.parameters(), v.channel()), "kinds " + k + " round trip");
 		}
 	}
 

@@ -54,7 +54,7 @@ class TrackMateSettingsTest {
 		for (final Method m : Method.values())
 			for (final Connectivity c : Connectivity.values()) {
 				final TrackerParameters p = new TrackerParameters(123.456789, 7.25, 13, c, 42, m);
-				final Map<String, Object> map = TrackMateSettings.toMap(p, 3);
+				final Map<String, Object> map = SettingsOf.map(p, 3);
 				assertNull(TrackMateSettings.check(map));
 				assertEquals(p, TrackMateSettings.parameters(map));
 				assertEquals(3, TrackMateSettings.targetChannel(map));
@@ -68,7 +68,7 @@ class TrackMateSettingsTest {
 		assertEquals(0, TrackMateSettings.defaults().get(TrackMateSettings.KEY_KINDS));
 		for (int k = 0; k <= TrackerParameters.KINDS_AT_MOST; k++) {
 			final TrackerParameters p = TrackerParameters.of(100, 20).withKinds(k);
-			final Map<String, Object> map = TrackMateSettings.toMap(p, 1);
+			final Map<String, Object> map = SettingsOf.map(p, 1);
 			assertEquals(k, map.get(TrackMateSettings.KEY_KINDS));
 			assertEquals(p, TrackMateSettings.parameters(map));
 		}

@@ -53,7 +53,7 @@ class SparkJarIT {
 			final List<Path> jars = files.filter(p -> {
 				final String n = p.getFileName().toString();
 				return n.startsWith("Contact_Tracker-") && (classifier.isEmpty() ? !n.matches(".*-(sources|tests|" +
-					"test-sources|javadoc|cli|spark)\\.jar") : n.endsWith("-" + classifier + ".jar")) && n.endsWith(".jar");
+					"test-sources|javadoc|cli|spark|lab)\\.jar") : n.endsWith("-" + classifier + ".jar")) && n.endsWith(".jar");
 			}).toList();
 			assertEquals(1, jars.size(), classifier + " jar in " + target + ": " + jars);
 			return jars.get(0);

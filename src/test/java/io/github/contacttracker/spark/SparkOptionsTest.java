@@ -37,9 +37,31 @@ class SparkOptionsTest {
 	@Test
 	void kindsIsAnOptionWithItsHelpAndDefault() {
 		final String usage = SparkOptions.usage();
-		assertTrue(usage.contains("  --kinds N\n      Kinds of particle the profile methods"), usage);
-		assertTrue(usage.contains("The KIND column says each spot's kind. Default: 0.\n"), usage);
+		assertTrue(usage.contains("      --kinds=N             Kinds of particle the profile methods"), usage);
+		assertTrue(usage.replaceAll("\\s+", " ").contains(" [--conf=KEY=VALUE]... "), "a repeatable option says so: " + usage);
+		assertTrue(usage.replaceAll("\\s+", " ").contains("The KIND column says each spot's kind. Default: 0."), usage);
 		assertEquals(0, SparkOptions.parse("m.tif", "--out-dir", "out").settings().parameters().kinds());
+	}
+
+	/** The job parses as {@code track} does: the same messages, options repeated only where declared so. */
+	@Test
+	void parsesAsTheCommandLineDoes() {
+		assertEquals("Missing required option: '--out-dir=DIR' (--help lists the options)", assertThrows(
+			InvalidInputException.class, () -> SparkOptions.parse("m.tif")).getMessage());
+		assertEquals("Invalid value for option '--chunk': '0' is not a whole number >= 1 (--help lists the options)",
+			assertThrows(InvalidInputException.class, () -> SparkOptions.parse("m.tif", "--out-dir", "o", "--chunk", "0"))
+				.getMessage());
+		assertEquals("option '--master' (URL) should be specified only once (--help lists the options)", assertThrows(
+			InvalidInputException.class, () -> SparkOptions.parse("m.tif", "--out-dir", "o", "--master", "a", "--master",
+				"b")).getMessage());
+		final SparkOptions o = SparkOptions.parse("hdfs://nn/a.tif", "b.tif", "--conf", "spark.a=1", "--out-dir=o",
+			"--conf=spark.b=2", "--particles", "dark", "--trackmate-xml");
+		assertEquals(java.util.List.of("hdfs://nn/a.tif", "b.tif"), o.movies, "URIs as they are written");
+		assertEquals(java.util.Map.of("spark.a", "1", "spark.b", "2"), o.conf);
+		assertTrue(o.trackMateXml);
+		assertEquals(java.util.Set.of(io.github.contacttracker.settings.TrackingSettings.PARTICLES), o.given);
+		assertTrue(o.settings().dark());
+		assertEquals(SparkOptions.DEFAULT_CHUNK, o.chunk);
 	}
 
 	@Test

@@ -35,6 +35,7 @@ import ij.ImageStack;
 import ij.io.FileSaver;
 import ij.process.ImageProcessor;
 import io.github.contacttracker.cli.ContactTrackerCli;
+import io.github.contacttracker.lab.cli.ContactTrackerLab;
 
 /**
  * The movies the Spark tests track, and the command line to compare with; free of Spark's classes, so that the
@@ -90,7 +91,7 @@ final class SparkTestMovies {
 
 	static Object[] cli(final String... args) {
 		final ByteArrayOutputStream out = new ByteArrayOutputStream(), err = new ByteArrayOutputStream();
-		final int status = ContactTrackerCli.run(args, new PrintStream(out, true, StandardCharsets.UTF_8),
+		final int status = ContactTrackerLab.run(args, new PrintStream(out, true, StandardCharsets.UTF_8),
 			new PrintStream(err, true, StandardCharsets.UTF_8));
 		return new Object[] { status, out.toString(StandardCharsets.UTF_8), err.toString(StandardCharsets.UTF_8) };
 	}

@@ -138,7 +138,11 @@ class SparkTrackTest {
 		try (Stream<Path> list = Files.list(sparkDir)) {
 			list.forEach(p -> files.add(p.getFileName().toString()));
 		}
-		assertEquals(Set.of("padded.csv", "padded.xml", "pair.csv", "pair.xml", "spots.parquet"), files);
+		assertEquals(Set.of("padded.csv", "padded.settings.txt", "padded.xml", "pair.csv", "pair.settings.txt",
+			"pair.xml", "spots.parquet"), files);
+		for (final String m : List.of("padded", "pair"))
+			assertArrayEquals(Files.readAllBytes(cliDir.resolve(m + ".settings.txt")), Files.readAllBytes(sparkDir.resolve(
+				m + ".settings.txt")), m + "'s settings, measured on frame 1 as the command line does");
 
 		// the Parquet table: the CSVs' spots, partitioned by movie
 		final SparkSession reader = SparkSession.builder().master("local[1]").appName("read").getOrCreate();

@@ -61,6 +61,7 @@ import io.github.contacttracker.io.Calibration;
 import io.github.contacttracker.io.ImageSource;
 import io.github.contacttracker.io.TrackMateXmlWriter;
 import net.imglib2.type.numeric.real.FloatType;
+import io.github.contacttracker.settings.SettingsOf;
 
 class ContactTrackerDetectorFactoryTest {
 
@@ -119,7 +120,7 @@ class ContactTrackerDetectorFactoryTest {
 	void settingsSurviveMarshalAndUnmarshal() {
 		assertEquals(factory.getDefaultSettings(), roundTrip(factory.getDefaultSettings()));
 		for (final Method m : Method.values()) {
-			final Map<String, Object> s = TrackMateSettings.toMap(new TrackerParameters(0.1 + 1e-13, 12.345678901234, 7,
+			final Map<String, Object> s = SettingsOf.map(new TrackerParameters(0.1 + 1e-13, 12.345678901234, 7,
 				Connectivity.FOUR, 31, m), 2);
 			final Map<String, Object> back = roundTrip(s);
 			assertEquals(s, back);
@@ -192,7 +193,7 @@ class ContactTrackerDetectorFactoryTest {
 	@Test
 	void kindsSurvivesMarshalAndUnmarshal() {
 		for (int k = 0; k <= TrackerParameters.KINDS_AT_MOST; k++) {
-			final Map<String, Object> s = TrackMateSettings.toMap(TrackerParameters.of(90, 30).withKinds(k), 1);
+			final Map<String, Object> s = SettingsOf.map(TrackerParameters.of(90, 30).withKinds(k), 1);
 			assertEquals(s, roundTrip(s));
 			assertEquals(k, TrackMateSettings.parameters(roundTrip(s)).kinds());
 		}
@@ -235,12 +236,12 @@ class ContactTrackerDetectorFactoryTest {
 	void ourTrackMateXmlDetectorSettingsUnmarshalIntoTheParameters() {
 		final TrackerParameters p = new TrackerParameters(87.5, 14.5, 11, Connectivity.FOUR, 40, Method.FIRST);
 		final Element detector = TrackMateXmlWriter.document(List.of(), Calibration.PIXELS,
-			new ImageSource("a.tif", "", 8, 8, 1, 1), p, 2).getRootElement().getChild("Settings")
+			new ImageSource("a.tif", "", 8, 8, 1, 1), SettingsOf.values(p, 2)).getRootElement().getChild("Settings")
 			.getChild("DetectorSettings");
 		assertEquals(factory.getKey(), detector.getAttributeValue("DETECTOR_NAME"));
 		final Map<String, Object> map = new HashMap<>();
 		assertNull(factory.unmarshal(detector, map));
-		assertEquals(TrackMateSettings.toMap(p, 2), map);
+		assertEquals(SettingsOf.map(p, 2), map);
 		assertEquals(p, TrackMateSettings.parameters(map));
 	}
 
@@ -303,7 +304,7 @@ class ContactTrackerDetectorFactoryTest {
 		assertNull(factory.checkSettings(panel.getSettings()), "the panel's own defaults must be valid");
 		assertEquals(factory.getDefaultSettings(), panel.getSettings());
 
-		final Map<String, Object> s = TrackMateSettings.toMap(new TrackerParameters(123.456789, 7.75, 12,
+		final Map<String, Object> s = SettingsOf.map(new TrackerParameters(123.456789, 7.75, 12,
 			Connectivity.FOUR, 33, Method.values()[0]), 1);
 		panel.setSettings(s);
 		assertEquals(s, panel.getSettings());
@@ -413,7 +414,7 @@ class ContactTrackerDetectorFactoryTest {
 	@Test
 	void settingsSurviveADetectorSwitch() {
 		final ConfigurationPanel ours = factory.getDetectorConfigurationPanel(new Settings(), new Model());
-		final Map<String, Object> mine = TrackMateSettings.toMap(new TrackerParameters(172, 34, 20, Connectivity.EIGHT,
+		final Map<String, Object> mine = SettingsOf.map(new TrackerParameters(172, 34, 20, Connectivity.EIGHT,
 			50, Method.values()[1]), 1);
 		mine.put("DIAMETER", 31.65);
 		ours.setSettings(mine);

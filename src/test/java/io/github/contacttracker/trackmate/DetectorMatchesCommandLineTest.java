@@ -57,6 +57,8 @@ import net.imglib2.img.array.ArrayImg;
 import net.imglib2.img.array.ArrayImgs;
 import net.imglib2.img.basictypeaccess.array.ByteArray;
 import net.imglib2.type.numeric.integer.UnsignedByteType;
+import io.github.contacttracker.settings.SettingsOf;
+import io.github.contacttracker.lab.cli.ContactTrackerLab;
 
 /**
  * TrackMate's spots equal the command line's CSV, value for value, for the same movie and settings, with every
@@ -91,7 +93,7 @@ class DetectorMatchesCommandLineTest {
 
 	private static String cli(final String... args) {
 		final ByteArrayOutputStream out = new ByteArrayOutputStream(), err = new ByteArrayOutputStream();
-		final int status = ContactTrackerCli.run(args, new PrintStream(out, true, StandardCharsets.UTF_8), new PrintStream(
+		final int status = ContactTrackerLab.run(args, new PrintStream(out, true, StandardCharsets.UTF_8), new PrintStream(
 			err, true, StandardCharsets.UTF_8));
 		assertEquals(0, status, () -> err.toString(StandardCharsets.UTF_8));
 		return out.toString(StandardCharsets.UTF_8);
@@ -109,7 +111,7 @@ class DetectorMatchesCommandLineTest {
 		assertEquals(3 * FRAMES, rows.size(), "three particles in every frame");
 
 		final SpotGlobalDetector<UnsignedByteType> detector = new ContactTrackerDetectorFactory<UnsignedByteType>()
-			.getDetector(img, TrackMateSettings.toMap(params, 1), ContactTrackerDetectorTest.trackMateInterval(img, 0,
+			.getDetector(img, SettingsOf.map(params, 1), ContactTrackerDetectorTest.trackMateInterval(img, 0,
 				FRAMES - 1));
 		assertTrue(detector.checkInput() && detector.process(), () -> detector.getErrorMessage());
 		final SpotCollection spots = detector.getResult();

@@ -31,6 +31,7 @@ import net.imglib2.img.array.ArrayImg;
 import net.imglib2.img.array.ArrayImgs;
 import net.imglib2.img.basictypeaccess.array.FloatArray;
 import net.imglib2.type.numeric.real.FloatType;
+import io.github.contacttracker.settings.SettingsOf;
 
 /** Small deterministic test frames: Gaussian particles on a flat background, rendered in pixel units. */
 final class TestImages {
@@ -51,7 +52,7 @@ final class TestImages {
 	}
 
 	static Map<String, Object> settings(final int channel) {
-		return new HashMap<>(TrackMateSettings.toMap(params(), channel));
+		return new HashMap<>(SettingsOf.map(params(), channel));
 	}
 
 	private TestImages() {}

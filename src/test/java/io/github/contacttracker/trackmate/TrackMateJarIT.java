@@ -50,6 +50,7 @@ import io.github.contacttracker.core.TrackerParameters;
 import io.github.contacttracker.io.Calibration;
 import io.github.contacttracker.io.ImageSource;
 import io.github.contacttracker.io.TrackMateXmlWriter;
+import io.github.contacttracker.settings.SettingsOf;
 
 /**
  * Integration test on the PACKAGED jar (failsafe, phase {@code integration-test}, after {@code package}): the
@@ -79,7 +80,7 @@ class TrackMateJarIT {
 		try (Stream<Path> files = Files.list(target())) {
 			files.filter(p -> {
 				final String n = p.getFileName().toString();
-				return n.endsWith(".jar") && !n.startsWith("original-") && !n.matches(".*-(sources|tests|test-sources|javadoc|cli|spark)\\.jar");
+				return n.endsWith(".jar") && !n.startsWith("original-") && !n.matches(".*-(sources|tests|test-sources|javadoc|cli|spark|lab)\\.jar");
 			}).forEach(jars::add);
 		}
 		assertEquals(1, jars.size(), "expected exactly one plugin jar in " + target() + ": " + jars);
@@ -159,7 +160,7 @@ class TrackMateJarIT {
 		final Document doc = TrackMateXmlWriter.document(
 			List.of(new Localization(0, 3, 4, 3, 4, 30, 30, 100, 3.1, 0, 1, 0.01, 0.01, Double.NaN, Double.NaN,
 				0)), Calibration.PIXELS,
-			new ImageSource("a.tif", "", 16, 16, 1, 1), TrackerParameters.of(50, 8), 1);
+			new ImageSource("a.tif", "", 16, 16, 1, 1), SettingsOf.values(TrackerParameters.of(50, 8), 1));
 		assertEquals(TrackMateSettings.DETECTOR_KEY, doc.getRootElement().getChild("Settings").getChild("DetectorSettings")
 			.getAttributeValue("DETECTOR_NAME"));
 		assertFalse(TrackMateSettings.defaults().isEmpty());

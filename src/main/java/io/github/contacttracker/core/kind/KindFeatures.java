@@ -174,8 +174,8 @@ public record KindFeatures(double coreRadius, double peak, double ringDepth, dou
 	/**
 	 * Measures what places a particle among known kinds ({@link Kinds#kindOf}): its {@link #coreRadius()} and
 	 * {@link #peak()}, exactly as {@link #measure(Plane, double, double, int, double, double)} finds them, from the
-	 * rings out to the core's edge only (a tenth of the pixels out to {@code r_out} on the authors' movie, whose
-	 * medians were a sixth of {@code fit}'s time); the ring and the profile beyond are not measured ({@link
+	 * rings out to the core's edge only (about a tenth of the pixels out to {@code r_out} in a dense field, whose
+	 * medians would cost a sixth of {@code fit}'s time); the ring and the profile beyond are not measured ({@link
 	 * #ringDepth()} 0, {@link #ringRadius()} NaN, the profile cut there).
 	 */
 	public static KindFeatures measureCore(final Plane plane, final double x, final double y, final int activeArea,
@@ -241,7 +241,7 @@ public record KindFeatures(double coreRadius, double peak, double ringDepth, dou
 			reach));
 		if (x0 > x1 || y0 > y1) return new double[0];
 		// counts per ring, then the values in one array, ring after ring (each pixel's ring computed once;
-		// Math.hypot, exact to the last bit, cost a tenth of a fit on the authors' movie)
+		// Math.hypot, exact to the last bit, would cost a tenth of a fit in a dense field)
 		final int w = x1 - x0 + 1;
 		final int[] ringOf = new int[w * (y1 - y0 + 1)];
 		final int[] count = new int[rings + 1];

@@ -21,6 +21,7 @@
  */
 package io.github.contacttracker.core.profile;
 
+import io.github.contacttracker.core.TrackerParameters;
 import java.util.List;
 
 import io.github.contacttracker.core.Flag;
@@ -41,7 +42,7 @@ import net.imglib2.type.numeric.RealType;
  * A light penalty on the coefficients' second differences keeps sparsely sampled knots (near r = 0) stable.
  * Pixels near spots flagged as merged or degenerate are left out, since their centres do not describe them, and
  * near spots cut by the border ({@code AT_BORDER}), whose amplitudes, scales and centres the visible part leaves
- * loose (on a crop of the paper authors' 6.avi they made the profile change by up to its height from round to round);
+ * loose (on a crop of a movie they can make the profile change by up to its height from round to round);
  * so are clipped pixels and, given the previous estimate, those near a clip level ({@link Censoring}).
  * <p>
  * An estimator made {@link #forROut(double, int, Linearisation) from the linearisation} of an earlier estimate takes
@@ -53,12 +54,8 @@ import net.imglib2.type.numeric.RealType;
  */
 public final class ProfileEstimator {
 
-	/**
-	 * The profile is measured out to this multiple of {@code r_out}: {@code r_out} marks where the light falls
-	 * below the noise, but the faint tail beyond still tilts a neighbour's gradients at the nanometre level, so
-	 * the model must carry it.
-	 */
-	public static final double REACH_FACTOR = 1.5;
+	/** The profile is measured out to this multiple of {@code r_out} (why: {@link TrackerParameters#profileReach()}). */
+	public static final double REACH_FACTOR = TrackerParameters.PROFILE_REACH_FACTOR;
 	/** Knot spacing of the profile spline (px). */
 	public static final double SPACING = 1.0;
 	/** Weight of the smoothness penalty, relative to the mean diagonal of the normal matrix. */
@@ -297,8 +294,8 @@ public final class ProfileEstimator {
 		final boolean[] reachedKind = new boolean[kinds];
 		final double[] values = new double[w]; // each row read once (Plane.read), not pixel by pixel
 		// Per row, the particles whose reach covers each pixel, in the order of the particles (so the sums are added in
-		// the same order as when every particle of the row was tested at every pixel, 6% slower on the authors' dense
-		// 1.avi): each particle's chord of the row, widened by a pixel, marked on the pixels it covers; the exact test
+		// the same order as when every particle of the row was tested at every pixel, which is slower in a dense
+		// field): each particle's chord of the row, widened by a pixel, marked on the pixels it covers; the exact test
 		// stays per pixel.
 		final int[] first = new int[w + 1], at = new int[w];
 		int[] covering = new int[4 * w];
@@ -358,8 +355,8 @@ public final class ProfileEstimator {
 					aloneUsable, backgroundUsable)) continue;
 				if (kinds > 1) for (int c = 0; c < kinds; c++)
 					if (reachedKind[c]) kindSamples[c]++;
-				// (one pass for every pixel: a copy for pixels of the background alone or of one particle, once kept for
-				// speed, made no difference measured side by side, 1.avi and the bench stack, identical CSVs)
+				// (one pass for every pixel, of the background alone or of one particle or more: a separate copy for the
+				// simpler pixels would not be faster)
 				// the background plane B + bx u + by v, about the frame's centre (u, v in hundreds of px)
 				idx[len] = bIndex;
 				val[len++] = 1;

@@ -40,12 +40,12 @@ import io.github.contacttracker.core.image.Plane;
 import io.github.contacttracker.core.image.Region;
 import io.github.contacttracker.core.radial.Estimate;
 import io.github.contacttracker.core.radial.Particle;
-import io.github.contacttracker.sim.GaussianBesselProfile;
-import io.github.contacttracker.sim.ImageSimulator;
-import io.github.contacttracker.sim.NoiseFreeImage;
-import io.github.contacttracker.sim.NoiseModel;
-import io.github.contacttracker.sim.Quantiser;
-import io.github.contacttracker.sim.RadialProfile;
+import io.github.contacttracker.lab.sim.GaussianBesselProfile;
+import io.github.contacttracker.lab.sim.ImageSimulator;
+import io.github.contacttracker.lab.sim.NoiseFreeImage;
+import io.github.contacttracker.lab.sim.NoiseModel;
+import io.github.contacttracker.lab.sim.Quantiser;
+import io.github.contacttracker.lab.sim.RadialProfile;
 
 /**
  * Kinds found on simulated monolayers of known kinds: dense fields of touching particles (each placed at contact

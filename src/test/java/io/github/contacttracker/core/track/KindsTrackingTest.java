@@ -33,12 +33,12 @@ import org.junit.jupiter.api.Test;
 import io.github.contacttracker.core.Localization;
 import io.github.contacttracker.core.Method;
 import io.github.contacttracker.core.TrackerParameters;
-import io.github.contacttracker.sim.GaussianBesselProfile;
-import io.github.contacttracker.sim.ImageSimulator;
-import io.github.contacttracker.sim.NoiseFreeImage;
-import io.github.contacttracker.sim.NoiseModel;
-import io.github.contacttracker.sim.Quantiser;
-import io.github.contacttracker.sim.RadialProfile;
+import io.github.contacttracker.lab.sim.GaussianBesselProfile;
+import io.github.contacttracker.lab.sim.ImageSimulator;
+import io.github.contacttracker.lab.sim.NoiseFreeImage;
+import io.github.contacttracker.lab.sim.NoiseModel;
+import io.github.contacttracker.lab.sim.Quantiser;
+import io.github.contacttracker.lab.sim.RadialProfile;
 import net.imglib2.RandomAccessibleInterval;
 import net.imglib2.type.numeric.integer.UnsignedByteType;
 

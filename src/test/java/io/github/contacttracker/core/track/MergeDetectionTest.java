@@ -46,12 +46,12 @@ import io.github.contacttracker.core.radial.Estimate;
 import io.github.contacttracker.core.radial.Particle;
 import io.github.contacttracker.core.radial.RadialAccess;
 import io.github.contacttracker.core.radial.SecondPass;
-import io.github.contacttracker.sim.GaussianBesselProfile;
-import io.github.contacttracker.sim.ImageSimulator;
-import io.github.contacttracker.sim.NoiseFreeImage;
-import io.github.contacttracker.sim.NoiseModel;
-import io.github.contacttracker.sim.Quantiser;
-import io.github.contacttracker.sim.RadialProfile;
+import io.github.contacttracker.lab.sim.GaussianBesselProfile;
+import io.github.contacttracker.lab.sim.ImageSimulator;
+import io.github.contacttracker.lab.sim.NoiseFreeImage;
+import io.github.contacttracker.lab.sim.NoiseModel;
+import io.github.contacttracker.lab.sim.Quantiser;
+import io.github.contacttracker.lab.sim.RadialProfile;
 
 /**
  * Merge detection by shape ({@link ComponentShape}) on simulated bright-field-like frames where particles differ
