@@ -81,7 +81,8 @@ class SettingsRoundTripTest {
 	static final SettingValues GIVEN = SettingValues.defaults().with(TrackingSettings.THRESHOLD, 120.0).with(
 		TrackingSettings.R_OUT, 9.5).with(TrackingSettings.MIN_AREA, 12).with(TrackingSettings.MIN_SECOND_AREA, 15).with(
 			TrackingSettings.CONNECTIVITY, 4).with(TrackingSettings.METHOD, "paper").with(TrackingSettings.DIAMETER, 10.5)
-		.with(TrackingSettings.KINDS, 1).with(TrackingSettings.PARTICLES, TrackingSettings.DARK).with(
+		.with(TrackingSettings.KINDS, 1).with(TrackingSettings.PARTICLES, TrackingSettings.DARK).withText(TrackingSettings.DETECTION,
+			TrackingSettings.IMAGE).with(
 			TrackingSettings.CHANNEL, 2);
 
 	@BeforeAll

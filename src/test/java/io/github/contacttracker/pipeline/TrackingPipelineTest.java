@@ -160,9 +160,13 @@ class TrackingPipelineTest {
 		assertTrue(r.spots().stream().allMatch(s -> s.has(io.github.contacttracker.core.Flag.MERGED)), "every spot a merge");
 		assertEquals(3, r.spots().size(), r.spots().toString());
 		assertTrue(r.frames().stream().allMatch(FrameResult::ownProfile));
-		assertEquals(1, r.warnings().size());
+		assertEquals(2, r.warnings().size(), r.warnings().toString());
 		assertTrue(r.summary("merged").contains("warning: the particles' profile could not be measured over the movie"),
 			r.summary("merged"));
+		// most spots flagged: the run says which flag, why and what to try
+		assertTrue(r.warnings().get(1).startsWith("3 of 3 spots (100%) are flagged, most MERGED (3): "), r.warnings()
+			.toString());
+		assertTrue(r.warnings().get(1).contains("--detection image"), r.warnings().toString());
 		// and a movie whose profile can be measured has no warning
 		assertEquals(List.of(), new TrackingPipeline(settings().with(TrackingSettings.METHOD, Method.FIT.key())).run(
 			source(new AtomicInteger(), null), false).warnings());

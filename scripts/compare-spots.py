@@ -1,0 +1,60 @@
+#!/usr/bin/env python3
+"""Compares two spot tables of the same movie (CSV files written by `contact-tracker track`).
+
+Usage: scripts/compare-spots.py A.csv B.csv [--within PX]
+
+Matches the spots of each frame nearest first (each spot used once, within PX pixels, default 5) and prints how many
+matched, how many are in one table only, and the distances between matched spots at the median, 90th and 99th
+percentile and the largest, in the tables' position units.
+"""
+import argparse
+import csv
+import math
+from collections import defaultdict
+
+
+def load(path):
+    with open(path, newline="") as f:
+        rows = list(csv.reader(line for line in f if not line.startswith("#")))
+    header = rows[0]
+    frames = defaultdict(list)
+    for r in rows[1:]:
+        d = dict(zip(header, r))
+        frames[int(float(d["FRAME"]))].append((float(d["POSITION_X"]), float(d["POSITION_Y"])))
+    return frames
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("a")
+    ap.add_argument("b")
+    ap.add_argument("--within", type=float, default=5)
+    args = ap.parse_args()
+    a, b = load(args.a), load(args.b)
+    distances, only_a, only_b = [], 0, 0
+    for frame in sorted(set(a) | set(b)):
+        sa, sb = a.get(frame, []), b.get(frame, [])
+        pairs = sorted((math.hypot(p[0] - q[0], p[1] - q[1]), i, j) for i, p in enumerate(sa)
+                       for j, q in enumerate(sb))
+        used_a, used_b = set(), set()
+        for d, i, j in pairs:
+            if d > args.within:
+                break
+            if i in used_a or j in used_b:
+                continue
+            used_a.add(i)
+            used_b.add(j)
+            distances.append(d)
+        only_a += len(sa) - len(used_a)
+        only_b += len(sb) - len(used_b)
+    distances.sort()
+    print(f"matched {len(distances)}, only in {args.a}: {only_a}, only in {args.b}: {only_b}")
+    if distances:
+        def q(p):
+            return distances[min(len(distances) - 1, int(p * len(distances)))]
+        print(f"distance: median {q(0.5):.4f}, 90th percentile {q(0.9):.4f}, 99th {q(0.99):.4f}, "
+              f"largest {distances[-1]:.4f}")
+
+
+if __name__ == "__main__":
+    main()
