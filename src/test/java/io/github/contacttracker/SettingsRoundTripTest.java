@@ -182,11 +182,11 @@ class SettingsRoundTripTest {
 		final String text = SettingsFile.text(GIVEN);
 		assertEquals(GIVEN, read(text));
 		assertEquals("f line 3: expected 'name = value' of a setting (threshold, r_out, min_area, min_second_area, " +
-			"connectivity, method, diameter, kinds, particles, channel), not 'rout = 3'", error(text.replace("r_out =",
+			"connectivity, method, diameter, kinds, particles, detection, channel), not 'rout = 3'", error(text.replace("r_out =",
 				"rout =").replace(" = 9.5", " = 3")));
 		assertEquals("f line 6: connectivity must be one of 8, 4, not 6", error(text.replace("connectivity = 4",
 			"connectivity = 6")));
-		assertEquals("f line 12: connectivity is given twice", error(text + "connectivity = 4\n"));
+		assertEquals("f line 13: connectivity is given twice", error(text + "connectivity = 4\n"));
 		assertEquals("f: the setting channel is missing", error(text.replace("channel = 2\n", "")));
 	}
 

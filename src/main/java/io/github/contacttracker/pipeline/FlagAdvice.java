@@ -22,9 +22,9 @@
 package io.github.contacttracker.pipeline;
 
 import java.util.EnumMap;
+import java.util.Map;
 import java.util.List;
 import java.util.Locale;
-import java.util.Map;
 
 import io.github.contacttracker.core.Flag;
 import io.github.contacttracker.core.Localization;
@@ -40,6 +40,14 @@ public final class FlagAdvice {
 
 	private FlagAdvice() {}
 
+	/**
+	 * The warning flags, causes first: where as many spots carry two flags, the one that explains the other is named
+	 * (a merge is not refined, so it falls back; an unmodelled neighbour or a fit that does not settle leaves
+	 * centres where the first pass put them).
+	 */
+	private static final List<Flag> CAUSES = List.of(Flag.MERGED, Flag.DEGENERATE, Flag.UNMODELLED_NEIGHBOUR,
+		Flag.NOT_CONVERGED, Flag.FELL_BACK, Flag.AT_BORDER);
+
 	/** @return the warning for these spots, or null when at most {@link #SHARE} of them are flagged */
 	public static String of(final List<Localization> spots) {
 		final Map<Flag, Integer> count = new EnumMap<>(Flag.class);
@@ -52,8 +60,8 @@ public final class FlagAdvice {
 		}
 		if (spots.isEmpty() || flagged <= SHARE * spots.size()) return null;
 		Flag main = null;
-		for (final Map.Entry<Flag, Integer> e : count.entrySet())
-			if (main == null || e.getValue() > count.get(main)) main = e.getKey();
+		for (final Flag f : CAUSES)
+			if (count.containsKey(f) && (main == null || count.get(f) > count.get(main))) main = f;
 		return String.format(Locale.ROOT, "%d of %d spots (%.0f%%) are flagged, most %s (%d): %s", flagged, spots
 			.size(), 100.0 * flagged / spots.size(), main.name(), count.get(main), advice(main));
 	}
