@@ -72,7 +72,7 @@ public final class FlagAdvice {
 			case AT_BORDER -> "particles cut by the frame's edge; their centres move when the frame is cropped, use the " +
 				"others (a larger field of view, or a selection away from the edge)";
 			case MERGED -> "active areas holding several particles; the threshold joins touching particles: use the " +
-				"default detection by the image (--detection image) with the particles' --diameter, or raise --threshold";
+				"detection by the image (--detection image) with the particles' --diameter, or raise --threshold";
 			case FELL_BACK -> "centres kept from a first pass because the refinement could not be made (too few pixels " +
 				"left, or a fit without enough light); check --r-out against the particles' size ('contact-tracker " +
 				"profile MOVIE' shows it)";
