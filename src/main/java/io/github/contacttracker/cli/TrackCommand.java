@@ -107,7 +107,7 @@ final class TrackCommand extends ContactTrackerCli.Subcommand {
 		final List<Outputs> outputs = new ArrayList<>();
 		if (outDir == null) outputs.add(new Outputs(csv, xml, null));
 		else {
-			if (!Files.isDirectory(outDir)) throw new InvalidInputException("--out-dir " + outDir + " is not a folder");
+			io.github.contacttracker.io.OutputFolder.prepare(outDir);
 			final Map<Path, Path> movieOf = new HashMap<>();
 			for (final Path movie : movies) {
 				final Path file = outDir.resolve(name(movie) + ".csv");

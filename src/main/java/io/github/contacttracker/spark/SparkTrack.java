@@ -125,8 +125,11 @@ public final class SparkTrack {
 			return 0;
 		}
 		final Path outDir = Path.of(o.outDir).toAbsolutePath();
-		if (!Files.isDirectory(outDir)) {
-			err.println("contact-tracker-spark: error: --out-dir " + o.outDir + " is not a folder");
+		try {
+			io.github.contacttracker.io.OutputFolder.prepare(outDir);
+		}
+		catch (final InvalidInputException e) {
+			err.println("contact-tracker-spark: error: " + e.getMessage());
 			return EXIT_BAD_INPUT;
 		}
 		final Map<String, String> nameOf = new HashMap<>();

@@ -254,5 +254,12 @@ class ContactTrackerCliTest {
 		try (var files = Files.list(fresh)) {
 			assertEquals(0, files.count(), "nothing written");
 		}
+
+		// a folder that does not exist yet is made (its parents too); a file given as the folder is refused
+		final Path made = dir.resolve("new").resolve("spots");
+		assertEquals(0, run("track", a.toString(), "--threshold", "85", "--r-out", "61", "--out-dir", made.toString())[0]);
+		assertTrue(Files.isRegularFile(made.resolve("pair.csv")));
+		assertBadInput("is a file, not a folder", null, "track", a.toString(), "--threshold", "85", "--r-out", "61",
+			"--out-dir", bad.toString());
 	}
 }

@@ -1,0 +1,53 @@
+/*-
+ * #%L
+ * Contact Tracker: sub-pixel localization of colloidal particles, also when they touch.
+ * %%
+ * Copyright (C) 2026 Contact Tracker developers
+ * %%
+ * This program is free software: you can redistribute it and/or modify
+ * it under the terms of the GNU General Public License as
+ * published by the Free Software Foundation, either version 3 of the
+ * License, or (at your option) any later version.
+ * 
+ * This program is distributed in the hope that it will be useful,
+ * but WITHOUT ANY WARRANTY; without even the implied warranty of
+ * MERCHANTABILITY or FITNESS FOR A PARTICULAR PURPOSE.  See the
+ * GNU General Public License for more details.
+ * 
+ * You should have received a copy of the GNU General Public
+ * License along with this program.  If not, see
+ * <http://www.gnu.org/licenses/gpl-3.0.html>.
+ * #L%
+ */
+package io.github.contacttracker.io;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+
+import io.github.contacttracker.core.InvalidInputException;
+
+/** The folder a run writes its files into ({@code --out-dir}): made when it does not exist, as users expect. */
+public final class OutputFolder {
+
+	private OutputFolder() {}
+
+	/**
+	 * Makes the folder (and its parents) when it does not exist.
+	 *
+	 * @return the folder
+	 * @throws InvalidInputException in one line when it is a file, cannot be made, or cannot be written
+	 */
+	public static Path prepare(final Path dir) {
+		if (Files.exists(dir) && !Files.isDirectory(dir)) throw new InvalidInputException("--out-dir " + dir +
+			" is a file, not a folder");
+		try {
+			Files.createDirectories(dir);
+		}
+		catch (final IOException | SecurityException e) {
+			throw new InvalidInputException("--out-dir " + dir + " cannot be made: " + e.getMessage());
+		}
+		if (!Files.isWritable(dir)) throw new InvalidInputException("--out-dir " + dir + " cannot be written");
+		return dir;
+	}
+}
