@@ -25,6 +25,7 @@ import io.github.contacttracker.core.math.UnionFind;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.function.Function;
 
 import io.github.contacttracker.core.Flag;
 import io.github.contacttracker.core.image.Censoring;
@@ -33,6 +34,7 @@ import io.github.contacttracker.core.math.SymmetricSolver;
 import io.github.contacttracker.core.profile.EmpiricalProfile;
 import io.github.contacttracker.core.radial.Estimate;
 import io.github.contacttracker.core.radial.Particle;
+import net.imglib2.parallel.Parallelization;
 
 /**
  * The {@code fit} method: particles closer than {@code 2 r_out} form a group (their significant light
@@ -87,8 +89,10 @@ public final class GroupFit {
 	private GroupFit() {}
 
 	/**
-	 * Refines the centres of the reliable particles, starting from {@code start}, group by group; a group's
-	 * neighbours are held at their latest estimates (those of groups already fitted included).
+	 * Refines the centres of the reliable particles, starting from {@code start}, group by group. Groups are
+	 * independent work: each is fitted with the other groups' light held at their estimates in {@code start}, so the
+	 * groups of one frame are spread over the caller's threads ({@link Parallelization#getTaskExecutor()}, the
+	 * imglib2 idiom) and the result does not depend on their number or order.
 	 *
 	 * @param profile each particle's profile (its kind's), same order as the particles
 	 * @return the new estimates (the others unchanged; the members of a group that could not be fitted, too few
@@ -98,17 +102,40 @@ public final class GroupFit {
 	static ProfileRefinement.Refined refine(final Plane plane, final Particle[] particles, final Estimate[] start,
 		final EmpiricalProfile[] profile, final double groupDistance, final double window, final Censoring censoring)
 	{
+		final List<int[]> groups = groups(particles, start, groupDistance);
+		final Function<int[], Fitted> fit = group -> {
+			// this group's own copy of the estimates: its members move in it, every other particle stays at its start
+			final Estimate[] own = start.clone();
+			final int it = group.length <= MAX_JOINT ? fitJointly(plane, particles, own, group, profile, window,
+				censoring) : fitInTurn(plane, particles, own, group, profile, window, censoring, MAX_SWEEPS);
+			final Estimate[] members = new Estimate[group.length];
+			for (int q = 0; q < group.length; q++)
+				members[q] = own[group[q]];
+			return new Fitted(members, it);
+		};
+		final List<Fitted> fitted;
+		if (groups.size() > 1) fitted = Parallelization.getTaskExecutor().forEachApply(groups, fit);
+		else {
+			fitted = new ArrayList<>(groups.size());
+			for (final int[] group : groups)
+				fitted.add(fit.apply(group));
+		}
 		final Estimate[] e = start.clone();
-		final List<int[]> groups = groups(particles, e, groupDistance);
 		int worst = 0;
-		for (final int[] group : groups) {
-			final int it = group.length <= MAX_JOINT ? fitJointly(plane, particles, e, group, profile, window, censoring)
-				: fitInTurn(plane, particles, e, group, profile, window, censoring, MAX_SWEEPS);
+		for (int g = 0; g < groups.size(); g++) {
+			final int[] group = groups.get(g);
+			final Fitted f = fitted.get(g);
+			for (int q = 0; q < group.length; q++)
+				e[group[q]] = f.members()[q];
+			final int it = f.iterations();
 			if (it < 0) worst = Math.min(worst, it);
 			else if (worst >= 0) worst = Math.max(worst, it);
 		}
 		return new ProfileRefinement.Refined(e, worst);
 	}
+
+	/** A group's fitted members (in the group's order) and the iterations its fit took ({@link #refine}). */
+	private record Fitted(Estimate[] members, int iterations) {}
 
 	/**
 	 * One joint fit of the group; its members keep their estimates flagged {@code FELL_BACK} if it cannot be made, and
@@ -415,26 +442,23 @@ public final class GroupFit {
 		// movie this took a fifth of the J^T J passes away); a longer one, or one that fails, has J^T J computed at
 		// p first.
 		boolean hessianAtP = previous == null;
-		// the residuals' variances of the latest pass at p
-		double[] noise = startNoise;
-		// the model on the pixels at the latest pass's point, for the re-choice of the pixels (where they are chosen)
+		// the residuals' variances of the latest pass at p; the model on the pixels at the latest pass's point, for the
+		// re-choice of the pixels (where they are chosen)
 		final boolean choosing = use != null && !frozen;
-		Evaluated evaluated = initial;
+		final Latest latest = new Latest(startNoise, choosing ? candidates.count() : -1, initial, np);
 		// the latest accepted step's largest centre move (px), and the steps accepted since J^T J was computed
 		double lastMove = Double.POSITIVE_INFINITY;
 		int sinceHessian = previous == null ? 0 : 1;
+		// the iterations' work arrays, allocated once per fit: the damped system's factor and its step, the trial point
+		// and its J^T r
+		final double[] factor = new double[np * np], work = new double[np], step = new double[np];
+		final double[] trial = new double[np], tr = new double[np];
 		for (; it <= budget.iterations(); it++) {
-			final double[][] a = new double[np][np];
-			for (int i = 0; i < np; i++) {
-				a[i] = jtj[i].clone();
-				a[i][i] += mu * jtj[i][i];
-			}
-			final double[] step = SymmetricSolver.solve(a, jtr);
-			if (step == null) break;
-			final double[] trial = p.clone();
+			if (!SymmetricSolver.factor(jtj, mu, np, factor)) break;
+			SymmetricSolver.solveFactored(factor, np, jtr, work, step);
 			boolean allowed = true;
 			for (int i = 0; i < np; i++)
-				trial[i] += step[i];
+				trial[i] = p[i] + step[i];
 			for (int q = 0; q < n; q++) {
 				final double sc = trial[PER_PARTICLE * q + 3];
 				if (!(sc >= MIN_SCALE && sc <= MAX_SCALE)) allowed = false;
@@ -449,6 +473,7 @@ public final class GroupFit {
 				System.arraycopy(trial, 0, p, 0, np);
 				// chosen at the point of the latest residual pass, whose model is known on the pixels in use (the
 				// settled point is within the tolerance of it)
+				final Evaluated evaluated = latest.evaluated;
 				if (use != null && selections < budget.selections() && (evaluated == null ? FitPixels.select(candidates, p, n,
 					members, censoring, use, null, null) : FitPixels.select(candidates, evaluated.p(), n, members, censoring,
 						use, evaluated.pixels(), evaluated.models()))) {
@@ -456,10 +481,8 @@ public final class GroupFit {
 					final FitPixels chosen = candidates.subset(use);
 					if (chosen.count() <= np) break;
 					pixels = chosen;
-					noise = new double[PER_PARTICLE * n];
-					final double[] models = choosing ? new double[pixels.count()] : null;
-					rss = NormalEquations.accumulate(pixels, p, n, members, jtj, jtr, noise, models);
-					evaluated = choosing ? new Evaluated(pixels, p.clone(), models) : null;
+					rss = NormalEquations.accumulate(pixels, p, n, members, jtj, jtr, latest.clearedNoise(), latest.models);
+					latest.take(pixels, p);
 					hessianAtP = true;
 					sinceHessian = 0;
 					mu = 1e-3;
@@ -469,23 +492,23 @@ public final class GroupFit {
 				// the uncertainties want J^T J near the solution: after a run of chord steps it is that of a point
 				// several steps back, so it is computed once more here (with the residuals' variances)
 				if (sinceHessian > 1) {
-					noise = new double[PER_PARTICLE * n];
-					rss = NormalEquations.accumulate(pixels, p, n, members, jtj, jtr, noise, null);
+					rss = NormalEquations.accumulate(pixels, p, n, members, jtj, jtr, latest.clearedNoise(), null);
+					latest.takeNoise();
 				}
 				break;
 			}
 			// a step from J^T J at p, or a chord step that shrinks fast, is evaluated
 			if (hessianAtP || allowed && move <= CHORD_CONTRACTION * lastMove) {
-				final double[] tr = new double[np], trialNoise = new double[PER_PARTICLE * n];
-				final double[] trialModels = choosing ? new double[pixels.count()] : null;
-				final double trialRss = allowed ? NormalEquations.accumulate(pixels, trial, n, members, null, tr,
-					trialNoise, trialModels) : Double.POSITIVE_INFINITY;
+				double trialRss = Double.POSITIVE_INFINITY;
+				if (allowed) {
+					trialRss = NormalEquations.accumulate(pixels, trial, n, members, null, tr, latest.clearedNoise(),
+						latest.models);
+				}
 				if (trialRss <= rss) {
 					System.arraycopy(trial, 0, p, 0, np);
 					System.arraycopy(tr, 0, jtr, 0, np);
 					hessianAtP = false;
-					noise = trialNoise;
-					evaluated = new Evaluated(pixels, trial, trialModels);
+					latest.take(pixels, trial);
 					rss = trialRss;
 					mu = Math.max(mu / 10, 1e-9);
 					lastMove = move;
@@ -494,10 +517,8 @@ public final class GroupFit {
 				}
 			}
 			if (!hessianAtP) { // a chord step that does not shrink fast, or that failed: J^T J at p, and the step again
-				noise = new double[PER_PARTICLE * n];
-				final double[] models = choosing ? new double[pixels.count()] : null;
-				rss = NormalEquations.accumulate(pixels, p, n, members, jtj, jtr, noise, models);
-				evaluated = choosing ? new Evaluated(pixels, p.clone(), models) : null;
+				rss = NormalEquations.accumulate(pixels, p, n, members, jtj, jtr, latest.clearedNoise(), latest.models);
+				latest.take(pixels, p);
 				hessianAtP = true;
 				sinceHessian = 0;
 			}
@@ -510,6 +531,7 @@ public final class GroupFit {
 		for (int q = 0; q < n; q++) {
 			final Estimate old = e[group[q]];
 			final int b = PER_PARTICLE * q;
+			final double[] noise = latest.noise;
 			final double vx = noise[b] > 0 ? dof * noise[b + 1] / noise[b] : s2;
 			final double vy = noise[b + 2] > 0 ? dof * noise[b + 3] / noise[b + 2] : s2;
 			e[group[q]] = new Estimate(p[b], p[b + 1], old.flags(), old.secondArea(), old.iterations(), old.solve(), Math
@@ -530,6 +552,55 @@ public final class GroupFit {
 			tolerance = Math.min(tolerance, settled(Math.sqrt(s2 * inv[b][b]), Math.sqrt(s2 * inv[b + 1][b + 1])));
 		}
 		return tolerance;
+	}
+
+	/**
+	 * The latest pass at the fit's point: the residuals' variances and, where the fit chooses its pixels, the model on
+	 * them. Each in two arrays, this pass's and the one the next pass writes into ({@link #clearedNoise}, {@link
+	 * #models}), swapped when that pass's point is taken ({@link #take}): the iterations allocate nothing.
+	 */
+	private static final class Latest {
+		/** the residuals' variances of the latest pass taken */
+		double[] noise;
+		/** the latest pass's point, the pixels and the model on them (null: not known, or not needed) */
+		Evaluated evaluated;
+		/** where the next pass writes the model (null: the model is not needed) */
+		double[] models;
+		private double[] spareNoise;
+		private final double[] at;
+
+		/** @param capacity the most pixels a pass may cover, negative where the model is not needed */
+		Latest(final double[] noise, final int capacity, final Evaluated initial, final int parameters) {
+			this.noise = noise;
+			spareNoise = new double[noise.length];
+			evaluated = capacity < 0 ? null : initial;
+			models = capacity < 0 ? null : new double[capacity];
+			at = new double[parameters];
+		}
+
+		/** @return the array the next pass sums the residuals' variances into, zeroed */
+		double[] clearedNoise() {
+			java.util.Arrays.fill(spareNoise, 0);
+			return spareNoise;
+		}
+
+		/** The variances of the pass just made are the latest (the model, if any, stays that of the one before). */
+		void takeNoise() {
+			final double[] taken = spareNoise;
+			spareNoise = noise;
+			noise = taken;
+		}
+
+		/** The pass just made, on {@code pixels} at {@code p}, is the latest. */
+		void take(final FitPixels pixels, final double[] p) {
+			takeNoise();
+			if (models == null) return;
+			final double[] freed = evaluated != null && evaluated.models() != null && evaluated.models().length >= models
+				.length ? evaluated.models() : new double[models.length];
+			System.arraycopy(p, 0, at, 0, at.length);
+			evaluated = new Evaluated(pixels, at, models);
+			models = freed;
+		}
 	}
 
 	/**

@@ -21,7 +21,13 @@
  */
 package io.github.contacttracker.core.math;
 
-/** Solves small symmetric positive-definite systems by Cholesky decomposition. */
+/**
+ * Solves small symmetric positive-definite systems by Cholesky decomposition. Besides the allocating
+ * {@link #solve(double[][], double[])} and {@link #invert}, a factor-then-solve pair on a caller's flat work arrays
+ * ({@link #factor}, {@link #solveFactored}) serves an iteration that solves one such system per step (a
+ * Levenberg-Marquardt fit) without allocating: the same arithmetic in the same order, so the same results to the last
+ * bit.
+ */
 public final class SymmetricSolver {
 
 	private SymmetricSolver() {}
@@ -32,57 +38,77 @@ public final class SymmetricSolver {
 	 * @return x, or null if {@code A} is not numerically positive definite
 	 */
 	public static double[] solve(final double[][] a, final double[] b) {
-		final double[][] l = cholesky(a);
-		if (l == null) return null;
 		final int n = b.length;
-		final double[] y = new double[n];
-		for (int i = 0; i < n; i++) {
-			double s = b[i];
-			for (int k = 0; k < i; k++)
-				s -= l[i][k] * y[k];
-			y[i] = s / l[i][i];
-		}
+		final double[] l = new double[n * n];
+		if (!factor(a, 0, n, l)) return null;
 		final double[] x = new double[n];
-		for (int i = n - 1; i >= 0; i--) {
-			double s = y[i];
-			for (int k = i + 1; k < n; k++)
-				s -= l[k][i] * x[k];
-			x[i] = s / l[i][i];
-		}
+		solveFactored(l, n, b, new double[n], x);
 		return x;
 	}
 
 	/** @return the inverse of a symmetric positive-definite matrix, or null if it is not */
 	public static double[][] invert(final double[][] a) {
 		final int n = a.length;
+		final double[] l = new double[n * n];
+		if (!factor(a, 0, n, l)) return null;
 		final double[][] inv = new double[n][n];
+		final double[] e = new double[n], y = new double[n], col = new double[n];
 		for (int j = 0; j < n; j++) {
-			final double[] e = new double[n];
 			e[j] = 1;
-			final double[] col = solve(a, e);
-			if (col == null) return null;
+			solveFactored(l, n, e, y, col);
+			e[j] = 0;
 			for (int i = 0; i < n; i++)
 				inv[i][j] = col[i];
 		}
 		return inv;
 	}
 
-	private static double[][] cholesky(final double[][] a) {
-		final int n = a.length;
-		final double[][] l = new double[n][n];
+	/**
+	 * The Cholesky factor of {@code A + damping diag(A)} (the lower triangle of {@code a}, {@code n x n}) into the
+	 * flat lower triangle {@code l} (row-major, {@code n} per row, at least {@code n * n} long).
+	 *
+	 * @return false if the matrix is not numerically positive definite ({@code l} then holds nothing of use)
+	 */
+	public static boolean factor(final double[][] a, final double damping, final int n, final double[] l) {
 		for (int i = 0; i < n; i++) {
-			for (int j = 0; j <= i; j++) {
-				double s = a[i][j];
+			final double[] ai = a[i];
+			final int ri = i * n;
+			for (int j = 0; j < i; j++) {
+				final int rj = j * n;
+				double s = ai[j];
 				for (int k = 0; k < j; k++)
-					s -= l[i][k] * l[j][k];
-				if (i == j) {
-					// Relative pivot test: a pivot that lost all but ~1e-12 of its diagonal is singular.
-					if (!(s > 1e-12 * Math.abs(a[i][i])) || !Double.isFinite(s)) return null;
-					l[i][i] = Math.sqrt(s);
-				}
-				else l[i][j] = s / l[j][j];
+					s -= l[ri + k] * l[rj + k];
+				l[ri + j] = s / l[rj + j];
 			}
+			final double d = damping == 0 ? ai[i] : ai[i] + damping * ai[i];
+			double s = d;
+			for (int k = 0; k < i; k++)
+				s -= l[ri + k] * l[ri + k];
+			// Relative pivot test: a pivot that lost all but ~1e-12 of its diagonal is singular.
+			if (!(s > 1e-12 * Math.abs(d)) || !Double.isFinite(s)) return false;
+			l[ri + i] = Math.sqrt(s);
 		}
-		return l;
+		return true;
+	}
+
+	/**
+	 * Solves {@code L L^T x = b} for the factor {@code l} of {@link #factor}; {@code y} ({@code n} long) is work space.
+	 */
+	public static void solveFactored(final double[] l, final int n, final double[] b, final double[] y,
+		final double[] x)
+	{
+		for (int i = 0; i < n; i++) {
+			final int ri = i * n;
+			double s = b[i];
+			for (int k = 0; k < i; k++)
+				s -= l[ri + k] * y[k];
+			y[i] = s / l[ri + i];
+		}
+		for (int i = n - 1; i >= 0; i--) {
+			double s = y[i];
+			for (int k = i + 1; k < n; k++)
+				s -= l[k * n + i] * x[k];
+			x[i] = s / l[i * n + i];
+		}
 	}
 }

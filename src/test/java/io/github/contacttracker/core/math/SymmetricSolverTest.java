@@ -23,7 +23,9 @@ package io.github.contacttracker.core.math;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.junit.jupiter.api.Test;
 
@@ -46,6 +48,33 @@ class SymmetricSolverTest {
 					s += a[i][k] * inv[k][j];
 				assertEquals(i == j ? 1 : 0, s, 1e-12);
 			}
+	}
+
+	/**
+	 * The factor of {@code A + damping diag(A)} on flat work arrays solves the damped system (as the allocating solve
+	 * of that matrix does, to the last bit), with work arrays longer than needed and reused.
+	 */
+	@Test
+	void dampedFactorOnWorkArraysSolvesTheDampedSystem() {
+		final double[][] a = { { 4, 1, 0.5, 0 }, { 1, 3, 0.2, 0.1 }, { 0.5, 0.2, 2, -0.3 }, { 0, 0.1, -0.3, 1.5 } };
+		final double damping = 0.25;
+		final double[][] damped = new double[4][];
+		for (int i = 0; i < 4; i++) {
+			damped[i] = a[i].clone();
+			damped[i][i] += damping * a[i][i];
+		}
+		final double[] x = { 1, -2, 3, 0.5 }, b = new double[4];
+		for (int i = 0; i < 4; i++)
+			for (int j = 0; j < 4; j++)
+				b[i] += damped[i][j] * x[j];
+		final double[] l = new double[16], y = new double[4], out = new double[4];
+		for (int round = 0; round < 2; round++) {
+			assertTrue(SymmetricSolver.factor(a, damping, 4, l));
+			SymmetricSolver.solveFactored(l, 4, b, y, out);
+			assertArrayEquals(x, out, 1e-12);
+			assertArrayEquals(SymmetricSolver.solve(damped, b), out, 0);
+		}
+		assertFalse(SymmetricSolver.factor(new double[][] { { 1, 2 }, { 2, 4 } }, 0, 2, l));
 	}
 
 	@Test

@@ -117,6 +117,37 @@ class StackTrackerTest {
 	}
 
 	/**
+	 * One frame of many groups (pairs of near particles and single ones, every group farther than 2 r_out from
+	 * the next): its groups are spread over the caller's threads, and the spots are the same to the last bit on one
+	 * thread and on three, and where the particles are.
+	 */
+	@Test
+	void oneFramesGroupsSpreadOverThreadsGiveTheSameSpots() {
+		final List<double[]> truth = new ArrayList<>();
+		for (int g = 0; g < 5; g++) {
+			truth.add(new double[] { 22 + 50 * g, 22 + 0.3 * g });
+			if (g % 2 == 0) truth.add(new double[] { 22 + 50 * g + 0.4 * g, 40 });
+		}
+		final double[] img = TestImages.withUniformNoise(TestImages.render(264, 64, 20, TestImages.gaussian(150, 4),
+			truth.toArray(new double[0][])), 4, 3);
+		final List<RandomAccessibleInterval<FloatType>> frame = List.of(TestImages.floats(img, 264, 64));
+		// r_out 14: groups of particles closer than 28 px, five of them
+		final TrackerParameters p = TrackerParameters.of(60, 14).withMethod(Method.FIT);
+		final List<Localization> one = StackTracker.spots(StackTracker.withThreads(1, () -> new StackTracker(p).track(
+			frame, false)));
+		final List<Localization> three = StackTracker.spots(StackTracker.withThreads(3, () -> new StackTracker(p).track(
+			frame, false)));
+		assertEquals(one, three);
+		assertEquals(truth.size(), one.size());
+		for (final double[] t : truth) {
+			double nearest = Double.POSITIVE_INFINITY;
+			for (final Localization s : one)
+				nearest = Math.min(nearest, Math.hypot(s.x() - t[0], s.y() - t[1]));
+			assertTrue(nearest < 0.1, "a particle at " + t[0] + ", " + t[1] + " found " + nearest + " px off");
+		}
+	}
+
+	/**
 	 * The distributed way (the profile stage once, shipped serialized, then the other frames in chunks, in any
 	 * order) gives exactly the spots of one run: what the Spark job relies on.
 	 */
