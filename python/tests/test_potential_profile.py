@@ -52,3 +52,13 @@ def test_profile_suggests_what_batch_measures(movie, tracked):
     # the command line's profile of the same frames suggests the same values
     out, _ = cli("profile", movie[1], cwd=movie[1].parent)
     assert f"--threshold {report['threshold']:g} --r-out {report['r_out']:g}" in out.splitlines()[-1]
+
+
+def test_profile_of_a_later_frame_is_the_command_lines(movie):
+    """Frame 5 (0-based) of 6: the helper reads it and the four before; the same suggestion as 'profile --frame 6'."""
+    frames, plain = movie
+    report = ct.profile(list(frames), frame=5)
+    assert report["frame"] == 5
+    out, _ = cli("profile", plain, "--frame", 6, cwd=plain.parent)
+    assert f"--threshold {report['threshold']:g} --r-out {report['r_out']:g} --diameter {report['diameter']:g}" \
+        in out.splitlines()[-1]

@@ -53,23 +53,31 @@ def _value(v):
 
 
 def _planes(frames):
-    """The frames as Java arrays, one per frame, of the pixel type ImageJ would hold them in; their numbers."""
+    """The frames as Java arrays, one per frame, of the pixel type ImageJ would hold them in; the frames' width,
+    height and numbers (PIMS's frame_no where every frame has one, as trackpy takes it, else 0, 1, ...)."""
     import jpype
+    numbers = None
     if isinstance(frames, np.ndarray):
         stack = frames[None] if frames.ndim == 2 else frames
     else:
         try:
-            stack = [np.asarray(f) for f in frames]
+            listed = list(frames)  # one pass: a PIMS reader decodes each frame once
         except TypeError:
             raise ValueError(f"frames must be a 2D image, a 3D stack or a sequence of 2D frames, not "
                              f"{type(frames).__name__}") from None
-        if not stack:
+        if not listed:
             raise ValueError("no frame given")
+        numbered = [getattr(f, "frame_no", None) for f in listed]
+        if all(isinstance(v, (int, np.integer)) for v in numbered):
+            numbers = np.asarray(numbered, dtype=np.int64)
+        stack = [np.asarray(f) for f in listed]
         shapes = {f.shape for f in stack}
         if len(shapes) > 1:
             raise ValueError(f"the frames differ in size: {sorted(shapes)}")
         if stack[0].ndim != 2:
-            raise ValueError(f"a frame must be 2D (height x width), not of shape {stack[0].shape}")
+            raise ValueError(f"a frame must be 2D (height x width), not of shape {stack[0].shape}"
+                             + (" (colour: pass one channel, e.g. frame[..., 1])" if stack[0].ndim == 3
+                                and stack[0].shape[-1] in (3, 4) else ""))
         stack = np.stack(stack)
     if stack.ndim != 3:
         raise ValueError(f"an image must be 2D or a 3D stack of 2D frames, not of shape {frames.shape}"
@@ -77,8 +85,7 @@ def _planes(frames):
                             and frames.shape[-1] in (3, 4) else ""))
     if stack.shape[0] == 0 or stack.shape[1] == 0 or stack.shape[2] == 0:
         raise ValueError(f"an empty image (shape {stack.shape})")
-    kind = stack.dtype.kind
-    if kind not in "uif":
+    if stack.dtype.kind not in "uif":
         raise ValueError(f"pixels must be numbers, not {stack.dtype}")
     _java.start()
     n, h, w = stack.shape
@@ -92,20 +99,7 @@ def _planes(frames):
     planes = jpype.JArray(jpype.JObject)(n)
     for t in range(n):
         planes[t] = jpype.JArray(jtype)(flat[t])
-    return planes, w, h
-
-
-def _frame_numbers(frames, n):
-    """Each frame's number: PIMS's `frame_no` where every frame has one (as trackpy takes it), else 0, 1, ..."""
-    if not isinstance(frames, np.ndarray) or frames.ndim == 2:
-        try:
-            numbers = [getattr(f, "frame_no", None) for f in (frames if not isinstance(frames, np.ndarray) or
-                                                               frames.ndim != 2 else [frames])]
-            if len(numbers) == n and all(isinstance(v, (int, np.integer)) for v in numbers):
-                return np.asarray(numbers, dtype=np.int64)
-        except TypeError:
-            pass
-    return np.arange(n, dtype=np.int64)
+    return planes, w, h, numbers if numbers is not None else np.arange(n, dtype=np.int64)
 
 
 def batch(frames, threads=0, **settings):
@@ -119,8 +113,7 @@ def batch(frames, threads=0, **settings):
     the threshold within `radius` of the centre), ep (the rms of sigma_x and sigma_y, px), then the tracker's
     columns; the settings used in df.attrs["settings"].
     """
-    planes, w, h = _planes(frames)
-    numbers = _frame_numbers(frames, len(planes))
+    planes, w, h, numbers = _planes(frames)
     return _track(planes, w, h, numbers, threads, settings)
 
 
@@ -130,7 +123,7 @@ def locate(image, threads=0, **settings):
     if image_array.ndim != 2:
         raise ValueError(f"locate takes one 2D image (height x width), not shape {image_array.shape}: batch takes "
                          "stacks")
-    planes, w, h = _planes(image_array)
+    planes, w, h, _ = _planes(image_array)
     number = getattr(image, "frame_no", 0)
     return _track(planes, w, h, np.asarray([number if isinstance(number, (int, np.integer)) else 0]), threads,
                   settings)
@@ -172,11 +165,26 @@ def profile(image, frame=0, diameter=0.0, max_radius=0.0, particles=None):
     locate/batch), the radial profile (`radius`, `level`, `count` as numpy arrays), `background`, `noise`,
     `peak`, `centres` (x, y of the particles profiled), `lines` (the report's text) and `warnings`.
     """
-    planes, w, h = _planes(image)
+    if isinstance(image, np.ndarray) and image.ndim == 2:
+        window, first = image, 0
+    else:
+        # only the frames the helper reads: the frame and the next four (earlier ones near the end)
+        try:
+            n = len(image)
+        except TypeError:
+            raise ValueError(f"profile takes a 2D image, a 3D stack or a sequence of frames, not "
+                             f"{type(image).__name__}") from None
+        if not 0 <= frame < n:
+            raise ValueError(f"frame {frame} does not exist: there {'is 1 frame' if n == 1 else f'are {n} frames'}"
+                             " (counted from 0)")
+        kind_frames = int(_java.cls("advisor.ProfileAnalysis").KIND_FRAMES)
+        first = max(0, min(frame, n - kind_frames))
+        window = image[first:first + kind_frames]
+    planes, w, h, _ = _planes(window)
     with _java.errors():
         frames = _java.cls("pipeline.PixelPlanes")(planes, w, h)
-        report = _java.cls("pipeline.ProfileSummary").of(frames, int(frame), float(diameter), float(max_radius),
-                                                         particles)
+        report = _java.cls("pipeline.ProfileSummary").of(frames, int(frame) - first, float(diameter),
+                                                         float(max_radius), particles)
         out = {}
         for k, v in report.items():
             k = str(k)
@@ -186,6 +194,8 @@ def profile(image, frame=0, diameter=0.0, max_radius=0.0, particles=None):
                 out[k] = np.asarray([[c[0], c[1]] for c in v], dtype=float).reshape(-1, 2)
             elif k in ("lines", "warnings"):
                 out[k] = [str(s) for s in v]
+            elif k == "frame":
+                out[k] = int(v) + first
             elif k == "diameter_estimated":
                 out[k] = str(v) == "true"
             else:
@@ -193,13 +203,14 @@ def profile(image, frame=0, diameter=0.0, max_radius=0.0, particles=None):
     return out
 
 
-def pair_potential(spots, bin, r_max, width=None, height=None, start_frame=0, flagged="drop"):
+def pair_potential(spots, bin, r_max, width=None, height=None, start_frame=0, flagged="drop", zero=None):
     """g(r) and U(r)/kT with their errors from spots (a DataFrame of locate/batch, or any with x, y, frame and
     optional boolean flag columns), by the tracker's Java code (as `contact-tracker potential`).
 
     bin, r_max: bin width and largest r, in the spots' units. width, height: the field of view (both or neither;
     else inferred from the spots). start_frame: leave out earlier frames. flagged: "drop" (spots with a warning
-    flag left out) or "keep".
+    flag left out) or "keep". zero: (from, to), a range of r where U is set to 0 on average (where the particles
+    no longer interact).
     Returns a DataFrame, a row per bin: r, r_low, r_high, pairs, expected, g, g_error, u, u_error.
     """
     if flagged not in ("drop", "keep"):
@@ -235,6 +246,9 @@ def pair_potential(spots, bin, r_max, width=None, height=None, start_frame=0, fl
         field = fov.of(float(width), float(height)) if width is not None else fov.inferred(chosen.allX(),
                                                                                            chosen.allY())
         result = _java.cls("potential.PairCorrelation").compute(chosen, field, float(bin), float(r_max))
+        if zero is not None:
+            low, high = zero
+            result = result.withZero(float(low), float(high))
         bins = list(result.bins())
         rows = {
             "r": [b.r() for b in bins], "r_low": [b.rLow() for b in bins], "r_high": [b.rHigh() for b in bins],
