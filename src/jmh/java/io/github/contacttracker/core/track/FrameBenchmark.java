@@ -39,9 +39,9 @@ import org.openjdk.jmh.annotations.State;
 import org.openjdk.jmh.annotations.Warmup;
 
 import io.github.contacttracker.core.TrackerParameters;
-import io.github.contacttracker.sim.ParticleType;
-import io.github.contacttracker.sim.PaperParticles;
-import io.github.contacttracker.sim.SimulatedStack;
+import io.github.contacttracker.lab.sim.ParticleType;
+import io.github.contacttracker.lab.sim.PaperParticles;
+import io.github.contacttracker.lab.sim.SimulatedStack;
 import net.imglib2.img.array.ArrayImg;
 import net.imglib2.type.numeric.integer.UnsignedByteType;
 
