@@ -105,8 +105,13 @@ public final class ProfileCommand extends ContactTrackerCli.Subcommand {
 		if (frame < 1 || frame > frames.frameCount())
 			throw new InvalidInputException("--frame " + frame + " does not exist: " + movie + " has " + frames
 				.frameCount() + " frame" + (frames.frameCount() == 1 ? "" : "s"));
-		final ProfileAnalysis.Result r = analyse(frames.frames().get(frame - 1), at, ShownFrameProfile.kindFrames(
-			frames, frame - 1));
+		final ProfileAnalysis.Result r;
+		try {
+			r = analyse(frames.frames().get(frame - 1), at, ShownFrameProfile.kindFrames(frames, frame - 1));
+		}
+		catch (final InvalidInputException e) { // the helper's finding, said of this movie's frame
+			throw new InvalidInputException(movie.getFileName() + ", frame " + frame + ": " + e.getMessage(), e);
+		}
 		final boolean integerData = imp.getBitDepth() != 32;
 		final double threshold = r.suggestedThreshold(integerData), rOut = r.suggestedROut();
 

@@ -123,7 +123,15 @@ final class TrackCommand extends ContactTrackerCli.Subcommand {
 		final boolean showProgress = options.given(progressOption) ? options.value(progressOption) : Boolean.getBoolean(
 			STDERR_TTY);
 		if (movies.size() == 1) {
-			track(movies.get(0), outputs.get(0), settings, threads, showProgress);
+			final Path movie = movies.get(0);
+			try {
+				track(movie, outputs.get(0), settings, threads, showProgress);
+			}
+			catch (final InvalidInputException e) { // named after the movie, as each of several movies is
+				final String name = movie.getFileName().toString();
+				if (e.getMessage() != null && e.getMessage().contains(name)) throw e;
+				throw new InvalidInputException(name + ": " + e.getMessage(), e);
+			}
 			return 0;
 		}
 		// several movies: a movie that cannot be tracked is reported, and the others are still done

@@ -141,7 +141,8 @@ public final class MeasuredSettings {
 			said.append(" --threshold ").append(optionValue(v.get(TrackingSettings.THRESHOLD)));
 		}
 		if (!rOutGiven) {
-			v = v.with(TrackingSettings.R_OUT, Math.max(3, v.diameter()));
+			final long w = seen.dimension(0), h = seen.dimension(1);
+			v = v.with(TrackingSettings.R_OUT, Math.max(3, Math.min(v.diameter(), Math.hypot(w, h))));
 			said.append(" --r-out ").append(optionValue(v.get(TrackingSettings.R_OUT)));
 		}
 		return new Result(v, "contact-tracker: " + name + ": the profile helper could not measure (" +

@@ -48,6 +48,35 @@ class ThinImagesTest {
 	@TempDir
 	Path dir;
 
+	/**
+	 * Found by the entry-point fuzz: an r_out of 1e6 px (or such a diameter with detection by the image) sized the
+	 * profile's arrays beyond the heap, an internal error; now one line naming the movie and the value.
+	 */
+	@org.junit.jupiter.api.Test
+	void aReachBeyondTheFrameIsRefusedInOneLine() throws IOException {
+		final ByteProcessor ip = new ByteProcessor(40, 30);
+		ip.setValue(200);
+		ip.fillOval(10, 10, 8, 8);
+		final Path tif = dir.resolve("small.tif");
+		ImageFiles.saveTiff(new ImagePlus("small", ip), tif);
+		for (final String[] args : new String[][] { { "--threshold", "100", "--r-out", "1e6" }, { "--threshold", "100",
+			"--r-out", "5", "--diameter", "1e6", "--detection", "image" } })
+		{
+			final String[] all = new String[args.length + 4];
+			all[0] = "track";
+			all[1] = tif.toString();
+			System.arraycopy(args, 0, all, 2, args.length);
+			all[args.length + 2] = "--csv";
+			all[args.length + 3] = dir.resolve("o.csv").toString();
+			final Object[] out = ContactTrackerCliTest.run(all);
+			final String err = ((String) out[2]).strip();
+			assertEquals(ContactTrackerCli.EXIT_BAD_INPUT, out[0], err);
+			assertEquals(1, err.lines().count(), err);
+			assertTrue(err.contains("small.tif") && err.contains("twice the frame's diagonal"), err);
+			assertFalse(Files.exists(dir.resolve("o.csv")));
+		}
+	}
+
 	@ParameterizedTest
 	@CsvSource({ "1,1", "1,17", "17,1", "2,9", "3,5", "2,50", "50,2", "3,40", "40,3" })
 	void thinImagesTrackOrEndInOneLine(final int w, final int h) throws IOException {

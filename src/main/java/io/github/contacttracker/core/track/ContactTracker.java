@@ -25,6 +25,7 @@ import java.util.ArrayList;
 import java.util.List;
 
 import io.github.contacttracker.core.Flag;
+import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.core.Localization;
 import io.github.contacttracker.core.Method;
 import io.github.contacttracker.core.TrackerParameters;
@@ -132,6 +133,7 @@ public final class ContactTracker {
 	FrameResult analyse(final Plane plane, final int frameIndex, final boolean keepRegions,
 		final KindProfiles profile)
 	{
+		checkReach(plane, params);
 		final int[] discarded = new int[1];
 		final double noise = NoiseEstimate.sigma(plane);
 		final Particle[] ps;
@@ -185,6 +187,22 @@ public final class ContactTracker {
 		}
 		return new FrameResult(spots, active, second, noise, discarded[0], profile == null && params.method()
 			.needsProfile());
+	}
+
+	/**
+	 * Refuses an {@code r_out} or a diameter more than twice the frame's diagonal: no particle's image in the frame
+	 * reaches so far, and the profile's and the filter's arrays, sized by them, would not fit in memory.
+	 *
+	 * @throws InvalidInputException in one line naming the value and the frame's size
+	 */
+	static void checkReach(final Plane plane, final TrackerParameters params) {
+		final double most = 2 * Math.hypot(plane.width(), plane.height());
+		if (params.rOut() > most) throw new InvalidInputException(String.format(java.util.Locale.ROOT,
+			"r_out %s px reaches beyond twice the frame's diagonal (%d x %d px): give the reach of one particle's image",
+			io.github.contacttracker.core.Numbers.fmt(params.rOut()), plane.width(), plane.height()));
+		if (params.diameter() > most) throw new InvalidInputException(String.format(java.util.Locale.ROOT,
+			"diameter %s px is larger than twice the frame's diagonal (%d x %d px): give the particles' diameter",
+			io.github.contacttracker.core.Numbers.fmt(params.diameter()), plane.width(), plane.height()));
 	}
 
 	/** The significance at and above which a spot's {@code QUALITY} is 1: certainly a particle, not noise. */

@@ -1,0 +1,169 @@
+/*-
+ * #%L
+ * Contact Tracker: sub-pixel localization of colloidal particles, also when they touch.
+ * %%
+ * Copyright (C) 2026 Contact Tracker developers
+ * %%
+ * This program is free software: you can redistribute it and/or modify
+ * it under the terms of the GNU General Public License as
+ * published by the Free Software Foundation, either version 3 of the
+ * License, or (at your option) any later version.
+ * 
+ * This program is distributed in the hope that it will be useful,
+ * but WITHOUT ANY WARRANTY; without even the implied warranty of
+ * MERCHANTABILITY or FITNESS FOR A PARTICULAR PURPOSE.  See the
+ * GNU General Public License for more details.
+ * 
+ * You should have received a copy of the GNU General Public
+ * License along with this program.  If not, see
+ * <http://www.gnu.org/licenses/gpl-3.0.html>.
+ * #L%
+ */
+package io.github.contacttracker.fuzz;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.SplittableRandom;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+import ij.ImagePlus;
+import ij.ImageStack;
+import ij.process.ByteProcessor;
+import ij.process.FloatProcessor;
+import ij.process.ImageProcessor;
+import ij.process.ShortProcessor;
+import io.github.contacttracker.cli.ContactTrackerCli;
+import io.github.contacttracker.io.ImageFiles;
+
+/**
+ * Fuzzes the command line's real entry points, {@code track} (with and without values, so that the profile helper
+ * measures them) and {@code profile}, with random images: every size from 1x1, 8, 16 and 32 bits, constant,
+ * noisy or holding particles, floats with NaN and infinities, one to three frames; and random option strings. The
+ * property: no internal error (no exception escapes), the exit status 0 or 2, a refusal one line naming the file
+ * or the option, and no output file left behind a refusal.
+ * <p>
+ * In the suite it runs {@value #SHORT_RUN} cases (a few seconds). A longer run, from a given seed:
+ * <pre>
+ * mvn -B test -Dtest=EntryPointFuzzTest -Dcontact.tracker.fuzz.cases=5000 -Dcontact.tracker.fuzz.seed=7
+ * </pre>
+ * A case that fails prints its seed and arguments, to be kept as a named regression test.
+ */
+class EntryPointFuzzTest {
+
+	/** Cases in the suite's run. */
+	static final int SHORT_RUN = 80;
+
+	@TempDir
+	Path dir;
+
+	@Test
+	void noInputEndsInAnInternalError() throws IOException {
+		final int cases = Integer.getInteger("contact.tracker.fuzz.cases", SHORT_RUN);
+		final long seed = Long.getLong("contact.tracker.fuzz.seed", 20261205L);
+		final SplittableRandom rnd = new SplittableRandom(seed);
+		int tracked = 0, refused = 0;
+		for (int c = 0; c < cases; c++) {
+			final long caseSeed = rnd.nextLong();
+			final SplittableRandom r = new SplittableRandom(caseSeed);
+			final Path movie = dir.resolve("case" + c + ".tif");
+			ImageFiles.saveTiff(image(r), movie);
+			final Path csv = dir.resolve("case" + c + ".csv");
+			final List<String> args = new ArrayList<>();
+			if (r.nextInt(5) == 0) {
+				args.add("profile");
+				args.add(movie.toString());
+			}
+			else {
+				args.add("track");
+				args.add(movie.toString());
+				options(r, args);
+				args.add("--csv");
+				args.add(csv.toString());
+				args.add("--no-progress");
+			}
+			final ByteArrayOutputStream out = new ByteArrayOutputStream(), err = new ByteArrayOutputStream();
+			final int status;
+			try {
+				status = ContactTrackerCli.run(args.toArray(String[]::new), new PrintStream(out, true,
+					StandardCharsets.UTF_8), new PrintStream(err, true, StandardCharsets.UTF_8));
+			}
+			catch (final RuntimeException e) {
+				throw new AssertionError("case seed " + caseSeed + " " + args + ": an exception escaped", e);
+			}
+			final String said = err.toString(StandardCharsets.UTF_8);
+			final String what = "case seed " + caseSeed + " " + args + ":\n" + said;
+			assertFalse(said.contains("internal error"), what);
+			assertTrue(status == 0 || status == ContactTrackerCli.EXIT_BAD_INPUT, "exit " + status + ": " + what);
+			if (status == ContactTrackerCli.EXIT_BAD_INPUT) {
+				assertEquals(1, said.lines().filter(l -> l.contains("error")).count(), what);
+				// the line names the movie, or the option at fault
+				assertTrue(said.contains("case" + c + ".tif") || said.contains("option ") || said.contains("--"), what);
+				assertFalse(Files.exists(csv), "no output left behind a refusal: " + what);
+			}
+			if (status == 0) tracked++;
+			else refused++;
+			Files.deleteIfExists(csv);
+			Files.deleteIfExists(dir.resolve("case" + c + ".settings.txt"));
+		}
+		System.out.println("entry-point fuzz, seed " + seed + ": " + cases + " cases, " + tracked + " tracked, " +
+			refused + " refused in one line");
+		// the cases reach both ends: a fuzz that only ever refused (or only tracked) would test one path
+		assertTrue(tracked > 0 && refused > 0, tracked + " tracked, " + refused + " refused");
+	}
+
+	/** @return a random movie: a size from 1x1, a pixel type, a content */
+	private static ImagePlus image(final SplittableRandom r) {
+		final int w = size(r), h = size(r), frames = 1 + r.nextInt(3), type = r.nextInt(3), content = r.nextInt(5);
+		final ImageStack stack = new ImageStack(w, h);
+		for (int t = 0; t < frames; t++) {
+			final ImageProcessor ip = type == 0 ? new ByteProcessor(w, h) : type == 1 ? new ShortProcessor(w, h)
+				: new FloatProcessor(w, h);
+			final double max = type == 0 ? 255 : type == 1 ? 65535 : 1e4;
+			final double cx = r.nextDouble() * w, cy = r.nextDouble() * h, radius = 1 + r.nextDouble() * 12;
+			for (int y = 0; y < h; y++)
+				for (int x = 0; x < w; x++) {
+					double v = switch (content) {
+						case 0 -> max / 3; // constant
+						case 1 -> r.nextDouble() * max; // noise
+						default -> 0.1 * max + 0.6 * max * Math.exp(-((x - cx) * (x - cx) + (y - cy) * (y - cy)) / (2 * radius *
+							radius)) + 0.02 * max * r.nextGaussian(); // a particle
+					};
+					if (type == 2 && content == 4 && r.nextInt(50) == 0) v = r.nextBoolean() ? Double.NaN : Double.POSITIVE_INFINITY;
+					ip.putPixelValue(x, y, type == 2 ? v : Math.max(0, Math.min(max, v)));
+				}
+			stack.addSlice(ip);
+		}
+		return new ImagePlus("fuzz", stack);
+	}
+
+	/** @return a side: a quarter of them thin (1 to 4 px), the others 8 to 120 */
+	private static int size(final SplittableRandom r) {
+		return r.nextInt(4) == 0 ? 1 + r.nextInt(4) : 8 + r.nextInt(113);
+	}
+
+	/** Random options: values given or measured, some out of range, some not numbers. */
+	private static void options(final SplittableRandom r, final List<String> args) {
+		final String[][] choices = { { "--threshold", "50", "0", "-3", "1e9", "NaN", "x" }, { "--r-out", "5", "0.5",
+			"0", "-1", "400" }, { "--diameter", "4", "0", "30", "1e6" }, { "--method", "fit", "paper", "deblend", "first",
+				"iterative", "nope" }, { "--detection", "image", "threshold", "other" }, { "--min-area", "1", "20", "0" },
+			{ "--kinds", "0", "1", "4", "9" }, { "--particles", "dark", "bright" }, { "--connectivity", "4", "8", "6" } };
+		for (final String[] c : choices)
+			if (r.nextInt(3) == 0) {
+				args.add(c[0]);
+				// mostly a sensible value (the first), so that the tracking itself is reached as often as a refusal
+				args.add(c[r.nextInt(3) > 0 ? 1 : 1 + r.nextInt(c.length - 1)]);
+			}
+	}
+}
