@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """ct.batch against `contact-tracker track` on the same frames: a movie's frames as the command line reads them,
-repeated to N frames, written as a plain TIFF; `track` on the TIFF (a new process: JVM start-up, file reading and
-the CSV included) against ct.batch on the same frames in memory (in this process, its JVM started and warm, and
+repeated to N frames, written as a plain TIFF; `scripts/contact-tracker track` on the TIFF (a new process: JVM
+start-up, file reading and the CSV included) against ct.batch on the same frames in memory (in this process, its JVM started and warm, and
 in a new Python process: JVM start-up and compilation included), best of R runs each, in wall-clock and in CPU
 seconds (all threads: less disturbed by other processes on a shared machine than the wall clock). Also checks
 that both give the same spots.
@@ -52,7 +52,10 @@ java = str(Path(_java.java_home()) / "bin" / "java")
 with tempfile.TemporaryDirectory() as d:
     tif, csv = Path(d, "movie.tif"), Path(d, "spots.csv")
     tifffile.imwrite(tif, frames)
-    cmd = [java, "-jar", str(_java.JAR), "track", str(tif), "--csv", str(csv), "--no-progress"]
+    # track as users run it: the repository's launcher (its JVM options for short jobs), else the package's jar
+    launcher = Path(__file__).resolve().parents[2] / "scripts" / "contact-tracker"
+    cmd = ([str(launcher)] if launcher.is_file() else [java, "-jar", str(_java.JAR)]) + [
+        "track", str(tif), "--csv", str(csv), "--no-progress"]
     subprocess.run(cmd, check=True, capture_output=True)  # the file into the page cache
     track, track_cpu = [], []
     for _ in range(args.runs):

@@ -21,6 +21,7 @@
  */
 package io.github.contacttracker.pipeline;
 
+import java.io.IOException;
 import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.LinkedHashMap;
@@ -31,6 +32,7 @@ import java.util.stream.Collectors;
 
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.core.Localization;
+import io.github.contacttracker.io.Calibration;
 import io.github.contacttracker.io.SpotColumn;
 import io.github.contacttracker.settings.Setting;
 import io.github.contacttracker.settings.SettingValues;
@@ -99,7 +101,7 @@ public final class ColumnTracking {
 		try {
 			result = pipeline.run(source, Outputs.NONE, threads, false, null, () -> false);
 		}
-		catch (final java.io.IOException e) {
+		catch (final IOException e) {
 			throw new AssertionError("no file is written", e);
 		}
 		return new Table(keys(), columns(result.spots()), mass(result.spots(), pipeline.frames(source), measured
@@ -123,7 +125,7 @@ public final class ColumnTracking {
 		for (int i = 0; i < spots.size(); i++) {
 			final Localization s = spots.get(i);
 			for (int c = 0; c < cols.length; c++)
-				out[c][i] = cols[c].value(s, i, io.github.contacttracker.io.Calibration.PIXELS);
+				out[c][i] = cols[c].value(s, i, Calibration.PIXELS);
 		}
 		return out;
 	}

@@ -21,6 +21,8 @@
  */
 package io.github.contacttracker.pipeline;
 
+import java.lang.reflect.Array;
+
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.io.Calibration;
 import io.github.contacttracker.io.ImagePlusFrames;
@@ -58,7 +60,7 @@ public final class PixelPlanes {
 		for (int t = 0; t < planes.length; t++) {
 			if (planes[t] == null || planes[t].getClass() != type) throw new InvalidInputException("frame " + (t + 1) +
 				" is not of the first frame's pixel type (" + type.getSimpleName() + ")");
-			final int length = java.lang.reflect.Array.getLength(planes[t]);
+			final int length = Array.getLength(planes[t]);
 			if (length != n) throw new InvalidInputException("frame " + (t + 1) + " has " + length + " pixels, not " +
 				width + " x " + height + " = " + n);
 		}
