@@ -177,7 +177,7 @@ class ColumnTrackingTest {
 	void badInputIsOneLineNamingIt() {
 		final byte[][] planes = planes();
 		assertEquals("unknown setting 'r-out': the settings are threshold, r_out, min_area, min_second_area, " +
-			"connectivity, method, diameter, kinds, particles, channel", assertThrows(InvalidInputException.class,
+			"connectivity, method, diameter, kinds, particles, detection, channel", assertThrows(InvalidInputException.class,
 				() -> ColumnTracking.track(new PixelPlanes(planes, W, H), "sim", Map.of("r-out", "3"), 1)).getMessage());
 		assertEquals("r_out must be a positive number of pixels, not -1.0", assertThrows(InvalidInputException.class,
 			() -> ColumnTracking.track(new PixelPlanes(planes, W, H), "sim", Map.of("r_out", "-1"), 1)).getMessage());
