@@ -127,14 +127,14 @@ public final class ModelSelection {
 		final ImageDetection.Scale scale = ImageDetection.Scale.of(d);
 		final float[][] cache = new float[1][];
 		final float[] bpData = dataBp(plane, scale, data, w, h, cache);
-		final double strong = STRONG * typicalMatching(seeds, data, w, h, given, noise);
+		final double strong = ProfileMatch.STRONG * ProfileMatch.typicalMatching(seeds, data, w, h, given, noise);
 		// with the profiles known, a weak seed is fitted only where the frame matches a particle's profile (a halo's
 		// fringe does not)
 		final Moves start = new Moves(seeds.count());
 		int removed = 0;
 		for (int i = 0; i < seeds.count(); i++)
-			if (given == null || seeds.height()[i] >= strong || matchedAny(data, w, h, seeds.x()[i], seeds.y()[i], given,
-				noise) >= MATCH) start.add(seeds.x()[i], seeds.y()[i]);
+			if (given == null || seeds.height()[i] >= strong || ProfileMatch.matchedAny(data, w, h, seeds.x()[i], seeds.y()[i], given,
+				noise) >= ProfileMatch.MATCH) start.add(seeds.x()[i], seeds.y()[i]);
 			else removed++;
 		Particle[] ps = ImageDetection.particles(plane, start.x(), start.y(), ImageDetection.radius(d), ImageDetection
 			.margin(d));
@@ -152,19 +152,19 @@ public final class ModelSelection {
 				if (drawn(e[k])) draw(residual, w, h, e[k], of[k], -1);
 			significance = new double[e.length];
 			for (int k = 0; k < e.length; k++)
-				significance[k] = drawn(e[k]) ? significance(residual, w, h, e[k], of[k], noise) : undrawn(residual, w, h,
+				significance[k] = drawn(e[k]) ? MemberTests.significance(residual, w, h, e[k], of[k], noise) : MemberTests.undrawn(residual, w, h,
 					e[k], of[k], noise);
 			if (round == ROUNDS) break;
 			// remove
 			final double[] match = new double[e.length];
 			for (int k = 0; k < e.length; k++)
-				match[k] = weak(bpData, w, h, e[k].x(), e[k].y(), strong) ? matched(data, w, h, e[k].x(), e[k].y(), of[k],
+				match[k] = ProfileMatch.weak(bpData, w, h, e[k].x(), e[k].y(), strong) ? ProfileMatch.matched(data, w, h, e[k].x(), e[k].y(), of[k],
 					noise) : 1;
 			final boolean[] keep = new boolean[e.length];
 			int kept = 0;
 			for (int k = 0; k < e.length; k++) {
 				keep[k] = !(e[k].amplitude() <= 0) && !(e[k].scale() <= PINNED_LOW) && !pinned(e[k]) && !(significance[
-					k] < SIGNIFICANCE) && !(match[k] < MATCH);
+					k] < SIGNIFICANCE) && !(match[k] < ProfileMatch.MATCH);
 				for (int j = 0; j < k && keep[k]; j++)
 					if (keep[j] && e[j].distanceTo(e[k]) < d / 4) {
 						// two members on one particle: the weaker goes
@@ -172,7 +172,7 @@ public final class ModelSelection {
 						else keep[k] = false;
 					}
 			}
-			overlapTest(data, w, h, e, of, keep, significance, d, noise);
+			MemberTests.overlapTest(data, w, h, e, of, keep, significance, d, noise);
 			for (final boolean b : keep)
 				if (b) kept++;
 			// split and add
@@ -194,7 +194,7 @@ public final class ModelSelection {
 				int nearest = -1;
 				double dn = Double.POSITIVE_INFINITY;
 				for (int k = 0; k < e.length; k++) {
-					final double dk = dist(e[k].x() - px, e[k].y() - py);
+					final double dk = MemberTests.dist(e[k].x() - px, e[k].y() - py);
 					if (keep[k] && dk < dn) {
 						dn = dk;
 						nearest = k;
@@ -208,8 +208,8 @@ public final class ModelSelection {
 						e[nearest].y() + 0.5 * (py - e[nearest].y()), e[nearest].x() - 0.5 * (px - e[nearest].x()),
 						e[nearest].y() - 0.5 * (py - e[nearest].y()));
 				}
-				else if ((nearest < 0 || dn >= d) && (more.height()[p] >= strong || matchedAny(data, w, h, px, py, profiles,
-					noise) >= MATCH)) moves.add(px, py);
+				else if ((nearest < 0 || dn >= d) && (more.height()[p] >= strong || ProfileMatch.matchedAny(data, w, h, px, py, profiles,
+					noise) >= ProfileMatch.MATCH)) moves.add(px, py);
 			}
 			int splits = 0;
 			for (final boolean b : split)
@@ -259,7 +259,7 @@ public final class ModelSelection {
 
 		boolean near(final double px, final double py, final double within) {
 			for (int i = 0; i < n; i++)
-				if (dist(x[i] - px, y[i] - py) < within) return true;
+				if (MemberTests.dist(x[i] - px, y[i] - py) < within) return true;
 			return false;
 		}
 
@@ -316,7 +316,7 @@ public final class ModelSelection {
 		for (int y = y0; y <= y1; y++)
 			for (int x = x0; x <= x1; x++) {
 				final double v = bp[y * w + x];
-				if (!(v > 0) || dist(x - cx, y - cy) > d) continue;
+				if (!(v > 0) || MemberTests.dist(x - cx, y - cy) > d) continue;
 				s += v;
 				sx += v * x;
 				sy += v * y;
@@ -332,11 +332,11 @@ public final class ModelSelection {
 		final double half = Math.sqrt(Math.max(0, l1 - l2));
 		if (half < d / 8) return false;
 		double ux = vxy, uy = l1 - vxx;
-		if (dist(ux, uy) < 1e-12) {
+		if (MemberTests.dist(ux, uy) < 1e-12) {
 			ux = vxx >= vyy ? 1 : 0;
 			uy = vxx >= vyy ? 0 : 1;
 		}
-		final double norm = dist(ux, uy);
+		final double norm = MemberTests.dist(ux, uy);
 		ux /= norm;
 		uy /= norm;
 		moves.add(mx + half * ux, my + half * uy);
@@ -344,192 +344,10 @@ public final class ModelSelection {
 		return true;
 	}
 
-	/**
-	 * Tests again each kept member that overlaps another (centres nearer than a diameter), weakest first: at fixed
-	 * centres and scales the members' amplitudes and a background plane enter the model linearly, so the least
-	 * squares over the member's pixels are solved with and without it, the members whose light reaches them free to
-	 * take over its light. A member whose removal raises the residual sum of squares by less than
-	 * {@value #SIGNIFICANCE}&sup2; noise variances is not needed: a third member between two touching ones, which
-	 * at fixed neighbours would carry its own share of their light. A member next to one removed this round is left
-	 * for the next round.
-	 */
-	private static void overlapTest(final float[] data, final int w, final int h, final Estimate[] e,
-		final EmpiricalProfile[] of, final boolean[] keep, final double[] significance, final double d,
-		final double noise)
-	{
-		if (!(noise > 0)) return;
-		final Integer[] order = new Integer[e.length];
-		for (int k = 0; k < order.length; k++)
-			order[k] = k;
-		java.util.Arrays.sort(order, (a, b) -> Double.compare(significance[a], significance[b]));
-		final boolean[] touched = new boolean[e.length];
-		for (final int m : order) {
-			if (!keep[m] || touched[m] || !drawn(e[m])) continue;
-			boolean overlaps = false;
-			for (int j = 0; j < e.length && !overlaps; j++)
-				overlaps = j != m && keep[j] && drawn(e[j]) && e[j].distanceTo(e[m]) < d;
-			if (!overlaps) continue;
-			// the member's pixels: those holding the information on it (its light beyond adds little to the decision)
-			final double reach = of[m].informationRadius(MATCHED_INFORMATION) * e[m].scale();
-			int[] involved = new int[8];
-			int n = 0;
-			for (int j = 0; j < e.length; j++)
-				if (j != m && keep[j] && drawn(e[j]) && e[j].distanceTo(e[m]) < reach + of[j].radius() * e[j].scale()) {
-					if (n == involved.length) involved = Arrays.copyOf(involved, 2 * n);
-					involved[n++] = j;
-				}
-			final double with = rss(data, w, h, e, of, m, involved, n, true, reach);
-			final double without = rss(data, w, h, e, of, m, involved, n, false, reach);
-			if (!(without - with >= SIGNIFICANCE * SIGNIFICANCE * noise * noise)) {
-				keep[m] = false;
-				for (int q = 0; q < n; q++)
-					touched[involved[q]] = true;
-			}
-		}
-	}
 
-	/**
-	 * @return the least residual sum of squares, over the pixels within {@code reach} of member {@code m}, of a
-	 *         background plane plus the light of members {@code involved[0..n)} (and of {@code m} if {@code withM})
-	 *         at their fitted centres and scales, with free amplitudes
-	 */
-	private static double rss(final float[] data, final int w, final int h, final Estimate[] e,
-		final EmpiricalProfile[] of, final int m, final int[] involved, final int n, final boolean withM,
-		final double reach)
-	{
-		final int np = 3 + n + (withM ? 1 : 0);
-		final double[][] a = new double[np][np];
-		final double[] b = new double[np], f = new double[np];
-		double yy = 0;
-		final double cx = e[m].x(), cy = e[m].y();
-		final int x0 = Math.max(0, (int) Math.floor(cx - reach)), x1 = Math.min(w - 1, (int) Math.ceil(cx + reach));
-		final int y0 = Math.max(0, (int) Math.floor(cy - reach)), y1 = Math.min(h - 1, (int) Math.ceil(cy + reach));
-		for (int y = y0; y <= y1; y++)
-			for (int x = x0; x <= x1; x++) {
-				if (dist(x - cx, y - cy) > reach) continue;
-				f[0] = 1;
-				f[1] = x - cx;
-				f[2] = y - cy;
-				for (int q = 0; q < n; q++)
-					f[3 + q] = light(of[involved[q]], e[involved[q]], x, y);
-				if (withM) f[np - 1] = light(of[m], e[m], x, y);
-				final double v = data[y * w + x];
-				yy += v * v;
-				for (int i = 0; i < np; i++) {
-					b[i] += f[i] * v;
-					for (int j = 0; j <= i; j++)
-						a[i][j] += f[i] * f[j];
-				}
-			}
-		for (int i = 0; i < np; i++)
-			for (int j = i + 1; j < np; j++)
-				a[i][j] = a[j][i];
-		final double[] p = io.github.contacttracker.core.math.SymmetricSolver.solve(a, b);
-		if (p == null) return Double.NaN;
-		double fit = 0;
-		for (int i = 0; i < np; i++)
-			fit += p[i] * b[i];
-		return yy - fit; // at the least-squares point, RSS = y.y - p.b
-	}
-
-	/** @return the length of (dx, dy) (not {@code Math.hypot}, whose care for overflow costs in the pixel loops) */
-	private static double dist(final double dx, final double dy) {
-		return Math.sqrt(dx * dx + dy * dy);
-	}
-
-	/** @return a member's unit-amplitude light at pixel (x, y): {@code P(r / s)} */
-	private static double light(final EmpiricalProfile p, final Estimate e, final int x, final int y) {
-		return p.lookup(dist(x - e.x(), y - e.y()) / e.scale());
-	}
-
-	/**
-	 * @return how well the frame around (x, y) matches a particle's profile there: the correlation of the pixels with
-	 *         {@code P(r)} over the disc holding {@value #MATCHED_INFORMATION} of the information on a centre, the
-	 *         pixels' variance taken less the noise's (so that a dim particle matches as a bright one does). A
-	 *         particle's own image correlates near 1 (on the paper authors' 1.avi 0.83-0.98); a peak where neighbours'
-	 *         halos meet, lit where the profile's core is and dark where its ring is bright, far less (0.64 at most);
-	 *         noise alone, 0.
-	 */
-	static double matched(final float[] data, final int w, final int h, final double x, final double y,
-		final EmpiricalProfile p, final double noise)
-	{
-		if (!Double.isFinite(x) || !Double.isFinite(y)) return Double.NaN;
-		final double reach = Math.min(p.radius(), p.informationRadius(MATCHED_INFORMATION));
-		final int x0 = Math.max(0, (int) Math.floor(x - reach)), x1 = Math.min(w - 1, (int) Math.ceil(x + reach));
-		final int y0 = Math.max(0, (int) Math.floor(y - reach)), y1 = Math.min(h - 1, (int) Math.ceil(y + reach));
-		double sp = 0, si = 0, spi = 0, spp = 0, sii = 0;
-		int n = 0;
-		for (int yy = y0; yy <= y1; yy++)
-			for (int xx = x0; xx <= x1; xx++) {
-				final double r = dist(xx - x, yy - y);
-				if (r > reach) continue;
-				final double v = p.lookup(r), im = data[yy * w + xx];
-				sp += v;
-				si += im;
-				spi += v * im;
-				spp += v * v;
-				sii += im * im;
-				n++;
-			}
-		if (n < 2) return Double.NaN;
-		// the image's variance less the noise's: a dim particle matches as well as a bright one
-		final double cov = spi - sp * si / n, vp = spp - sp * sp / n, vi = sii - si * si / n - (n - 1) * noise * noise;
-		return vp > 0 && vi > 0 ? Math.min(1, cov / Math.sqrt(vp * vi)) : 0;
-	}
-
-	/** The matched filter reads the disc that holds this share of the information on a particle's centre. */
-	static final double MATCHED_INFORMATION = 0.9;
-
-	/** @return the best {@link #matched} correlation at (x, y) among the kinds' profiles */
-	static double matchedAny(final float[] data, final int w, final int h, final double x, final double y,
-		final KindProfiles profiles, final double noise)
-	{
-		double best = Double.NEGATIVE_INFINITY;
-		for (int c = 0; c < profiles.count(); c++)
-			best = Math.max(best, matched(data, w, h, x, y, profiles.profile(c), noise));
-		return best;
-	}
-
-	/**
-	 * A weak seed or member is a particle only where the frame matches a particle's profile at least this well (see
-	 * {@link #matched}): between the halo junctions' 0.64 and the particles' 0.83 on the authors' bright-field movie.
-	 */
-	public static final double MATCH = 0.75;
-	/**
-	 * Weak: a band-passed height below this fraction of the typical seed's. The fringes where bright-field halos meet
-	 * are weak (on the authors' 1.avi at most 0.5 of the typical core); a blob of two merged particles, which no
-	 * single profile matches, is not.
-	 */
-	public static final double STRONG = 0.6;
-
-	/**
-	 * @return the typical height of the seeds that are particles: of those that match a profile, where profiles are
-	 *         given and some do (a sparse field of particles on a textured background has more seeds on the texture
-	 *         than on particles); else of all
-	 */
-	private static double typicalMatching(final Peaks seeds, final float[] data, final int w, final int h,
-		final KindProfiles given, final double noise)
-	{
-		if (given == null) return seeds.typicalHeight();
-		final double[] hs = new double[seeds.count()];
-		int n = 0;
-		for (int i = 0; i < seeds.count(); i++)
-			if (matchedAny(data, w, h, seeds.x()[i], seeds.y()[i], given, noise) >= MATCH) hs[n++] = seeds.height()[i];
-		if (n == 0) return seeds.typicalHeight();
-		Arrays.sort(hs, 0, n);
-		return hs[(int) Math.floor(0.9 * (n - 1))];
-	}
-
-	/** @return whether the band-passed frame at (x, y) is below {@code strong} (or (x, y) is off the frame) */
-	private static boolean weak(final float[] bp, final int w, final int h, final double x, final double y,
-		final double strong)
-	{
-		final int ix = (int) Math.round(x), iy = (int) Math.round(y);
-		return ix < 0 || iy < 0 || ix >= w || iy >= h || bp[iy * w + ix] < strong;
-	}
 
 	/** @return whether a fitted estimate is drawn in the model (a finite amplitude and a positive scale) */
-	private static boolean drawn(final Estimate e) {
+	static boolean drawn(final Estimate e) {
 		return Double.isFinite(e.amplitude()) && e.scale() > 0 && Double.isFinite(e.x()) && Double.isFinite(e.y()) &&
 			!e.has(Flag.MERGED);
 	}
@@ -550,70 +368,6 @@ public final class ModelSelection {
 		}
 	}
 
-	/**
-	 * @return the significance of a member: the square root of how much its light lowers the residual sum of squares
-	 *         ({@code sum M^2 + 2 r M} over its pixels, {@code r} the residuals with it drawn less their mean there,
-	 *         the background, {@code M} its light) in units of the pixel noise; for a frame without noise, infinite
-	 */
-	static double significance(final float[] residual, final int w, final int h, final Estimate e,
-		final EmpiricalProfile p, final double noise)
-	{
-		final double s = e.scale(), a = e.amplitude(), reach = p.radius() * s;
-		final int x0 = Math.max(0, (int) Math.floor(e.x() - reach)), x1 = Math.min(w - 1, (int) Math.ceil(e.x() + reach));
-		final int y0 = Math.max(0, (int) Math.floor(e.y() - reach)), y1 = Math.min(h - 1, (int) Math.ceil(e.y() + reach));
-		// the residuals hold the background (the model drawn is the particles' light alone): their mean over the
-		// member's pixels stands for it
-		double r0 = 0;
-		int n = 0;
-		for (int y = y0; y <= y1; y++)
-			for (int x = x0; x <= x1; x++) {
-				r0 += residual[y * w + x];
-				n++;
-			}
-		r0 /= Math.max(1, n);
-		double drop = 0;
-		for (int y = y0; y <= y1; y++) {
-			final double dy = y - e.y();
-			for (int x = x0; x <= x1; x++) {
-				final double dx = x - e.x();
-				final double m = a * p.lookup(Math.sqrt(dx * dx + dy * dy) / s);
-				drop += m * m + 2 * (residual[y * w + x] - r0) * m;
-			}
-		}
-		if (!(noise > 0)) return drop > 0 ? Double.POSITIVE_INFINITY : 0;
-		return drop > 0 ? Math.sqrt(drop) / noise : 0;
-	}
-
-	/**
-	 * @return the significance of a member the fit left undrawn (it could not be fitted): its light at the best
-	 *         amplitude where it stands, at scale 1, {@code a = sum r P / sum P^2}, lowers the residual sum of squares
-	 *         by {@code a^2 sum P^2}; 0 for an amplitude not above 0 (nothing of its kind there)
-	 */
-	static double undrawn(final float[] residual, final int w, final int h, final Estimate e,
-		final EmpiricalProfile p, final double noise)
-	{
-		if (!Double.isFinite(e.x()) || !Double.isFinite(e.y())) return 0;
-		final double reach = p.radius();
-		final int x0 = Math.max(0, (int) Math.floor(e.x() - reach)), x1 = Math.min(w - 1, (int) Math.ceil(e.x() + reach));
-		final int y0 = Math.max(0, (int) Math.floor(e.y() - reach)), y1 = Math.min(h - 1, (int) Math.ceil(e.y() + reach));
-		double rp = 0, pp = 0, r0 = 0;
-		int n = 0;
-		for (int y = y0; y <= y1; y++)
-			for (int x = x0; x <= x1; x++) {
-				r0 += residual[y * w + x];
-				n++;
-			}
-		r0 /= Math.max(1, n); // the residuals' local mean: the background the fit would have taken
-		for (int y = y0; y <= y1; y++)
-			for (int x = x0; x <= x1; x++) {
-				final double v = p.lookup(dist(x - e.x(), y - e.y()));
-				rp += (residual[y * w + x] - r0) * v;
-				pp += v * v;
-			}
-		if (!(pp > 0) || !(rp > 0)) return 0;
-		final double drop = rp * rp / pp;
-		return noise > 0 ? Math.sqrt(drop) / noise : Double.POSITIVE_INFINITY;
-	}
 
 	/** @return which pixels lie within reach of a drawn member's light (its profile's radius times its scale) */
 	private static boolean[] near(final int w, final int h, final Estimate[] e, final EmpiricalProfile[] of) {
@@ -627,7 +381,7 @@ public final class ModelSelection {
 				reach));
 			for (int y = y0; y <= y1; y++)
 				for (int x = x0; x <= x1; x++)
-					if (dist(x - e[k].x(), y - e[k].y()) <= reach) near[y * w + x] = true;
+					if (MemberTests.dist(x - e[k].x(), y - e[k].y()) <= reach) near[y * w + x] = true;
 		}
 		return near;
 	}

@@ -1,0 +1,122 @@
+/*-
+ * #%L
+ * Contact Tracker: sub-pixel localization of colloidal particles, also when they touch.
+ * %%
+ * Copyright (C) 2026 Contact Tracker developers
+ * %%
+ * This program is free software: you can redistribute it and/or modify
+ * it under the terms of the GNU General Public License as
+ * published by the Free Software Foundation, either version 3 of the
+ * License, or (at your option) any later version.
+ * 
+ * This program is distributed in the hope that it will be useful,
+ * but WITHOUT ANY WARRANTY; without even the implied warranty of
+ * MERCHANTABILITY or FITNESS FOR A PARTICULAR PURPOSE.  See the
+ * GNU General Public License for more details.
+ * 
+ * You should have received a copy of the GNU General Public
+ * License along with this program.  If not, see
+ * <http://www.gnu.org/licenses/gpl-3.0.html>.
+ * #L%
+ */
+package io.github.contacttracker.core.detect;
+
+import java.util.Arrays;
+
+import io.github.contacttracker.core.kind.KindProfiles;
+import io.github.contacttracker.core.profile.EmpiricalProfile;
+
+/**
+ * How well a frame matches a particle's measured profile at a point: what tells a weak seed that is a particle from
+ * one that is not (a fringe where bright-field halos meet), once the profile is known.
+ */
+final class ProfileMatch {
+
+	private ProfileMatch() {}
+
+	/**
+	 * @return how well the frame around (x, y) matches a particle's profile there: the correlation of the pixels with
+	 *         {@code P(r)} over the disc holding {@value #MATCHED_INFORMATION} of the information on a centre, the
+	 *         pixels' variance taken less the noise's (so that a dim particle matches as a bright one does). A
+	 *         particle's own image correlates near 1 (on the paper authors' 1.avi 0.83-0.98); a peak where neighbours'
+	 *         halos meet, lit where the profile's core is and dark where its ring is bright, far less (0.64 at most);
+	 *         noise alone, 0.
+	 */
+	static double matched(final float[] data, final int w, final int h, final double x, final double y,
+		final EmpiricalProfile p, final double noise)
+	{
+		if (!Double.isFinite(x) || !Double.isFinite(y)) return Double.NaN;
+		final double reach = Math.min(p.radius(), p.informationRadius(MATCHED_INFORMATION));
+		final int x0 = Math.max(0, (int) Math.floor(x - reach)), x1 = Math.min(w - 1, (int) Math.ceil(x + reach));
+		final int y0 = Math.max(0, (int) Math.floor(y - reach)), y1 = Math.min(h - 1, (int) Math.ceil(y + reach));
+		double sp = 0, si = 0, spi = 0, spp = 0, sii = 0;
+		int n = 0;
+		for (int yy = y0; yy <= y1; yy++)
+			for (int xx = x0; xx <= x1; xx++) {
+				final double r = MemberTests.dist(xx - x, yy - y);
+				if (r > reach) continue;
+				final double v = p.lookup(r), im = data[yy * w + xx];
+				sp += v;
+				si += im;
+				spi += v * im;
+				spp += v * v;
+				sii += im * im;
+				n++;
+			}
+		if (n < 2) return Double.NaN;
+		// the image's variance less the noise's: a dim particle matches as well as a bright one
+		final double cov = spi - sp * si / n, vp = spp - sp * sp / n, vi = sii - si * si / n - (n - 1) * noise * noise;
+		return vp > 0 && vi > 0 ? Math.min(1, cov / Math.sqrt(vp * vi)) : 0;
+	}
+
+	/** The matched filter reads the disc that holds this share of the information on a particle's centre. */
+	static final double MATCHED_INFORMATION = 0.9;
+
+	/** @return the best {@link #matched} correlation at (x, y) among the kinds' profiles */
+	static double matchedAny(final float[] data, final int w, final int h, final double x, final double y,
+		final KindProfiles profiles, final double noise)
+	{
+		double best = Double.NEGATIVE_INFINITY;
+		for (int c = 0; c < profiles.count(); c++)
+			best = Math.max(best, matched(data, w, h, x, y, profiles.profile(c), noise));
+		return best;
+	}
+
+	/**
+	 * A weak seed or member is a particle only where the frame matches a particle's profile at least this well (see
+	 * {@link #matched}): between the halo junctions' 0.64 and the particles' 0.83 on the authors' bright-field movie.
+	 */
+	public static final double MATCH = 0.75;
+	/**
+	 * Weak: a band-passed height below this fraction of the typical seed's. The fringes where bright-field halos meet
+	 * are weak (on the authors' 1.avi at most 0.5 of the typical core); a blob of two merged particles, which no
+	 * single profile matches, is not.
+	 */
+	public static final double STRONG = 0.6;
+
+	/**
+	 * @return the typical height of the seeds that are particles: of those that match a profile, where profiles are
+	 *         given and some do (a sparse field of particles on a textured background has more seeds on the texture
+	 *         than on particles); else of all
+	 */
+	static double typicalMatching(final Peaks seeds, final float[] data, final int w, final int h,
+		final KindProfiles given, final double noise)
+	{
+		if (given == null) return seeds.typicalHeight();
+		final double[] hs = new double[seeds.count()];
+		int n = 0;
+		for (int i = 0; i < seeds.count(); i++)
+			if (matchedAny(data, w, h, seeds.x()[i], seeds.y()[i], given, noise) >= MATCH) hs[n++] = seeds.height()[i];
+		if (n == 0) return seeds.typicalHeight();
+		Arrays.sort(hs, 0, n);
+		return hs[(int) Math.floor(0.9 * (n - 1))];
+	}
+
+	/** @return whether the band-passed frame at (x, y) is below {@code strong} (or (x, y) is off the frame) */
+	static boolean weak(final float[] bp, final int w, final int h, final double x, final double y,
+		final double strong)
+	{
+		final int ix = (int) Math.round(x), iy = (int) Math.round(y);
+		return ix < 0 || iy < 0 || ix >= w || iy >= h || bp[iy * w + ix] < strong;
+	}
+}
