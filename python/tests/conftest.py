@@ -24,11 +24,20 @@ def cli(*args, cwd):
     return r.stdout, r.stderr
 
 
+def lab(*args, cwd):
+    """Runs the lab's command line (the simulator lives in the -lab.jar beside the cli jar in target/)."""
+    jar = next((Path(__file__).resolve().parents[2] / "target").glob("Contact_Tracker-*-lab.jar"))
+    r = subprocess.run([java(), "-Djava.awt.headless=true", "-jar", str(jar), *map(str, args)], cwd=cwd,
+                       capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    return r.stdout, r.stderr
+
+
 @pytest.fixture(scope="session")
 def movie(tmp_path_factory):
     """(frames as uint8 numpy stack, path of a plain TIFF of them): a touching triple, 6 frames."""
     d = tmp_path_factory.mktemp("movie")
-    cli("simulate", "--scenario", "triple", "--separation", "1.0", "--frames", "6", "--out", "sim.tif",
+    lab("simulate", "--scenario", "triple", "--separation", "1.0", "--frames", "6", "--out", "sim.tif",
         "--truth", "truth.csv", cwd=d)
     frames = tifffile.imread(d / "sim.tif")
     plain = d / "plain.tif"

@@ -243,8 +243,8 @@ def pair_potential(spots, bin, r_max, width=None, height=None, start_frame=0, fl
             raise ValueError(f"no spot left ({chosen.flaggedLeftOut()} flagged, {chosen.earlyLeftOut()} before the "
                              "start frame)")
         fov = _java.cls("potential.FieldOfView")
-        field = fov.of(float(width), float(height)) if width is not None else fov.inferred(chosen.allX(),
-                                                                                           chosen.allY())
+        # the field as the command line's potential takes it (one rule: SpotSet.inferredField)
+        field = fov.of(float(width), float(height)) if width is not None else chosen.inferredField()
         result = _java.cls("potential.PairCorrelation").compute(chosen, field, float(bin), float(r_max))
         if zero is not None:
             low, high = zero
