@@ -74,8 +74,9 @@ public final class FlagAdvice {
 			case MERGED -> "active areas holding several particles; the threshold joins touching particles: use the " +
 				"detection by the image (--detection image) with the particles' --diameter, or raise --threshold";
 			case FELL_BACK -> "centres kept from a first pass because the refinement could not be made (too few pixels " +
-				"left, or a fit without enough light); check --r-out against the particles' size ('contact-tracker " +
-				"profile MOVIE' shows it)";
+				"left, or a fit without enough light; on a background clipped at 0, as confocal images have, the fit " +
+				"leaves out every pixel near 0 and cannot place the background); check --r-out against the particles' " +
+				"size ('contact-tracker profile MOVIE' shows it), or use --method iterative, whose centres need no fit";
 			case NOT_CONVERGED -> "fits or profile rounds that did not settle; the particles' profile may differ between " +
 				"them (give --kinds), or the field is denser than the fit can hold: try a smaller --r-out";
 			case UNMODELLED_NEIGHBOUR -> "a neighbour the fit could not model lies within reach; it is usually a merge " +
