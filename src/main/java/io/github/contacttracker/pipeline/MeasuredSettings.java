@@ -26,6 +26,9 @@ import java.util.Set;
 
 import io.github.contacttracker.advisor.ProfileAnalysis;
 import io.github.contacttracker.core.InvalidInputException;
+import io.github.contacttracker.core.Method;
+import io.github.contacttracker.core.detect.ParticleScale;
+import io.github.contacttracker.core.image.Plane;
 import io.github.contacttracker.core.image.Inversion;
 import io.github.contacttracker.io.ImagePlusFrames;
 import io.github.contacttracker.settings.Setting;
@@ -83,13 +86,13 @@ public final class MeasuredSettings {
 			r = ProfileAnalysis.analyse(seen, v.diameter(), 0);
 		}
 		catch (final InvalidInputException e) {
-			if (v.get(TrackingSettings.DETECTION).equals(TrackingSettings.IMAGE) && diameter) return byImage(name, seen, v,
-				thresholdGiven, rOutGiven, said, e);
+			if (imageCanTake(v)) return byImage(name, seen, v, thresholdGiven, rOutGiven, said, e);
 			if (thresholdGiven && rOutGiven) return new Result(settings, "contact-tracker: " + name + ": the diameter " +
 				"could not be measured (" + InvalidInputException.oneLine(e.getMessage()) + "); tracked without it (give --diameter)");
 			throw new InvalidInputException("cannot measure " + (thresholdGiven ? "" : "--threshold ") + (thresholdGiven ||
 				rOutGiven ? "" : "and ") + (rOutGiven ? "" : "--r-out ") + "on the first frame of " + name + ": " + e
-					.getMessage() + "; give them (contact-tracker profile MOVIE --at X,Y measures one particle)", e);
+					.getMessage() + byImageHint(seen, v) + "; or give them (contact-tracker profile MOVIE --at X,Y measures " +
+					"one particle)", e);
 		}
 		if (!thresholdGiven) {
 			v = v.with(TrackingSettings.THRESHOLD, r.suggestedThreshold(integerData));
@@ -97,15 +100,15 @@ public final class MeasuredSettings {
 			final double[] range = ImagePlusFrames.range(seen, 0);
 			// above every pixel: what the helper took for particles' cores are not (e.g. the bright rings around the
 			// dark cores of a bright-field movie, inverted)
-			if (v.get(TrackingSettings.THRESHOLD) > range[1] && v.get(TrackingSettings.DETECTION).equals(
-				TrackingSettings.IMAGE) && diameter) return byImage(name, seen, settings, false, rOutGiven, new StringBuilder(
-					particlesGiven || !v.dark() ? "" : " --particles dark"), new InvalidInputException("its threshold " +
-						optionValue(v.get(TrackingSettings.THRESHOLD)) + " lies above every pixel"));
+			if (v.get(TrackingSettings.THRESHOLD) > range[1] && imageCanTake(settings)) return byImage(name, seen,
+				settings.withText(TrackingSettings.PARTICLES, v.get(TrackingSettings.PARTICLES)), false, rOutGiven,
+				new StringBuilder(particlesGiven || !v.dark() ? "" : " --particles dark"), new InvalidInputException(
+					"its threshold " + optionValue(v.get(TrackingSettings.THRESHOLD)) + " lies above every pixel"));
 			if (v.get(TrackingSettings.THRESHOLD) > range[1]) throw new InvalidInputException("cannot measure " +
 				"--threshold on the first frame of " + name + ": the helper's " + optionValue(v.get(
 					TrackingSettings.THRESHOLD)) + " lies above its every pixel (" + optionValue(range[1]) + ")" + (v.dark()
-						? "" : "; if the particles are darker than the background, give --particles dark") + "; or give " +
-					"the values (contact-tracker profile MOVIE --at X,Y measures one particle)");
+						? "" : "; if the particles are darker than the background, give --particles dark") + byImageHint(seen,
+							v) + "; or give the values (contact-tracker profile MOVIE --at X,Y measures one particle)");
 		}
 		if (!rOutGiven) {
 			v = v.with(TrackingSettings.R_OUT, r.suggestedROut());
@@ -124,17 +127,48 @@ public final class MeasuredSettings {
 			" (given values win; 'contact-tracker profile " + name + "' shows how)");
 	}
 
+	/** @return whether detection by the image was asked for: it needs the diameter, not the threshold */
+	private static boolean imageCanTake(final SettingValues v) {
+		return v.get(TrackingSettings.DETECTION).equals(TrackingSettings.IMAGE);
+	}
+
+	/**
+	 * @return where the helper could not measure, what else the frame shows: the diameter of its blobs
+	 *         ({@link ParticleScale}) and the options that track them by their image; empty where it holds none, or
+	 *         the method is the paper's (which keeps its threshold)
+	 */
+	@SuppressWarnings({ "rawtypes", "unchecked" })
+	private static String byImageHint(final RandomAccessibleInterval seen, final SettingValues v) {
+		if (v.get(TrackingSettings.METHOD).equals(Method.PAPER.key())) return "";
+		final double d = ParticleScale.diameter(Plane.of(seen));
+		if (!(d > 0)) return "";
+		final String dd = optionValue(Math.round(d * 10) / 10.0);
+		return "; its blobs are about " + dd + " px across: --detection image" + (v.diameter() > 0 ? "" : " --diameter " +
+			dd) + " tracks them by their image, without a threshold";
+	}
+
 	/**
 	 * Detection by the image needs the diameter, not the threshold: where the helper cannot measure (a dense field
-	 * without an isolated particle), a missing threshold is the frame's median (the threshold's components then
-	 * only start the profile where they are single particles) and a missing r_out one diameter (a particle's image
-	 * reaches about a radius beyond its edge), said in the notice.
+	 * without an isolated particle, a particle cut by the edge, one at low contrast), the diameter, when not given,
+	 * is the scale of the frame's blobs ({@link ParticleScale}), a missing threshold is the middle of the frame's range
+	 * (the threshold's components then only start the profile where they are single particles) and a missing r_out one
+	 * diameter (a particle's image reaches about a radius beyond its edge), all said in the notice.
+	 *
+	 * @throws InvalidInputException where the frame holds no blob to measure the diameter on
 	 */
 	@SuppressWarnings({ "rawtypes", "unchecked" })
 	private static Result byImage(final String name, final RandomAccessibleInterval seen, final SettingValues given,
 		final boolean thresholdGiven, final boolean rOutGiven, final StringBuilder said, final InvalidInputException why)
 	{
 		SettingValues v = given;
+		if (!(v.diameter() > 0)) {
+			final double d = ParticleScale.diameter(Plane.of(seen));
+			if (!(d > 0)) throw new InvalidInputException("cannot measure the particles on the first frame of " + name +
+				": " + InvalidInputException.oneLine(why.getMessage()) + ", and the frame holds no blob to measure " +
+				"their diameter on; give --diameter (contact-tracker profile MOVIE --at X,Y measures one particle)", why);
+			v = v.with(TrackingSettings.DIAMETER, Math.round(d * 100) / 100.0);
+			said.append(" --diameter ").append(optionValue(v.diameter()));
+		}
 		if (!thresholdGiven) {
 			final double[] range = ImagePlusFrames.range(seen, 0);
 			v = v.with(TrackingSettings.THRESHOLD, 0.5 * (range[0] + range[1]));
@@ -146,8 +180,8 @@ public final class MeasuredSettings {
 			said.append(" --r-out ").append(optionValue(v.get(TrackingSettings.R_OUT)));
 		}
 		return new Result(v, "contact-tracker: " + name + ": the profile helper could not measure (" +
-			InvalidInputException.oneLine(why.getMessage()) + "); detection by the image with the diameter given:" +
-			said + " (given values win)");
+			InvalidInputException.oneLine(why.getMessage()) + "); tracked by the particles' image:" + said +
+			" (given values win)");
 	}
 
 	/** @return a number as an option's value: exact, shortest, no exponent ({@code 174}, {@code 31.65}) */

@@ -86,6 +86,11 @@ public final class BandPass {
 		return Math.sqrt(sum);
 	}
 
+	/** @return the image blurred by a Gaussian of standard deviation {@code sigma} (px, edges continued) */
+	static float[] blur(final float[] image, final int w, final int h, final double sigma) {
+		return separable(image, w, h, gaussian(sigma));
+	}
+
 	/** @return a normalised Gaussian kernel of standard deviation {@code sigma}, out to 3 sigma (at least 1 px) */
 	static float[] gaussian(final double sigma) {
 		final int r = Math.max(1, (int) Math.ceil(3 * sigma));

@@ -60,9 +60,17 @@ public final class ModelSelection {
 	 * The threshold's components teach a frame's profile when at least this many, and this share of them, are one
 	 * particle each (not suspected merges): else the seeds of the image do.
 	 */
-	static final int MIN_BOOTSTRAP = 3;
+	static final int MIN_BOOTSTRAP = 1;
 	/** See {@link #MIN_BOOTSTRAP}. */
 	static final double HEALTHY = 0.8;
+
+	/**
+	 * With the profiles measured beforehand on the movie's particles (their amplitude 1 stands for a typical one), a
+	 * member fainter than this is no particle of theirs: the texture of a compressed video's background and the
+	 * fringes of a defocused bead's rings are fitted at a few hundredths of a particle, well above the pixel noise
+	 * that a compressed video smooths away, and held the fit of the real particle beside them from settling.
+	 */
+	public static final double FAINT = 0.1;
 
 	/** At most this many rounds of moves and refits. */
 	public static final int ROUNDS = 3;
@@ -163,7 +171,7 @@ public final class ModelSelection {
 			final boolean[] keep = new boolean[e.length];
 			int kept = 0;
 			for (int k = 0; k < e.length; k++) {
-				keep[k] = !(e[k].amplitude() <= 0) && !(e[k].scale() <= PINNED_LOW) && !pinned(e[k]) && !(significance[
+				keep[k] = !(e[k].amplitude() <= (given != null ? FAINT : 0)) && !(e[k].scale() <= PINNED_LOW) && !pinned(e[k]) && !(significance[
 					k] < SIGNIFICANCE) && !(match[k] < ProfileMatch.MATCH);
 				for (int j = 0; j < k && keep[k]; j++)
 					if (keep[j] && e[j].distanceTo(e[k]) < d / 4) {
