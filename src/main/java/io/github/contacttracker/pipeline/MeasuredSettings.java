@@ -27,7 +27,9 @@ import java.util.Set;
 import io.github.contacttracker.advisor.ProfileAnalysis;
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.core.Method;
+import io.github.contacttracker.core.detect.ImageDetection;
 import io.github.contacttracker.core.detect.ParticleScale;
+import io.github.contacttracker.core.image.NoiseEstimate;
 import io.github.contacttracker.core.image.Plane;
 import io.github.contacttracker.core.image.Inversion;
 import io.github.contacttracker.io.ImagePlusFrames;
@@ -104,6 +106,16 @@ public final class MeasuredSettings {
 				settings.withText(TrackingSettings.PARTICLES, v.get(TrackingSettings.PARTICLES)), false, rOutGiven,
 				new StringBuilder(particlesGiven || !v.dark() ? "" : " --particles dark"), new InvalidInputException(
 					"its threshold " + optionValue(v.get(TrackingSettings.THRESHOLD)) + " lies above every pixel"));
+			// below every pixel: the helper's background lies under the frame's darkest pixel (no dark gap between
+			// particles packed edge to edge)
+			final double t = v.get(TrackingSettings.THRESHOLD);
+			if (t < range[0] && imageCanTake(settings)) return byImage(name, seen, settings.withText(
+				TrackingSettings.PARTICLES, v.get(TrackingSettings.PARTICLES)), false, rOutGiven, new StringBuilder(
+					particlesGiven || !v.dark() ? "" : " --particles dark"), new InvalidInputException("its threshold " +
+						optionValue(t) + " lies below every pixel"));
+			if (t < range[0]) throw new InvalidInputException("cannot measure --threshold on the first frame of " + name +
+				": the helper's " + optionValue(t) + " lies below its every pixel (" + optionValue(range[0]) + ")" +
+				byImageHint(seen, v) + "; or give the values (contact-tracker profile MOVIE --at X,Y measures one particle)");
 			if (v.get(TrackingSettings.THRESHOLD) > range[1]) throw new InvalidInputException("cannot measure " +
 				"--threshold on the first frame of " + name + ": the helper's " + optionValue(v.get(
 					TrackingSettings.THRESHOLD)) + " lies above its every pixel (" + optionValue(range[1]) + ")" + (v.dark()
@@ -125,6 +137,23 @@ public final class MeasuredSettings {
 		}
 		return new Result(v, "contact-tracker: " + name + ": measured on frame 1 by the profile helper:" + said +
 			" (given values win; 'contact-tracker profile " + name + "' shows how)");
+	}
+
+	/**
+	 * Where the helper cannot measure r_out, it is at most this share of the particles' spacing (the median distance
+	 * from a seed to its nearest one): the profile reaches 1.5 r_out, and a profile that reaches the neighbours'
+	 * centres takes their light for its own tail in a packed field (on a public dense monolayer of spheres 18 px
+	 * apart the fits settled at r_out 12 and slid off at 14 and above).
+	 */
+	static final double SPACED = 2 / 3.0;
+
+	/**
+	 * @return the largest r_out for particles of diameter {@code d} that the particles' spacing allows ({@link #SPACED}
+	 *         of the median distance between the image's seeds and their nearest ones, at least 3 px, to 0.1 px)
+	 */
+	private static double spacedROut(final Plane plane, final double d) {
+		final double spacing = ImageDetection.seeds(plane, d, NoiseEstimate.sigma(plane)).medianSpacing();
+		return Math.round(10 * Math.max(3, Math.min(1e6, SPACED * spacing))) / 10.0;
 	}
 
 	/** @return whether detection by the image was asked for: it needs the diameter, not the threshold */
@@ -176,7 +205,8 @@ public final class MeasuredSettings {
 		}
 		if (!rOutGiven) {
 			final long w = seen.dimension(0), h = seen.dimension(1);
-			v = v.with(TrackingSettings.R_OUT, Math.max(3, Math.min(v.diameter(), Math.hypot(w, h))));
+			v = v.with(TrackingSettings.R_OUT, Math.min(Math.min(v.diameter(), Math.hypot(w, h)), spacedROut(Plane.of(
+				seen), v.diameter())));
 			said.append(" --r-out ").append(optionValue(v.get(TrackingSettings.R_OUT)));
 		}
 		return new Result(v, "contact-tracker: " + name + ": the profile helper could not measure (" +

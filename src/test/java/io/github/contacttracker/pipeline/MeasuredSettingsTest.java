@@ -90,6 +90,9 @@ class MeasuredSettingsTest {
 		assertTrue(e.getMessage().contains(" lies above its every pixel ("), e.getMessage());
 		assertTrue(e.getMessage().contains("; if the particles are darker than the background, give --particles dark;"),
 			e.getMessage());
+		// what else the frame shows: its blobs' size, and the options that track them by their image
+		assertTrue(e.getMessage().contains("; its blobs are about ") && e.getMessage().contains(
+			" px across: --detection image --diameter "), e.getMessage());
 
 		final MeasuredSettings.Result fromBright = MeasuredSettings.of("bf.tif", bright, true, defaults, Set.of());
 		final MeasuredSettings.Result told = MeasuredSettings.of("bf.tif", dark, true, defaults.withText(

@@ -79,6 +79,24 @@ public record Peaks(double[] x, double[] y, double[] height, double[] prominence
 		return new Peaks(kx, ky, kh, kp);
 	}
 
+	/**
+	 * @return the median distance from a peak to its nearest neighbour among the peaks (px): the particles' spacing
+	 *         where each peak is one; infinite with fewer than two peaks
+	 */
+	public double medianSpacing() {
+		final int n = x.length;
+		if (n < 2) return Double.POSITIVE_INFINITY;
+		final double[] nearest = new double[n];
+		for (int i = 0; i < n; i++) {
+			double best = Double.POSITIVE_INFINITY;
+			for (int j = 0; j < n; j++)
+				if (j != i) best = Math.min(best, (x[i] - x[j]) * (x[i] - x[j]) + (y[i] - y[j]) * (y[i] - y[j]));
+			nearest[i] = Math.sqrt(best);
+		}
+		Arrays.sort(nearest);
+		return nearest[n / 2];
+	}
+
 	/** @return the number of peaks */
 	public int count() {
 		return x.length;
