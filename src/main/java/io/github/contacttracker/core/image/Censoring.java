@@ -38,10 +38,14 @@ public final class Censoring {
 	private final double floor, saturation, lowest, highest;
 
 	private Censoring(final double floor, final double saturation, final double margin) {
+		this(floor, saturation, floor + margin, saturation - margin);
+	}
+
+	private Censoring(final double floor, final double saturation, final double lowest, final double highest) {
 		this.floor = floor;
 		this.saturation = saturation;
-		lowest = floor + margin;
-		highest = saturation - margin;
+		this.lowest = lowest;
+		this.highest = highest;
 	}
 
 	/**
@@ -49,7 +53,32 @@ public final class Censoring {
 	 * @param noise the noise standard deviation (grey levels)
 	 */
 	public static Censoring of(final Plane plane, final double noise) {
-		return new Censoring(plane.floor(), plane.saturation(), MARGIN_SIGMAS * Math.max(noise, 0));
+		final double floor = plane.floor(), margin = MARGIN_SIGMAS * Math.max(noise, 0);
+		final Censoring banded = new Censoring(floor, plane.saturation(), margin);
+		return floor > Double.NEGATIVE_INFINITY && backgroundClipped(plane, floor) ? new Censoring(floor, plane
+			.saturation(), Double.NEGATIVE_INFINITY, banded.highest) : banded;
+	}
+
+	/**
+	 * Where the frame's background itself is clipped at the floor (confocal images with the detector's offset
+	 * subtracted: a third of the pixels at 0), the band beside the floor would take the whole background and every
+	 * particle's rim out of the fit, leaving its background undetermined and every fit failed; there the band is
+	 * dropped at the floor (the pixels at it are still left out), at the price of a bias of the order of the noise on
+	 * the few pixels just above it.
+	 */
+	static final double CLIPPED_BACKGROUND = 0.05;
+
+	/** @return whether more than {@link #CLIPPED_BACKGROUND} of the frame's pixels lie at the floor */
+	private static boolean backgroundClipped(final Plane plane, final double floor) {
+		final int w = plane.width(), h = plane.height();
+		final double[] row = new double[w];
+		long low = 0;
+		for (int y = 0; y < h; y++) {
+			plane.read(0, w - 1, y, y, row, 0);
+			for (final double v : row)
+				if (v <= floor) low++;
+		}
+		return low > CLIPPED_BACKGROUND * w * h;
 	}
 
 	/** @return whether an observed value is at a clip level (its true value unknown) */

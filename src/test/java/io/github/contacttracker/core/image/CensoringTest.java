@@ -33,7 +33,11 @@ class CensoringTest {
 
 	@Test
 	void eightBitClipsAtBothEnds() {
-		final Plane plane = Plane.of(ArrayImgs.unsignedBytes(new byte[4], 2, 2));
+		final byte[] pixels = new byte[100];
+		java.util.Arrays.fill(pixels, (byte) 50);
+		pixels[0] = 0; // a dark ring's pixel clipped, the background not
+		pixels[1] = (byte) 255;
+		final Plane plane = Plane.of(ArrayImgs.unsignedBytes(pixels, 10, 10));
 		assertEquals(0, plane.floor());
 		assertEquals(255, plane.saturation());
 		final Censoring c = Censoring.of(plane, 2);
@@ -45,6 +49,21 @@ class CensoringTest {
 		assertTrue(c.usable(6.5));
 		assertTrue(c.usable(248.5));
 		assertFalse(c.usable(249));
+	}
+
+	/**
+	 * A background clipped at the floor (more than 5% of the pixels at it, as confocal images with the offset
+	 * subtracted): the pixels at it are left out, but not the band beside it, which would take the whole background.
+	 */
+	@Test
+	void aClippedBackgroundKeepsTheBandBesideTheFloor() {
+		final byte[] pixels = new byte[100];
+		java.util.Arrays.fill(pixels, (byte) 50);
+		java.util.Arrays.fill(pixels, 0, 6, (byte) 0);
+		final Censoring c = Censoring.of(Plane.of(ArrayImgs.unsignedBytes(pixels, 10, 10)), 2);
+		assertTrue(c.clipped(0));
+		assertTrue(c.usable(1));
+		assertFalse(c.usable(249), "the band below saturation stays");
 	}
 
 	@Test
