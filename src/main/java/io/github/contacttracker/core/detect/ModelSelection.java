@@ -191,10 +191,12 @@ public final class ModelSelection {
 			final Moves moves = new Moves(e.length + 2 * more.count() + e.length);
 			final boolean[] split = new boolean[e.length];
 			for (int k = 0; k < e.length; k++)
-				if (keep[k]) moves.add(e[k].x(), e[k].y());
+				if (keep[k] && round == 0 && (given == null || e[k].scale() >= WIDE) && significance[k] >= SIGNIFICANCE &&
+					split(dataBp(plane, scale, data, w, h, cache), w, h, e, k, d, PAIR, moves)) split[k] = true;
+				else if (keep[k]) moves.add(e[k].x(), e[k].y());
 				else if (pinned(e[k]) && significance[k] >= SIGNIFICANCE) {
 					// a blob too large for one particle of its kind: two if it is elongated, else kept as it is
-					if (split(dataBp(plane, scale, data, w, h, cache), w, h, e[k], d, moves)) split[k] = true;
+					if (split(dataBp(plane, scale, data, w, h, cache), w, h, e, k, d, 0.125, moves)) split[k] = true;
 					else moves.add(e[k].x(), e[k].y());
 				}
 			for (int p = 0; p < more.count(); p++) {
@@ -298,6 +300,22 @@ public final class ModelSelection {
 	 */
 	static final double PINNED_HIGH = 1.9, PINNED_LOW = 0.52;
 
+	/**
+	 * A member on a blob elongated by at least this many diameters ({@link #split}: the spread along its long axis
+	 * exceeds that across it as two particles this far from their middle would make it) is tried as two in the next
+	 * round (once): a pair closer than the filter resolves, fitted as one particle between them, as it is where no
+	 * other particle teaches the profile. The next round's fit keeps both only where each is needed (the removal
+	 * tests).
+	 */
+	static final double PAIR = 0.25;
+	/**
+	 * With the profiles measured beforehand, only a member fitted at least this much wider than its kind is tried
+	 * as two ({@link #PAIR}): the halos of bright-field particles make a single particle's own pixels elongated
+	 * where a neighbour cuts them on one side. Where the frame teaches its own profile, a merged pair teaches it as
+	 * one wide particle (fitted at scale 1), and the elongation alone decides.
+	 */
+	static final double WIDE = 1.2;
+
 	/** The band-passed frame, computed once per frame on first use. */
 	private static float[] dataBp(final Plane plane, final ImageDetection.Scale scale, final float[] data, final int w,
 		final int h, final float[][] cache)
@@ -307,24 +325,31 @@ public final class ModelSelection {
 	}
 
 	/**
-	 * Splits a member whose fit failed on an elongated blob: the second moments of the band-passed frame's positive
-	 * part within a diameter of it; where the long axis exceeds the short one by a spread of at least a quarter
-	 * diameter, two seeds at {@code c +- u sqrt(l1 - l2)} (two equal particles a distance {@code s} apart add
-	 * {@code (s/2)^2} to the variance along their axis).
+	 * Splits a member on an elongated blob: the second moments of the band-passed frame's positive part within a
+	 * diameter of it and nearer to it than to any other member; where the long axis exceeds the short one by a spread
+	 * of at least {@code apart} diameters, two seeds at {@code c +- u sqrt(l1 - l2)} (two equal particles a distance
+	 * {@code s} apart add {@code (s/2)^2} to the variance along their axis).
 	 *
 	 * @return whether it was split (its two seeds added to {@code moves})
 	 */
-	static boolean split(final float[] bp, final int w, final int h, final Estimate e, final double d,
-		final Moves moves)
+	static boolean split(final float[] bp, final int w, final int h, final Estimate[] members, final int member,
+		final double d, final double apart, final Moves moves)
 	{
+		final Estimate e = members[member];
 		final double cx = e.x(), cy = e.y();
+		// the member's own pixels: those nearer to it than to any other drawn member within two diameters
+		final int[] others = new int[members.length];
+		int count = 0;
+		for (int j = 0; j < members.length; j++)
+			if (j != member && drawn(members[j]) && members[j].distanceTo(e) < 2 * d) others[count++] = j;
 		final int x0 = Math.max(0, (int) Math.floor(cx - d)), x1 = Math.min(w - 1, (int) Math.ceil(cx + d));
 		final int y0 = Math.max(0, (int) Math.floor(cy - d)), y1 = Math.min(h - 1, (int) Math.ceil(cy + d));
 		double s = 0, sx = 0, sy = 0, sxx = 0, syy = 0, sxy = 0;
 		for (int y = y0; y <= y1; y++)
 			for (int x = x0; x <= x1; x++) {
 				final double v = bp[y * w + x];
-				if (!(v > 0) || MemberTests.dist(x - cx, y - cy) > d) continue;
+				final double own = MemberTests.dist(x - cx, y - cy);
+				if (!(v > 0) || own > d || nearerToAnother(members, others, count, x, y, own)) continue;
 				s += v;
 				sx += v * x;
 				sy += v * y;
@@ -338,7 +363,7 @@ public final class ModelSelection {
 		final double tr = vxx + vyy, det = vxx * vyy - vxy * vxy, disc = Math.sqrt(Math.max(0, tr * tr / 4 - det));
 		final double l1 = tr / 2 + disc, l2 = tr / 2 - disc;
 		final double half = Math.sqrt(Math.max(0, l1 - l2));
-		if (half < d / 8) return false;
+		if (half < apart * d) return false;
 		double ux = vxy, uy = l1 - vxx;
 		if (MemberTests.dist(ux, uy) < 1e-12) {
 			ux = vxx >= vyy ? 1 : 0;
@@ -353,6 +378,15 @@ public final class ModelSelection {
 	}
 
 
+
+	/** @return whether pixel (x, y), {@code own} px from the member, lies nearer to one of the {@code others} */
+	private static boolean nearerToAnother(final Estimate[] members, final int[] others, final int count, final int x,
+		final int y, final double own)
+	{
+		for (int i = 0; i < count; i++)
+			if (MemberTests.dist(x - members[others[i]].x(), y - members[others[i]].y()) < own) return true;
+		return false;
+	}
 
 	/** @return whether a fitted estimate is drawn in the model (a finite amplitude and a positive scale) */
 	static boolean drawn(final Estimate e) {
