@@ -137,12 +137,14 @@ public final class ModelSelection {
 		final float[] bpData = dataBp(plane, scale, data, w, h, cache);
 		final double strong = ProfileMatch.STRONG * ProfileMatch.typicalMatching(seeds, data, w, h, given, noise);
 		// with the profiles known, a weak seed is fitted only where the frame matches a particle's profile (a halo's
-		// fringe does not)
+		// fringe does not), and no seed where the profile matches it at less than a faint particle's amplitude (a
+		// textured background's bumps: fitted, they would cost more than the particles)
 		final Moves start = new Moves(seeds.count());
 		int removed = 0;
 		for (int i = 0; i < seeds.count(); i++)
-			if (given == null || seeds.height()[i] >= strong || ProfileMatch.matchedAny(data, w, h, seeds.x()[i], seeds.y()[i], given,
-				noise) >= ProfileMatch.MATCH) start.add(seeds.x()[i], seeds.y()[i]);
+			if (given == null || (seeds.height()[i] >= strong || ProfileMatch.matchedAny(data, w, h, seeds.x()[i], seeds.y()[i],
+				given, noise) >= ProfileMatch.MATCH) && !(ProfileMatch.amplitudeAny(data, w, h, seeds.x()[i], seeds.y()[i],
+					given) < FAINT)) start.add(seeds.x()[i], seeds.y()[i]);
 			else removed++;
 		Particle[] ps = ImageDetection.particles(plane, start.x(), start.y(), ImageDetection.radius(d), ImageDetection
 			.margin(d));

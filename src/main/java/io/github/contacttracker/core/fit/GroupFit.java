@@ -362,6 +362,8 @@ public final class GroupFit {
 			p[PER_PARTICLE * q + 3] = scaleOf(s);
 		}
 		p[np - BACKGROUND] = members[0].background(); // (every kind's profile has the same background)
+		// a background clipped at the floor: held at the profile's (no pixel the fit may use shows it)
+		final boolean heldBackground = censoring.backgroundClipped();
 		final boolean frozen = kept != null && kept.use != null;
 		final boolean[] use = frozen ? kept.use : censoring.active() ? new boolean[candidates.count()] : null;
 		if (kept != null) kept.use = use;
@@ -421,6 +423,7 @@ public final class GroupFit {
 			}
 		}
 		if (pixels.count() <= np) return 0;
+		if (heldBackground) hold(jtj, jtr, np);
 		final double tolerance = Double.isNaN(budget.tolerance()) ? ownTolerance(jtj, rss, pixels.count(), n) : budget
 			.tolerance();
 		int selections = frozen ? budget.selections() : 1;
@@ -454,6 +457,7 @@ public final class GroupFit {
 		final double[] factor = new double[np * np], work = new double[np], step = new double[np];
 		final double[] trial = new double[np], tr = new double[np];
 		for (; it <= budget.iterations(); it++) {
+			if (heldBackground) hold(jtj, jtr, np);
 			if (!SymmetricSolver.factor(jtj, mu, np, factor)) break;
 			SymmetricSolver.solveFactored(factor, np, jtr, work, step);
 			boolean allowed = true;
@@ -524,6 +528,7 @@ public final class GroupFit {
 			}
 			else mu *= 10;
 		}
+		if (heldBackground) hold(jtj, jtr, np);
 		final double[][] inv = SymmetricSolver.invert(jtj);
 		if (inv == null) return 0;
 		if (kept != null) kept.jtj = jtj;
@@ -538,6 +543,20 @@ public final class GroupFit {
 				.sqrt(vx * inv[b][b]), Math.sqrt(vy * inv[b + 1][b + 1]), p[b + 2], p[b + 3]);
 		}
 		return converged ? it : -it;
+	}
+
+	/**
+	 * Holds the background terms (the last {@value #BACKGROUND} parameters) where they are: their rows and columns of
+	 * {@code J^T J} those of the identity, their {@code J^T r} zero, so that a step leaves them and their variance is
+	 * no part of the others'.
+	 */
+	private static void hold(final double[][] jtj, final double[] jtr, final int np) {
+		for (int b = np - BACKGROUND; b < np; b++) {
+			for (int a = 0; a < np; a++)
+				jtj[a][b] = jtj[b][a] = 0;
+			jtj[b][b] = 1;
+			jtr[b] = 0;
+		}
 	}
 
 	/** @return the move below which the centres of a fit whose first J^T J and residuals are these have settled */

@@ -36,16 +36,16 @@ public final class Censoring {
 	static final double MARGIN_SIGMAS = 3;
 
 	private final double floor, saturation, lowest, highest;
+	private final boolean backgroundClipped;
 
-	private Censoring(final double floor, final double saturation, final double margin) {
-		this(floor, saturation, floor + margin, saturation - margin);
-	}
-
-	private Censoring(final double floor, final double saturation, final double lowest, final double highest) {
+	private Censoring(final double floor, final double saturation, final double margin,
+		final boolean backgroundClipped)
+	{
 		this.floor = floor;
 		this.saturation = saturation;
-		this.lowest = lowest;
-		this.highest = highest;
+		lowest = floor + margin;
+		highest = saturation - margin;
+		this.backgroundClipped = backgroundClipped;
 	}
 
 	/**
@@ -53,23 +53,19 @@ public final class Censoring {
 	 * @param noise the noise standard deviation (grey levels)
 	 */
 	public static Censoring of(final Plane plane, final double noise) {
-		final double floor = plane.floor(), margin = MARGIN_SIGMAS * Math.max(noise, 0);
-		final Censoring banded = new Censoring(floor, plane.saturation(), margin);
-		return floor > Double.NEGATIVE_INFINITY && backgroundClipped(plane, floor) ? new Censoring(floor, plane
-			.saturation(), Double.NEGATIVE_INFINITY, banded.highest) : banded;
+		final double floor = plane.floor();
+		return new Censoring(floor, plane.saturation(), MARGIN_SIGMAS * Math.max(noise, 0), floor > Double.NEGATIVE_INFINITY &&
+			clippedBackground(plane, floor));
 	}
 
 	/**
-	 * Where the frame's background itself is clipped at the floor (confocal images with the detector's offset
-	 * subtracted: a third of the pixels at 0), the band beside the floor would take the whole background and every
-	 * particle's rim out of the fit, leaving its background undetermined and every fit failed; there the band is
-	 * dropped at the floor (the pixels at it are still left out), at the price of a bias of the order of the noise on
-	 * the few pixels just above it.
+	 * More than this share of a frame's pixels at the floor: its background itself is clipped (confocal slices with the
+	 * detector's offset subtracted), and the band beside the floor takes the whole background out of a fit.
 	 */
 	static final double CLIPPED_BACKGROUND = 0.05;
 
 	/** @return whether more than {@link #CLIPPED_BACKGROUND} of the frame's pixels lie at the floor */
-	private static boolean backgroundClipped(final Plane plane, final double floor) {
+	private static boolean clippedBackground(final Plane plane, final double floor) {
 		final int w = plane.width(), h = plane.height();
 		final double[] row = new double[w];
 		long low = 0;
@@ -79,6 +75,15 @@ public final class Censoring {
 				if (v <= floor) low++;
 		}
 		return low > CLIPPED_BACKGROUND * w * h;
+	}
+
+	/**
+	 * @return whether the frame's background is clipped at the floor: a fit then holds its background at the profile's
+	 *         instead of fitting it (no pixel it may use shows it), and uses the pixels the band leaves, where the
+	 *         particles stand clear of the floor and the clipping biases nothing
+	 */
+	public boolean backgroundClipped() {
+		return backgroundClipped;
 	}
 
 	/** @return whether an observed value is at a clip level (its true value unknown) */

@@ -142,7 +142,7 @@ class ImageDetectionTest {
 
 	/**
 	 * Confocal slices with the detector's offset subtracted: the background at 0, half its pixels clipped there. The fit
-	 * places its background from the pixels above 0 and is not given up: every particle found by either detection is
+	 * holds its background at the profile's (no pixel it may use shows it) and is not given up: every particle found by either detection is
 	 * fitted, unflagged, within 0.05 px of its true centre rms (the first pass's centres were kept before, all flagged
 	 * FELL_BACK).
 	 */

@@ -52,18 +52,21 @@ class CensoringTest {
 	}
 
 	/**
-	 * A background clipped at the floor (more than 5% of the pixels at it, as confocal images with the offset
-	 * subtracted): the pixels at it are left out, but not the band beside it, which would take the whole background.
+	 * A background clipped at the floor (more than 5% of the pixels at it, as confocal slices with the offset
+	 * subtracted) is said, so that a fit holds its background instead of fitting it from pixels the band leaves out;
+	 * a dark ring's few clipped pixels are not.
 	 */
 	@Test
-	void aClippedBackgroundKeepsTheBandBesideTheFloor() {
+	void aClippedBackgroundIsSaid() {
 		final byte[] pixels = new byte[100];
 		java.util.Arrays.fill(pixels, (byte) 50);
 		java.util.Arrays.fill(pixels, 0, 6, (byte) 0);
 		final Censoring c = Censoring.of(Plane.of(ArrayImgs.unsignedBytes(pixels, 10, 10)), 2);
+		assertTrue(c.backgroundClipped());
 		assertTrue(c.clipped(0));
-		assertTrue(c.usable(1));
-		assertFalse(c.usable(249), "the band below saturation stays");
+		assertFalse(c.usable(6), "the band stays");
+		pixels[0] = pixels[1] = pixels[2] = pixels[3] = 50;
+		assertFalse(Censoring.of(Plane.of(ArrayImgs.unsignedBytes(pixels, 10, 10)), 2).backgroundClipped());
 	}
 
 	@Test
