@@ -45,7 +45,50 @@ final class ProfileMatch {
 	static double matched(final float[] data, final int w, final int h, final double x, final double y,
 		final EmpiricalProfile p, final double noise)
 	{
-		if (!Double.isFinite(x) || !Double.isFinite(y)) return Double.NaN;
+		final double[] m = sums(data, w, h, x, y, p);
+		if (m == null) return Double.NaN;
+		final double sp = m[0], si = m[1], spi = m[2], spp = m[3], sii = m[4];
+		final int n = (int) m[5];
+		if (n < 2) return Double.NaN;
+		// the image's variance less the noise's: a dim particle matches as well as a bright one
+		final double cov = spi - sp * si / n, vp = spp - sp * sp / n, vi = sii - si * si / n - (n - 1) * noise * noise;
+		return vp > 0 && vi > 0 ? Math.min(1, cov / Math.sqrt(vp * vi)) : 0;
+	}
+
+	/**
+	 * @return the amplitude of the profile that best matches the frame around (x, y), {@code a} in {@code a P(r) + b}
+	 *         by least squares over the disc {@link #matched} reads: in units of the particles the profile was measured
+	 *         on (1 for a typical one); NaN off the frame
+	 */
+	static double amplitude(final float[] data, final int w, final int h, final double x, final double y,
+		final EmpiricalProfile p)
+	{
+		final double[] m = sums(data, w, h, x, y, p);
+		if (m == null) return Double.NaN;
+		final double sp = m[0], si = m[1], spi = m[2], spp = m[3];
+		final int n = (int) m[5];
+		final double vp = spp - sp * sp / n;
+		return n >= 2 && vp > 0 ? (spi - sp * si / n) / vp : Double.NaN;
+	}
+
+	/** @return the largest {@link #amplitude} at (x, y) among the kinds' profiles */
+	static double amplitudeAny(final float[] data, final int w, final int h, final double x, final double y,
+		final KindProfiles profiles)
+	{
+		double best = Double.NEGATIVE_INFINITY;
+		for (int c = 0; c < profiles.count(); c++)
+			best = Math.max(best, amplitude(data, w, h, x, y, profiles.profile(c)));
+		return best;
+	}
+
+	/**
+	 * @return over the disc around (x, y) that holds {@link #MATCHED_INFORMATION} of the information on a centre, the
+	 *         sums of {@code P}, {@code I}, {@code P I}, {@code P^2}, {@code I^2} and the pixels' count; null off the frame
+	 */
+	private static double[] sums(final float[] data, final int w, final int h, final double x, final double y,
+		final EmpiricalProfile p)
+	{
+		if (!Double.isFinite(x) || !Double.isFinite(y)) return null;
 		final double reach = Math.min(p.radius(), p.informationRadius(MATCHED_INFORMATION));
 		final int x0 = Math.max(0, (int) Math.floor(x - reach)), x1 = Math.min(w - 1, (int) Math.ceil(x + reach));
 		final int y0 = Math.max(0, (int) Math.floor(y - reach)), y1 = Math.min(h - 1, (int) Math.ceil(y + reach));
@@ -63,49 +106,7 @@ final class ProfileMatch {
 				sii += im * im;
 				n++;
 			}
-		if (n < 2) return Double.NaN;
-		// the image's variance less the noise's: a dim particle matches as well as a bright one
-		final double cov = spi - sp * si / n, vp = spp - sp * sp / n, vi = sii - si * si / n - (n - 1) * noise * noise;
-		return vp > 0 && vi > 0 ? Math.min(1, cov / Math.sqrt(vp * vi)) : 0;
-	}
-
-	/**
-	 * @return the amplitude of the profile that best matches the frame around (x, y), {@code a} in {@code a P(r) + b}
-	 *         by least squares over the disc {@link #matched} reads: in units of the particles the profile was measured
-	 *         on (1 for a typical one); NaN off the frame
-	 */
-	static double amplitude(final float[] data, final int w, final int h, final double x, final double y,
-		final EmpiricalProfile p)
-	{
-		if (!Double.isFinite(x) || !Double.isFinite(y)) return Double.NaN;
-		final double reach = Math.min(p.radius(), p.informationRadius(MATCHED_INFORMATION));
-		final int x0 = Math.max(0, (int) Math.floor(x - reach)), x1 = Math.min(w - 1, (int) Math.ceil(x + reach));
-		final int y0 = Math.max(0, (int) Math.floor(y - reach)), y1 = Math.min(h - 1, (int) Math.ceil(y + reach));
-		double sp = 0, si = 0, spi = 0, spp = 0;
-		int n = 0;
-		for (int yy = y0; yy <= y1; yy++)
-			for (int xx = x0; xx <= x1; xx++) {
-				final double r = MemberTests.dist(xx - x, yy - y);
-				if (r > reach) continue;
-				final double v = p.lookup(r), im = data[yy * w + xx];
-				sp += v;
-				si += im;
-				spi += v * im;
-				spp += v * v;
-				n++;
-			}
-		final double vp = spp - sp * sp / n;
-		return n >= 2 && vp > 0 ? (spi - sp * si / n) / vp : Double.NaN;
-	}
-
-	/** @return the largest {@link #amplitude} at (x, y) among the kinds' profiles */
-	static double amplitudeAny(final float[] data, final int w, final int h, final double x, final double y,
-		final KindProfiles profiles)
-	{
-		double best = Double.NEGATIVE_INFINITY;
-		for (int c = 0; c < profiles.count(); c++)
-			best = Math.max(best, amplitude(data, w, h, x, y, profiles.profile(c)));
-		return best;
+		return new double[] { sp, si, spi, spp, sii, n };
 	}
 
 	/** The matched filter reads the disc that holds this share of the information on a particle's centre. */
