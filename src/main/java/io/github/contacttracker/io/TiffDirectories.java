@@ -58,8 +58,27 @@ final class TiffDirectories {
 
 	/** One image's layout, from its directory. */
 	record Directory(int width, int height, int bits, int samples, int format, int compression, long[] offsets,
-		long[] counts)
+		long[] counts, int planar)
 	{
+		/** One sample per pixel, chunky (TIFF's PlanarConfiguration 1). */
+		Directory(final int width, final int height, final int bits, final int samples, final int format,
+			final int compression, final long[] offsets, final long[] counts)
+		{
+			this(width, height, bits, samples, format, compression, offsets, counts, 1);
+		}
+
+		/**
+		 * @return each sample of a planar image (PlanarConfiguration 2: the samples stored plane after plane, the
+		 *         strips of sample {@code s} the {@code s}-th share of the strip table) as an image of one sample
+		 */
+		java.util.List<Directory> samplePlanes() {
+			final int per = offsets.length / samples;
+			final java.util.List<Directory> out = new java.util.ArrayList<>(samples);
+			for (int s = 0; s < samples; s++)
+				out.add(new Directory(width, height, bits, 1, format, compression, java.util.Arrays.copyOfRange(offsets, s *
+					per, (s + 1) * per), java.util.Arrays.copyOfRange(counts, s * per, (s + 1) * per)));
+			return out;
+		}
 		/** @return the bytes one plane of it takes uncompressed */
 		long planeBytes() {
 			return ((long) width * bits * samples + 7) / 8 * height;
@@ -160,7 +179,7 @@ final class TiffDirectories {
 	private static Directory directory(final SeekableBytes ch, final ByteBuffer dir, final int entries,
 		final boolean big, final long size, final String file, final int index) throws IOException
 	{
-		long width = -1, height = -1, bits = 1, format = 1, compression = 1, samples = 1;
+		long width = -1, height = -1, bits = 1, format = 1, compression = 1, samples = 1, planar = 1;
 		// entries whose values are tables, read once the image's size bounds them
 		int offsetsAt = -1, countsAt = -1, metaCountsAt = -1, metaAt = -1;
 		boolean tiles = false;
@@ -186,6 +205,7 @@ final class TiffDirectories {
 					file)[0];
 				case 259 -> compression = value(dir, at, type, big);
 				case 277 -> samples = value(dir, at, type, big);
+				case 284 -> planar = value(dir, at, type, big);
 				case 339 -> format = value(dir, at, type, big);
 				case 273, 324 -> {
 					offsetsAt = at;
@@ -216,7 +236,7 @@ final class TiffDirectories {
 			file);
 		final long[] counts = table(ch, dir, countsAt, type(dir, countsAt), offsets.length, big, size, file);
 		final Directory d = new Directory((int) width, (int) height, (int) bits, (int) samples, (int) format,
-			(int) compression, offsets, counts);
+			(int) compression, offsets, counts, planar == 2 && samples > 1 && offsets.length % samples == 0 ? 2 : 1);
 		long stored = 0;
 		for (int s = 0; s < offsets.length; s++) {
 			if (offsets[s] < 0 || counts[s] < 0 || offsets[s] > size || counts[s] > size - offsets[s])

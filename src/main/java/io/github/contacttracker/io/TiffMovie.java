@@ -78,6 +78,7 @@ final class TiffMovie {
 		// every directory checked before ImageJ's decoder or ours reads one: the file's numbers size nothing unchecked
 		final TiffDirectories.Layout layout = TiffDirectories.read(file);
 		if (layout.big()) return own(file, layout);
+		if (samplesAsChannels(layout)) return channels(own(file, samplePlanes(layout)));
 		final Path abs = file.toAbsolutePath();
 		final ImageJMessages.Result<FileInfo[]> info;
 		try {
@@ -261,6 +262,37 @@ final class TiffMovie {
 		return imp;
 	}
 
+	/**
+	 * @return whether the file is one image of several samples stored plane after plane, which ImageJ 1 reads wrongly
+	 *         or not at all (16-bit, or more than 3 samples: Python's {@code tifffile.imwrite} writes a stack of 3 or 4
+	 *         frames so): its samples are read as channels, each by our reader. An 8-bit image of 3 samples is left to
+	 *         ImageJ, which reads it as RGB.
+	 */
+	private static boolean samplesAsChannels(final TiffDirectories.Layout layout) {
+		if (layout.directories().size() != 1) return false;
+		final TiffDirectories.Directory d = layout.directories().get(0);
+		return d.planar() == 2 && d.compression() == 1 && !(d.bits() == 8 && d.samples() == 3);
+	}
+
+	/** @return the layout with its one image's samples as images of one sample each */
+	private static TiffDirectories.Layout samplePlanes(final TiffDirectories.Layout layout) {
+		return new TiffDirectories.Layout(layout.little(), layout.big(), layout.directories().get(0).samplePlanes(), layout
+			.firstNext());
+	}
+
+	/**
+	 * Set on an image whose channels are one page's samples ({@link #samplesAsChannels}), so that the refusal to
+	 * choose a channel can say what a user who wrote frames so should do.
+	 */
+	static final String SAMPLES = "contact-tracker.samples";
+
+	/** @return the image with its planes as channels (one time point, one slice) */
+	private static ImagePlus channels(final ImagePlus imp) {
+		imp.setDimensions(imp.getStackSize(), 1, 1);
+		imp.setProperty(SAMPLES, Boolean.TRUE);
+		return imp;
+	}
+
 	/** @return {@code planes}, which our reader decodes: uncompressed, one sample, of one size and pixel type */
 	private static List<TiffDirectories.Directory> checked(final String file,
 		final List<TiffDirectories.Directory> planes) throws IOException
@@ -304,6 +336,7 @@ final class TiffMovie {
 				"(compression " + p.compression() + "), which cannot be read plane by plane by offset; save it " +
 				"uncompressed (Fiji: File > Save As > Tiff..., or tifffile without compression)");
 		if (layout.big()) return own(bytes, title, layout);
+		if (samplesAsChannels(layout)) return channels(own(bytes, title, samplePlanes(layout)));
 		final ImageJMessages.Result<FileInfo[]> info;
 		try {
 			info = ImageJMessages.call(file, () -> new TiffDecoder(bytes.stream(layout.firstNext()), title)
