@@ -152,6 +152,8 @@ public final class MeasuredSettings {
 	 *         of the median distance between the image's seeds and their nearest ones, at least 3 px, to 0.1 px)
 	 */
 	private static double spacedROut(final Plane plane, final double d) {
+		// a diameter beyond the frame's diagonal is refused by the tracker itself; no seeds are sought at its scale
+		if (!(d <= Math.hypot(plane.width(), plane.height()))) return Double.POSITIVE_INFINITY;
 		final double spacing = ImageDetection.seeds(plane, d, NoiseEstimate.sigma(plane)).medianSpacing();
 		return Math.round(10 * Math.max(3, Math.min(1e6, SPACED * spacing))) / 10.0;
 	}

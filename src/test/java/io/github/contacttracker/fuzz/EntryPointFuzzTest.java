@@ -112,7 +112,10 @@ class EntryPointFuzzTest {
 				assertTrue(said.contains("case" + c + ".tif") || said.contains("option ") || said.contains("--"), what);
 				assertFalse(Files.exists(csv), "no output left behind a refusal: " + what);
 			}
-			if (status == 0) tracked++;
+			if (status == 0) {
+				tracked++;
+				positionsInside(csv, what);
+			}
 			else refused++;
 			Files.deleteIfExists(csv);
 			Files.deleteIfExists(dir.resolve("case" + c + ".settings.txt"));
@@ -123,6 +126,30 @@ class EntryPointFuzzTest {
 		assertTrue(tracked > 0 && refused > 0, tracked + " tracked, " + refused + " refused");
 	}
 
+	/**
+	 * Every spot of a run's CSV has finite coordinates, within the image's extent (px, as the pixel centres' range
+	 * widened by half a pixel) unless it is flagged.
+	 */
+	private static void positionsInside(final Path csv, final String what) throws IOException {
+		if (!Files.exists(csv)) return; // profile: no CSV
+		final List<String> lines = Files.readAllLines(csv).stream().filter(l -> !l.startsWith("#")).toList();
+		if (lines.size() < 2) return;
+		final List<String> head = List.of(lines.get(0).split(","));
+		final int x = head.indexOf("POSITION_X"), y = head.indexOf("POSITION_Y");
+		final List<Integer> flags = new ArrayList<>();
+		for (int i = 0; i < head.size(); i++)
+			if (head.get(i).startsWith("FLAG_") && !head.get(i).equals("FLAG_SECOND_PASS")) flags.add(i);
+		for (final String line : lines.subList(1, lines.size())) {
+			final String[] v = line.split(",");
+			final double px = Double.parseDouble(v[x]), py = Double.parseDouble(v[y]);
+			assertTrue(Double.isFinite(px) && Double.isFinite(py), "finite: " + line + " " + what);
+			boolean flagged = false;
+			for (final int f : flags)
+				flagged |= v[f].equals("1");
+			assertTrue(flagged || px >= -0.5 && py >= -0.5, "inside unless flagged: " + line + " " + what);
+		}
+	}
+
 	/** @return a random movie: a size from 1x1, a pixel type, a content */
 	private static ImagePlus image(final SplittableRandom r) {
 		final int w = size(r), h = size(r), frames = 1 + r.nextInt(3), type = r.nextInt(3), content = r.nextInt(5);
@@ -131,14 +158,24 @@ class EntryPointFuzzTest {
 			final ImageProcessor ip = type == 0 ? new ByteProcessor(w, h) : type == 1 ? new ShortProcessor(w, h)
 				: new FloatProcessor(w, h);
 			final double max = type == 0 ? 255 : type == 1 ? 65535 : 1e4;
-			final double cx = r.nextDouble() * w, cy = r.nextDouble() * h, radius = 1 + r.nextDouble() * 12;
+			// particles: one to twenty of one size, some touching; dark ones on a bright background for content 3
+			final int n = 1 + r.nextInt(20);
+			final double radius = 1 + r.nextDouble() * 8;
+			final double[] cx = new double[n], cy = new double[n];
+			for (int k = 0; k < n; k++) {
+				cx[k] = r.nextDouble() * w;
+				cy[k] = r.nextDouble() * h;
+			}
+			final double sign = content == 3 ? -1 : 1, base = content == 3 ? 0.8 * max : 0.1 * max;
 			for (int y = 0; y < h; y++)
 				for (int x = 0; x < w; x++) {
+					double light = 0;
+					for (int k = 0; k < n; k++)
+						light += Math.exp(-((x - cx[k]) * (x - cx[k]) + (y - cy[k]) * (y - cy[k])) / (2 * radius * radius));
 					double v = switch (content) {
 						case 0 -> max / 3; // constant
 						case 1 -> r.nextDouble() * max; // noise
-						default -> 0.1 * max + 0.6 * max * Math.exp(-((x - cx) * (x - cx) + (y - cy) * (y - cy)) / (2 * radius *
-							radius)) + 0.02 * max * r.nextGaussian(); // a particle
+						default -> base + sign * 0.6 * max * Math.min(1, light) + 0.02 * max * r.nextGaussian();
 					};
 					if (type == 2 && content == 4 && r.nextInt(50) == 0) v = r.nextBoolean() ? Double.NaN : Double.POSITIVE_INFINITY;
 					ip.putPixelValue(x, y, type == 2 ? v : Math.max(0, Math.min(max, v)));

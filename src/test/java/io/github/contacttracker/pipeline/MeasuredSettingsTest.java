@@ -149,4 +149,28 @@ class MeasuredSettingsTest {
 		assertEquals(TrackingSettings.MIN_AREA.defaultValue(), large.settings().get(TrackingSettings.MIN_AREA));
 		assertFalse(large.notice().contains("--min-area"), large.notice());
 	}
+
+	/**
+	 * Found by the entry-point fuzz: detection by the image on a frame the helper cannot measure, with a diameter of
+	 * 1e6 px given, sought seeds at that scale (a filter a million pixels wide) for minutes. The diameter is left to
+	 * the tracker, which refuses it in one line.
+	 */
+	@Test
+	void aDiameterBeyondTheFrameIsNotUsedToSeekSeeds() {
+		final byte[] flat = new byte[40 * 30];
+		java.util.Arrays.fill(flat, (byte) 20);
+		final RandomAccessibleInterval<UnsignedByteType> frame = net.imglib2.img.array.ArrayImgs.unsignedBytes(flat, 40,
+			30);
+		final SettingValues given = SettingValues.defaults().withText(TrackingSettings.DETECTION, TrackingSettings.IMAGE)
+			.with(TrackingSettings.DIAMETER, 1e6);
+		org.junit.jupiter.api.Assertions.assertTimeoutPreemptively(java.time.Duration.ofSeconds(10), () -> {
+			try {
+				MeasuredSettings.of("flat.tif", frame, true, given, Set.of(TrackingSettings.DETECTION,
+					TrackingSettings.DIAMETER));
+			}
+			catch (final InvalidInputException e) {
+				// a refusal in one line is as good as values
+			}
+		});
+	}
 }
