@@ -150,7 +150,7 @@ public final class ProfileAnalysis {
 	 *        centre is below it)
 	 * @param centres the profiled particles' centres {@code {x, y}} (px)
 	 * @param findings things the user should know (empty when all is well), in the order they were found; the front
-	 *        ends put them into words ({@code io.ProfileReport})
+	 *        ends put them into words ({@code report.ProfileReport})
 	 * @param kinds the kinds of particle at the suggested threshold and {@code r_out}
 	 */
 	public record Result(double x, double y, boolean refined, double diameter, boolean diameterEstimated,

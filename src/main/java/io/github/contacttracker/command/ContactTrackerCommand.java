@@ -73,8 +73,8 @@ import io.github.contacttracker.core.TrackerParameters;
 import io.github.contacttracker.core.track.FrameResult;
 import io.github.contacttracker.io.ImagePlusFrames;
 import io.github.contacttracker.io.ImageSource;
-import io.github.contacttracker.io.ShownFrameProfile;
-import io.github.contacttracker.io.WindowsBeside;
+import io.github.contacttracker.report.ShownFrameProfile;
+import io.github.contacttracker.ui.WindowsBeside;
 
 /**
  * <i>Plugins &gt; Tracking &gt; Contact Tracker</i>: localizes the particles of every frame of the image with the
