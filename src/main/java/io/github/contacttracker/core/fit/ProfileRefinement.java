@@ -22,7 +22,6 @@
 package io.github.contacttracker.core.fit;
 
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.List;
 
 import io.github.contacttracker.core.Flag;
@@ -32,6 +31,7 @@ import io.github.contacttracker.core.image.Plane;
 import io.github.contacttracker.core.kind.KindFeatures;
 import io.github.contacttracker.core.kind.KindProfiles;
 import io.github.contacttracker.core.kind.Kinds;
+import io.github.contacttracker.core.math.Statistics;
 import io.github.contacttracker.core.profile.EmpiricalProfile;
 import io.github.contacttracker.core.profile.ProfileEstimator;
 import io.github.contacttracker.core.radial.Estimate;
@@ -300,7 +300,6 @@ public final class ProfileRefinement implements Refinement {
 		final double[] r = new double[ps.length];
 		for (int k = 0; k < ps.length; k++)
 			r[k] = Math.sqrt(ps[k].region().area() / Math.PI);
-		Arrays.sort(r);
-		return r[r.length / 2];
+		return Statistics.median(r);
 	}
 }

@@ -21,7 +21,7 @@
  */
 package io.github.contacttracker.core.fit;
 
-import java.util.Arrays;
+import io.github.contacttracker.core.math.Statistics;
 
 /**
  * When the rounds of profile and centres (see {@link ProfileRefinement}) may stop, judged from each round's moves of
@@ -72,16 +72,11 @@ public final class Rounds {
 		maxBefore = maxPrevious;
 		maxPrevious = max;
 		if (max <= 1) return Verdict.SETTLED;
-		return max >= twoBack && median(moves) <= BULK ? Verdict.CYCLING : Verdict.GOING_ON;
+		return max >= twoBack && Statistics.median(moves.clone()) <= BULK ? Verdict.CYCLING : Verdict.GOING_ON;
 	}
 
 	/** @return whether centre {@code i} moved more than its tolerance in the latest round */
 	public boolean stillMoving(final int i) {
 		return last[i] > 1;
-	}
-
-	private static double median(final double[] v) {
-		final double[] s = Arrays.stream(v).filter(m -> !Double.isNaN(m)).sorted().toArray();
-		return s.length == 0 ? 0 : s[s.length / 2];
 	}
 }
