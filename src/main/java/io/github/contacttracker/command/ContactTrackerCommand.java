@@ -422,8 +422,8 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 		final List<PairDistances.Pair> pairList = pair_cutoff > 0 ? PairDistances.within(all, frames.calibration(),
 			pair_cutoff) : null;
 		final TitledResultsTable pairTable = pairList == null ? null : SpotTables.pairs(pairList, imp.getTitle());
-		if (overlay) SpotOverlay.show(imp, SpotOverlay.rois(found, params.rOut(), settings.diameter(), r_out_circles,
-			SpotOverlay.placer(imp)));
+		if (overlay) SpotOverlay.show(imp, SpotOverlay.rois(found, params.exclusionRadius(), settings.diameter(),
+			r_out_circles, SpotOverlay.placer(imp)));
 
 		// We show the tables ourselves (or not); the run marks them resolved so that SciJava does not display them again.
 		spots = spotTable;
@@ -586,8 +586,8 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 				previewShown = true;
 			}
 			final SpotOverlay.FramePlacer placer = SpotOverlay.placer(imp);
-			SpotOverlay.show(imp, SpotOverlay.rois(List.of(r), settings.parameters().rOut(), settings.diameter(), r_out_circles, (roi,
-				frame) -> placer.place(roi, t)));
+			SpotOverlay.show(imp, SpotOverlay.rois(List.of(r), settings.parameters().exclusionRadius(), settings
+				.diameter(), r_out_circles, (roi, frame) -> placer.place(roi, t)));
 		}
 		final String count = r.spots().size() + " spots on frame " + (t + 1) + (region == null ? ""
 			: " within the selection");

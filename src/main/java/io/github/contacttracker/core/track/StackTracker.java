@@ -300,7 +300,7 @@ public final class StackTracker {
 		for (int i = 0; i < everyOther.length; i++)
 			everyOther[i] = 2 * i;
 		final Frames start = new Frames(sample, previous).at(everyOther);
-		Measured used = profile(start.results(), null, start.indices(), frame, params.rOut(), kinds);
+		Measured used = profile(start.results(), null, start.indices(), frame, params.profileReach(), kinds);
 		List<FrameResult> round = pass(tracker, profiles(used), sample, frame, false, progress, cancelled);
 		final Rounds rounds = new Rounds();
 		Rounds.Verdict verdict = rounds.next(moves(previous, round));
@@ -310,10 +310,10 @@ public final class StackTracker {
 			previous = round;
 			final Measured before = used;
 			final Measured full = before == null ? null : new Measured(before.profiles(), null);
-			used = profile(round, r == 1 ? full : before, sample, frame, params.rOut(), kinds);
+			used = profile(round, r == 1 ? full : before, sample, frame, params.profileReach(), kinds);
 			double step = change(used, before);
 			if (r > 1 && !(step < lastStep)) {
-				used = profile(round, full, sample, frame, params.rOut(), kinds);
+				used = profile(round, full, sample, frame, params.profileReach(), kinds);
 				step = change(used, before);
 			}
 			lastStep = step;
@@ -530,7 +530,7 @@ public final class StackTracker {
 	 */
 	private static <T extends RealType<T>> Measured profile(final List<FrameResult> results,
 		final Measured fitted, final int[] indices,
-		final IntFunction<? extends RandomAccessibleInterval<T>> frame, final double rOut, final Kinds kinds)
+		final IntFunction<? extends RandomAccessibleInterval<T>> frame, final double reach, final Kinds kinds)
 	{
 		final int count = kinds == null ? 1 : kinds.count();
 		// One estimator per frame, merged in frame order: the sums, and so the results, do not depend on the
@@ -544,7 +544,7 @@ public final class StackTracker {
 		final ProfileEstimator.Linearisation from = fitted == null ? null : fitted.linearisation();
 		final List<ProfileEstimator> parts = Parallelization.getTaskExecutor().forEachApply(positions(indices.length),
 			i -> {
-				final ProfileEstimator part = ProfileEstimator.forROut(rOut, count, from);
+				final ProfileEstimator part = new ProfileEstimator(reach, count, from);
 				final List<Localization> spots = results.get(i).spots();
 				part.add(frame.apply(indices[i]), spots, positions(spots, kinds), norms[0], norms[1], before, results.get(
 					i).noiseSigma());
