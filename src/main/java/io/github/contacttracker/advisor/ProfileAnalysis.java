@@ -108,8 +108,8 @@ public final class ProfileAnalysis {
 	static final double CLIP_SIGMAS = 3.5;
 	/**
 	 * The provisional diameter (to measure the profile on) is at most this many times the spots' median radius at
-	 * half height: the cores of the authors' bright-field particles have radii of 4.7-8.3 px at half height and
-	 * their images end 21 px out; a Gaussian particle's image ends about 2.5 half-height radii out.
+	 * half height: a Gaussian particle's image ends about 2.5 half-height radii out, a bright-field particle's further,
+	 * its dark ring lying outside a narrow bright core; six leaves a margin above both.
 	 */
 	static final double PROVISIONAL_CORE_RADII = 6;
 	/** Smallest ratio of peak heights that separates the background's texture from the particles' cores. */
@@ -659,8 +659,8 @@ public final class ProfileAnalysis {
 	 * Where the particle's own image ends: the outer edge of its dark ring (where the profile, past its minimum,
 	 * comes back within the noise of the background) when it has one deeper than {@value #THRESHOLD_MARGIN_SIGMAS}
 	 * noise sigmas, as bright-field particles do; otherwise the reach. A faint halo beyond the ring is light the
-	 * particle scatters, not the particle: on the paper authors' bright-field movie the ring ends at 21 px and the
-	 * halo at 40 px, for particles about 34 px apart at contact.
+	 * particle scatters, not the particle: in bright field it can reach beyond a neighbour at contact, so taking it
+	 * for the particle's image would make every particle of a dense field look touched (figures: fiji.md).
 	 */
 	private static double imageEdge(final Pooled p, final double reach) {
 		int deepest = -1;
@@ -681,8 +681,9 @@ public final class ProfileAnalysis {
 	 * Components of the frame at a threshold, split by their peak height above the background at the largest gap
 	 * (a ratio of at least {@value #TEXTURE_GAP_RATIO}) below half the highest peak: below it the background's
 	 * texture (bright-field halos and rings, their sums between particles, an uneven background), above it the
-	 * particles' cores. On the authors' movies such texture rises 10-14 grey levels above the background and the
-	 * cores 120-140; a threshold just above the sum of two profiles at contact picks up dozens of texture spots.
+	 * particles' cores. The texture is the sum of faint tails, an order of magnitude below the cores' peaks, so the
+	 * heights fall in two groups with a wide gap between them; a threshold just above the sum of two profiles at
+	 * contact but below that gap picks up texture spots.
 	 * Components below {@code minArea} pixels are left out, as the tracker drops them.
 	 *
 	 * @return {@code {highest texture peak, lowest core peak, texture components}} above the background, or NaNs
@@ -751,9 +752,9 @@ public final class ProfileAnalysis {
 
 	/**
 	 * {@link #pool}, the mask narrowed (by {@value #MASK_NARROWING} at a time, down to {@code narrowest}) while no
-	 * particle has background pixels left around it: in a dense field of particles that do not touch (the paper
-	 * authors' Test_im.png, 50 particles 27.5-38.5 px apart in 250 x 250 px), every pixel lies within a diameter of some
-	 * neighbour. Narrowed, it is reported in {@code findings} (when not null).
+	 * particle has background pixels left around it: in a dense field of particles that do not touch (spaced a
+	 * little more than a diameter apart), every pixel lies within a diameter of some neighbour. Narrowed, it is
+	 * reported in {@code findings} (when not null).
 	 *
 	 * @param narrowest the narrowest mask tried (half the diameter; infinite: the mask as it is)
 	 * @throws InvalidInputException naming the particle tried first when no mask down to {@code narrowest} leaves
@@ -1053,10 +1054,11 @@ public final class ProfileAnalysis {
 
 	/**
 	 * How much further below the frame's median its darkest pixel must lie than its brightest above it for the
-	 * particles to be taken for dark ones when nobody said which: on the paper authors' footage (their three movies,
-	 * their single image, the first frame of their colour movie's red) the brightest pixel lies 1.04 (1.avi, whose
-	 * cores saturate and whose dark rings are deep) to 5.75 times as far from the median as the darkest, and on their
-	 * inverses the other way round.
+	 * particles to be taken for dark ones when nobody said which. The background covers most of a frame, so the
+	 * median is the background's level; bright particles reach further above it than their dark rings reach below,
+	 * and dark particles the other way round. Twice as far leaves a margin: saturated cores and deep dark rings can
+	 * bring bright particles' two reaches near each other, and such footage must not be taken for dark (manual.md
+	 * gives the figures measured on real footage).
 	 */
 	public static final double DARK_RATIO = 2;
 

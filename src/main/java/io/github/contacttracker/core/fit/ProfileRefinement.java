@@ -268,10 +268,11 @@ public final class ProfileRefinement implements Refinement {
 
 	/**
 	 * A refined centre whose frame cuts off this share of the information on it (or more;
-	 * {@link EmpiricalProfile#informationOutside}) counts as cut by the edge. Measured on the paper authors' real
-	 * movies by cropping them ({@code scripts/border-crops.py}; docs, Methods, "Particles at the border"): with less
-	 * than a tenth cut off a centre stayed within its reported error of where the whole movie puts it, in both
-	 * movies; beyond, it moved by several errors (1.avi from a tenth, 6.avi from a fifth). Half of where that begins.
+	 * {@link EmpiricalProfile#informationOutside}) counts as cut by the edge. The fitted profile is symmetric: the
+	 * part cut off no longer balances the part left, so a model error the image would average out on all sides pulls
+	 * the centre towards the frame, and the pull grows with the share cut. Crops of real footage keep a centre within
+	 * its reported error of the uncut frame's up to about a tenth cut (methods.md, "Particles at the border");
+	 * half of that is the limit.
 	 * The first pass flags only an active area touching the edge, a far deeper cut.
 	 */
 	public static final double CUT_INFORMATION = 0.05;
@@ -282,7 +283,7 @@ public final class ProfileRefinement implements Refinement {
 	 */
 	static void flagCutByTheBorder(final Plane plane, final Estimate[] e, final EmpiricalProfile[] profile) {
 		// a centre farther from every edge than the radius that holds 99% of its information cannot lose 5% to them:
-		// the share is summed only nearer the edges (summed for every centre within reach, 6% of the time on 1.avi)
+		// the share is summed only nearer the edges, not for every centre of a dense field
 		final java.util.Map<EmpiricalProfile, Double> safe = new java.util.IdentityHashMap<>();
 		for (int k = 0; k < e.length; k++) {
 			final double scale = e[k].scale() > 0 && Double.isFinite(e[k].scale()) ? e[k].scale() : 1;
