@@ -23,7 +23,7 @@ package io.github.contacttracker.advisor;
 
 /**
  * Something the profile helper ({@link ProfileAnalysis}) found that the user should know, with the numbers it is
- * about; the front ends put it into words ({@code io.ProfileReport}). Lengths in pixels, levels in grey levels.
+ * about; the front ends put it into words ({@code report.ProfileReport}). Lengths in pixels, levels in grey levels.
  */
 public sealed interface Finding {
 

@@ -42,6 +42,7 @@ import io.github.contacttracker.core.image.Plane;
 import io.github.contacttracker.core.image.Region;
 import io.github.contacttracker.core.kind.KindFeatures;
 import io.github.contacttracker.core.kind.Kinds;
+import io.github.contacttracker.core.math.Statistics;
 import io.github.contacttracker.core.radial.ComponentShape;
 import io.github.contacttracker.core.track.ContactTracker;
 import net.imglib2.RandomAccessibleInterval;
@@ -103,14 +104,12 @@ public final class ProfileAnalysis {
 	public static final double DIAMETER_PERCENTILE = 10;
 	/** Fewest pixels accepted in the background annulus. */
 	static final int MIN_BACKGROUND_PIXELS = 20;
-	/** Median absolute deviation to standard deviation, for normal noise. */
-	static final double MAD_TO_SIGMA = 1.4826;
 	/** Values further than this many sigmas from the mean do not count in the noise. */
 	static final double CLIP_SIGMAS = 3.5;
 	/**
 	 * The provisional diameter (to measure the profile on) is at most this many times the spots' median radius at
-	 * half height: the cores of the authors' bright-field particles have radii of 4.7-8.3 px at half height and
-	 * their images end 21 px out; a Gaussian particle's image ends about 2.5 half-height radii out.
+	 * half height: a Gaussian particle's image ends about 2.5 half-height radii out, a bright-field particle's further,
+	 * its dark ring lying outside a narrow bright core; six leaves a margin above both.
 	 */
 	static final double PROVISIONAL_CORE_RADII = 6;
 	/** Smallest ratio of peak heights that separates the background's texture from the particles' cores. */
@@ -150,7 +149,7 @@ public final class ProfileAnalysis {
 	 *        centre is below it)
 	 * @param centres the profiled particles' centres {@code {x, y}} (px)
 	 * @param findings things the user should know (empty when all is well), in the order they were found; the front
-	 *        ends put them into words ({@code io.ProfileReport})
+	 *        ends put them into words ({@code report.ProfileReport})
 	 * @param kinds the kinds of particle at the suggested threshold and {@code r_out}
 	 */
 	public record Result(double x, double y, boolean refined, double diameter, boolean diameterEstimated,
@@ -395,10 +394,10 @@ public final class ProfileAnalysis {
 		final double diameterGiven)
 	{
 		final double[] sample = sample(plane);
-		final double median0 = quantile(sample, 0.5);
+		final double median0 = Statistics.quantile(sample, 0.5);
 		final double noise0 = Math.max(NoiseEstimate.sigma(plane), 1e-6);
 		final double near = diameterGiven > 0 ? Math.max(2, diameterGiven / 4) : 5;
-		final double top = point != null ? peak(plane, at[0], at[1], near) : quantile(sample, 1 - Math.max(1e-4, 20.0 /
+		final double top = point != null ? peak(plane, at[0], at[1], near) : Statistics.quantile(sample, 1 - Math.max(1e-4, 20.0 /
 			sample.length));
 		if (!(top - median0 > THRESHOLD_MARGIN_SIGMAS * noise0)) {
 			if (point != null) throw new InvalidInputException(String.format(Locale.ROOT, "no bright particle at " +
@@ -436,11 +435,11 @@ public final class ProfileAnalysis {
 			return new Sized(diameterGiven, false, m);
 		}
 		double[] spacing = s.nn().clone();
-		double fromSpots = spacing.length >= 2 ? quantile(spacing.clone(), DIAMETER_PERCENTILE / 100) : Double.NaN;
+		double fromSpots = spacing.length >= 2 ? Statistics.quantile(spacing.clone(), DIAMETER_PERCENTILE / 100) : Double.NaN;
 		final double[] radii = new double[s.spots().size()];
 		for (int k = 0; k < radii.length; k++)
 			radii[k] = Math.sqrt(s.spots().get(k).activeArea() / Math.PI);
-		final double fromCores = PROVISIONAL_CORE_RADII * quantile(radii, 0.5);
+		final double fromCores = PROVISIONAL_CORE_RADII * Statistics.quantile(radii, 0.5);
 		double provisional = Double.isFinite(fromSpots) ? Math.min(fromSpots, fromCores) : fromCores;
 		Measured m = measure(plane, s, at, provisional, maxRadiusGiven, true);
 		// Two particles of this profile closer than 'closest' would have been one spot where the spots were found; spots
@@ -455,7 +454,7 @@ public final class ProfileAnalysis {
 			if (kept.length >= 2) {
 				findings.add(new Finding.SpotsTooClose(spacing.length - kept.length, closest));
 				spacing = kept;
-				fromSpots = quantile(kept.clone(), DIAMETER_PERCENTILE / 100);
+				fromSpots = Statistics.quantile(kept.clone(), DIAMETER_PERCENTILE / 100);
 				provisional = Math.min(fromSpots, fromCores);
 				m = measure(plane, s, at, provisional, maxRadiusGiven, true);
 			}
@@ -660,8 +659,8 @@ public final class ProfileAnalysis {
 	 * Where the particle's own image ends: the outer edge of its dark ring (where the profile, past its minimum,
 	 * comes back within the noise of the background) when it has one deeper than {@value #THRESHOLD_MARGIN_SIGMAS}
 	 * noise sigmas, as bright-field particles do; otherwise the reach. A faint halo beyond the ring is light the
-	 * particle scatters, not the particle: on the paper authors' bright-field movie the ring ends at 21 px and the
-	 * halo at 40 px, for particles about 34 px apart at contact.
+	 * particle scatters, not the particle: in bright field it can reach beyond a neighbour at contact, so taking it
+	 * for the particle's image would make every particle of a dense field look touched (figures: fiji.md).
 	 */
 	private static double imageEdge(final Pooled p, final double reach) {
 		int deepest = -1;
@@ -682,8 +681,9 @@ public final class ProfileAnalysis {
 	 * Components of the frame at a threshold, split by their peak height above the background at the largest gap
 	 * (a ratio of at least {@value #TEXTURE_GAP_RATIO}) below half the highest peak: below it the background's
 	 * texture (bright-field halos and rings, their sums between particles, an uneven background), above it the
-	 * particles' cores. On the authors' movies such texture rises 10-14 grey levels above the background and the
-	 * cores 120-140; a threshold just above the sum of two profiles at contact picks up dozens of texture spots.
+	 * particles' cores. The texture is the sum of faint tails, an order of magnitude below the cores' peaks, so the
+	 * heights fall in two groups with a wide gap between them; a threshold just above the sum of two profiles at
+	 * contact but below that gap picks up texture spots.
 	 * Components below {@code minArea} pixels are left out, as the tracker drops them.
 	 *
 	 * @return {@code {highest texture peak, lowest core peak, texture components}} above the background, or NaNs
@@ -752,9 +752,9 @@ public final class ProfileAnalysis {
 
 	/**
 	 * {@link #pool}, the mask narrowed (by {@value #MASK_NARROWING} at a time, down to {@code narrowest}) while no
-	 * particle has background pixels left around it: in a dense field of particles that do not touch (the paper
-	 * authors' Test_im.png, 50 particles 27.5-38.5 px apart in 250 x 250 px), every pixel lies within a diameter of some
-	 * neighbour. Narrowed, it is reported in {@code findings} (when not null).
+	 * particle has background pixels left around it: in a dense field of particles that do not touch (spaced a
+	 * little more than a diameter apart), every pixel lies within a diameter of some neighbour. Narrowed, it is
+	 * reported in {@code findings} (when not null).
 	 *
 	 * @param narrowest the narrowest mask tried (half the diameter; infinite: the mask as it is)
 	 * @throws InvalidInputException naming the particle tried first when no mask down to {@code narrowest} leaves
@@ -860,7 +860,7 @@ public final class ProfileAnalysis {
 		for (int k = 0; k < filled; k++) {
 			count[k] = rings[k].size;
 			radius[k] = count[k] > 0 ? sumR[k] / count[k] : k;
-			height[k] = count[k] > 0 ? interquartileMean(rings[k].toArray()) : Double.NaN;
+			height[k] = count[k] > 0 ? Statistics.interquartileMean(rings[k].toArray(), count[k]) : Double.NaN;
 		}
 		return new Pooled(radius, height, count, backgroundSum / used.size(), noise, used);
 	}
@@ -875,10 +875,10 @@ public final class ProfileAnalysis {
 	static double clippedSigma(final double[] values) {
 		if (values.length == 0) return Double.NaN;
 		final double[] dev = values.clone();
-		final double med = quantile(dev, 0.5);
+		final double med = Statistics.quantile(dev, 0.5);
 		for (int i = 0; i < dev.length; i++)
 			dev[i] = Math.abs(values[i] - med);
-		double centre = med, sigma = Math.max(MAD_TO_SIGMA * quantile(dev, 0.5), 0.5);
+		double centre = med, sigma = Math.max(Statistics.MAD_TO_SIGMA * Statistics.quantile(dev, 0.5), 0.5);
 		for (int pass = 0; pass < 2; pass++) {
 			double n = 0, sum = 0, sum2 = 0;
 			for (final double v : values)
@@ -914,7 +914,7 @@ public final class ProfileAnalysis {
 		final double[] dev = new double[x.size];
 		for (int i = 0; i < dev.length; i++)
 			dev[i] = Math.abs(v.get(i) - p[0] - p[1] * x.get(i) - p[2] * y.get(i));
-		final double cut = 3 * MAD_TO_SIGMA * quantile(dev.clone(), 0.5);
+		final double cut = 3 * Statistics.MAD_TO_SIGMA * Statistics.quantile(dev.clone(), 0.5);
 		int kept = 0;
 		for (int i = 0; i < dev.length; i++)
 			if (use[i] = dev[i] <= cut) kept++;
@@ -1051,25 +1051,14 @@ public final class ProfileAnalysis {
 		return s.toArray();
 	}
 
-	/**
-	 * The mean of the middle half of the values (sorted in place): as robust as the median to a neighbour covering
-	 * up to a quarter of a ring, but not stuck on the integer steps of 8-bit data as a median is.
-	 */
-	static double interquartileMean(final double[] values) {
-		Arrays.sort(values);
-		final int n = values.length, lo = n / 4, hi = n - n / 4;
-		double sum = 0;
-		for (int i = lo; i < hi; i++)
-			sum += values[i];
-		return sum / (hi - lo);
-	}
 
 	/**
 	 * How much further below the frame's median its darkest pixel must lie than its brightest above it for the
-	 * particles to be taken for dark ones when nobody said which: on the paper authors' footage (their three movies,
-	 * their single image, the first frame of their colour movie's red) the brightest pixel lies 1.04 (1.avi, whose
-	 * cores saturate and whose dark rings are deep) to 5.75 times as far from the median as the darkest, and on their
-	 * inverses the other way round.
+	 * particles to be taken for dark ones when nobody said which. The background covers most of a frame, so the
+	 * median is the background's level; bright particles reach further above it than their dark rings reach below,
+	 * and dark particles the other way round. Twice as far leaves a margin: saturated cores and deep dark rings can
+	 * bring bright particles' two reaches near each other, and such footage must not be taken for dark (manual.md
+	 * gives the figures measured on real footage).
 	 */
 	public static final double DARK_RATIO = 2;
 
@@ -1081,22 +1070,10 @@ public final class ProfileAnalysis {
 	@SuppressWarnings({ "rawtypes", "unchecked" })
 	public static boolean looksDark(final RandomAccessibleInterval<? extends RealType<?>> frame) {
 		final double[] v = sample(Plane.of((RandomAccessibleInterval) frame));
-		final double median = quantile(v, 0.5); // sorted by it
+		final double median = Statistics.quantile(v, 0.5); // sorted by it
 		return median - v[0] > DARK_RATIO * (v[v.length - 1] - median);
 	}
 
-	/**
-	 * The {@code q}-quantile of the values (sorted in place), by linear interpolation; {@code q} is clamped to
-	 * [0, 1] (a rank asked of a sample smaller than it, such as the 20th brightest of 17 pixels, is its extreme).
-	 */
-	static double quantile(final double[] values, final double q) {
-		if (values.length == 0) return Double.NaN;
-		Arrays.sort(values);
-		final double pos = (q > 0 ? Math.min(q, 1) : 0) * (values.length - 1);
-		final int i = (int) Math.floor(pos);
-		if (i >= values.length - 1) return values[values.length - 1];
-		return values[i] + (pos - i) * (values[i + 1] - values[i]);
-	}
 
 	private static double innerBackgroundRadius(final double radiusCap) {
 		return radiusCap * (1 - BACKGROUND_ANNULUS_PERCENT / 100.0);

@@ -31,8 +31,8 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Locale;
 
-import io.github.contacttracker.io.PotentialCsv;
-import io.github.contacttracker.io.PotentialPlots;
+import io.github.contacttracker.report.PotentialCsv;
+import io.github.contacttracker.plot.PotentialPlots;
 import io.github.contacttracker.io.SpotTableCsv;
 import io.github.contacttracker.potential.FieldOfView;
 import io.github.contacttracker.potential.PairCorrelation;

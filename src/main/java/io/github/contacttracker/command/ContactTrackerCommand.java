@@ -73,8 +73,8 @@ import io.github.contacttracker.core.TrackerParameters;
 import io.github.contacttracker.core.track.FrameResult;
 import io.github.contacttracker.io.ImagePlusFrames;
 import io.github.contacttracker.io.ImageSource;
-import io.github.contacttracker.io.ShownFrameProfile;
-import io.github.contacttracker.io.WindowsBeside;
+import io.github.contacttracker.report.ShownFrameProfile;
+import io.github.contacttracker.ui.WindowsBeside;
 
 /**
  * <i>Plugins &gt; Tracking &gt; Contact Tracker</i>: localizes the particles of every frame of the image with the
@@ -422,8 +422,8 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 		final List<PairDistances.Pair> pairList = pair_cutoff > 0 ? PairDistances.within(all, frames.calibration(),
 			pair_cutoff) : null;
 		final TitledResultsTable pairTable = pairList == null ? null : SpotTables.pairs(pairList, imp.getTitle());
-		if (overlay) SpotOverlay.show(imp, SpotOverlay.rois(found, params.rOut(), settings.diameter(), r_out_circles,
-			SpotOverlay.placer(imp)));
+		if (overlay) SpotOverlay.show(imp, SpotOverlay.rois(found, params.exclusionRadius(), settings.diameter(),
+			r_out_circles, SpotOverlay.placer(imp)));
 
 		// We show the tables ourselves (or not); the run marks them resolved so that SciJava does not display them again.
 		spots = spotTable;
@@ -586,8 +586,8 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 				previewShown = true;
 			}
 			final SpotOverlay.FramePlacer placer = SpotOverlay.placer(imp);
-			SpotOverlay.show(imp, SpotOverlay.rois(List.of(r), settings.parameters().rOut(), settings.diameter(), r_out_circles, (roi,
-				frame) -> placer.place(roi, t)));
+			SpotOverlay.show(imp, SpotOverlay.rois(List.of(r), settings.parameters().exclusionRadius(), settings
+				.diameter(), r_out_circles, (roi, frame) -> placer.place(roi, t)));
 		}
 		final String count = r.spots().size() + " spots on frame " + (t + 1) + (region == null ? ""
 			: " within the selection");

@@ -42,10 +42,10 @@ import ij.gui.Roi;
 import ij.measure.ResultsTable;
 import io.github.contacttracker.advisor.ProfileAnalysis;
 import io.github.contacttracker.core.Numbers;
-import io.github.contacttracker.io.ProfilePlots;
-import io.github.contacttracker.io.ProfileReport;
-import io.github.contacttracker.io.ShownFrameProfile;
-import io.github.contacttracker.io.WindowsBeside;
+import io.github.contacttracker.plot.ProfilePlots;
+import io.github.contacttracker.report.ProfileReport;
+import io.github.contacttracker.report.ShownFrameProfile;
+import io.github.contacttracker.ui.WindowsBeside;
 
 /**
  * <i>Plugins &gt; Tracking &gt; Contact Tracker Profile</i>: the parameter helper. The user marks an isolated

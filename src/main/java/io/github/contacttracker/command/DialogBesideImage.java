@@ -40,7 +40,7 @@ import javax.swing.JScrollPane;
 import javax.swing.SwingUtilities;
 
 import ij.ImagePlus;
-import io.github.contacttracker.io.WindowsBeside;
+import io.github.contacttracker.ui.WindowsBeside;
 
 /**
  * Sizes a command's dialog to its rows and puts it beside its image instead of over it. SciJava's Swing dialog (the input harvester's) is

@@ -33,7 +33,7 @@ import ij.ImagePlus;
 import ij.WindowManager;
 import ij.process.ColorProcessor;
 import io.github.contacttracker.core.Flag;
-import io.github.contacttracker.io.WindowsBeside;
+import io.github.contacttracker.ui.WindowsBeside;
 
 /**
  * The overlay's legend as a small picture in a window of its own, beside the image: each mark of

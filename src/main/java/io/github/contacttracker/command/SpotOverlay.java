@@ -42,7 +42,7 @@ import io.github.contacttracker.core.Localization;
 import io.github.contacttracker.core.image.Region;
 import io.github.contacttracker.core.track.FrameResult;
 import io.github.contacttracker.io.OverlayPng;
-import io.github.contacttracker.io.ShownFrameProfile;
+import io.github.contacttracker.report.ShownFrameProfile;
 import io.github.contacttracker.pipeline.KindRadii;
 
 /**
@@ -178,7 +178,8 @@ public final class SpotOverlay {
 
 	/**
 	 * @param results one result per frame, in frame order
-	 * @param rOut the {@code r_out} used (px)
+	 * @param exclusion the radius (px) of the disc the second pass leaves out around a neighbour's first-pass centre
+	 *        ({@code r_out}: {@link io.github.contacttracker.core.TrackerParameters#exclusionRadius()})
 	 * @param diameter the particle diameter given (px; 0 = none): the particle circles' radius is the table's
 	 *        {@code RADIUS}, half of it, each kind its own ({@link KindRadii}; else each spot's own, its active
 	 *        area's)
@@ -186,7 +187,7 @@ public final class SpotOverlay {
 	 * @param placer puts each ROI on its frame
 	 * @return the ROIs, spot by spot (IDs counted over all frames, as in the spots table)
 	 */
-	public static List<Roi> rois(final List<FrameResult> results, final double rOut, final double diameter,
+	public static List<Roi> rois(final List<FrameResult> results, final double exclusion, final double diameter,
 		final boolean diagnostics, final FramePlacer placer)
 	{
 		final List<Roi> rois = new ArrayList<>();
@@ -207,7 +208,8 @@ public final class SpotOverlay {
 					particle.setStrokeWidth(FLAGGED_STROKE);
 				}
 				if (diagnostics) {
-					final Roi disc = new OvalRoi(s.firstX() + 0.5 - rOut, s.firstY() + 0.5 - rOut, 2 * rOut, 2 * rOut);
+					final Roi disc = new OvalRoi(s.firstX() + 0.5 - exclusion, s.firstY() + 0.5 - exclusion, 2 * exclusion,
+						2 * exclusion);
 					add(rois, disc, Kind.DISC, id, name + " " + Kind.DISC.label(), s, placer);
 				}
 				if (diagnostics && k < r.secondAreas().size() && r.secondAreas().get(k).area() > 0) {

@@ -25,6 +25,7 @@ import java.util.Arrays;
 import java.util.List;
 
 import io.github.contacttracker.core.Localization;
+import io.github.contacttracker.core.math.Statistics;
 
 /**
  * The particles' radii ({@code RADIUS}) when their diameter was given: half of it for particles all of one kind;
@@ -74,7 +75,6 @@ public final class KindRadii {
 		int n = 0;
 		for (final Localization s : spots)
 			if (s.kind() == kind) r[n++] = s.radius();
-		Arrays.sort(r);
-		return n % 2 == 1 ? r[n / 2] : 0.5 * (r[n / 2 - 1] + r[n / 2]);
+		return Statistics.median(r, n);
 	}
 }

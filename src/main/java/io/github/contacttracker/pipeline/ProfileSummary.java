@@ -29,7 +29,7 @@ import java.util.Map;
 import io.github.contacttracker.advisor.ProfileAnalysis;
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.core.image.Inversion;
-import io.github.contacttracker.io.ProfileReport;
+import io.github.contacttracker.report.ProfileReport;
 import io.github.contacttracker.settings.SettingValues;
 import io.github.contacttracker.settings.TrackingSettings;
 import net.imglib2.RandomAccessibleInterval;

@@ -39,7 +39,7 @@ import org.apache.spark.sql.SparkSession;
 import org.apache.spark.storage.StorageLevel;
 
 import io.github.contacttracker.core.InvalidInputException;
-import io.github.contacttracker.io.PotentialCsv;
+import io.github.contacttracker.report.PotentialCsv;
 import io.github.contacttracker.potential.FieldOfView;
 import io.github.contacttracker.potential.PairCorrelation;
 import io.github.contacttracker.potential.SpotSet;

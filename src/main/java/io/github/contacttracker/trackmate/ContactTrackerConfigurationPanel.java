@@ -63,8 +63,8 @@ import fiji.plugin.trackmate.gui.components.ConfigurationPanel;
 import fiji.plugin.trackmate.util.DetectionPreview;
 import ij.ImagePlus;
 import io.github.contacttracker.core.InvalidInputException;
-import io.github.contacttracker.io.ShownFrameProfile;
-import io.github.contacttracker.io.WindowsBeside;
+import io.github.contacttracker.report.ShownFrameProfile;
+import io.github.contacttracker.ui.WindowsBeside;
 
 /**
  * TrackMate's configuration panel for {@link ContactTrackerDetectorFactory}, laid out like TrackMate's own

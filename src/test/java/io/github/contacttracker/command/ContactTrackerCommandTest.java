@@ -83,7 +83,7 @@ import io.github.contacttracker.core.track.StackTracker;
 import io.github.contacttracker.io.Calibration;
 import io.github.contacttracker.io.ImagePlusFrames;
 import io.github.contacttracker.io.OverlayPng;
-import io.github.contacttracker.io.ShownFrameProfile;
+import io.github.contacttracker.report.ShownFrameProfile;
 import io.github.contacttracker.io.SpotColumn;
 import io.github.contacttracker.io.SpotCsvWriter;
 

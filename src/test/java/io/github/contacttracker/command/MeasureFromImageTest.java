@@ -112,7 +112,7 @@ class MeasureFromImageTest extends WithContext {
 			.suggestedThreshold(true)) + ", r_out " + fmt(r.suggestedROut()) + " px, diameter "), log);
 		assertTrue(flat.contains(" px (estimated)"), log);
 		for (final String line : log.split("\n"))
-			assertTrue(line.length() <= io.github.contacttracker.io.ShownFrameProfile.LOG_WIDTH, line);
+			assertTrue(line.length() <= io.github.contacttracker.report.ShownFrameProfile.LOG_WIDTH, line);
 		assertTrue(log.contains("  warning: the diameter"), "the helper's warnings follow: " + log);
 		assertFalse(((Cancelable) m).isCanceled());
 	}

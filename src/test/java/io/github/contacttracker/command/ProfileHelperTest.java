@@ -46,7 +46,7 @@ import io.github.contacttracker.advisor.Finding;
 import io.github.contacttracker.advisor.ProfileAnalysis;
 import io.github.contacttracker.io.Calibration;
 import io.github.contacttracker.io.ImageFiles;
-import io.github.contacttracker.io.ProfileReport;
+import io.github.contacttracker.report.ProfileReport;
 import io.github.contacttracker.lab.sim.GaussianBesselProfile;
 import io.github.contacttracker.lab.sim.NoiseModel;
 import io.github.contacttracker.lab.sim.ParticleType;
@@ -197,9 +197,9 @@ class ProfileHelperTest extends WithContext {
 		assertNotNull(plot.getProcessor(), "the plot renders headless");
 		// the noise band's two lines (objects 2 and 3, after the profile and the background) can be told apart
 		assertTrue(plot.getPlotObjectStyle(2).startsWith(ij.plugin.Colors.colorToString(
-			io.github.contacttracker.io.ProfilePlots.NOISE_BAND) + ","), plot.getPlotObjectStyle(2));
+			io.github.contacttracker.plot.ProfilePlots.NOISE_BAND) + ","), plot.getPlotObjectStyle(2));
 		assertTrue(plot.getPlotObjectStyle(3).startsWith(ij.plugin.Colors.colorToString(
-			io.github.contacttracker.io.ProfilePlots.NOISE_BAND_LOW) + ","), plot.getPlotObjectStyle(3));
+			io.github.contacttracker.plot.ProfilePlots.NOISE_BAND_LOW) + ","), plot.getPlotObjectStyle(3));
 		assertFalse(plot.getPlotObjectStyle(2).split(",")[0].equals(plot.getPlotObjectStyle(3).split(",")[0]));
 		// the legend (top right) has the top of the plot to itself: the profile, the threshold and the noise band
 		// all lie in the lower 60%
@@ -231,12 +231,12 @@ class ProfileHelperTest extends WithContext {
 	void logLinesAreWrappedToTheLogWindowsWidth() {
 		final String warning = "  warning: the profile has not returned to background within max_radius = 80 px; " +
 			"give a larger max_radius or check that the particle is isolated";
-		final String wrapped = io.github.contacttracker.io.ShownFrameProfile.wrap(warning, 50, "    ");
+		final String wrapped = io.github.contacttracker.report.ShownFrameProfile.wrap(warning, 50, "    ");
 		assertEquals(warning.trim().replaceAll(" +", " "), wrapped.trim().replaceAll("\\s+", " "), "no word lost");
 		assertTrue(wrapped.startsWith("  warning: the"), wrapped);
 		for (final String line : wrapped.split("\n"))
 			assertTrue(line.length() <= 50, line);
 		assertTrue(wrapped.split("\n")[1].startsWith("    "), "continuation lines are indented");
-		assertEquals("short", io.github.contacttracker.io.ShownFrameProfile.wrap("short", 50, "  "));
+		assertEquals("short", io.github.contacttracker.report.ShownFrameProfile.wrap("short", 50, "  "));
 	}
 }

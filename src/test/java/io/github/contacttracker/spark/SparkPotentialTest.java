@@ -40,7 +40,7 @@ import org.apache.spark.sql.types.StructType;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
-import io.github.contacttracker.io.PotentialCsv;
+import io.github.contacttracker.report.PotentialCsv;
 import io.github.contacttracker.potential.SpotSet;
 
 /**

@@ -318,7 +318,7 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 		final EmpiricalProfile profile)
 	{
 		// the profile's table read as EmpiricalProfile.lookup reads it, inlined: this loop draws every neighbour on
-		// every member's pixels (a quarter of fit's time on the authors' movie, half of it in the calls)
+		// every member's pixels, the fit's innermost work on a dense field, where a call per pixel would cost as much
 		final double[] table = profile.valueTable();
 		final int last = table.length - 1;
 		// (a product, not two quotients: a division costs several multiplications in this loop)

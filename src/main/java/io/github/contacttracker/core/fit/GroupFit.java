@@ -54,11 +54,12 @@ public final class GroupFit {
 
 	static final int MAX_ITERATIONS = 50;
 	/**
-	 * Groups of up to this many particles are fitted jointly; larger ones member by member ({@code fitInTurn}). The
-	 * accuracy scenes (clusters of up to 19 particles at contact) are fitted jointly: member by member, the 19 of
-	 * {@code hex19} drawn like {@code 6.avi}'s largest kind (reaching 106 px) were still moving after ten sweeps, up
-	 * to 13 nm off and flagged; jointly 0.09 nm. A dense field's one large group stays member by member (the
-	 * authors' {@code 1.avi}: groups of about 85).
+	 * Groups of up to this many particles are fitted jointly; larger ones member by member ({@code fitInTurn}). A
+	 * compact cluster at contact couples every member to its neighbours so strongly (each image reaching over theirs)
+	 * that member by member its centres creep towards the joint solution by a little each sweep; a joint fit solves
+	 * the coupling at once, at a cost that grows with the cube of its 4 parameters per member. So clusters of a few
+	 * tens are fitted jointly, and a dense field's one large group (a hundred members or more) member by member,
+	 * whose cost is linear. The figures: accuracy.md ({@code hex19}, {@code hex37}).
 	 */
 	static final int MAX_JOINT = 24;
 	/**
@@ -172,8 +173,8 @@ public final class GroupFit {
 
 	/**
 	 * A group too large to fit jointly (at the profile helper's r_out a dense field is one group of a hundred
-	 * particles or more: a joint fit of 400 parameters cost minutes per frame and did not converge on the paper
-	 * authors' real movie): each member fitted alone, its neighbours' light held at their latest estimates, in
+	 * particles or more: a joint fit of 400 parameters costs minutes per frame, and one member that cannot settle
+	 * holds all of them): each member fitted alone, its neighbours' light held at their latest estimates, in
 	 * sweeps over the group (block coordinate descent on the same least squares, each member with its own local
 	 * background plane). A member is fitted on the pixels holding {@value #INFORMATION} of the information on its
 	 * centre ({@link EmpiricalProfile#informationRadius}), which in a dense field lie well within r_out, chosen in
@@ -185,9 +186,8 @@ public final class GroupFit {
 	 * ({@value #MAX_SWEEPS}); a member that would be fitted again then, or that the last sweep's fit still moved, is
 	 * flagged {@code NOT_CONVERGED}, one that cannot be fitted or slides off its particle {@code FELL_BACK}. The cost
 	 * is linear in the group's size and bounded. A member's standard errors are those of its own fit, without its
-	 * covariance with the neighbours. (Compact blocks of up to 16 members fitted
-	 * jointly in turn approached a simulated field's joint fit 3.5 times closer in ten sweeps, but on the authors'
-	 * movie no block ever settled: a member that cannot settle holds up a joint fit, not its neighbours' own.)
+	 * covariance with the neighbours. Members, not blocks of them, are the unit: a member that cannot settle (its
+	 * model wrong for it, its particle cut by the edge) holds up a joint fit of its block, not its neighbours' own.
 	 *
 	 * @return the largest iteration count of a member's fit in the last sweep
 	 */
@@ -233,7 +233,7 @@ public final class GroupFit {
 					Math.PI);
 				if (failed[q]) e[k] = start[q].withFlags(e[k].flags());
 				// a member that failed is back at its start: it moved if that is not where its neighbours last saw it
-				// (counted as unfinished, one sliding off every sweep held its group for all of them: a crop of 1.avi)
+				// (counted as unfinished, one sliding off every sweep would hold its group for all of them)
 				unfinished[q] = it < 0 && !failed[q];
 				fittedAt[q] = ++clock;
 				if (unfinished[q] || e[k].distanceTo(before) > settled(e[k])) movedAt[q] = clock;
@@ -241,10 +241,8 @@ public final class GroupFit {
 			}
 			// fitted again: a member whose iterations ran out, and one that a neighbour's move after its own fit reaches:
 			// the pixels of a member's fit lie within its window, and a neighbour's move changes its light where the
-			// profile's slope lies, within the neighbour's own window. (Reaching the profile's whole radius instead, the
-			// third and fourth sweeps on the authors' movie fitted 95% and 37% of the members again, not 77% and 15%; the
-			// centres agreed to 2% of their errors. Refitting after any move, the member's own and a neighbour's before
-			// its fit too: 25% more fits on a 300-frame stack of the authors' 1.avi, the second sweep refitting all.)
+			// profile's slope lies, within the neighbour's own window. Beyond that window the neighbour's move changes
+			// its light by far less than the noise, so refitting there would cost fits without moving a centre.
 			any = false;
 			for (int q = 0; q < n; q++) {
 				active[q] = unfinished[q];
@@ -268,7 +266,7 @@ public final class GroupFit {
 	 * @return the move (px) below which a centre counts as settled: {@link #TOLERANCE}, or a tenth of its standard
 	 *         error where that is larger. On real footage the imperfect model leaves the iterations circling within a
 	 *         few thousandths of a pixel (pixels enter and leave a window, a censoring choice flips), far below the
-	 *         centres' errors (0.03-0.1 px on the authors' movie); a tenth of the error changes nothing measurable.
+	 *         centres' errors (hundredths to tenths of a pixel); a tenth of the error changes nothing measurable.
 	 */
 	public static double settled(final double sigmaX, final double sigmaY) {
 		final double s = Math.max(sigmaX, sigmaY);
@@ -428,8 +426,8 @@ public final class GroupFit {
 			.tolerance();
 		int selections = frozen ? budget.selections() : 1;
 		// The members whose moves decide that the fit has settled: not one whose active area the frame's edge cuts
-		// (unless all are), which with most of it outside may never settle: on a crop of the paper authors' 6.avi such
-		// a member slid 64 px out of the frame, its amplitude negative, and held its group of 22 for all its iterations.
+		// (unless all are), which with most of it outside may never settle: what is left of its image constrains its
+		// centre too little, so it can slide out of the frame and hold its whole group for all its iterations.
 		final boolean[] holds = new boolean[n];
 		boolean anyInside = false;
 		for (int q = 0; q < n; q++)
@@ -441,9 +439,8 @@ public final class GroupFit {
 		// Whether J^T J was computed at p. A step is evaluated by the residuals alone (a third of the cost of J^T J);
 		// once accepted, the next step comes from the previous J^T J with the new J^T r (a chord step): near the
 		// solution J^T J hardly changes, so that step is as good, and when it is below the tolerance the fit has
-		// settled. A chord step at most CHORD_CONTRACTION of the one before is evaluated as it is (on the authors'
-		// movie this took a fifth of the J^T J passes away); a longer one, or one that fails, has J^T J computed at
-		// p first.
+		// settled. A chord step at most CHORD_CONTRACTION of the one before is evaluated as it is (the iteration is
+		// contracting, so J^T J is still close); a longer one, or one that fails, has J^T J computed at p first.
 		boolean hessianAtP = previous == null;
 		// the residuals' variances of the latest pass at p; the model on the pixels at the latest pass's point, for the
 		// re-choice of the pixels (where they are chosen)
@@ -625,8 +622,8 @@ public final class GroupFit {
 	/**
 	 * A member's pixels kept from one sweep to the next: its candidates (their positions and values; the neighbours'
 	 * light is computed afresh) and, where the pixel type clips, the choice of them its first fit ended with. Chosen
-	 * afresh every sweep, a few pixels at the margin of the clip levels flipped in and out as the neighbours moved, and
-	 * the sweeps circled on the paper authors' real movie instead of settling.
+	 * afresh every sweep, a few pixels at the margin of the clip levels would flip in and out as the neighbours move,
+	 * each flip a small jump of the least squares, and the sweeps would circle instead of settling.
 	 */
 	private static final class Kept {
 		FitPixels candidates;

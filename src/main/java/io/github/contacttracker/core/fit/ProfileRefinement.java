@@ -22,7 +22,6 @@
 package io.github.contacttracker.core.fit;
 
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.List;
 
 import io.github.contacttracker.core.Flag;
@@ -32,6 +31,7 @@ import io.github.contacttracker.core.image.Plane;
 import io.github.contacttracker.core.kind.KindFeatures;
 import io.github.contacttracker.core.kind.KindProfiles;
 import io.github.contacttracker.core.kind.Kinds;
+import io.github.contacttracker.core.math.Statistics;
 import io.github.contacttracker.core.profile.EmpiricalProfile;
 import io.github.contacttracker.core.profile.ProfileEstimator;
 import io.github.contacttracker.core.radial.Estimate;
@@ -141,7 +141,8 @@ public final class ProfileRefinement implements Refinement {
 		final Rounds settling = new Rounds();
 		for (int round = 0; round < rounds; round++) {
 			if (given == null) {
-				profiles = measure(plane, ps, e, params.rOut(), kinds, kind, round == 0 ? null : profiles, censoring);
+				profiles = measure(plane, ps, e, params.profileReach(), kinds, kind, round == 0 ? null : profiles,
+					censoring);
 				if (profiles == null) {
 					final Estimate[] kept = e.clone();
 					for (int k = 0; k < kept.length; k++)
@@ -161,7 +162,8 @@ public final class ProfileRefinement implements Refinement {
 				if (disc < 3) disc = medianEquivalentRadius(ps);
 				r = Deblender.refine(plane, ps, start, of, disc);
 			}
-			else r = GroupFit.refine(plane, ps, start, of, 2 * params.rOut(), params.rOut(), censoring);
+			else r = GroupFit.refine(plane, ps, start, of, params.groupingDistance(), params.rOut(),
+				censoring);
 			final Estimate[] next = r.estimates();
 			for (int k = 0; k < next.length; k++) {
 				next[k] = new Estimate(next[k].x(), next[k].y(), next[k].flags(), next[k].secondArea(), Math.abs(r
@@ -186,7 +188,7 @@ public final class ProfileRefinement implements Refinement {
 		// profile and centres still moving at the last round: no fixed point, the centres can be off by that much
 		if (!settled) for (int k = 0; k < e.length; k++)
 			e[k] = e[k].withFlags(e[k].flags() | Flag.NOT_CONVERGED.bit());
-		flagUnmodelledNeighbours(ps, e, params.rOut());
+		flagUnmodelledNeighbours(ps, e, params.groupingDistance());
 		return new Fitted(new Outcome(e, iterative.discs(), kind), profiles);
 	}
 
@@ -195,11 +197,11 @@ public final class ProfileRefinement implements Refinement {
 	 * pixels. The profiles {@code e} was fitted with, if any, choose the pixels left out near clip levels.
 	 */
 	private static KindProfiles measure(final Plane plane, final Particle[] ps, final Estimate[] e,
-		final double rOut, final Kinds kinds, final int[] kind, final KindProfiles fittedWith,
+		final double reach, final Kinds kinds, final int[] kind, final KindProfiles fittedWith,
 		final Censoring censoring)
 	{
 		final int count = kinds == null ? 1 : kinds.count();
-		final ProfileEstimator estimator = ProfileEstimator.forROut(rOut, count);
+		final ProfileEstimator estimator = new ProfileEstimator(reach, count);
 		final int n = ps.length;
 		final double[] cx = new double[n], cy = new double[n], amp = new double[n], scale = new double[n];
 		final boolean[] masked = new boolean[n];
@@ -254,10 +256,10 @@ public final class ProfileRefinement implements Refinement {
 	 * ({@code 2 r_out}: a particle's light above the noise reaches {@code r_out}, and the fit reads pixels up to
 	 * {@code r_out} from its particles), plus the unmodelled component's own equivalent radius (a merge spans two).
 	 */
-	static void flagUnmodelledNeighbours(final Particle[] ps, final Estimate[] e, final double rOut) {
+	static void flagUnmodelledNeighbours(final Particle[] ps, final Estimate[] e, final double grouping) {
 		for (int q = 0; q < ps.length; q++) {
 			if (ps[q].reliable()) continue;
-			final double reach = 2 * rOut + Math.sqrt(ps[q].region().area() / Math.PI);
+			final double reach = grouping + Math.sqrt(ps[q].region().area() / Math.PI);
 			for (int k = 0; k < ps.length; k++)
 				if (k != q && ps[k].reliable() && Math.hypot(e[k].x() - ps[q].first().x(), e[k].y() - ps[q].first()
 					.y()) < reach) e[k] = e[k].withFlags(e[k].flags() | Flag.UNMODELLED_NEIGHBOUR.bit());
@@ -266,10 +268,11 @@ public final class ProfileRefinement implements Refinement {
 
 	/**
 	 * A refined centre whose frame cuts off this share of the information on it (or more;
-	 * {@link EmpiricalProfile#informationOutside}) counts as cut by the edge. Measured on the paper authors' real
-	 * movies by cropping them ({@code scripts/border-crops.py}; docs, Methods, "Particles at the border"): with less
-	 * than a tenth cut off a centre stayed within its reported error of where the whole movie puts it, in both
-	 * movies; beyond, it moved by several errors (1.avi from a tenth, 6.avi from a fifth). Half of where that begins.
+	 * {@link EmpiricalProfile#informationOutside}) counts as cut by the edge. The fitted profile is symmetric: the
+	 * part cut off no longer balances the part left, so a model error the image would average out on all sides pulls
+	 * the centre towards the frame, and the pull grows with the share cut. Crops of real footage keep a centre within
+	 * its reported error of the uncut frame's up to about a tenth cut (methods.md, "Particles at the border");
+	 * half of that is the limit.
 	 * The first pass flags only an active area touching the edge, a far deeper cut.
 	 */
 	public static final double CUT_INFORMATION = 0.05;
@@ -280,7 +283,7 @@ public final class ProfileRefinement implements Refinement {
 	 */
 	static void flagCutByTheBorder(final Plane plane, final Estimate[] e, final EmpiricalProfile[] profile) {
 		// a centre farther from every edge than the radius that holds 99% of its information cannot lose 5% to them:
-		// the share is summed only nearer the edges (summed for every centre within reach, 6% of the time on 1.avi)
+		// the share is summed only nearer the edges, not for every centre of a dense field
 		final java.util.Map<EmpiricalProfile, Double> safe = new java.util.IdentityHashMap<>();
 		for (int k = 0; k < e.length; k++) {
 			final double scale = e[k].scale() > 0 && Double.isFinite(e[k].scale()) ? e[k].scale() : 1;
@@ -300,7 +303,6 @@ public final class ProfileRefinement implements Refinement {
 		final double[] r = new double[ps.length];
 		for (int k = 0; k < ps.length; k++)
 			r[k] = Math.sqrt(ps[k].region().area() / Math.PI);
-		Arrays.sort(r);
-		return r[r.length / 2];
+		return Statistics.median(r);
 	}
 }

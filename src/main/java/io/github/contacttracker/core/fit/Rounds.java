@@ -21,7 +21,7 @@
  */
 package io.github.contacttracker.core.fit;
 
-import java.util.Arrays;
+import io.github.contacttracker.core.math.Statistics;
 
 /**
  * When the rounds of profile and centres (see {@link ProfileRefinement}) may stop, judged from each round's moves of
@@ -30,9 +30,10 @@ import java.util.Arrays;
  * <li>{@link Verdict#SETTLED}: no centre moved more than its tolerance: the fixed point of profile and centres.
  * <li>{@link Verdict#CYCLING}: the centres as a whole have settled (the median move is below half the tolerance: the
  * profile, which moves them all together, has stopped moving), and the largest move has not shrunk over two rounds.
- * What still moves then are single centres going back and forth between two fits (seen on the paper authors' real
- * movie: one centre jumping 13 standard errors every other round while the median stayed at 0.04 of one), which
- * more rounds do not mend. The rounds stop, and only the centres that moved more than their tolerance in the last
+ * What still moves then are single centres going back and forth between two fits (a centre whose model fits two
+ * nearby minima about equally, such as a particle with a neighbour's light on one side, can jump many standard
+ * errors every other round while the median move stays at a small fraction of one), which more rounds do not mend.
+ * The rounds stop, and only the centres that moved more than their tolerance in the last
  * round are flagged ({@link #stillMoving}). A geometric approach to the fixed point (every simulation) never
  * stalls over two rounds, so it always ends {@code SETTLED}.
  * <li>{@link Verdict#GOING_ON}: neither.
@@ -72,16 +73,11 @@ public final class Rounds {
 		maxBefore = maxPrevious;
 		maxPrevious = max;
 		if (max <= 1) return Verdict.SETTLED;
-		return max >= twoBack && median(moves) <= BULK ? Verdict.CYCLING : Verdict.GOING_ON;
+		return max >= twoBack && Statistics.median(moves.clone()) <= BULK ? Verdict.CYCLING : Verdict.GOING_ON;
 	}
 
 	/** @return whether centre {@code i} moved more than its tolerance in the latest round */
 	public boolean stillMoving(final int i) {
 		return last[i] > 1;
-	}
-
-	private static double median(final double[] v) {
-		final double[] s = Arrays.stream(v).filter(m -> !Double.isNaN(m)).sorted().toArray();
-		return s.length == 0 ? 0 : s[s.length / 2];
 	}
 }

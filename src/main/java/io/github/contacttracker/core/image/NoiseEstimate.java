@@ -21,6 +21,8 @@
  */
 package io.github.contacttracker.core.image;
 
+import io.github.contacttracker.core.math.Statistics;
+
 /**
  * Standard deviation of a frame's pixel noise, by Immerkaer's method (Computer Vision and Image
  * Understanding 64, 1996): the mask {@code [1 -2 1; -2 4 -2; 1 -2 1]} cancels smooth signal up to second
@@ -97,7 +99,6 @@ public final class NoiseEstimate {
 				}
 			}
 		if (n == 0 || at < CLIPPED_SHARE * n || m == 0) return 0;
-		java.util.Arrays.sort(above, 0, m);
-		return above[m / 2] / 0.6745;
+		return Statistics.median(above, m) * Statistics.MAD_TO_SIGMA;
 	}
 }

@@ -27,6 +27,7 @@ import java.util.List;
 
 import io.github.contacttracker.core.Localization;
 import io.github.contacttracker.core.image.Plane;
+import io.github.contacttracker.core.math.Statistics;
 import io.github.contacttracker.core.radial.Estimate;
 import io.github.contacttracker.core.radial.Particle;
 
@@ -77,7 +78,7 @@ public record KindFeatures(double coreRadius, double peak, double ringDepth, dou
 		for (int y = 0; y < h; y += 2)
 			for (int x = 0; x < w; x += 2)
 				v[n++] = plane.get(x, y);
-		return median(v, n);
+		return Statistics.median(v, n);
 	}
 
 	/**
@@ -266,8 +267,8 @@ public record KindFeatures(double coreRadius, double peak, double ringDepth, dou
 		final double[] out = new double[rings];
 		for (int r = 0; r < rings; r++) {
 			final int n = count[r];
-			out[r] = n >= (r <= 1 ? 1 : MIN_RING_PIXELS) ? median(Arrays.copyOfRange(values, start[r], start[r + 1]),
-				n) - background : Double.NaN;
+			out[r] = n >= (r <= 1 ? 1 : MIN_RING_PIXELS)
+				? Statistics.median(Arrays.copyOfRange(values, start[r], start[r + 1]), n) - background : Double.NaN;
 		}
 		return out;
 	}
@@ -278,53 +279,5 @@ public record KindFeatures(double coreRadius, double peak, double ringDepth, dou
 	 */
 	private static int ring(final double d) {
 		return d < 0.75 ? 0 : (int) Math.floor(d + 0.5);
-	}
-
-	/**
-	 * The median of the first {@code n} values (reorders them): the middle one, or the mean of the two middle ones, in
-	 * sorted order. Found by selection, not by sorting (the rings' medians and the frame's background were a tenth of
-	 * {@code fit}'s time on the authors' movie, most of it sorting); values with a NaN are sorted.
-	 */
-	static double median(final double[] v, final int n) {
-		for (int i = 0; i < n; i++)
-			if (Double.isNaN(v[i])) {
-				Arrays.sort(v, 0, n);
-				return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-			}
-		final int k = n / 2;
-		select(v, n, k);
-		if (n % 2 == 1) return v[k];
-		double lower = v[0]; // the largest of those before the k-th: the one before it in sorted order
-		for (int i = 1; i < k; i++)
-			if (v[i] > lower) lower = v[i];
-		return 0.5 * (lower + v[k]);
-	}
-
-	/**
-	 * Puts into {@code v[k]} the value sorted order puts there, the values before it no larger, those after it no
-	 * smaller (of the first {@code n}; no NaN): Hoare's selection, pivots the median of three.
-	 */
-	private static void select(final double[] v, final int n, final int k) {
-		int lo = 0, hi = n - 1;
-		while (hi > lo) {
-			final double a = v[lo], b = v[(lo + hi) >>> 1], c = v[hi];
-			final double pivot = a < b ? b < c ? b : Math.max(a, c) : a < c ? a : Math.max(b, c);
-			int i = lo, j = hi;
-			while (i <= j) {
-				while (v[i] < pivot)
-					i++;
-				while (v[j] > pivot)
-					j--;
-				if (i <= j) {
-					final double t = v[i];
-					v[i++] = v[j];
-					v[j--] = t;
-				}
-			}
-			// v[lo..j] <= pivot, v[i..hi] >= pivot, and those between equal to it
-			if (k <= j) hi = j;
-			else if (k >= i) lo = i;
-			else return;
-		}
 	}
 }

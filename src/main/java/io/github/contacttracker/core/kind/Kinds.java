@@ -28,6 +28,7 @@ import java.util.Collection;
 import java.util.List;
 
 import io.github.contacttracker.core.InvalidInputException;
+import io.github.contacttracker.core.math.Statistics;
 
 /**
  * The kinds of particle in a movie and a classifier that places any particle among them, immutable.
@@ -266,9 +267,10 @@ public final class Kinds implements Serializable {
 
 	/** The median of the values that are not NaN; NaN if fewer than half of them are numbers. */
 	private static double median(final double[] values) {
-		final double[] v = Arrays.stream(values).filter(d -> !Double.isNaN(d)).toArray();
-		if (v.length == 0 || 2 * v.length < values.length) return Double.NaN;
-		return KindFeatures.median(v, v.length);
+		int numbers = 0;
+		for (final double d : values)
+			if (!Double.isNaN(d)) numbers++;
+		return 2 * numbers < values.length ? Double.NaN : Statistics.median(values);
 	}
 
 	/** @return the number of kinds (0 when the sample held no usable particle) */

@@ -45,7 +45,7 @@ import net.imglib2.type.numeric.RealType;
  * loose (on a crop of a movie they can make the profile change by up to its height from round to round);
  * so are clipped pixels and, given the previous estimate, those near a clip level ({@link Censoring}).
  * <p>
- * An estimator made {@link #forROut(double, int, Linearisation) from the linearisation} of an earlier estimate takes
+ * An estimator made {@link #ProfileEstimator(double, int, Linearisation) from the linearisation} of an earlier estimate takes
  * one chord step of the same least squares instead: it accumulates only the gradient {@code A^T (b - A x)} at the
  * earlier solution {@code x} (a pass linear in the particles that reach a pixel, not quadratic) and solves with the
  * earlier normal matrix. Its fixed point is the exact least-squares solution, and where the centres moved little
@@ -54,8 +54,6 @@ import net.imglib2.type.numeric.RealType;
  */
 public final class ProfileEstimator {
 
-	/** The profile is measured out to this multiple of {@code r_out} (why: {@link TrackerParameters#profileReach()}). */
-	public static final double REACH_FACTOR = TrackerParameters.PROFILE_REACH_FACTOR;
 	/** Knot spacing of the profile spline (px). */
 	public static final double SPACING = 1.0;
 	/** Weight of the smoothness penalty, relative to the mean diagonal of the normal matrix. */
@@ -81,7 +79,7 @@ public final class ProfileEstimator {
 	/** Per kind (with more than one), the pixel values added within reach of a particle of that kind. */
 	private final int[] kindSamples;
 
-	/** @param radius the profile's reach (px): use {@code r_out} */
+	/** @param radius the profile's reach (px): {@link TrackerParameters#profileReach()} */
 	public ProfileEstimator(final double radius) {
 		this(radius, 1);
 	}
@@ -99,7 +97,7 @@ public final class ProfileEstimator {
 	 * @param kinds how many profiles to measure at once
 	 * @param from an earlier estimate of the same radius and kinds to take a chord step from, or null
 	 */
-	private ProfileEstimator(final double radius, final int kinds, final Linearisation from) {
+	public ProfileEstimator(final double radius, final int kinds, final Linearisation from) {
 		if (!(radius > 3 * SPACING)) throw new IllegalArgumentException("profile radius must exceed " + 3 * SPACING +
 			" px, not " + radius);
 		if (kinds < 1) throw new IllegalArgumentException("at least one kind of particle, not " + kinds);
@@ -115,24 +113,6 @@ public final class ProfileEstimator {
 		rowSum = from == null ? null : new double[bIndex + 3];
 		atb = new double[bIndex + 3];
 		kindSamples = new int[kinds];
-	}
-
-	/** @return an estimator reaching {@link #REACH_FACTOR} times {@code rOut} */
-	public static ProfileEstimator forROut(final double rOut) {
-		return forROut(rOut, 1);
-	}
-
-	/** @return an estimator of {@code kinds} profiles reaching {@link #REACH_FACTOR} times {@code rOut} */
-	public static ProfileEstimator forROut(final double rOut, final int kinds) {
-		return forROut(rOut, kinds, null);
-	}
-
-	/**
-	 * @return as {@link #forROut(double, int)}; with {@code from} (of an estimator of the same {@code rOut} and kinds)
-	 *         a chord step from that estimate
-	 */
-	public static ProfileEstimator forROut(final double rOut, final int kinds, final Linearisation from) {
-		return new ProfileEstimator(REACH_FACTOR * rOut, kinds, from);
 	}
 
 	/**

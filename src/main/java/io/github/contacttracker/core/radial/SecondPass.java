@@ -105,9 +105,10 @@ public final class SecondPass {
 	{
 		final Estimate first = p.first();
 		final int area = p.region().area();
-		final int[] near = neighboursReaching(p.region(), self, cx, cy, params.rOut());
+		final double exclusion = params.exclusionRadius();
+		final int[] near = neighboursReaching(p.region(), self, cx, cy, exclusion);
 		if (near.length == 0) return first; // nothing to exclude: the first centre is final
-		final double r2 = params.rOut() * params.rOut();
+		final double r2 = exclusion * exclusion;
 		final int secondArea = countOutside(p.region(), near, cx, cy, r2);
 		if (secondArea == area) return first;
 		if (secondArea < params.minSecondArea())

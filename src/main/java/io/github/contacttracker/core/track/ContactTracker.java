@@ -182,7 +182,7 @@ public final class ContactTracker {
 				e.iterations(), sx, sy, e.amplitude(), e.scale(), kinds == null ? 0 : kinds[k]));
 			if (keepRegions) {
 				active.add(p.region().translate(dx, dy));
-				second.add(SecondPass.secondRegion(p.region(), k, outcome.discs(), params.rOut()).translate(dx, dy));
+				second.add(SecondPass.secondRegion(p.region(), k, outcome.discs(), params.exclusionRadius()).translate(dx, dy));
 			}
 		}
 		return new FrameResult(spots, active, second, noise, discarded[0], profile == null && params.method()
@@ -253,7 +253,7 @@ public final class ContactTracker {
 		final List<Integer> roundAreas = new ArrayList<>();
 		for (int k = 0; k < ps.length; k++) {
 			final Particle p = particles.get(k);
-			merged[k] = p.shape().merged(p.atBorder(), noise, alone(particles, k, params.rOut()), params.diameter());
+			merged[k] = p.shape().merged(p.atBorder(), noise, alone(particles, k, params.aloneReach()), params.diameter());
 			if (!merged[k] && !p.atBorder()) roundAreas.add(p.region().area());
 		}
 		int smallestMerge = 0;
@@ -279,9 +279,9 @@ public final class ContactTracker {
 	 *         {@code k}'s active area: only then do its gradient lines owe nothing to a neighbour's light, so that
 	 *         their failing to meet in one point means several particles
 	 */
-	private static boolean alone(final List<Particle> particles, final int k, final double rOut) {
+	private static boolean alone(final List<Particle> particles, final int k, final double beyond) {
 		final Particle p = particles.get(k);
-		final double reach = rOut + Math.sqrt(p.region().area() / Math.PI);
+		final double reach = beyond + Math.sqrt(p.region().area() / Math.PI);
 		for (int q = 0; q < particles.size(); q++)
 			if (q != k && Math.hypot(particles.get(q).first().x() - p.first().x(), particles.get(q).first().y() - p
 				.first().y()) < reach) return false;

@@ -241,7 +241,7 @@ public final class StackTracker {
 		final TrackerParameters params = tracker.parameters();
 		// A dense field needs fewer frames for as many particles (the rounds' cost follows the frames): how many is
 		// estimated from the iterative centres of two sample frames, the first and the middle one, and only the frames
-		// kept are then run (on the authors' 1.avi 4 of 15: the iterative pass on all had been 8% of the time).
+		// kept are then run (the profile's error falls with the particles it is measured on, not with the frames).
 		// (the iterative start from the threshold's components: seeds of the image that are no particles, such as the
 		// fringes where bright-field halos meet, are told apart by the profile, which is not known yet)
 		final ContactTracker iterativeTracker = new ContactTracker(params.withMethod(Method.ITERATIVE).withDetection(
@@ -288,19 +288,19 @@ public final class StackTracker {
 		// the same cluster) it absorbs part of their error; so profile and centres are alternated on the sample
 		// frames until the centres stop moving (the joint least-squares fixed point, to a tenth of the centres' errors).
 		// The first round's profile, on the iterative centres, only starts the rounds: it is measured on every other
-		// sample frame (5% of the time on the authors' 1.avi, the centres the same to 0.05 of their errors), the later
+		// sample frame (a start needs no more: the rounds after it converge to the same fixed point), the later
 		// ones on them all. The third and later rounds' profiles are chord steps from the second's least squares (see
 		// ProfileEstimator). Not from the first's: it rests on the iterative centres without fitted amplitudes and
-		// scales, too far from the later rows (on 1.avi a step from it closed only half the gap to the exact profile).
+		// scales, too far from the later rows for a step from it to land near the exact profile.
 		// A chord step converges only while the rows stay near those of its normal matrix: one that moves the profile
-		// no less than the round before did is replaced by the full least squares (on a crop of the authors' 6.avi,
-		// particles cut by the edge, the steps grew round after round and the centres ran off by thousands of errors).
+		// no less than the round before did is replaced by the full least squares (where the rows change much, as
+		// with particles cut by the edge, chord steps can grow round after round and the centres run off).
 		List<FrameResult> previous = iterative;
 		final int[] everyOther = new int[(sample.length + 1) / 2];
 		for (int i = 0; i < everyOther.length; i++)
 			everyOther[i] = 2 * i;
 		final Frames start = new Frames(sample, previous).at(everyOther);
-		Measured used = profile(start.results(), null, start.indices(), frame, params.rOut(), kinds);
+		Measured used = profile(start.results(), null, start.indices(), frame, params.profileReach(), kinds);
 		List<FrameResult> round = pass(tracker, profiles(used), sample, frame, false, progress, cancelled);
 		final Rounds rounds = new Rounds();
 		Rounds.Verdict verdict = rounds.next(moves(previous, round));
@@ -310,10 +310,10 @@ public final class StackTracker {
 			previous = round;
 			final Measured before = used;
 			final Measured full = before == null ? null : new Measured(before.profiles(), null);
-			used = profile(round, r == 1 ? full : before, sample, frame, params.rOut(), kinds);
+			used = profile(round, r == 1 ? full : before, sample, frame, params.profileReach(), kinds);
 			double step = change(used, before);
 			if (r > 1 && !(step < lastStep)) {
-				used = profile(round, full, sample, frame, params.rOut(), kinds);
+				used = profile(round, full, sample, frame, params.profileReach(), kinds);
 				step = change(used, before);
 			}
 			lastStep = step;
@@ -530,7 +530,7 @@ public final class StackTracker {
 	 */
 	private static <T extends RealType<T>> Measured profile(final List<FrameResult> results,
 		final Measured fitted, final int[] indices,
-		final IntFunction<? extends RandomAccessibleInterval<T>> frame, final double rOut, final Kinds kinds)
+		final IntFunction<? extends RandomAccessibleInterval<T>> frame, final double reach, final Kinds kinds)
 	{
 		final int count = kinds == null ? 1 : kinds.count();
 		// One estimator per frame, merged in frame order: the sums, and so the results, do not depend on the
@@ -544,7 +544,7 @@ public final class StackTracker {
 		final ProfileEstimator.Linearisation from = fitted == null ? null : fitted.linearisation();
 		final List<ProfileEstimator> parts = Parallelization.getTaskExecutor().forEachApply(positions(indices.length),
 			i -> {
-				final ProfileEstimator part = ProfileEstimator.forROut(rOut, count, from);
+				final ProfileEstimator part = new ProfileEstimator(reach, count, from);
 				final List<Localization> spots = results.get(i).spots();
 				part.add(frame.apply(indices[i]), spots, positions(spots, kinds), norms[0], norms[1], before, results.get(
 					i).noiseSigma());

@@ -34,7 +34,7 @@ import io.github.contacttracker.core.Localization;
 import io.github.contacttracker.core.Method;
 import io.github.contacttracker.lab.eval.PotentialStudy;
 import io.github.contacttracker.io.Calibration;
-import io.github.contacttracker.io.PotentialPlots;
+import io.github.contacttracker.plot.PotentialPlots;
 import io.github.contacttracker.io.SpotCsvWriter;
 import io.github.contacttracker.potential.PairCorrelation;
 import io.github.contacttracker.lab.sim.FluidMovie;

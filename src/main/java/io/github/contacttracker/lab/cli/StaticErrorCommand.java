@@ -30,6 +30,7 @@ import java.util.Map;
 
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.core.Numbers;
+import io.github.contacttracker.core.math.Statistics;
 import io.github.contacttracker.io.SpotTableCsv;
 import io.github.contacttracker.potential.SpotSet;
 import io.github.contacttracker.potential.StaticError;
@@ -100,7 +101,6 @@ final class StaticErrorCommand extends ContactTrackerCli.Subcommand {
 	}
 
 	private static double median(final double[] v) {
-		final double[] s = Arrays.stream(v).filter(Double::isFinite).sorted().toArray();
-		return s.length == 0 ? Double.NaN : s[s.length / 2];
+		return Statistics.median(Arrays.stream(v).filter(Double::isFinite).toArray());
 	}
 }

@@ -287,28 +287,6 @@ class KindsTest {
 		assertTrue(usable > 0.9 * 75 * centres.size(), "most have a core: " + usable);
 	}
 
-	/**
-	 * The median by selection is the median of the sorted values, exactly: odd and even counts, one and two values,
-	 * many ties (8-bit grey levels), spread values, sorted and reversed input, and values with a NaN.
-	 */
-	@Test
-	void theMedianIsThatOfTheSortedValues() {
-		final SplittableRandom random = new SplittableRandom(3);
-		for (int trial = 0; trial < 2000; trial++) {
-			final int n = 1 + random.nextInt(trial < 1000 ? 12 : 700);
-			final double[] v = new double[n + 3];
-			final int kind = trial % 5;
-			for (int i = 0; i < v.length; i++)
-				v[i] = kind == 0 ? random.nextInt(4) : kind == 1 ? random.nextInt(256) : kind == 2 ? gaussian(random) :
-					kind == 3 ? i : -i;
-			if (trial % 97 == 0) v[random.nextInt(n)] = Double.NaN;
-			final double[] sorted = Arrays.copyOf(v, n);
-			Arrays.sort(sorted);
-			final double want = n % 2 == 1 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
-			assertEquals(want, KindFeatures.median(v, n), 0, "trial " + trial + ", " + n + " values");
-		}
-	}
-
 	/** Where the profile first falls to half its value at the centre. */
 	private static double halfRadius(final RadialProfile p) {
 		double lo = 0, hi = 20;

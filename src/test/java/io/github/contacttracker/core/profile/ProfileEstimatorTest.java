@@ -75,16 +75,16 @@ class ProfileEstimatorTest {
 			offX[k] += 0.6 * Math.cos(2 * k);
 			offY[k] += 0.6 * Math.sin(2 * k);
 		}
-		final ProfileEstimator off = ProfileEstimator.forROut(20, 1);
+		final ProfileEstimator off = new ProfileEstimator(30, 1, null);
 		off.add(plane, offX, offY, amp, scale, new boolean[3], null);
 		final ProfileEstimator.Solution earlier = off.solve();
-		final ProfileEstimator exact = ProfileEstimator.forROut(20, 1);
+		final ProfileEstimator exact = new ProfileEstimator(30, 1, null);
 		exact.add(plane, cx, cy, amp, scale, new boolean[3], null);
 		final EmpiricalProfile truth = exact.estimate();
-		final ProfileEstimator chord = ProfileEstimator.forROut(20, 1, earlier.linearisation());
+		final ProfileEstimator chord = new ProfileEstimator(30, 1, earlier.linearisation());
 		chord.add(plane, cx, cy, amp, scale, new boolean[3], null);
 		final ProfileEstimator.Solution step = chord.solve();
-		final ProfileEstimator again = ProfileEstimator.forROut(20, 1, step.linearisation());
+		final ProfileEstimator again = new ProfileEstimator(30, 1, step.linearisation());
 		again.add(plane, cx, cy, amp, scale, new boolean[3], null);
 		final double gap = largestDifference(earlier.profiles()[0], truth);
 		final double first = largestDifference(step.profiles()[0], truth);

@@ -346,7 +346,7 @@ class MergeDetectionTest {
 			tx[k] = t.x();
 			ty[k] = t.y();
 		}
-		final ProfileEstimator estimator = ProfileEstimator.forROut(params.rOut());
+		final ProfileEstimator estimator = new ProfileEstimator(params.profileReach());
 		estimator.add(plane, tx, ty, ones, ones, new boolean[ps.length], null);
 		final EmpiricalProfile profile = estimator.estimate();
 		final Censoring censoring = Censoring.of(plane, NOISE_SIGMA);

@@ -19,7 +19,7 @@
  * <http://www.gnu.org/licenses/gpl-3.0.html>.
  * #L%
  */
-package io.github.contacttracker.io;
+package io.github.contacttracker.plot;
 
 import java.awt.Color;
 import java.io.IOException;
@@ -31,6 +31,7 @@ import java.util.Locale;
 
 import ij.gui.Plot;
 import io.github.contacttracker.advisor.ProfileAnalysis;
+import io.github.contacttracker.io.AtomicFile;
 
 /**
  * The radial profile of {@link ProfileAnalysis} as a plot (the paper's Fig. 2: the profile, the background, the

@@ -19,7 +19,7 @@
  * <http://www.gnu.org/licenses/gpl-3.0.html>.
  * #L%
  */
-package io.github.contacttracker.io;
+package io.github.contacttracker.report;
 
 import java.io.BufferedWriter;
 import java.io.IOException;
@@ -30,6 +30,7 @@ import java.math.MathContext;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 
+import io.github.contacttracker.io.AtomicFile;
 import io.github.contacttracker.potential.PairCorrelation;
 
 /**

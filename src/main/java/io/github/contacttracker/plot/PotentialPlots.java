@@ -19,7 +19,7 @@
  * <http://www.gnu.org/licenses/gpl-3.0.html>.
  * #L%
  */
-package io.github.contacttracker.io;
+package io.github.contacttracker.plot;
 
 import java.awt.Color;
 import java.awt.image.BufferedImage;
@@ -32,6 +32,7 @@ import java.util.function.DoubleUnaryOperator;
 import javax.imageio.ImageIO;
 
 import ij.gui.Plot;
+import io.github.contacttracker.io.AtomicFile;
 import io.github.contacttracker.potential.PairCorrelation;
 
 /**

@@ -19,7 +19,7 @@
  * <http://www.gnu.org/licenses/gpl-3.0.html>.
  * #L%
  */
-package io.github.contacttracker.io;
+package io.github.contacttracker.report;
 
 import java.util.AbstractList;
 import java.util.ArrayList;
@@ -30,6 +30,7 @@ import ij.ImagePlus;
 import io.github.contacttracker.advisor.ProfileAnalysis;
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.core.Numbers;
+import io.github.contacttracker.io.ImagePlusFrames;
 import net.imglib2.Interval;
 import net.imglib2.RandomAccessibleInterval;
 import net.imglib2.type.numeric.RealType;
