@@ -37,8 +37,8 @@ public enum Detection {
 	/**
 	 * The default: by the threshold. Detection by the image finds touching particles that the threshold merges, dim
 	 * particles it misses and particles on ramps and clipped backgrounds (the documentation's Methods, Detection by
-	 * the image), but on bright-field particles in a textured background it still takes some texture for particles,
-	 * and it costs several fits per frame: it is chosen with {@code --detection image}.
+	 * the image), but it costs several fits per frame, and on a background mottled with hundreds of seeds a fit of
+	 * them all in turn: it is chosen with {@code --detection image}.
 	 */
 	public static final Detection DEFAULT = THRESHOLD;
 
