@@ -100,27 +100,23 @@ public final class MeasuredSettings {
 			v = v.with(TrackingSettings.THRESHOLD, r.suggestedThreshold(integerData));
 			said.append(" --threshold ").append(optionValue(v.get(TrackingSettings.THRESHOLD)));
 			final double[] range = ImagePlusFrames.range(seen, 0);
-			// above every pixel: what the helper took for particles' cores are not (e.g. the bright rings around the
-			// dark cores of a bright-field movie, inverted)
-			if (v.get(TrackingSettings.THRESHOLD) > range[1] && imageCanTake(settings)) return byImage(name, seen,
-				settings.withText(TrackingSettings.PARTICLES, v.get(TrackingSettings.PARTICLES)), false, rOutGiven,
-				new StringBuilder(particlesGiven || !v.dark() ? "" : " --particles dark"), new InvalidInputException(
-					"its threshold " + optionValue(v.get(TrackingSettings.THRESHOLD)) + " lies above every pixel"));
-			// below every pixel: the helper's background lies under the frame's darkest pixel (no dark gap between
-			// particles packed edge to edge)
+			// outside the frame's range. Above every pixel: what the helper took for particles' cores are not (e.g. the
+			// bright rings around the dark cores of a bright-field movie, inverted). Below: the helper's background lies
+			// under the frame's darkest pixel (no dark gap between particles packed edge to edge).
 			final double t = v.get(TrackingSettings.THRESHOLD);
-			if (t < range[0] && imageCanTake(settings)) return byImage(name, seen, settings.withText(
-				TrackingSettings.PARTICLES, v.get(TrackingSettings.PARTICLES)), false, rOutGiven, new StringBuilder(
-					particlesGiven || !v.dark() ? "" : " --particles dark"), new InvalidInputException("its threshold " +
-						optionValue(t) + " lies below every pixel"));
-			if (t < range[0]) throw new InvalidInputException("cannot measure --threshold on the first frame of " + name +
-				": the helper's " + optionValue(t) + " lies below its every pixel (" + optionValue(range[0]) + ")" +
-				byImageHint(seen, v) + "; or give the values (contact-tracker profile MOVIE --at X,Y measures one particle)");
-			if (v.get(TrackingSettings.THRESHOLD) > range[1]) throw new InvalidInputException("cannot measure " +
-				"--threshold on the first frame of " + name + ": the helper's " + optionValue(v.get(
-					TrackingSettings.THRESHOLD)) + " lies above its every pixel (" + optionValue(range[1]) + ")" + (v.dark()
-						? "" : "; if the particles are darker than the background, give --particles dark") + byImageHint(seen,
-							v) + "; or give the values (contact-tracker profile MOVIE --at X,Y measures one particle)");
+			final boolean above = t > range[1];
+			if (above || t < range[0]) {
+				final String side = above ? "above" : "below";
+				if (imageCanTake(settings)) return byImage(name, seen, settings.withText(TrackingSettings.PARTICLES, v.get(
+					TrackingSettings.PARTICLES)), false, rOutGiven, new StringBuilder(particlesGiven || !v.dark() ? ""
+						: " --particles dark"), new InvalidInputException("its threshold " + optionValue(t) + " lies " + side +
+							" every pixel"));
+				throw new InvalidInputException("cannot measure --threshold on the first frame of " + name + ": the " +
+					"helper's " + optionValue(t) + " lies " + side + " its every pixel (" + optionValue(above ? range[1]
+						: range[0]) + ")" + (above && !v.dark() ? "; if the particles are darker than the background, give " +
+							"--particles dark" : "") + byImageHint(seen, v) + "; or give the values (contact-tracker profile " +
+					"MOVIE --at X,Y measures one particle)");
+			}
 		}
 		if (!rOutGiven) {
 			v = v.with(TrackingSettings.R_OUT, r.suggestedROut());
@@ -183,7 +179,8 @@ public final class MeasuredSettings {
 	 * without an isolated particle, a particle cut by the edge, one at low contrast), the diameter, when not given,
 	 * is the scale of the frame's blobs ({@link ParticleScale}), a missing threshold is the middle of the frame's range
 	 * (the threshold's components then only start the profile where they are single particles) and a missing r_out one
-	 * diameter (a particle's image reaches about a radius beyond its edge), all said in the notice.
+	 * diameter (a particle's image reaches about a radius beyond its edge), or less where the particles are packed
+	 * closer ({@link #SPACED}), all said in the notice.
 	 *
 	 * @throws InvalidInputException where the frame holds no blob to measure the diameter on
 	 */
@@ -192,8 +189,9 @@ public final class MeasuredSettings {
 		final boolean thresholdGiven, final boolean rOutGiven, final StringBuilder said, final InvalidInputException why)
 	{
 		SettingValues v = given;
+		final Plane plane = Plane.of(seen);
 		if (!(v.diameter() > 0)) {
-			final double d = ParticleScale.diameter(Plane.of(seen));
+			final double d = ParticleScale.diameter(plane);
 			if (!(d > 0)) throw new InvalidInputException("cannot measure the particles on the first frame of " + name +
 				": " + InvalidInputException.oneLine(why.getMessage()) + ", and the frame holds no blob to measure " +
 				"their diameter on; give --diameter (contact-tracker profile MOVIE --at X,Y measures one particle)", why);
@@ -207,8 +205,8 @@ public final class MeasuredSettings {
 		}
 		if (!rOutGiven) {
 			final long w = seen.dimension(0), h = seen.dimension(1);
-			v = v.with(TrackingSettings.R_OUT, Math.min(Math.min(v.diameter(), Math.hypot(w, h)), spacedROut(Plane.of(
-				seen), v.diameter())));
+			v = v.with(TrackingSettings.R_OUT, Math.min(Math.min(v.diameter(), Math.hypot(w, h)), spacedROut(plane, v
+				.diameter())));
 			said.append(" --r-out ").append(optionValue(v.get(TrackingSettings.R_OUT)));
 		}
 		return new Result(v, "contact-tracker: " + name + ": the profile helper could not measure (" +

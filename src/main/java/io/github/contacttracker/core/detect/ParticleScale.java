@@ -158,10 +158,11 @@ public final class ParticleScale {
 	 *         with {@code sigma / f >= 2}), where the Laplacian's step is {@code f}
 	 */
 	static float[] response(final float[] data, final int w, final int h, final double sigma) {
+		final int target = level(sigma);
 		int f = 1;
 		float[] img = data;
 		int lw = w, lh = h;
-		while (sigma / (2 * f) >= 2 && lw >= 8 && lh >= 8) {
+		while (f < target) { // (each level at least 16 px a side: sigma is at most an eighth of the frame's side)
 			final int nw = lw / 2, nh = lh / 2;
 			final float[] down = new float[nw * nh];
 			for (int y = 0; y < nh; y++)
