@@ -36,8 +36,41 @@ import io.github.contacttracker.core.radial.Particle;
  * ({@link #select}): the pixels of {@link GroupFit}'s least squares, whose passes are {@link NormalEquations}.
  */
 record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, double[] u, double[] v,
-	double[] backgroundBlock, double[] extent, int[] candidates)
+	double[] backgroundBlock, double[] extent, int[] candidates, double[] packed)
 {
+
+	/** The numbers per pixel in {@link #packed}: x, y, u, v, value, other groups' light. */
+	static final int PACKED = 6;
+
+	/**
+	 * @param packed each pixel's x, y, u, v, value and light together ({@value #PACKED} numbers a pixel), as the fit's
+	 *        passes read them: one array rather than six, so that a pass's loop keeps its sums in registers rather
+	 *        than the arrays' addresses; null: made here from the others
+	 */
+	FitPixels {
+		if (packed == null) packed = pack(x, y, value, fixed, count, u, v);
+	}
+
+	FitPixels(final int[] x, final int[] y, final double[] value, final double[] fixed, final int count,
+		final double[] u, final double[] v, final double[] backgroundBlock, final double[] extent, final int[] candidates)
+	{
+		this(x, y, value, fixed, count, u, v, backgroundBlock, extent, candidates, null);
+	}
+
+	private static double[] pack(final int[] x, final int[] y, final double[] value, final double[] fixed,
+		final int count, final double[] u, final double[] v)
+	{
+		final double[] out = new double[PACKED * count];
+		for (int i = 0, o = 0; i < count; i++, o += PACKED) {
+			out[o] = x[i];
+			out[o + 1] = y[i];
+			out[o + 2] = u[i];
+			out[o + 3] = v[i];
+			out[o + 4] = value[i];
+			out[o + 5] = fixed[i];
+		}
+		return out;
+	}
 
 	FitPixels(final int[] x, final int[] y, final double[] value, final double[] fixed, final int count,
 		final double mx, final double my, final double unit)
@@ -91,7 +124,8 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 
 	/** @return these pixels as candidates in their own right, numbered from 0 (a subset kept for good) */
 	FitPixels asCandidates() {
-		return candidates == null ? this : new FitPixels(x, y, value, fixed, count, u, v, backgroundBlock, extent, null);
+		return candidates == null ? this : new FitPixels(x, y, value, fixed, count, u, v, backgroundBlock, extent, null,
+			packed);
 	}
 
 	/** @return the pixels marked in {@code keep}, in the same order (these pixels if all are) */

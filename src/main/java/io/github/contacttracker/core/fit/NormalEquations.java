@@ -34,6 +34,9 @@ final class NormalEquations {
 
 	private NormalEquations() {}
 
+	/** The numbers per pixel of a group of one's first loop: the gradient's four and the residual. */
+	private static final int GRADIENT = 5;
+
 	/**
 	 * Fills J^T J (every entry; unless {@code jtj} is null) and J^T r at parameters {@code p}; returns the residual
 	 * sum of squares. With {@code noise} (not null), adds per member {@code b = 4 q}: {@code sum w_x}, {@code sum w_x
@@ -146,8 +149,7 @@ final class NormalEquations {
 		final int np = GroupFit.PER_PARTICLE + GroupFit.BACKGROUND, b0 = GroupFit.PER_PARTICLE;
 		final double[] tv = profile.valueTable(), td = profile.derivativeTable();
 		final double R = profile.radius(), perStep = 1 / EmpiricalProfile.TABLE_STEP;
-		final int[] xs = px.x(), ys = px.y();
-		final double[] us = px.u(), vs = px.v(), values = px.value(), fixed = px.fixed();
+		final double[] pixels = px.packed();
 		final int count = px.count();
 		final double cx = p[0], cy = p[1], a = p[2], sc = p[3], pb = p[b0], pu = p[b0 + 1], pv = p[b0 + 2];
 		final double reach2 = R * sc * (R * sc), perScale = 1 / sc;
@@ -159,12 +161,59 @@ final class NormalEquations {
 		double h00 = 0, h10 = 0, h11 = 0, h20 = 0, h21 = 0, h22 = 0, h30 = 0, h31 = 0, h32 = 0, h33 = 0;
 		double c0 = 0, c1 = 0, c2 = 0, c3 = 0, cu0 = 0, cu1 = 0, cu2 = 0, cu3 = 0, cv0 = 0, cv1 = 0, cv2 = 0, cv3 = 0;
 		final boolean hessian = jtj != null;
-		for (int i = 0; i < count; i++) {
-			final double u = us[i], v = vs[i];
-			double model = pb + pu * u + pv * v + fixed[i];
-			final double dx = xs[i] - cx, dy = ys[i] - cy, r2 = dx * dx + dy * dy;
-			boolean within = false;
-			double g0 = 0, g1 = 0, g2 = 0, g3 = 0;
+		if (!hessian) { // a pass that evaluates a step: its few sums fit in registers, one loop
+			for (int i = 0, o = 0; i < count; i++, o += FitPixels.PACKED) {
+				final double u = pixels[o + 2], v = pixels[o + 3];
+				double model = pb + pu * u + pv * v + pixels[o + 5];
+				final double dx = pixels[o] - cx, dy = pixels[o + 1] - cy, r2 = dx * dx + dy * dy;
+				boolean within = false;
+				double g0 = 0, g1 = 0, g2 = 0, g3 = 0;
+				if (r2 < reach2) {
+					final double r = Math.sqrt(r2), rs = r * perScale;
+					if (rs < R) {
+						final double t = rs * perStep;
+						final int k = (int) t;
+						final double f = t - k;
+						final double val = tv[k] + f * (tv[k + 1] - tv[k]);
+						final double d = a * (td[k] + f * (td[k + 1] - td[k])) * perScale;
+						model += a * val;
+						final double radial = r > 1e-12 ? -d / r : 0;
+						g0 = radial * dx;
+						g1 = radial * dy;
+						g2 = val;
+						g3 = -d * rs;
+						within = true;
+					}
+				}
+				if (models != null) models[i] = model;
+				final double res = pixels[o + 4] - model;
+				rss += res * res;
+				r0 += res;
+				ru += res * u;
+				rv += res * v;
+				if (!within) continue;
+				j0 += g0 * res;
+				j1 += g1 * res;
+				j2 += g2 * res;
+				j3 += g3 * res;
+				if (weights) {
+					final double rr = res * res, wx = g0 * g0, wy = g1 * g1;
+					n0 += wx;
+					n1 += wx * rr;
+					n2 += wy;
+					n3 += wy * rr;
+				}
+			}
+			store(jtr, noise, j0, j1, j2, j3, n0, n1, n2, n3);
+			return finish(px, np, null, null, jtr, r0, ru, rv, rss);
+		}
+		// J^T J: first each pixel's gradient and residual (0 out of reach: they add nothing below), then the sums, each in a
+		// small loop: one loop for all would keep more sums than the processor has registers
+		final double[] gr = new double[GRADIENT * count];
+		for (int i = 0, o = 0, q = 0; i < count; i++, o += FitPixels.PACKED, q += GRADIENT) {
+			final double u = pixels[o + 2], v = pixels[o + 3];
+			double model = pb + pu * u + pv * v + pixels[o + 5];
+			final double dx = pixels[o] - cx, dy = pixels[o + 1] - cy, r2 = dx * dx + dy * dy;
 			if (r2 < reach2) {
 				final double r = Math.sqrt(r2), rs = r * perScale;
 				if (rs < R) {
@@ -175,65 +224,64 @@ final class NormalEquations {
 					final double d = a * (td[k] + f * (td[k + 1] - td[k])) * perScale;
 					model += a * val;
 					final double radial = r > 1e-12 ? -d / r : 0;
-					g0 = radial * dx;
-					g1 = radial * dy;
-					g2 = val;
-					g3 = -d * rs;
-					within = true;
+					gr[q] = radial * dx;
+					gr[q + 1] = radial * dy;
+					gr[q + 2] = val;
+					gr[q + 3] = -d * rs;
 				}
 			}
 			if (models != null) models[i] = model;
-			final double res = values[i] - model;
+			gr[q + 4] = pixels[o + 4] - model;
+		}
+		for (int i = 0, o = 0, q = 0; i < count; i++, o += FitPixels.PACKED, q += GRADIENT) {
+			final double res = gr[q + 4];
 			rss += res * res;
 			r0 += res;
-			ru += res * u;
-			rv += res * v;
-			if (!within) continue;
-			j0 += g0 * res;
-			j1 += g1 * res;
-			j2 += g2 * res;
-			j3 += g3 * res;
-			if (weights) {
-				final double rr = res * res, wx = g0 * g0, wy = g1 * g1;
-				n0 += wx;
-				n1 += wx * rr;
-				n2 += wy;
-				n3 += wy * rr;
+			ru += res * pixels[o + 2];
+			rv += res * pixels[o + 3];
+			j0 += gr[q] * res;
+			j1 += gr[q + 1] * res;
+			j2 += gr[q + 2] * res;
+			j3 += gr[q + 3] * res;
+		}
+		if (weights) for (int q = 0; q < GRADIENT * count; q += GRADIENT) {
+			final double res = gr[q + 4], rr = res * res, wx = gr[q] * gr[q], wy = gr[q + 1] * gr[q + 1];
+			n0 += wx;
+			n1 += wx * rr;
+			n2 += wy;
+			n3 += wy * rr;
+		}
+		if (hessian) {
+			for (int q = 0; q < GRADIENT * count; q += GRADIENT) {
+				final double g0 = gr[q], g1 = gr[q + 1], g2 = gr[q + 2], g3 = gr[q + 3];
+				h00 += g0 * g0;
+				h10 += g1 * g0;
+				h11 += g1 * g1;
+				h20 += g2 * g0;
+				h21 += g2 * g1;
+				h22 += g2 * g2;
+				h30 += g3 * g0;
+				h31 += g3 * g1;
+				h32 += g3 * g2;
+				h33 += g3 * g3;
 			}
-			if (!hessian) continue;
-			h00 += g0 * g0;
-			h10 += g1 * g0;
-			h11 += g1 * g1;
-			h20 += g2 * g0;
-			h21 += g2 * g1;
-			h22 += g2 * g2;
-			h30 += g3 * g0;
-			h31 += g3 * g1;
-			h32 += g3 * g2;
-			h33 += g3 * g3;
-			c0 += g0;
-			c1 += g1;
-			c2 += g2;
-			c3 += g3;
-			cu0 += u * g0;
-			cu1 += u * g1;
-			cu2 += u * g2;
-			cu3 += u * g3;
-			cv0 += v * g0;
-			cv1 += v * g1;
-			cv2 += v * g2;
-			cv3 += v * g3;
+			for (int o = 0, q = 0; q < GRADIENT * count; o += FitPixels.PACKED, q += GRADIENT) {
+				final double g0 = gr[q], g1 = gr[q + 1], g2 = gr[q + 2], g3 = gr[q + 3], u = pixels[o + 2], v = pixels[o + 3];
+				c0 += g0;
+				c1 += g1;
+				c2 += g2;
+				c3 += g3;
+				cu0 += u * g0;
+				cu1 += u * g1;
+				cu2 += u * g2;
+				cu3 += u * g3;
+				cv0 += v * g0;
+				cv1 += v * g1;
+				cv2 += v * g2;
+				cv3 += v * g3;
+			}
 		}
-		jtr[0] = j0;
-		jtr[1] = j1;
-		jtr[2] = j2;
-		jtr[3] = j3;
-		if (weights) {
-			noise[0] = n0;
-			noise[1] = n1;
-			noise[2] = n2;
-			noise[3] = n3;
-		}
+		store(jtr, noise, j0, j1, j2, j3, n0, n1, n2, n3);
 		double[] h = null;
 		if (hessian) { // laid out as accumulate's flat lower triangle
 			h = new double[np * np];
@@ -246,6 +294,21 @@ final class NormalEquations {
 				System.arraycopy(plane[r], 0, h, (b0 + r) * np, GroupFit.PER_PARTICLE);
 		}
 		return finish(px, np, h, jtj, jtr, r0, ru, rv, rss);
+	}
+
+	/** A group of one's J^T r and, where asked ({@code noise} not null), its residuals' variance sums. */
+	private static void store(final double[] jtr, final double[] noise, final double j0, final double j1,
+		final double j2, final double j3, final double n0, final double n1, final double n2, final double n3)
+	{
+		jtr[0] = j0;
+		jtr[1] = j1;
+		jtr[2] = j2;
+		jtr[3] = j3;
+		if (noise == null) return;
+		noise[0] = n0;
+		noise[1] = n1;
+		noise[2] = n2;
+		noise[3] = n3;
 	}
 
 	/**
