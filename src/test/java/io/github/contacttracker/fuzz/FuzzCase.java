@@ -1,0 +1,80 @@
+/*-
+ * #%L
+ * Contact Tracker: sub-pixel localization of colloidal particles, also when they touch.
+ * %%
+ * Copyright (C) 2026 Contact Tracker developers
+ * %%
+ * This program is free software: you can redistribute it and/or modify
+ * it under the terms of the GNU General Public License as
+ * published by the Free Software Foundation, either version 3 of the
+ * License, or (at your option) any later version.
+ * 
+ * This program is distributed in the hope that it will be useful,
+ * but WITHOUT ANY WARRANTY; without even the implied warranty of
+ * MERCHANTABILITY or FITNESS FOR A PARTICULAR PURPOSE.  See the
+ * GNU General Public License for more details.
+ * 
+ * You should have received a copy of the GNU General Public
+ * License along with this program.  If not, see
+ * <http://www.gnu.org/licenses/gpl-3.0.html>.
+ * #L%
+ */
+package io.github.contacttracker.fuzz;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.util.List;
+import java.util.SplittableRandom;
+
+import io.github.contacttracker.cli.ContactTrackerCli;
+
+/**
+ * One fuzz case of the command line: runs it with the given arguments and asserts the property every front end
+ * keeps, whatever the input: no exception escapes, no internal error, the exit status 0 or 2, and a refusal is one
+ * line. The fuzz tests share it so that the property is stated once.
+ */
+final class FuzzCase {
+
+	/** The exit status. */
+	final int status;
+	/** What the command line wrote to its error stream. */
+	final String said;
+	/** The case for a failure's message: its seed, its arguments and what was said. */
+	final String what;
+
+	/** @return the cases to run: the property {@code contact.tracker.fuzz.cases}, else the suite's short run */
+	static int cases(final int shortRun) {
+		return Integer.getInteger("contact.tracker.fuzz.cases", shortRun);
+	}
+
+	/** @return the random numbers of a run: from the property {@code contact.tracker.fuzz.seed}, else a fixed seed */
+	static SplittableRandom seeds() {
+		return new SplittableRandom(Long.getLong("contact.tracker.fuzz.seed", 20261205L));
+	}
+
+	FuzzCase(final long caseSeed, final List<String> args) {
+		final ByteArrayOutputStream out = new ByteArrayOutputStream(), err = new ByteArrayOutputStream();
+		try {
+			status = ContactTrackerCli.run(args.toArray(String[]::new), new PrintStream(out, true,
+				StandardCharsets.UTF_8), new PrintStream(err, true, StandardCharsets.UTF_8));
+		}
+		catch (final RuntimeException e) {
+			throw new AssertionError("case seed " + caseSeed + " " + args + ": an exception escaped", e);
+		}
+		said = err.toString(StandardCharsets.UTF_8);
+		what = "case seed " + caseSeed + " " + args + ":\n" + said;
+		assertFalse(said.contains("internal error"), what);
+		assertTrue(status == 0 || status == ContactTrackerCli.EXIT_BAD_INPUT, "exit " + status + ": " + what);
+		if (refused()) assertEquals(1, said.lines().filter(l -> l.contains("error")).count(), what);
+	}
+
+	/** @return whether the command line refused the input (exit 2) */
+	boolean refused() {
+		return status == ContactTrackerCli.EXIT_BAD_INPUT;
+	}
+}
