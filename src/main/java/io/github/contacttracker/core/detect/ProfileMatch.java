@@ -21,9 +21,8 @@
  */
 package io.github.contacttracker.core.detect;
 
-import java.util.Arrays;
-
 import io.github.contacttracker.core.kind.KindProfiles;
+import io.github.contacttracker.core.math.Statistics;
 import io.github.contacttracker.core.profile.EmpiricalProfile;
 
 /**
@@ -148,8 +147,7 @@ final class ProfileMatch {
 		for (int i = 0; i < seeds.count(); i++)
 			if (matchedAny(data, w, h, seeds.x()[i], seeds.y()[i], given, noise) >= MATCH) hs[n++] = seeds.height()[i];
 		if (n == 0) return seeds.typicalHeight();
-		Arrays.sort(hs, 0, n);
-		return hs[(int) Math.floor(0.9 * (n - 1))];
+		return Statistics.quantile(hs, n, Peaks.STRONG_QUANTILE);
 	}
 
 	/** @return whether the band-passed frame at (x, y) is below {@code strong} (or (x, y) is off the frame) */
