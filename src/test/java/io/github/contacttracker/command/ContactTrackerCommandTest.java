@@ -45,6 +45,7 @@ import java.util.stream.Stream;
 
 import org.jdom2.Document;
 import org.jdom2.input.SAXBuilder;
+import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -96,8 +97,12 @@ class ContactTrackerCommandTest extends WithContext {
 	private static final double THRESHOLD = Simulated.TYPE.threshold();
 	private static final double R_OUT = Simulated.TYPE.rOut();
 
-	/** The dialog remembers values: every test starts from the documented defaults. */
+	/**
+	 * The dialog remembers values, on disk: every test starts from the documented defaults and leaves nothing
+	 * remembered for the next test class.
+	 */
 	@BeforeEach
+	@AfterEach
 	void forgetRememberedValues() {
 		context.service(PrefService.class).clearAll();
 	}
