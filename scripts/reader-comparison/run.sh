@@ -3,7 +3,7 @@
 # files. Not part of the build. Needs the packaged project (mvn -B package) and Maven Central (for TwelveMonkeys).
 #   scripts/reader-comparison/run.sh hostile          every case file through both readers, -Xmx256m, 15 s limit
 #   scripts/reader-comparison/run.sh speed            every frame of the 400-frame bench stack, one thread
-#   scripts/reader-comparison/run.sh track [CLI.jar]  the issue's 44 cases through `track`, -Xmx256m, 30 s limit
+#   scripts/reader-comparison/run.sh track [CLI.jar]  the 44 broken-file cases through `track`, -Xmx256m, 30 s limit
 #   scripts/reader-comparison/run.sh repeat           all case files 15 times over in one JVM, -Xmx256m: time, heap
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/../.."

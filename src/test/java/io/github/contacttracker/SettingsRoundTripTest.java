@@ -46,6 +46,7 @@ import org.junit.jupiter.api.io.TempDir;
 import org.scijava.Context;
 import org.scijava.command.CommandModule;
 import org.scijava.command.CommandService;
+import org.scijava.prefs.PrefService;
 
 import ij.ImagePlus;
 import ij.ImageStack;
@@ -139,6 +140,8 @@ class SettingsRoundTripTest {
 		}
 		final Context context = new Context();
 		try {
+			// the command's own inputs (threads, pair_cutoff, ...) at their defaults, not as an earlier run left them
+			context.service(PrefService.class).clearAll();
 			final CommandModule m = context.service(CommandService.class).run(ContactTrackerCommand.class, true, inputs
 				.toArray()).get();
 			assertEquals(false, m.isCanceled(), m.getCancelReason());

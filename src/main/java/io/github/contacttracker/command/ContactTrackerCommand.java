@@ -27,6 +27,7 @@ import io.github.contacttracker.pipeline.MeasuredSettings;
 import io.github.contacttracker.pipeline.Outputs;
 import io.github.contacttracker.pipeline.TrackingPipeline;
 import io.github.contacttracker.pipeline.TrackingResult;
+import io.github.contacttracker.settings.InvalidSettingException;
 import io.github.contacttracker.settings.Setting;
 import io.github.contacttracker.settings.SettingValues;
 import io.github.contacttracker.settings.TrackingSettings;
@@ -113,6 +114,9 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 	public static final String RESULTS_SPOTS = "spots", RESULTS_PAIRS = "pairs", RESULTS_NONE = "none";
 
 	private static final String TITLE = "Contact Tracker";
+
+	/** The names (macro keys) of the command's own checked inputs, which are not tracking settings. */
+	static final String PAIR_CUTOFF = "pair_cutoff", THREADS = "threads", RESULTS = "results";
 
 	/** The messages' first texts, replaced once the dialog is open. */
 	static final String ORIGIN_UNKNOWN = "<html>Values: ...</html>", PREVIEW_OFF = "<html>Preview: off</html>";
@@ -350,16 +354,15 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 			try {
 				SettingValues.defaults().withText(s, String.valueOf(input(s)));
 			}
-			catch (final IllegalArgumentException e) {
-				own.refuse(s.name(), e.getMessage(), s.defaultValue());
+			catch (final InvalidSettingException e) {
+				own.refuse(e.key(), e.getMessage(), s.defaultValue());
 			}
 		}
 		try {
 			checkOwnInputs(false);
 		}
-		catch (final InvalidInputException e) {
-			final String name = e.getMessage().substring(0, e.getMessage().indexOf(' '));
-			own.refuse(name, e.getMessage(), name.equals("results") ? RESULTS_SPOTS : 0);
+		catch (final InvalidSettingException e) {
+			own.refuse(e.key(), e.getMessage(), e.key().equals(RESULTS) ? RESULTS_SPOTS : 0);
 		}
 	}
 
@@ -383,17 +386,17 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 	 */
 	private void checkOwnInputs(final boolean together) {
 		if (pair_cutoff < 0 || !Double.isFinite(pair_cutoff))
-			throw new InvalidInputException("pair_cutoff must be a distance >= 0 (0 = no pair table), not " +
-				pair_cutoff);
-		if (threads < 0) throw new InvalidInputException("threads must be >= 0 (0 = ImageJ's setting), not " +
-			threads);
+			throw new InvalidSettingException(PAIR_CUTOFF, PAIR_CUTOFF + " must be a distance >= 0 (0 = no pair " +
+				"table), not " + pair_cutoff);
+		if (threads < 0) throw new InvalidSettingException(THREADS, THREADS + " must be >= 0 (0 = ImageJ's " +
+			"setting), not " + threads);
 		final String r = results == null ? "" : results.trim();
 		if (!r.equals(RESULTS_SPOTS) && !r.equals(RESULTS_PAIRS) && !r.equals(RESULTS_NONE))
-			throw new InvalidInputException("results must be one of " + RESULTS_SPOTS + ", " + RESULTS_PAIRS + ", " +
-				RESULTS_NONE + ", not '" + results + "'");
+			throw new InvalidSettingException(RESULTS, RESULTS + " must be one of " + RESULTS_SPOTS + ", " +
+				RESULTS_PAIRS + ", " + RESULTS_NONE + ", not '" + results + "'");
 		if (together && r.equals(RESULTS_PAIRS) && pair_cutoff == 0)
-			throw new InvalidInputException("results=pairs needs pair_cutoff > 0 (the distance up to which pairs are " +
-				"listed)");
+			throw new InvalidSettingException(RESULTS, RESULTS + "=pairs needs " + PAIR_CUTOFF + " > 0 (the distance " +
+				"up to which pairs are listed)");
 	}
 
 	private void analyse() throws IOException {

@@ -269,8 +269,8 @@ public class ContactTrackerPotentialCommand extends OwnCommand {
 	}
 
 	/**
-	 * @return whether every spot used lies on the image's field (a flagged spot cut by the border may have its
-	 *         centre just outside it: seen on 1.avi)
+	 * @return whether every spot used lies on the image's field (a particle cut by the border is located from the
+	 *         part of its image inside the frame, and its centre may fall just outside it)
 	 */
 	private static boolean onImage(final SpotSet set, final FieldOfView f) {
 		if (set.size() == 0) return false;

@@ -43,15 +43,18 @@ import net.imglib2.RandomAccessibleInterval;
 import net.imglib2.type.numeric.RealType;
 
 /**
- * Draws frames with their spots into a PNG, panels side by side: the {@code r_out} disc of each particle
- * (cyan), the second active area's outline (green), the first-pass centre (yellow dot), the final centre (red
- * cross); a flagged spot's disc is drawn in magenta.
+ * Draws frames with their spots into a PNG, panels side by side: the disc the paper's second pass leaves out
+ * around each particle's first-pass centre (cyan, radius {@code r_out}), the second active area's outline (green),
+ * the first-pass centre (yellow dot), the final centre (red cross); a flagged spot's disc is drawn in magenta.
  */
 public final class OverlayPng {
 
-	/** One panel: a frame, what was found in it, and a caption. */
-	public record Panel(RandomAccessibleInterval<? extends RealType<?>> frame, FrameResult result, double rOut,
-		String caption)
+	/**
+	 * One panel: a frame, what was found in it, the discs' radius (px:
+	 * {@link io.github.contacttracker.core.TrackerParameters#exclusionRadius()}), and a caption.
+	 */
+	public record Panel(RandomAccessibleInterval<? extends RealType<?>> frame, FrameResult result,
+		double exclusionRadius, String caption)
 	{}
 
 	public static final Color DISC = Color.CYAN;
@@ -109,7 +112,7 @@ public final class OverlayPng {
 		final List<Localization> spots = p.result().spots();
 		for (int k = 0; k < spots.size(); k++) {
 			final Localization s = spots.get(k);
-			final double cx = ox + s.x() * scale, cy = oy + s.y() * scale, r = p.rOut() * scale;
+			final double cx = ox + s.x() * scale, cy = oy + s.y() * scale, r = p.exclusionRadius() * scale;
 			g.setColor(s.isFlagged() ? FLAGGED : DISC);
 			g.draw(new Ellipse2D.Double(ox + s.firstX() * scale - r, oy + s.firstY() * scale - r, 2 * r, 2 * r));
 			if (k < p.result().secondAreas().size())

@@ -28,10 +28,17 @@ import java.util.Locale;
 
 import io.github.contacttracker.core.Flag;
 import io.github.contacttracker.core.Localization;
+import io.github.contacttracker.core.Method;
+import io.github.contacttracker.core.Numbers;
+import io.github.contacttracker.core.TrackerParameters;
+import io.github.contacttracker.settings.Setting;
+import io.github.contacttracker.settings.TrackingSettings;
 
 /**
  * What a run that flags many of its spots says about it: the flag most spots carry, its cause in words and what to
- * try. A result most of whose spots are flagged is not one to use as it is, and the user must hear why.
+ * try. A result most of whose spots are flagged is not one to use as it is, and the user must hear why. The same
+ * flag has different causes under different methods (a second pass that falls back for want of pixels, a fit that
+ * cannot be made), so the words follow the parameters the run used, and what to try is never what it already did.
  */
 public final class FlagAdvice {
 
@@ -48,8 +55,12 @@ public final class FlagAdvice {
 	private static final List<Flag> CAUSES = List.of(Flag.MERGED, Flag.DEGENERATE, Flag.UNMODELLED_NEIGHBOUR,
 		Flag.NOT_CONVERGED, Flag.FELL_BACK, Flag.AT_BORDER);
 
-	/** @return the warning for these spots, or null when at most {@link #SHARE} of them are flagged */
-	public static String of(final List<Localization> spots) {
+	/**
+	 * @param spots the run's spots
+	 * @param used the parameters the run used
+	 * @return the warning for these spots, or null when at most {@link #SHARE} of them are flagged
+	 */
+	public static String of(final List<Localization> spots, final TrackerParameters used) {
 		final Map<Flag, Integer> count = new EnumMap<>(Flag.class);
 		int flagged = 0;
 		for (final Localization s : spots) {
@@ -63,27 +74,104 @@ public final class FlagAdvice {
 		for (final Flag f : CAUSES)
 			if (count.containsKey(f) && (main == null || count.get(f) > count.get(main))) main = f;
 		return String.format(Locale.ROOT, "%d of %d spots (%.0f%%) are flagged, most %s (%d): %s", flagged, spots
-			.size(), 100.0 * flagged / spots.size(), main.name(), count.get(main), advice(main));
+			.size(), 100.0 * flagged / spots.size(), main.name(), count.get(main), advice(main, used));
 	}
 
-	/** @return the flag's usual cause and what to try, in words */
-	static String advice(final Flag flag) {
+	/**
+	 * @param used the parameters of the run that flagged the spots
+	 * @return the flag's usual cause under those parameters and what to try that the run did not, in words
+	 */
+	static String advice(final Flag flag, final TrackerParameters used) {
 		return switch (flag) {
 			case AT_BORDER -> "particles cut by the frame's edge; their centres move when the frame is cropped, use the " +
 				"others (a larger field of view, or a selection away from the edge)";
-			case MERGED -> "active areas holding several particles; the threshold joins touching particles: use the " +
-				"detection by the image (--detection image) with the particles' --diameter, or raise --threshold";
-			case FELL_BACK -> "centres kept from a first pass because the refinement could not be made (too few pixels " +
-				"left, or a fit without enough light; on a background clipped at 0, as confocal images have, the fit " +
-				"leaves out every pixel near 0 and cannot place the background); check --r-out against the particles' " +
-				"size ('contact-tracker profile MOVIE' shows it), or use --method iterative, whose centres need no fit";
-			case NOT_CONVERGED -> "fits or profile rounds that did not settle; the particles' profile may differ between " +
-				"them (give --kinds), or the field is denser than the fit can hold: try a smaller --r-out";
+			case MERGED -> "active areas holding several particles; " + (used.detectsByImage() ? "detection by the " +
+				"image did not split them: " + checkDiameter(used) : "the threshold joins touching particles: " + byImage(
+					used) + ", or raise " + option(TrackingSettings.THRESHOLD));
+			case FELL_BACK -> secondPass(used) ? fellBackFromSecondPass(used) : fellBackFromFit();
+			case NOT_CONVERGED -> secondPass(used) ? "second passes that stopped at their limit before the centres " +
+				"settled: neighbours' discs that take pixels from each other in turn; try a smaller " + option(
+					TrackingSettings.R_OUT) + ", or " + MODELS_NEIGHBOURS : notSettledFit(used);
 			case UNMODELLED_NEIGHBOUR -> "a neighbour the fit could not model lies within reach; it is usually a merge " +
-				"of particles: use --detection image with the particles' --diameter";
-			case DEGENERATE -> "areas without gradient lines that meet (flat tops or noise); raise --min-area or give " +
-				"--diameter";
+				"of particles" + (used.detectsByImage() ? " that detection by the image did not split: " + checkDiameter(
+					used) : ": " + byImage(used));
+			case DEGENERATE -> "areas without gradient lines that meet (flat tops or noise); raise " + option(
+				TrackingSettings.MIN_AREA) + " (now " + used.minArea() + ")" + (used.diameter() > 0 ? "" : " or give " +
+					option(TrackingSettings.DIAMETER));
 			case SECOND_PASS -> "";
 		};
+	}
+
+	/** The advice for centres the paper's second pass cannot place: a method that needs no exclusion disc. */
+	private static final String MODELS_NEIGHBOURS = option(TrackingSettings.METHOD, Method.FIT.key()) + " (or " +
+		Method.DEBLEND.key() + "), which models each neighbour's light instead of cutting it out";
+
+	/** Where to read the particles' size from a movie. */
+	private static final String PROFILE = "('contact-tracker profile MOVIE' shows it)";
+
+	/** @return whether the run's centres come from the paper's second pass (once or iterated) */
+	private static boolean secondPass(final TrackerParameters used) {
+		return used.method() == Method.PAPER || used.method() == Method.ITERATIVE;
+	}
+
+	/**
+	 * The paper's second pass (and its iteration) falls back when the neighbours' discs leave too few pixels: the
+	 * centre of a touching neighbour lies one diameter away, so once r_out reaches the diameter its disc covers the
+	 * particle's centre. Repeating the pass does not help; a method that models the neighbours' light does.
+	 */
+	private static String fellBackFromSecondPass(final TrackerParameters used) {
+		final double r = used.exclusionRadius(), d = used.diameter();
+		final String cover = d > 0 && r >= d ? " (r_out is at least the diameter, " + Numbers.fmt(d, 2) + " px: a " +
+			"touching neighbour's disc covers the particle's centre)" : "";
+		return "centres kept from the first pass because the neighbours' discs of radius r_out, " + Numbers.fmt(r, 2) +
+			" px, left fewer than " + option(TrackingSettings.MIN_SECOND_AREA) + " (" + used.minSecondArea() + ") " +
+			"pixels of the active area, or lines that do not meet" + cover + "; in a field of touching particles use " +
+			MODELS_NEIGHBOURS + ", or check " + option(TrackingSettings.R_OUT) + " against the particles' size " + PROFILE;
+	}
+
+	/** A profile method whose fit could not be made: the second pass's centres need no fit. */
+	private static String fellBackFromFit() {
+		return "centres kept from a first pass because the refinement could not be made (too few pixels left, or a fit " +
+			"without enough light; on a background clipped at 0, as confocal images have, the fit leaves out every " +
+			"pixel near 0 and cannot place the background); check " + option(TrackingSettings.R_OUT) + " against the " +
+			"particles' size " + PROFILE + ", or use " + option(TrackingSettings.METHOD, Method.ITERATIVE.key()) +
+			", whose centres need no fit";
+	}
+
+	/** A profile method's fit or rounds that did not settle: one profile for unlike particles, or too dense a field. */
+	private static String notSettledFit(final TrackerParameters used) {
+		final String kinds = switch (used.kinds()) {
+			case 0 -> "the particles' profile may differ between them (give their number of kinds with " + option(
+				TrackingSettings.KINDS) + "), ";
+			case 1 -> "the particles may be of several kinds, each with its own profile (" + option(TrackingSettings.KINDS,
+				"0") + " finds them), ";
+			default -> "";
+		};
+		return "fits or profile rounds that did not settle; " + kinds + "or the field is denser than the fit can " +
+			"hold: try a smaller " + option(TrackingSettings.R_OUT);
+	}
+
+	/** @return the advice to check a given diameter, which sets the scale of the detection by the image */
+	private static String checkDiameter(final TrackerParameters used) {
+		return "check " + option(TrackingSettings.DIAMETER) + " (" + Numbers.fmt(used.diameter(), 2) + " px) against " +
+			"the particles' size " + PROFILE;
+	}
+
+	/** @return what to try for particles the threshold merges: detection by the image, and what it needs */
+	private static String byImage(final TrackerParameters used) {
+		final boolean methodFinds = used.method().needsProfile() || used.method() == Method.ITERATIVE;
+		return "use the detection by the image (" + (methodFinds ? "" : option(TrackingSettings.METHOD, Method.FIT
+			.key()) + " ") + option(TrackingSettings.DETECTION, TrackingSettings.IMAGE) + (used.diameter() > 0 ? ""
+				: " with the particles' " + option(TrackingSettings.DIAMETER)) + ")";
+	}
+
+	/** @return the setting's command-line option: {@code --r-out} */
+	private static String option(final Setting<?> setting) {
+		return setting.cliOption();
+	}
+
+	/** @return the setting's command-line option with a value: {@code --method fit} */
+	private static String option(final Setting<?> setting, final String value) {
+		return setting.cliOption() + " " + value;
 	}
 }

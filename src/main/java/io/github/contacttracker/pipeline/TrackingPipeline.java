@@ -145,7 +145,7 @@ public final class TrackingPipeline {
 		if (ownProfile > 0 && frames.size() > 1) warnings.add("the particles' profile could not be measured over the " +
 			"movie (too few isolated, unflagged particles); " + ownProfile + " frames measured their own, which is " +
 			"less precise");
-		final String most = FlagAdvice.of(spots);
+		final String most = FlagAdvice.of(spots, params);
 		if (most != null) warnings.add(most);
 		return new TrackingResult(frames, spots, flagged, discarded, (System.nanoTime() - startNanos) * 1e-9, List
 			.copyOf(warnings));

@@ -25,8 +25,6 @@ import java.util.List;
 import java.util.Locale;
 import java.util.function.Predicate;
 
-import io.github.contacttracker.core.InvalidInputException;
-
 /**
  * One tracking setting, described once: its name (the key of a macro call, {@code r_out}), label, help text,
  * value type, default, allowed values and unit. Every front end derives its form of the setting from this: the
@@ -236,7 +234,7 @@ public final class Setting<V> {
 	/**
 	 * Reads a value from text (a macro option, a command-line argument, a TrackMate XML attribute) and checks it.
 	 *
-	 * @throws InvalidInputException naming the setting and the text
+	 * @throws InvalidSettingException naming the setting ({@link InvalidSettingException#key()}) and the text
 	 */
 	public V parse(final String text) {
 		final String t = text == null ? "" : text.trim();
@@ -247,8 +245,8 @@ public final class Setting<V> {
 			else value = canonicalChoice(t);
 		}
 		catch (final NumberFormatException e) {
-			throw new InvalidInputException(name + " must be " + (type == Integer.class ? "a whole number" : "a number") +
-				", not '" + text + "'");
+			throw new InvalidSettingException(name, name + " must be " + (type == Integer.class ? "a whole number"
+				: "a number") + ", not '" + text + "'");
 		}
 		return check(type.cast(value));
 	}
@@ -262,11 +260,12 @@ public final class Setting<V> {
 
 	/**
 	 * @return {@code value}, when it is allowed
-	 * @throws InvalidInputException naming the setting, what is allowed and the value
+	 * @throws InvalidSettingException naming the setting ({@link InvalidSettingException#key()}), what is allowed
+	 *         and the value
 	 */
 	public V check(final V value) {
-		if (value == null) throw new InvalidInputException(name + " must be given (" + allowedText + ")");
-		if (!allowed.test(value)) throw new InvalidInputException(name + " must be " + allowedText + ", not " +
+		if (value == null) throw new InvalidSettingException(name, name + " must be given (" + allowedText + ")");
+		if (!allowed.test(value)) throw new InvalidSettingException(name, name + " must be " + allowedText + ", not " +
 			(type == String.class ? "'" + value + "'" : String.valueOf(value)));
 		return value;
 	}

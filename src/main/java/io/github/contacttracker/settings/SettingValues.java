@@ -51,7 +51,7 @@ public final class SettingValues {
 
 	/**
 	 * @return a copy with {@code setting} set to {@code value}
-	 * @throws io.github.contacttracker.core.InvalidInputException if the value is not allowed
+	 * @throws InvalidSettingException if the value is not allowed
 	 */
 	public <V> SettingValues with(final Setting<V> setting, final V value) {
 		final Map<Setting<?>, Object> m = new LinkedHashMap<>(values);
@@ -61,7 +61,7 @@ public final class SettingValues {
 
 	/**
 	 * @return a copy with {@code setting} read from {@code text}
-	 * @throws io.github.contacttracker.core.InvalidInputException naming the setting and the text
+	 * @throws InvalidSettingException naming the setting and the text
 	 */
 	public SettingValues withText(final Setting<?> setting, final String text) {
 		final Map<Setting<?>, Object> m = new LinkedHashMap<>(values);

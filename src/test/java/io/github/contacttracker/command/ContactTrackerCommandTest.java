@@ -45,6 +45,7 @@ import java.util.stream.Stream;
 
 import org.jdom2.Document;
 import org.jdom2.input.SAXBuilder;
+import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -96,8 +97,12 @@ class ContactTrackerCommandTest extends WithContext {
 	private static final double THRESHOLD = Simulated.TYPE.threshold();
 	private static final double R_OUT = Simulated.TYPE.rOut();
 
-	/** The dialog remembers values: every test starts from the documented defaults. */
+	/**
+	 * The dialog remembers values, on disk: every test starts from the documented defaults and leaves nothing
+	 * remembered for the next test class.
+	 */
 	@BeforeEach
+	@AfterEach
 	void forgetRememberedValues() {
 		context.service(PrefService.class).clearAll();
 	}
@@ -703,6 +708,32 @@ class ContactTrackerCommandTest extends WithContext {
 		final Module after = modules.run(info, true, "imp", Simulated.image(), "threshold", THRESHOLD, "overlay",
 			false).get();
 		assertEquals(25, after.getInput("min_area"));
+	}
+
+	/**
+	 * A refused value of one of the command's own inputs is set back on that input, by its name: the next run gets
+	 * the value remembered before it, for each of two inputs refused in turn, and the other input is left as it was.
+	 */
+	@Test
+	void aRefusedOwnInputIsSetBackByItsName() throws Exception {
+		final CommandInfo info = context.service(CommandService.class).getCommand(ContactTrackerCommand.class);
+		final ModuleService modules = context.service(ModuleService.class);
+		assertSucceeded(run(Simulated.image(), "pair_cutoff", 3.5, "threads", 2, "overlay", false));
+		final Object[][] refusals = { { ContactTrackerCommand.THREADS, -1, "threads must be >= 0" }, {
+			ContactTrackerCommand.PAIR_CUTOFF, -1.0, "pair_cutoff must be a distance >= 0" } };
+		for (final Object[] refusal : refusals) {
+			final Module refused = modules.run(info, true, "imp", Simulated.image(), "threshold", THRESHOLD, "r_out",
+				R_OUT, refusal[0], refusal[1], "overlay", false).get();
+			assertTrue(((Cancelable) refused).isCanceled(), () -> refusal[0] + " " + refusal[1]);
+			assertTrue(((Cancelable) refused).getCancelReason().startsWith((String) refusal[2]), () -> "reason: " +
+				((Cancelable) refused).getCancelReason());
+			final Module next = modules.run(info, true, "imp", Simulated.image(), "threshold", THRESHOLD, "r_out", R_OUT,
+				"overlay", false).get();
+			assertSucceeded(next);
+			assertEquals(2, next.getInput(ContactTrackerCommand.THREADS), () -> "after refusing " + refusal[0]);
+			assertEquals(3.5, (Double) next.getInput(ContactTrackerCommand.PAIR_CUTOFF), 0, () -> "after refusing " +
+				refusal[0]);
+		}
 	}
 
 	/**

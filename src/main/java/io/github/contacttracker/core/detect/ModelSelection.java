@@ -28,6 +28,7 @@ import io.github.contacttracker.core.TrackerParameters;
 import io.github.contacttracker.core.fit.ProfileRefinement;
 import io.github.contacttracker.core.image.Plane;
 import io.github.contacttracker.core.kind.KindProfiles;
+import io.github.contacttracker.core.math.Statistics;
 import io.github.contacttracker.core.profile.EmpiricalProfile;
 import io.github.contacttracker.core.radial.Estimate;
 import io.github.contacttracker.core.radial.Particle;
@@ -431,9 +432,9 @@ public final class ModelSelection {
 	}
 
 	/**
-	 * @return 1.4826 times the median absolute deviation from the median of the values where {@code where} holds (all
-	 *         when none does), on a sample of at most 65536 of them: the spread of the residuals where the model
-	 *         draws particles, which its mismatch with real particles raises
+	 * @return {@link Statistics#MAD_TO_SIGMA} times the median absolute deviation from the median of the values where
+	 *         {@code where} holds (all when none does), on a sample of at most 65536 of them: the spread of the
+	 *         residuals where the model draws particles, which its mismatch with real particles raises
 	 */
 	static double robustSpread(final float[] v, final boolean[] where) {
 		int count = 0;
@@ -449,11 +450,9 @@ public final class ModelSelection {
 			if (all || where[i]) {
 				if (seen++ % step == 0) s[j++] = v[i];
 			}
-		Arrays.sort(s);
-		final double median = s[n / 2];
+		final double median = Statistics.median(s);
 		for (int j = 0; j < n; j++)
 			s[j] = Math.abs(s[j] - median);
-		Arrays.sort(s);
-		return 1.4826 * s[n / 2];
+		return Statistics.MAD_TO_SIGMA * Statistics.median(s);
 	}
 }

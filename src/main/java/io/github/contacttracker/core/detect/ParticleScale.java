@@ -24,6 +24,7 @@ package io.github.contacttracker.core.detect;
 import java.util.Arrays;
 
 import io.github.contacttracker.core.image.Plane;
+import io.github.contacttracker.core.math.Statistics;
 
 /**
  * The particles' diameter read from a frame without isolating any particle: the scale at which the frame's bright
@@ -94,6 +95,8 @@ public final class ParticleScale {
 							strength = Arrays.copyOf(strength, 2 * n);
 							weight = Arrays.copyOf(weight, 2 * n);
 						}
+						// a blob found on a level averaged down by f is found at each of the f^2 frame pixels its
+						// level pixel covers
 						weight[n] = 1.0 / (level(scale) * level(scale));
 						// the peak over scale, between the three scales, by a parabola in log scale
 						final double curvature = below[i] - 2.0 * v + above[i];
@@ -106,7 +109,7 @@ public final class ParticleScale {
 			at = above;
 		}
 		if (n == 0) return Double.NaN;
-		final double least = STRONG * weightedQuantile(strength, weight, n, 0.9);
+		final double least = STRONG * Statistics.weightedQuantile(strength, weight, n, 0.9);
 		final double[] scales = new double[n], weights = new double[n];
 		int m = 0;
 		for (int i = 0; i < n; i++)
@@ -114,28 +117,7 @@ public final class ParticleScale {
 				scales[m] = found[i];
 				weights[m++] = weight[i];
 			}
-		return 2 * Math.sqrt(2) * weightedQuantile(scales, weights, m, 0.5);
-	}
-
-	/**
-	 * @return the {@code q}-quantile of the first {@code n} values, each counted with its weight (a blob found on a
-	 *         level averaged down by {@code f} is found at each of the {@code f^2} frame pixels its level pixel covers,
-	 *         so it weighs {@code 1 / f^2})
-	 */
-	static double weightedQuantile(final double[] values, final double[] weights, final int n, final double q) {
-		final Integer[] order = new Integer[n];
-		double total = 0;
-		for (int i = 0; i < n; i++) {
-			order[i] = i;
-			total += weights[i];
-		}
-		Arrays.sort(order, (a, b) -> Double.compare(values[a], values[b]));
-		double sum = 0;
-		for (int i = 0; i < n; i++) {
-			sum += weights[order[i]];
-			if (sum >= q * total) return values[order[i]];
-		}
-		return values[order[n - 1]];
+		return 2 * Math.sqrt(2) * Statistics.weightedQuantile(scales, weights, m, 0.5);
 	}
 
 	/** @return the factor the frame is averaged down by for scale {@code sigma} (see {@link #response}) */

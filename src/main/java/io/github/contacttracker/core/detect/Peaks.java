@@ -23,6 +23,8 @@ package io.github.contacttracker.core.detect;
 
 import java.util.Arrays;
 
+import io.github.contacttracker.core.math.Statistics;
+
 /**
  * The peaks of a (band-passed) image that stand out: local maxima at least {@code level} high whose
  * <em>prominence</em>, the drop from the peak to the highest saddle over which a higher peak is reached, is at least
@@ -40,15 +42,15 @@ import java.util.Arrays;
  */
 public record Peaks(double[] x, double[] y, double[] height, double[] prominence) {
 
+	/** Which quantile of the heights is a typical strong peak's: high, but not the single highest of many. */
+	public static final double STRONG_QUANTILE = 0.9;
+
 	/**
-	 * @return the height of a typical strong peak: the 90th percentile of the heights (the highest of few peaks);
+	 * @return the height of a typical strong peak: the 90th percentile of the heights ({@link Statistics#quantile});
 	 *         0 without peaks
 	 */
 	public double typicalHeight() {
-		if (height.length == 0) return 0;
-		final double[] h = height.clone();
-		Arrays.sort(h);
-		return h[(int) Math.floor(0.9 * (h.length - 1))];
+		return height.length == 0 ? 0 : Statistics.quantile(height.clone(), STRONG_QUANTILE);
 	}
 
 	/**
@@ -93,8 +95,7 @@ public record Peaks(double[] x, double[] y, double[] height, double[] prominence
 				if (j != i) best = Math.min(best, (x[i] - x[j]) * (x[i] - x[j]) + (y[i] - y[j]) * (y[i] - y[j]));
 			nearest[i] = Math.sqrt(best);
 		}
-		Arrays.sort(nearest);
-		return nearest[n / 2];
+		return Statistics.median(nearest);
 	}
 
 	/** @return the number of peaks */

@@ -21,9 +21,8 @@
  */
 package io.github.contacttracker.core.detect;
 
-import java.util.Arrays;
-
 import io.github.contacttracker.core.kind.KindProfiles;
+import io.github.contacttracker.core.math.Statistics;
 import io.github.contacttracker.core.profile.EmpiricalProfile;
 
 /**
@@ -38,9 +37,9 @@ final class ProfileMatch {
 	 * @return how well the frame around (x, y) matches a particle's profile there: the correlation of the pixels with
 	 *         {@code P(r)} over the disc holding {@value #MATCHED_INFORMATION} of the information on a centre, the
 	 *         pixels' variance taken less the noise's (so that a dim particle matches as a bright one does). A
-	 *         particle's own image correlates near 1 (on the paper authors' 1.avi 0.83-0.98); a peak where neighbours'
-	 *         halos meet, lit where the profile's core is and dark where its ring is bright, far less (0.64 at most);
-	 *         noise alone, 0.
+	 *         particle's own image correlates near 1, short of it by what a touching neighbour's light adds to the
+	 *         disc; a peak where neighbours' halos meet, lit where the profile's core is and dark where its ring is
+	 *         bright (the rings of a particle the other way round), far less; noise alone, 0.
 	 */
 	static double matched(final float[] data, final int w, final int h, final double x, final double y,
 		final EmpiricalProfile p, final double noise)
@@ -124,13 +123,16 @@ final class ProfileMatch {
 
 	/**
 	 * A weak seed or member is a particle only where the frame matches a particle's profile at least this well (see
-	 * {@link #matched}): between the halo junctions' 0.64 and the particles' 0.83 on the authors' bright-field movie.
+	 * {@link #matched}): a correlation of 0.75 leaves the profile more than half (0.56) of the pixels' variance above
+	 * the noise to explain. A particle's own image, even with a touching neighbour's light in its disc, is explained
+	 * far better; a junction where halos meet, whose bright and dark rings lie where a particle's are not, far worse.
 	 */
 	public static final double MATCH = 0.75;
 	/**
 	 * Weak: a band-passed height below this fraction of the typical seed's. The fringes where bright-field halos meet
-	 * are weak (on the authors' 1.avi at most 0.5 of the typical core); a blob of two merged particles, which no
-	 * single profile matches, is not.
+	 * are weak: a halo is much fainter than the core it surrounds, so where two overlap their sum stays near half a
+	 * core's height or below; a blob of two merged particles, which no single profile matches, holds two cores' light
+	 * and is not.
 	 */
 	public static final double STRONG = 0.6;
 
@@ -148,8 +150,7 @@ final class ProfileMatch {
 		for (int i = 0; i < seeds.count(); i++)
 			if (matchedAny(data, w, h, seeds.x()[i], seeds.y()[i], given, noise) >= MATCH) hs[n++] = seeds.height()[i];
 		if (n == 0) return seeds.typicalHeight();
-		Arrays.sort(hs, 0, n);
-		return hs[(int) Math.floor(0.9 * (n - 1))];
+		return Statistics.quantile(hs, n, Peaks.STRONG_QUANTILE);
 	}
 
 	/** @return whether the band-passed frame at (x, y) is below {@code strong} (or (x, y) is off the frame) */

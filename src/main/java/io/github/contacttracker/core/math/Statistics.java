@@ -24,13 +24,16 @@ package io.github.contacttracker.core.math;
 import java.util.Arrays;
 
 /**
- * The order statistics every room uses, defined once: the median, a quantile, the interquartile mean, and the factor
- * that turns a median absolute deviation into a standard deviation. Each works on the first {@code n} values of a
- * primitive array in place (no allocation, so the rings of every particle can use it), ignores NaN (a pixel or
- * a measure that is missing), and returns NaN when no number is left, so that an empty sample is never read as 0.
+ * The order statistics every room uses, defined once: the median, a quantile, a weighted quantile, the
+ * interquartile mean, and the factor that turns a median absolute deviation into a standard deviation. Each works
+ * on the first {@code n} values of a primitive array (the median, quantile and interquartile mean in place, with no
+ * allocation, so the rings of every particle can use them), ignores NaN (a pixel or a measure that is missing), and
+ * returns NaN when no number is left, so that an empty sample is never read as 0.
  * <p>
  * The median of an even count is the mean of the two middle values: the value a symmetric distribution's centre
- * is estimated by without a bias towards either side.
+ * is estimated by without a bias towards either side. The quantile interpolates linearly between the two
+ * neighbouring ranks (Hyndman and Fan's definition 7, the default of R and NumPy), so that it moves smoothly with
+ * the sample and its 0.5 is the median; the weighted quantile is the inverse of the weighted distribution.
  */
 public final class Statistics {
 
@@ -94,6 +97,44 @@ public final class Statistics {
 	 */
 	public static double quantile(final double[] v, final double q) {
 		return quantile(v, v.length, q);
+	}
+
+	/**
+	 * The quantile of a sample whose values count unequally (a blob found on a coarser grid stands for more pixels):
+	 * the smallest value at which the weights of the values up to it reach {@code q} of all the weight, the inverse
+	 * of the weighted empirical distribution. No interpolation: between two values of very different weight a line
+	 * drawn by rank would mean nothing.
+	 *
+	 * @param values the values; the first {@code n} are used, none is moved
+	 * @param weights each value's weight, at least 0
+	 * @param n how many to use
+	 * @param q which quantile, clamped to [0, 1]
+	 * @return that quantile of the numbers among the first {@code n} values (a NaN value and its weight are left
+	 *         out); NaN if there is no number or {@code q} is NaN. Sorts an index of the values: for a sample taken
+	 *         once per image, not per pixel.
+	 */
+	public static double weightedQuantile(final double[] values, final double[] weights, final int n,
+		final double q)
+	{
+		if (n < 0 || n > values.length || n > weights.length) throw new IllegalArgumentException("a sample of " + n +
+			" values out of arrays of " + values.length + " values and " + weights.length + " weights");
+		final Integer[] order = new Integer[n];
+		int m = 0;
+		double total = 0;
+		for (int i = 0; i < n; i++)
+			if (!Double.isNaN(values[i])) {
+				order[m++] = i;
+				total += weights[i];
+			}
+		if (m == 0 || Double.isNaN(q)) return Double.NaN;
+		Arrays.sort(order, 0, m, (a, b) -> Double.compare(values[a], values[b]));
+		final double reach = Math.min(Math.max(q, 0), 1) * total;
+		double sum = 0;
+		for (int i = 0; i < m; i++) {
+			sum += weights[order[i]];
+			if (sum >= reach) return values[order[i]];
+		}
+		return values[order[m - 1]];
 	}
 
 	/**

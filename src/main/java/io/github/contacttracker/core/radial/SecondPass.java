@@ -163,12 +163,18 @@ public final class SecondPass {
 		return count;
 	}
 
-	/** The part of particle {@code self}'s active area outside the other particles' discs, for display. */
-	public static Region secondRegion(final Region region, final int self, final double[][] discs, final double rOut) {
+	/**
+	 * The part of particle {@code self}'s active area outside the other particles' discs, for display.
+	 *
+	 * @param exclusion the discs' radius (px): {@link TrackerParameters#exclusionRadius()}
+	 */
+	public static Region secondRegion(final Region region, final int self, final double[][] discs,
+		final double exclusion)
+	{
 		if (discs == null) return region;
 		final double[] cx = discs[0], cy = discs[1];
-		final int[] near = neighboursReaching(region, self, cx, cy, rOut);
-		final double r2 = rOut * rOut;
+		final int[] near = neighboursReaching(region, self, cx, cy, exclusion);
+		final double r2 = exclusion * exclusion;
 		final RunList runs = new RunList();
 		for (int r = 0; r < region.runCount(); r++) {
 			final int y = region.runY(r);

@@ -33,6 +33,7 @@ import io.github.contacttracker.core.detect.ImageDetection;
 import io.github.contacttracker.core.detect.ModelSelection;
 import io.github.contacttracker.core.fit.ProfileRefinement;
 import io.github.contacttracker.core.kind.KindProfiles;
+import io.github.contacttracker.core.math.Statistics;
 import io.github.contacttracker.core.image.ComponentLabeling;
 import io.github.contacttracker.core.image.NoiseEstimate;
 import io.github.contacttracker.core.image.Plane;
@@ -250,17 +251,15 @@ public final class ContactTracker {
 	{
 		final Particle[] ps = new Particle[particles.size()];
 		final boolean[] merged = new boolean[ps.length];
-		final List<Integer> roundAreas = new ArrayList<>();
+		final double[] roundAreas = new double[ps.length];
+		int round = 0;
 		for (int k = 0; k < ps.length; k++) {
 			final Particle p = particles.get(k);
 			merged[k] = p.shape().merged(p.atBorder(), noise, alone(particles, k, params.aloneReach()), params.diameter());
-			if (!merged[k] && !p.atBorder()) roundAreas.add(p.region().area());
+			if (!merged[k] && !p.atBorder()) roundAreas[round++] = p.region().area();
 		}
-		int smallestMerge = 0;
-		if (roundAreas.size() >= MIN_ROUND_FOR_SIZES) {
-			roundAreas.sort(null);
-			smallestMerge = 2 * roundAreas.get(roundAreas.size() / 10);
-		}
+		final double smallestMerge = round >= MIN_ROUND_FOR_SIZES ? 2 * Statistics.quantile(roundAreas, round, 0.1)
+			: 0;
 		int n = 0;
 		for (int k = 0; k < ps.length; k++) {
 			final Particle p = particles.get(k);

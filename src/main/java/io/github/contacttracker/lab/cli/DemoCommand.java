@@ -104,7 +104,7 @@ final class DemoCommand extends ContactTrackerCli.Subcommand {
 	{
 		final FrameResult r = new ContactTracker(study.parameters()).analyse((net.imglib2.RandomAccessibleInterval) stack
 			.frames().get(0), 0);
-		return new OverlayPng.Panel(stack.frames().get(0), r, study.parameters().rOut(), scenario.name().toLowerCase(
-			Locale.ROOT) + " at contact, method " + study.parameters().method().key());
+		return new OverlayPng.Panel(stack.frames().get(0), r, study.parameters().exclusionRadius(), scenario.name()
+			.toLowerCase(Locale.ROOT) + " at contact, method " + study.parameters().method().key());
 	}
 }

@@ -77,6 +77,38 @@ class StatisticsTest {
 		assertEquals(6, Statistics.quantile(new double[] { 9, 1, 5, 7 }, 0.5), 0, "the median of an even count");
 	}
 
+	/**
+	 * A weighted quantile with whole weights is the plain inverse distribution of the sample in which each value
+	 * stands as often as its weight says: the value at rank ceil(q N) of those N copies. Neither array is moved, and
+	 * a NaN value's weight counts for nothing.
+	 */
+	@Test
+	void aWeightedQuantileIsThatOfTheValuesRepeatedByWeight() {
+		final SplittableRandom random = new SplittableRandom(7);
+		for (int trial = 0; trial < 1000; trial++) {
+			final int n = 1 + random.nextInt(60);
+			final double[] v = sample(random, trial, n), weights = new double[v.length];
+			final double[] copies = new double[4 * v.length];
+			int total = 0;
+			for (int i = 0; i < n; i++) {
+				final int w = 1 + random.nextInt(4);
+				weights[i] = w;
+				if (!Double.isNaN(v[i])) for (int c = 0; c < w; c++)
+					copies[total++] = v[i];
+			}
+			Arrays.sort(copies, 0, total);
+			final double q = trial % 11 == 0 ? 0 : trial % 13 == 0 ? 1 : random.nextDouble();
+			final double want = total == 0 ? Double.NaN : copies[Math.max(0, (int) Math.ceil(q * total) - 1)];
+			final double[] before = v.clone(), weightsBefore = weights.clone();
+			assertEquals(want, Statistics.weightedQuantile(v, weights, n, q), 0, "trial " + trial + ", q " + q);
+			assertTrue(Arrays.equals(before, v) && Arrays.equals(weightsBefore, weights), "unmoved");
+		}
+		final double[] values = { 3, 1, 2 };
+		assertEquals(3, Statistics.weightedQuantile(values, new double[] { 8, 1, 1 }, 3, 0.5), 0, "the heavy one");
+		assertEquals(2, Statistics.weightedQuantile(values, new double[] { 1, 1, 1 }, 3, 0.5), 0, "equal weights");
+		assertEquals(1, Statistics.weightedQuantile(values, new double[] { 1, 1, 1 }, 3, -2), 0, "q clamped to 0");
+	}
+
 	/** The interquartile mean drops a quarter of the numbers at each end. */
 	@Test
 	void theInterquartileMeanIsThatOfTheMiddleHalf() {
@@ -94,6 +126,10 @@ class StatisticsTest {
 		assertTrue(Double.isNaN(Statistics.quantile(new double[0], 0.5)));
 		assertTrue(Double.isNaN(Statistics.quantile(new double[] { 1 }, Double.NaN)));
 		assertTrue(Double.isNaN(Statistics.interquartileMean(new double[] { Double.NaN }, 1)));
+		assertTrue(Double.isNaN(Statistics.weightedQuantile(new double[] { Double.NaN }, new double[] { 1 }, 1, 0.5)));
+		assertTrue(Double.isNaN(Statistics.weightedQuantile(new double[0], new double[0], 0, 0.5)));
+		assertThrows(IllegalArgumentException.class, () -> Statistics.weightedQuantile(new double[2], new double[1],
+			2, 0.5));
 		assertThrows(IllegalArgumentException.class, () -> Statistics.median(new double[2], 3));
 	}
 

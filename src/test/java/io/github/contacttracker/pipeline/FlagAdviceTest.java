@@ -1,0 +1,132 @@
+/*-
+ * #%L
+ * Contact Tracker: sub-pixel localization of colloidal particles, also when they touch.
+ * %%
+ * Copyright (C) 2026 Contact Tracker developers
+ * %%
+ * This program is free software: you can redistribute it and/or modify
+ * it under the terms of the GNU General Public License as
+ * published by the Free Software Foundation, either version 3 of the
+ * License, or (at your option) any later version.
+ * 
+ * This program is distributed in the hope that it will be useful,
+ * but WITHOUT ANY WARRANTY; without even the implied warranty of
+ * MERCHANTABILITY or FITNESS FOR A PARTICULAR PURPOSE.  See the
+ * GNU General Public License for more details.
+ * 
+ * You should have received a copy of the GNU General Public
+ * License along with this program.  If not, see
+ * <http://www.gnu.org/licenses/gpl-3.0.html>.
+ * #L%
+ */
+package io.github.contacttracker.pipeline;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+
+import org.junit.jupiter.api.Test;
+
+import io.github.contacttracker.core.Connectivity;
+import io.github.contacttracker.core.Detection;
+import io.github.contacttracker.core.Flag;
+import io.github.contacttracker.core.Method;
+import io.github.contacttracker.core.TrackerParameters;
+import io.github.contacttracker.io.Calibration;
+import io.github.contacttracker.lab.sim.PaperParticles;
+import io.github.contacttracker.lab.sim.ParticleType;
+import io.github.contacttracker.lab.sim.Scenario;
+import io.github.contacttracker.lab.sim.SimulatedStack;
+import io.github.contacttracker.settings.SettingValues;
+import io.github.contacttracker.settings.TrackingSettings;
+
+/** What a run that flags most of its spots advises depends on what the run did, and never repeats it. */
+class FlagAdviceTest {
+
+	private static TrackerParameters used(final Method method, final Detection detection, final double diameter,
+		final int kinds)
+	{
+		return new TrackerParameters(100, 43, 20, Connectivity.EIGHT, 10, method, diameter, kinds, detection);
+	}
+
+	/**
+	 * Every warning flag under every method, detection, diameter given or not and kinds: the advice never names the
+	 * method the run used, the detection by the image when the run already found its particles so, a diameter to
+	 * give when one was given, nor a number of kinds to give when one was.
+	 */
+	@Test
+	void noAdviceRepeatsWhatTheRunDid() {
+		for (final Method method : Method.values())
+			for (final Detection detection : Detection.values())
+				for (final double diameter : new double[] { 0, 34.06 })
+					for (final int kinds : new int[] { 0, 1, 2 }) {
+						final TrackerParameters used = used(method, detection, diameter, kinds);
+						for (final Flag flag : Flag.values()) {
+							if (!flag.isWarning()) continue;
+							final String advice = FlagAdvice.advice(flag, used);
+							final String where = flag + " under " + used;
+							assertFalse(advice.isBlank(), where);
+							assertFalse(advice.contains("--method " + method.key()), () -> where + ": " + advice);
+							if (used.detectsByImage()) assertFalse(advice.contains("--detection image"), () -> where + ": " +
+								advice);
+							if (diameter > 0) assertFalse(advice.matches(".*(give|with the particles') --diameter.*"),
+								() -> where + ": " + advice);
+							if (kinds > 1) assertFalse(advice.contains("--kinds"), () -> where + ": " + advice);
+						}
+					}
+	}
+
+	/**
+	 * FELL_BACK has two causes: the paper's second pass (once or iterated) left too few pixels outside the
+	 * neighbours' discs, which the advice says with the run's r_out and min_second_area and mends with a method that
+	 * models the neighbours; a profile method's fit could not be made, mended by the iterative second pass.
+	 */
+	@Test
+	void fellBackIsExplainedByTheMethodUsed() {
+		for (final Method m : List.of(Method.PAPER, Method.ITERATIVE)) {
+			final String a = FlagAdvice.advice(Flag.FELL_BACK, used(m, Detection.THRESHOLD, 34.06, 0));
+			assertTrue(a.contains("r_out, 43 px") && a.contains("--min-second-area (10)"), a);
+			assertTrue(a.contains("r_out is at least the diameter, 34.06 px"), a);
+			assertTrue(a.contains("--method fit"), a);
+			assertFalse(a.contains("--method iterative"), a);
+		}
+		// a diameter above r_out: the neighbour's disc does not reach the centre, and the advice does not say it does
+		assertFalse(FlagAdvice.advice(Flag.FELL_BACK, used(Method.PAPER, Detection.THRESHOLD, 50, 0)).contains(
+			"at least the diameter"));
+		for (final Method m : List.of(Method.FIT, Method.DEBLEND))
+			assertTrue(FlagAdvice.advice(Flag.FELL_BACK, used(m, Detection.THRESHOLD, 0, 0)).contains(
+				"--method iterative"), m::key);
+		// merges under the paper's method: the detection by the image comes with a method that uses it
+		assertTrue(FlagAdvice.advice(Flag.MERGED, used(Method.PAPER, Detection.THRESHOLD, 34.06, 0)).contains(
+			"--method fit --detection image"));
+		assertTrue(FlagAdvice.advice(Flag.MERGED, used(Method.FIT, Detection.THRESHOLD, 0, 0)).contains(
+			"--detection image with the particles' --diameter"));
+	}
+
+	/**
+	 * A run that tracks touching particles with the iterative second pass and an r_out above their diameter (no
+	 * pixel of either is outside the other's disc) flags every spot FELL_BACK; its warning says so with the
+	 * run's own values and advises the joint fit, not the method it used.
+	 */
+	@Test
+	void anIterativeRunOnTouchingParticlesIsAdvisedTheFit() {
+		final ParticleType type = PaperParticles.silica206();
+		assertTrue(type.rOut() > type.diameterPx(), "the preset's r_out reaches past a touching neighbour's centre");
+		final SimulatedStack<?> pair = SimulatedStack.simulate(type, Scenario.PAIR, 1.0, 2, 3, 8);
+		final FrameSource source = FrameSource.of(pair.frameCount(), t -> pair.frames().get(t), Calibration.PIXELS,
+			"pair", null);
+		final SettingValues settings = SettingValues.defaults().with(TrackingSettings.THRESHOLD, type.threshold()).with(
+			TrackingSettings.R_OUT, type.rOut()).with(TrackingSettings.DIAMETER, type.diameterPx()).with(
+				TrackingSettings.METHOD, Method.ITERATIVE.key());
+		final TrackingResult r = new TrackingPipeline(settings).run(source, false);
+		assertEquals(4, r.spots().size(), r.spots().toString());
+		assertTrue(r.spots().stream().allMatch(s -> s.has(Flag.FELL_BACK)), r.spots().toString());
+		final String warning = r.warnings().get(r.warnings().size() - 1);
+		assertTrue(warning.startsWith("4 of 4 spots (100%) are flagged, most FELL_BACK (4): "), warning);
+		assertTrue(warning.contains("r_out is at least the diameter"), warning);
+		assertTrue(warning.contains("--method fit"), warning);
+		assertFalse(warning.contains("--method iterative"), warning);
+	}
+}
