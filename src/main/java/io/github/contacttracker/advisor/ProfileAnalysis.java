@@ -124,7 +124,8 @@ public final class ProfileAnalysis {
 	/**
 	 * What the profile shows.
 	 *
-	 * @param x refined centre x of the (first) profiled particle (px, TrackMate convention)
+	 * @param x refined centre x of the particle at the point given, else of the first profiled particle (px,
+	 *        TrackMate convention)
 	 * @param y refined centre y (px)
 	 * @param refined whether the particle was found by radial symmetry (else the point given is used)
 	 * @param diameter the particle diameter (px), given or estimated
@@ -308,7 +309,7 @@ public final class ProfileAnalysis {
 		final double diameter = sized.diameter();
 		final Measured m = sized.measured();
 		final Pooled pooled = m.pooled();
-		final double[] centre = m.centres().get(0);
+		final double[] centre = m.centres().get(0), subject = m.at() != null ? m.at() : centre;
 		final double rOut = m.reach() + R_OUT_MARGIN_PX;
 		final double[] level = levels(pooled);
 		final Threshold t = threshold(plane, pooled, level, diameter, m.reach(), centre, findings);
@@ -318,7 +319,7 @@ public final class ProfileAnalysis {
 		final List<double[]> inFrame = new ArrayList<>();
 		for (final double[] c : m.centres())
 			inFrame.add(new double[] { c[0] + plane.minX(), c[1] + plane.minY() });
-		return new Result(centre[0] + plane.minX(), centre[1] + plane.minY(), m.refined(), diameter, sized.estimated(),
+		return new Result(subject[0] + plane.minX(), subject[1] + plane.minY(), m.refined(), diameter, sized.estimated(),
 			m.centres().size(), m.radiusCap(), pooled.radius, level, pooled.count, pooled.background, pooled.noise, t
 				.peak(), m.reach(), rOut, t.bridge(), t.atContact(), t.threshold(), activeRadius, inFrame, findings, kinds(
 					kindFrames, t.threshold(), rOut, minArea(activeRadius)));
@@ -579,13 +580,31 @@ public final class ProfileAnalysis {
 	/**
 	 * The profile of the particles chosen for a diameter: their centres, how far out it is measured, the pooled
 	 * profile, its reach and where the particles' own image ends ({@link #imageEdge(Pooled, double)}).
+	 *
+	 * @param at the centre of the particle at the point given (whether profiled or not), {@code null} without a point
 	 */
-	private record Measured(List<double[]> centres, boolean refined, double radiusCap, Pooled pooled, double reach,
-		double imageEdge, List<Finding> findings) {}
+	private record Measured(List<double[]> centres, double[] at, boolean refined, double radiusCap, Pooled pooled,
+		double reach, double imageEdge, List<Finding> findings) {
+
+		Measured withAt(final double[] point, final boolean pointRefined, final List<Finding> more) {
+			final List<Finding> all = new ArrayList<>(more);
+			all.addAll(findings);
+			return new Measured(centres, point, pointRefined, radiusCap, pooled, reach, imageEdge, all);
+		}
+	}
 
 	/**
 	 * Steps 3-6: picks the particles (the one at {@code point}, else the most isolated), masks their neighbours and
 	 * pools their profile, twice (the masks widened to the measured reach the second time).
+	 * <p>
+	 * A particle at a point is profiled alone only when it is isolated: its nearest neighbour at least twice
+	 * {@code r_out} away (the reach plus {@value #R_OUT_MARGIN_PX} px, measured on the frame's most isolated
+	 * particles or on the particle alone, whichever is larger), so that no pixel holds the light of both and the
+	 * neighbours' masks leave its own pixels. Closer,
+	 * its profile never returns to the background between it and its neighbours: its own background, noise and
+	 * reach would be the neighbours' halos (a reach of twice the true one, masks that swallow the particle itself),
+	 * so the profile and the values are the frame's most isolated particles' instead (as without a point), and said
+	 * ({@link Finding.FrameValuesAtPoint}).
 	 *
 	 * @param narrow whether the masks may narrow where they leave no background ({@link #poolNarrowing}): for an
 	 *        estimated diameter; a given one that leaves none is wrong for the image, and the front ends say so and
@@ -594,65 +613,117 @@ public final class ProfileAnalysis {
 	private static Measured measure(final Plane plane, final Spots s, final double[] point, final double diameter,
 		final double maxRadiusGiven, final boolean narrow)
 	{
-		final int w = plane.width(), h = plane.height();
 		final List<Localization> spots = s.spots();
 		final double[][] xy = s.xy();
-		final double[] nn = s.nn();
-		final double near = s.near();
-		final List<Finding> findings = new ArrayList<>();
 		final double wanted = maxRadiusGiven > 0 ? maxRadiusGiven : AUTO_RADIUS_DIAMETERS * diameter;
-		final List<Integer> chosen = new ArrayList<>();
-		boolean refined = true;
-		double[] own = null;
-		if (point != null) {
-			int best = -1;
-			for (int k = 0; k < xy.length; k++) {
-				final double d = Math.hypot(xy[k][0] - point[0], xy[k][1] - point[1]);
-				if (d <= Math.max(near, diameter / 2) && (best < 0 || d < Math.hypot(xy[best][0] - point[0], xy[best][1] -
-					point[1]))) best = k;
-			}
-			if (best >= 0) {
-				chosen.add(best);
-				if (spots.get(best).has(Flag.MERGED))
-					findings.add(new Finding.MergedAtPoint());
-			}
-			else {
-				refined = false;
-				own = point;
-				findings.add(new Finding.NotRefined());
-			}
-		}
-		else {
-			final Integer[] order = new Integer[xy.length];
-			for (int k = 0; k < order.length; k++)
-				order[k] = k;
-			Arrays.sort(order, Comparator.comparingDouble(k -> -nn[k]));
-			for (final int k : order) {
-				final Localization spot = spots.get(k);
-				if (spot.has(Flag.MERGED) || spot.has(Flag.AT_BORDER) || spot.has(Flag.DEGENERATE)) continue;
-				if (xy[k][0] < diameter / 2 || xy[k][1] < diameter / 2 || xy[k][0] > w - 1 - diameter / 2 || xy[k][1] > h -
-					1 - diameter / 2) continue;
-				if (!chosen.isEmpty() && nn[k] < Math.min(wanted, 0.5 * nn[chosen.get(0)])) break;
-				chosen.add(k);
-				if (chosen.size() == MAX_PARTICLES) break;
-			}
+		if (point == null) {
+			final List<Finding> findings = new ArrayList<>();
+			final List<Integer> chosen = mostIsolated(plane, s, diameter, wanted);
 			if (chosen.isEmpty()) throw new InvalidInputException("no single particle away from the border found in " +
 				"the frame: give a point on one");
-			if (nn.length > 1 && nn[chosen.get(0)] < 2 * diameter)
-				findings.add(new Finding.NotIsolated(nn[chosen.get(0)], diameter));
+			if (s.nn().length > 1 && s.nn()[chosen.get(0)] < 2 * diameter)
+				findings.add(new Finding.NotIsolated(s.nn()[chosen.get(0)], diameter));
+			return pooledTwice(plane, s, centresOf(xy, chosen), diameter, wanted, narrow, findings);
 		}
+		final List<Finding> findings = new ArrayList<>();
+		int best = -1;
+		for (int k = 0; k < xy.length; k++) {
+			final double d = Math.hypot(xy[k][0] - point[0], xy[k][1] - point[1]);
+			if (d <= Math.max(s.near(), diameter / 2) && (best < 0 || d < Math.hypot(xy[best][0] - point[0], xy[best][1] -
+				point[1]))) best = k;
+		}
+		final double[] own;
+		if (best >= 0) {
+			own = xy[best];
+			if (spots.get(best).has(Flag.MERGED)) findings.add(new Finding.MergedAtPoint());
+		}
+		else {
+			own = point;
+			findings.add(new Finding.NotRefined());
+		}
+		double neighbour = Double.POSITIVE_INFINITY;
+		for (int k = 0; k < xy.length; k++)
+			if (k != best) neighbour = Math.min(neighbour, Math.hypot(xy[k][0] - own[0], xy[k][1] - own[1]));
+		final List<Integer> frame = mostIsolated(plane, s, diameter, wanted);
+		Measured m = null;
+		if (!frame.isEmpty()) {
+			try {
+				m = pooledTwice(plane, s, centresOf(xy, frame), diameter, wanted, narrow, new ArrayList<>());
+			}
+			catch (final InvalidInputException e) {
+				m = null; // the frame's particles have no background: the particle is measured alone
+			}
+		}
+		Measured alone = null;
+		final List<Finding> ownFindings = new ArrayList<>();
+		try {
+			alone = pooledTwice(plane, s, List.of(own), diameter, wanted, narrow, ownFindings);
+		}
+		catch (final InvalidInputException e) {
+			if (m == null) throw e;
+		}
+		// r_out as the frame gives it or as the particle alone does, whichever reaches further
+		final double rOut = Math.max(m == null ? 0 : m.reach(), alone == null ? 0 : alone.reach()) + R_OUT_MARGIN_PX;
+		if (m != null && (alone == null || neighbour < 2 * rOut)) {
+			findings.add(new Finding.FrameValuesAtPoint(neighbour, rOut, m.centres().size()));
+			return m.withAt(own, best >= 0, findings);
+		}
+		return alone.withAt(own, best >= 0, findings);
+	}
+
+	/**
+	 * The spots to profile when no point is given: the ones with the largest distances to their nearest neighbours,
+	 * none merged, degenerate or near the border, at most {@value #MAX_PARTICLES}, down to half the first one's
+	 * distance (or {@code wanted}).
+	 */
+	private static List<Integer> mostIsolated(final Plane plane, final Spots s, final double diameter,
+		final double wanted)
+	{
+		final int w = plane.width(), h = plane.height();
+		final double[][] xy = s.xy();
+		final double[] nn = s.nn();
+		final Integer[] order = new Integer[xy.length];
+		for (int k = 0; k < order.length; k++)
+			order[k] = k;
+		Arrays.sort(order, Comparator.comparingDouble(k -> -nn[k]));
+		final List<Integer> chosen = new ArrayList<>();
+		for (final int k : order) {
+			final Localization spot = s.spots().get(k);
+			if (spot.has(Flag.MERGED) || spot.has(Flag.AT_BORDER) || spot.has(Flag.DEGENERATE)) continue;
+			if (xy[k][0] < diameter / 2 || xy[k][1] < diameter / 2 || xy[k][0] > w - 1 - diameter / 2 || xy[k][1] > h - 1 -
+				diameter / 2) continue;
+			if (!chosen.isEmpty() && nn[k] < Math.min(wanted, 0.5 * nn[chosen.get(0)])) break;
+			chosen.add(k);
+			if (chosen.size() == MAX_PARTICLES) break;
+		}
+		return chosen;
+	}
+
+	private static List<double[]> centresOf(final double[][] xy, final List<Integer> chosen) {
 		final List<double[]> centres = new ArrayList<>();
-		if (own != null) centres.add(own);
 		for (final int k : chosen)
 			centres.add(xy[k]);
-		final double radiusCap = Math.min(wanted, farthestCorner(centres.get(0)[0], centres.get(0)[1], w, h));
+		return centres;
+	}
+
+	/**
+	 * Pools the profile of {@code centres} (the first one's window sets how far out), masking the other spots within
+	 * a diameter, then again within the measured reach plus the margin.
+	 */
+	private static Measured pooledTwice(final Plane plane, final Spots s, final List<double[]> centres,
+		final double diameter, final double wanted, final boolean narrow,
+		final List<Finding> findings)
+	{
+		final double radiusCap = Math.min(wanted, farthestCorner(centres.get(0)[0], centres.get(0)[1], plane.width(),
+			plane.height()));
 		final double narrowest = narrow ? diameter / 2 : Double.POSITIVE_INFINITY;
-		Pooled pooled = poolNarrowing(plane, centres, xy, diameter, radiusCap, narrowest, null);
+		Pooled pooled = poolNarrowing(plane, centres, s.xy(), diameter, radiusCap, narrowest, null);
 		double reach = reach(pooled, radiusCap, null);
-		pooled = poolNarrowing(plane, centres, xy, Math.max(diameter, reach + R_OUT_MARGIN_PX), radiusCap, narrowest,
-			findings);
+		pooled = poolNarrowing(plane, centres, s.xy(), Math.max(diameter, reach + R_OUT_MARGIN_PX), radiusCap,
+			narrowest, findings);
 		reach = reach(pooled, radiusCap, findings);
-		return new Measured(pooled.centres(), refined, radiusCap, pooled, reach, imageEdge(pooled, reach), findings);
+		return new Measured(pooled.centres(), null, true, radiusCap, pooled, reach, imageEdge(pooled, reach),
+			findings);
 	}
 
 	/**

@@ -69,6 +69,10 @@ class ProfileReportTest {
 			"scale bar)? In Fiji, select the region to track");
 		expected.put(new Finding.MergedAtPoint(), "the particle's active area looks merged with a neighbour's: pick an " +
 			"isolated particle");
+		expected.put(new Finding.FrameValuesAtPoint(52.3912, 42.1634, 6), "the particle's nearest neighbour is 52.39 px " +
+			"away, less than twice the r_out measured (2 x 42.16 px, the larger of its own profile's and the frame's): " +
+			"its own profile does not return to the background, so the profile and values are those of the frame's 6 " +
+			"most isolated particles");
 		expected.put(new Finding.NotRefined(), "could not refine the centre; the profile is taken around the point " +
 			"given");
 		expected.put(new Finding.NotIsolated(93.0844, 52.44), "no particle is isolated: the most isolated has a " +
