@@ -129,12 +129,4 @@ public sealed interface Finding {
 
 	/** The suggested threshold is above the particle's centre. */
 	record ThresholdAboveCentre() implements Finding {}
-
-	/**
-	 * {@code r_out} is larger than the diameter.
-	 *
-	 * @param rOut the suggested {@code r_out}, not rounded (px)
-	 * @param diameter the diameter (px)
-	 */
-	record ROutAboveDiameter(double rOut, double diameter) implements Finding {}
 }

@@ -180,6 +180,21 @@ public final class ProfileAnalysis {
 		}
 
 		/**
+		 * What the paper's second pass keeps of a particle at contact with one neighbour, at the suggested values:
+		 * the part of its active disc (radius {@link #activeRadius}) farther than {@link #suggestedROut} from the
+		 * neighbour's centre, {@link #diameter} away. {@code r_out} is where a particle's light returns to the
+		 * background, which for a haloed particle lies beyond a diameter; the second pass then keeps less than half
+		 * of the active area, and nothing once {@code r_out >= D + activeRadius}. Below
+		 * {@link TrackerParameters#DEFAULT_MIN_SECOND_AREA} px the paper's method keeps the first pass there
+		 * ({@code FELL_BACK}); the profile methods model the neighbours' light and need no undistorted area.
+		 *
+		 * @return that area (px, the discs' geometry)
+		 */
+		public double secondPassArea() {
+			return discOutside(activeRadius, suggestedROut(), diameter);
+		}
+
+		/**
 		 * @param threshold the threshold the movie is tracked at (given, or {@link #suggestedThreshold})
 		 * @return the {@code min_area} for particles of this profile at that threshold ({@link ProfileAnalysis#minArea}):
 		 *         the default unless they are so small that their active areas come near it
@@ -315,7 +330,6 @@ public final class ProfileAnalysis {
 		final Threshold t = threshold(plane, pooled, level, diameter, m.reach(), centre, findings);
 		final double activeRadius = activeRadius(pooled.radius, level, pooled.count, t.threshold());
 		if (activeRadius == 0) findings.add(new Finding.ThresholdAboveCentre());
-		if (rOut > diameter) findings.add(new Finding.ROutAboveDiameter(rOut, diameter));
 		final List<double[]> inFrame = new ArrayList<>();
 		for (final double[] c : m.centres())
 			inFrame.add(new double[] { c[0] + plane.minX(), c[1] + plane.minY() });
@@ -635,7 +649,8 @@ public final class ProfileAnalysis {
 		final double[] own;
 		if (best >= 0) {
 			own = xy[best];
-			if (spots.get(best).has(Flag.MERGED)) findings.add(new Finding.MergedAtPoint());
+			if (spots.get(best).has(Flag.MERGED) && outlineMerged(plane, s.level(), own)) findings.add(
+				new Finding.MergedAtPoint());
 		}
 		else {
 			own = point;
@@ -669,6 +684,21 @@ public final class ProfileAnalysis {
 			return m.withAt(own, best >= 0, findings);
 		}
 		return alone.withAt(own, best >= 0, findings);
+	}
+
+	/**
+	 * Whether the active area at {@code level} that holds the pixel nearest {@code at} has the outline of several
+	 * particles ({@link ComponentShape#outlineMerged}: elongated, or with a bay). The spot finder also flags an
+	 * area whose gradient lines miss one another, as a saturated core's flat top makes them: a particle larger or
+	 * brighter than the rest, not merged, and no reason to send the user to another.
+	 */
+	private static boolean outlineMerged(final Plane plane, final double level, final double[] at) {
+		final int x = (int) Math.round(at[0]), y = (int) Math.round(at[1]);
+		for (final Region r : ComponentLabeling.label(plane, level, Connectivity.EIGHT))
+			for (int k = 0; k < r.runCount(); k++)
+				if (r.runY(k) == y && r.runStart(k) <= x && x <= r.runEnd(k)) return ComponentShape.of(r).outlineMerged(
+					false);
+		return false;
 	}
 
 	/**
@@ -1096,6 +1126,21 @@ public final class ProfileAnalysis {
 		if (above < 0) return p.height[below];
 		return p.height[below] + (p.height[above] - p.height[below]) * (r - p.radius[below]) / (p.radius[above] -
 			p.radius[below]);
+	}
+
+	/**
+	 * @return the area of the disc of radius {@code a} about the origin outside the disc of radius {@code r} whose
+	 *         centre lies {@code d} away (the circles' lens formula)
+	 */
+	static double discOutside(final double a, final double r, final double d) {
+		final double whole = Math.PI * a * a;
+		if (!(a > 0)) return 0;
+		if (d >= a + r) return whole;
+		if (d <= r - a) return 0; // inside the other disc
+		if (d <= a - r) return whole - Math.PI * r * r; // the other disc inside
+		final double lens = a * a * Math.acos((d * d + a * a - r * r) / (2 * d * a)) + r * r * Math.acos((d * d + r * r -
+			a * a) / (2 * d * r)) - 0.5 * Math.sqrt((-d + a + r) * (d + a - r) * (d - a + r) * (d + a + r));
+		return Math.max(0, whole - lens);
 	}
 
 	/** Distance of each point to its nearest other point (infinite for a lone point). */

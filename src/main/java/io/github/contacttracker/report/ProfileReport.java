@@ -28,6 +28,7 @@ import java.util.Locale;
 import io.github.contacttracker.advisor.Finding;
 import io.github.contacttracker.advisor.ProfileAnalysis;
 import io.github.contacttracker.core.Numbers;
+import io.github.contacttracker.core.TrackerParameters;
 import io.github.contacttracker.core.kind.Kinds;
 
 /**
@@ -67,6 +68,12 @@ public final class ProfileReport {
 			.activeRadius(), r.diameter() / 2, r.smallParticles(threshold) ? String.format(Locale.ROOT,
 				"; area %.1f px, below twice the default min_area -> min_area = %d (half the area)", Math.PI * r
 					.activeRadius() * r.activeRadius(), r.suggestedMinArea(threshold)) : ""));
+		final double kept = r.secondPassArea();
+		if (r.activeRadius() > 0 && kept < TrackerParameters.DEFAULT_MIN_SECOND_AREA) lines.add(String.format(Locale.ROOT, "  at contact " +
+			"(D = %.2f px), r_out %.0f px leaves %.0f of the active area's %.0f px outside the neighbour's disc, fewer " +
+			"than min_second_area (%d): --method paper keeps the first pass there (FELL_BACK); the default fit models " +
+			"the neighbours' light and needs none", r.diameter(), r.suggestedROut(), kept, Math.PI * r.activeRadius() * r
+				.activeRadius(), TrackerParameters.DEFAULT_MIN_SECOND_AREA));
 		for (final String k : kinds(r.kinds()))
 			lines.add("  " + k);
 		for (final String w : warnings(r))
@@ -165,10 +172,6 @@ public final class ProfileReport {
 		if (finding instanceof Finding.ThresholdAboveCentre)
 			return "the suggested threshold is above the particle's centre: at contact no threshold separates two such " +
 				"particles (the profile is too long-ranged for the method)";
-		if (finding instanceof Finding.ROutAboveDiameter f)
-			return "r_out (" + fmt2(f.rOut()) + " px) is larger than the diameter (" + fmt2(f.diameter()) + " px): at " +
-				"contact little undistorted active area is left for the paper's second pass (the paper needs r_out <= D; " +
-				"the deblend and fit methods do not)";
 		throw new IllegalArgumentException("no words for " + finding);
 	}
 

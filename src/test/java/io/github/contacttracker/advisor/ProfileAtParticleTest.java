@@ -89,10 +89,10 @@ class ProfileAtParticleTest {
 	}
 
 	/**
-	 * Clicked on the particle with neighbours at 1.5 diameters, the helper lost the particle's own pixels (the
-	 * neighbours' masks, widened to a reach measured on the neighbours' halos, covered it: no ring inside 40 px on
-	 * 1.avi) and suggested values of no particle. Now it says its profile cannot return to the background there and
-	 * gives the frame's profile and values, centred on the particle clicked.
+	 * Clicked on the particle with neighbours at 1.5 diameters: alone, its background annulus holds the neighbours'
+	 * halos, its reach reads about twice the true one and the neighbours' masks, widened to it, cover the particle
+	 * itself (on 1.avi no ring inside 40 px; here a threshold of 380, above every pixel). The helper says its profile
+	 * cannot return to the background there and gives the frame's profile and values, centred on the particle clicked.
 	 */
 	@Test
 	void aParticleAmongNeighboursGivesTheFramesValuesAndSaysWhy() {

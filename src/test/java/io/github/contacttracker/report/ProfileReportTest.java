@@ -93,9 +93,6 @@ class ProfileReportTest {
 			"than two particles' active areas (fringes, marks)");
 		expected.put(new Finding.ThresholdAboveCentre(), "the suggested threshold is above the particle's centre: at " +
 			"contact no threshold separates two such particles (the profile is too long-ranged for the method)");
-		expected.put(new Finding.ROutAboveDiameter(42.1634, 30), "r_out (42.16 px) is larger than the diameter (30 px): " +
-			"at contact little undistorted active area is left for the paper's second pass (the paper needs r_out <= D; " +
-			"the deblend and fit methods do not)");
 		for (final Map.Entry<Finding, String> e : expected.entrySet())
 			assertEquals(e.getValue(), ProfileReport.sentence(e.getKey()), e.getKey().toString());
 		// a new kind of finding needs its sentence here too
