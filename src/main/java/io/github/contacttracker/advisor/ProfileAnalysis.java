@@ -55,15 +55,16 @@ import net.imglib2.type.numeric.RealType;
  * across the frame, dense neighbours and compression (MJPEG) noise.
  * <ol>
  * <li>Particles: the frame's bright spots at half height between the frame's median and its brightest pixels
- * (a point given: the brightest pixel near it), localized by one radial-symmetry pass; merged spots (by shape)
- * and spots at the border are not profiled.</li>
+ * (a point given on a particle fainter than that: half its brightest pixel's height), localized by one
+ * radial-symmetry pass; merged spots (by shape) and spots at the border are not profiled.</li>
  * <li>Diameter {@code D}: given, or the smaller of the 10th percentile of the spots' nearest-neighbour distances
  * (colloids at contact sit one diameter apart) and twice where the particles' own image ends (the outer edge of a
  * dark ring, else the reach), read off a profile taken to a provisional diameter and measured again at the
  * estimate; a warning says which.</li>
- * <li>Profiled particles: the point given, or up to {@value #MAX_PARTICLES} spots with the largest distances to
- * their nearest neighbour. Pixels within the reach of any other spot are masked (first {@code D}, then the
- * measured reach).</li>
+ * <li>Profiled particles: up to {@value #MAX_PARTICLES} spots with the largest distances to their nearest
+ * neighbour; a point given, its particle alone when isolated (nearest neighbour and image edge at least twice
+ * {@code r_out} away), else those spots, and said. Pixels within the reach of any other spot are masked (first
+ * {@code D}, then the measured reach).</li>
  * <li>Local background: around each particle a plane fitted robustly to the outer {@value #BACKGROUND_ANNULUS_PERCENT}%
  * of {@code max_radius} ({@value #AUTO_RADIUS_DIAMETERS} diameters unless given): a background drifting across
  * the frame is removed with it.</li>
@@ -399,7 +400,9 @@ public final class ProfileAnalysis {
 
 	/**
 	 * Step 1: the spots at half height between the frame's median and its brightest pixels (or the brightest pixel
-	 * near the point given), by one radial-symmetry pass.
+	 * near the point given, when that lies below the frame's half height), by one radial-symmetry pass. The same
+	 * spots with a point as without, wherever the particle at the point is among them: the frame's values, when the
+	 * particle at a point gives them ({@link #measure}), are then those of the frame.
 	 *
 	 * @param point the point given, in the frame's coordinates ({@code null} if none)
 	 * @param at the same point in the plane's coordinates
@@ -412,8 +415,10 @@ public final class ProfileAnalysis {
 		final double median0 = Statistics.quantile(sample, 0.5);
 		final double noise0 = Math.max(NoiseEstimate.sigma(plane), 1e-6);
 		final double near = diameterGiven > 0 ? Math.max(2, diameterGiven / 4) : 5;
-		final double top = point != null ? peak(plane, at[0], at[1], near) : Statistics.quantile(sample, 1 - Math.max(1e-4, 20.0 /
-			sample.length));
+		final double frameTop = Statistics.quantile(sample, 1 - Math.max(1e-4, 20.0 / sample.length));
+		// the frame's spots, as without a point, unless the particle at the point would not be among them
+		final double own = point != null ? peak(plane, at[0], at[1], near) : frameTop;
+		final double top = own >= median0 + 0.5 * (frameTop - median0) ? frameTop : own;
 		if (!(top - median0 > THRESHOLD_MARGIN_SIGMAS * noise0)) {
 			if (point != null) throw new InvalidInputException(String.format(Locale.ROOT, "no bright particle at " +
 				"(%s, %s): the brightest pixel within %s px is %s, within %s noise sigmas (%s) of the background %s", fmt(
@@ -611,8 +616,8 @@ public final class ProfileAnalysis {
 	 * Steps 3-6: picks the particles (the one at {@code point}, else the most isolated), masks their neighbours and
 	 * pools their profile, twice (the masks widened to the measured reach the second time).
 	 * <p>
-	 * A particle at a point is profiled alone only when it is isolated: its nearest neighbour at least twice
-	 * {@code r_out} away (the reach plus {@value #R_OUT_MARGIN_PX} px, measured on the frame's most isolated
+	 * A particle at a point is profiled alone only when it is isolated: its nearest neighbour, and the image's edge
+	 * (beyond which a neighbour goes unseen), at least twice {@code r_out} away (the reach plus {@value #R_OUT_MARGIN_PX} px, measured on the frame's most isolated
 	 * particles or on the particle alone, whichever is larger), so that no pixel holds the light of both and the
 	 * neighbours' masks leave its own pixels. Closer,
 	 * its profile never returns to the background between it and its neighbours: its own background, noise and
@@ -659,6 +664,11 @@ public final class ProfileAnalysis {
 		double neighbour = Double.POSITIVE_INFINITY;
 		for (int k = 0; k < xy.length; k++)
 			if (k != best) neighbour = Math.min(neighbour, Math.hypot(xy[k][0] - own[0], xy[k][1] - own[1]));
+		// beyond the image's edge a neighbour goes unseen: the edge counts as one
+		final double edge = Math.min(Math.min(own[0], plane.width() - 1 - own[0]), Math.min(own[1], plane.height() - 1 -
+			own[1]));
+		final boolean byEdge = edge < neighbour;
+		neighbour = Math.min(neighbour, edge);
 		final List<Integer> frame = mostIsolated(plane, s, diameter, wanted);
 		Measured m = null;
 		if (!frame.isEmpty()) {
@@ -680,7 +690,7 @@ public final class ProfileAnalysis {
 		// r_out as the frame gives it or as the particle alone does, whichever reaches further
 		final double rOut = Math.max(m == null ? 0 : m.reach(), alone == null ? 0 : alone.reach()) + R_OUT_MARGIN_PX;
 		if (m != null && (alone == null || neighbour < 2 * rOut)) {
-			findings.add(new Finding.FrameValuesAtPoint(neighbour, rOut, m.centres().size()));
+			findings.add(new Finding.FrameValuesAtPoint(neighbour, byEdge, rOut, m.centres().size()));
 			return m.withAt(own, best >= 0, findings);
 		}
 		return alone.withAt(own, best >= 0, findings);

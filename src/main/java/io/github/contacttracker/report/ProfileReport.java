@@ -142,7 +142,8 @@ public final class ProfileReport {
 		if (finding instanceof Finding.MergedAtPoint)
 			return "the particle's active area looks merged with a neighbour's: pick an isolated particle";
 		if (finding instanceof Finding.FrameValuesAtPoint f)
-			return "the particle's nearest neighbour is " + fmt2(f.neighbour()) + " px away, less than twice the r_out measured (2 x " +
+			return (f.edge() ? "the particle lies " + fmt2(f.neighbour()) + " px from the image's edge (beyond it " +
+				"neighbours go unseen)" : "the particle's nearest neighbour is " + fmt2(f.neighbour()) + " px away") + ", less than twice the r_out measured (2 x " +
 				fmt2(f.rOut()) + " px, the larger of its own profile's and the frame's): its own profile does not return to the background, so the profile and values " +
 				"are those of the frame's " + f.others() + " most isolated particle" + (f.others() == 1 ? "" : "s");
 		if (finding instanceof Finding.NotRefined)

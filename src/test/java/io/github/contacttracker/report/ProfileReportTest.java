@@ -69,7 +69,11 @@ class ProfileReportTest {
 			"scale bar)? In Fiji, select the region to track");
 		expected.put(new Finding.MergedAtPoint(), "the particle's active area looks merged with a neighbour's: pick an " +
 			"isolated particle");
-		expected.put(new Finding.FrameValuesAtPoint(52.3912, 42.1634, 6), "the particle's nearest neighbour is 52.39 px " +
+		expected.put(new Finding.FrameValuesAtPoint(11.5, true, 42.1634, 6), "the particle lies 11.50 px from the " +
+			"image's edge (beyond it neighbours go unseen), less than twice the r_out measured (2 x 42.16 px, the larger " +
+			"of its own profile's and the frame's): its own profile does not return to the background, so the profile " +
+			"and values are those of the frame's 6 most isolated particles");
+		expected.put(new Finding.FrameValuesAtPoint(52.3912, false, 42.1634, 6), "the particle's nearest neighbour is 52.39 px " +
 			"away, less than twice the r_out measured (2 x 42.16 px, the larger of its own profile's and the frame's): " +
 			"its own profile does not return to the background, so the profile and values are those of the frame's 6 " +
 			"most isolated particles");
