@@ -82,8 +82,8 @@ import net.imglib2.type.numeric.RealType;
  * centres (outside every particle's own half): the brightest such point is the bridge their active areas must
  * not reach. The threshold is the bridge plus {@value #THRESHOLD_MARGIN_SIGMAS} {@code s}. On a saturated core
  * only the plateau is flat, and the rule does not look inside {@code D/2}.</li>
- * <li>Raised, when it must be, clear of the background's texture ({@link #textureGap}) and until the frame's
- * active areas are round ({@link #roundFrom}).</li>
+ * <li>Raised, when it must be, clear of the background's texture ({@link ThresholdRules#textureGap}) and until the
+ * frame's active areas are round ({@link ThresholdRules#roundFrom}).</li>
  * <li>Kinds of particle ({@link #kinds}): the frame tracked at the suggested threshold and {@code r_out} (the
  * paper's method), each particle measured about its centre ({@link KindFeatures}) and the kinds found
  * automatically ({@link Kinds#find(java.util.Collection)}), as the tracker finds them.</li>
@@ -113,10 +113,6 @@ public final class ProfileAnalysis {
 	 * its dark ring lying outside a narrow bright core; six leaves a margin above both.
 	 */
 	static final double PROVISIONAL_CORE_RADII = 6;
-	/** Smallest ratio of peak heights that separates the background's texture from the particles' cores. */
-	static final double TEXTURE_GAP_RATIO = 2;
-	/** At most this share (percent) of the active areas may fail the outline tests at the suggested threshold. */
-	static final int MAX_NOT_ROUND_PERCENT = 1;
 	/** Grid step (px) of the bridge search. */
 	static final double BRIDGE_STEP_PX = 0.5;
 	/** Significant digits of the numbers in the helper's messages and warnings ({@link Numbers#significant}). */
@@ -538,13 +534,13 @@ public final class ProfileAnalysis {
 		// the active areas that count as particles at a threshold: as the tracker will keep them (small particles' are
 		// smaller than the default min_area: counting only the larger ones would judge the merges alone)
 		final DoubleToIntFunction minArea = th -> minArea(activeRadius(pooled.radius, level, pooled.count, th));
-		final double[] gap = textureGap(plane, atContact, pooled.background, minArea.applyAsInt(atContact));
+		final double[] gap = ThresholdRules.textureGap(plane, atContact, pooled.background, minArea.applyAsInt(atContact));
 		final double clear = Math.max(atContact, Double.isNaN(gap[0]) ? atContact : pooled.background + (gap[0] +
 			gap[1]) / 2);
 		if (clear > atContact) findings.add(new Finding.BackgroundTexture(atContact, (int) gap[2], gap[0], gap[1]));
 		final double peak = peak(plane, centre[0], centre[1], Math.max(2, diameter / 4));
 		final double ceiling = pooled.background + 0.5 * (peak - pooled.background);
-		final double[] shaped = roundFrom(plane, clear, ceiling, Math.max(0.5, pooled.noise / 2), minArea);
+		final double[] shaped = ThresholdRules.roundFrom(plane, clear, ceiling, Math.max(0.5, pooled.noise / 2), minArea);
 		final double threshold = shaped[0];
 		if (threshold > clear) findings.add(new Finding.RaisedUntilRound(clear, (int) shaped[1], (int) shaped[2]));
 		else if (shaped[1] > 0) findings.add(new Finding.NotRound((int) shaped[1], (int) shaped[2], ceiling));
@@ -788,75 +784,6 @@ public final class ProfileAnalysis {
 		return reach;
 	}
 
-	/**
-	 * Components of the frame at a threshold, split by their peak height above the background at the largest gap
-	 * (a ratio of at least {@value #TEXTURE_GAP_RATIO}) below half the highest peak: below it the background's
-	 * texture (bright-field halos and rings, their sums between particles, an uneven background), above it the
-	 * particles' cores. The texture is the sum of faint tails, an order of magnitude below the cores' peaks, so the
-	 * heights fall in two groups with a wide gap between them; a threshold just above the sum of two profiles at
-	 * contact but below that gap picks up texture spots.
-	 * Components below {@code minArea} pixels are left out, as the tracker drops them.
-	 *
-	 * @return {@code {highest texture peak, lowest core peak, texture components}} above the background, or NaNs
-	 *         when there is no such gap
-	 */
-	static double[] textureGap(final Plane plane, final double threshold, final double background, final int minArea) {
-		final List<Region> regions = ComponentLabeling.label(plane, threshold, Connectivity.EIGHT);
-		final DoubleList heights = new DoubleList();
-		for (final Region r : regions) {
-			if (r.area() < minArea) continue;
-			double peak = Double.NEGATIVE_INFINITY;
-			for (int k = 0; k < r.runCount(); k++)
-				for (int x = r.runStart(k); x <= r.runEnd(k); x++)
-					peak = Math.max(peak, plane.get(x, r.runY(k)));
-			heights.add(peak - background);
-		}
-		final double[] hs = heights.toArray();
-		Arrays.sort(hs);
-		int cut = -1;
-		double best = TEXTURE_GAP_RATIO;
-		for (int i = 0; i + 1 < hs.length && hs[i] < hs[hs.length - 1] / 2; i++) {
-			final double ratio = hs[i + 1] / Math.max(hs[i], 1e-9);
-			if (ratio >= best) {
-				best = ratio;
-				cut = i;
-			}
-		}
-		return cut < 0 ? new double[] { Double.NaN, Double.NaN, 0 } : new double[] { hs[cut], hs[cut + 1], cut + 1 };
-	}
-
-	/**
-	 * The lowest threshold from {@code from} up to {@code ceiling} (in steps of {@code step}) at which at most
-	 * {@value #MAX_NOT_ROUND_PERCENT}% of the frame's active areas (of at least {@code minArea} px at that threshold,
-	 * away from the border) fail the outline tests of merge detection ({@link ComponentShape}: elongated, or with a
-	 * bay).
-	 *
-	 * @return {@code {threshold, active areas that fail at the threshold from, active areas there}}; the threshold
-	 *         is {@code from} when no step up to the ceiling does better
-	 */
-	static double[] roundFrom(final Plane plane, final double from, final double ceiling, final double step,
-		final DoubleToIntFunction minArea)
-	{
-		final int[] first = notRound(plane, from, minArea.applyAsInt(from));
-		for (double t = from; t <= ceiling; t += step) {
-			final int[] n = t == from ? first : notRound(plane, t, minArea.applyAsInt(t));
-			if (n[0] * 100 <= MAX_NOT_ROUND_PERCENT * n[1]) return new double[] { t, first[0], first[1] };
-		}
-		return new double[] { from, first[0], first[1] };
-	}
-
-	/** @return {@code {active areas that fail the outline tests, active areas}} at a threshold */
-	private static int[] notRound(final Plane plane, final double threshold, final int minArea) {
-		int bad = 0, all = 0;
-		for (final Region r : ComponentLabeling.label(plane, threshold, Connectivity.EIGHT)) {
-			if (r.area() < minArea || r.minX() == 0 || r.minY() == 0 || r.maxX() == plane
-				.width() - 1 || r.maxY() == plane.height() - 1) continue;
-			all++;
-			if (ComponentShape.of(r).outlineMerged(false)) bad++;
-		}
-		return new int[] { bad, all };
-	}
-
 	/** The profile pooled over particles: ring heights above the local background, and the noise. */
 	private record Pooled(double[] radius, double[] height, int[] count, double background, double noise,
 		List<double[]> centres) {}
@@ -948,7 +875,7 @@ public final class ProfileAnalysis {
 				continue;
 			}
 			used.add(c);
-			final double[] plane3 = robustPlane(ax, ay, av);
+			final double[] plane3 = BackgroundPlane.robust(ax, ay, av);
 			backgroundSum += plane3[0];
 			for (int i = 0; i < ax.size; i++)
 				residuals.add(av.get(i) - plane3[0] - plane3[1] * ax.get(i) - plane3[2] * ay.get(i));
@@ -962,7 +889,7 @@ public final class ProfileAnalysis {
 				}
 		}
 		if (used.isEmpty()) throw new NoBackground(failure);
-		final double noise = clippedSigma(residuals.toArray());
+		final double noise = Statistics.clippedSigma(residuals.toArray(), CLIP_SIGMAS);
 		int filled = bins;
 		while (filled > 0 && rings[filled - 1].size == 0)
 			filled--;
@@ -976,35 +903,6 @@ public final class ProfileAnalysis {
 		return new Pooled(radius, height, count, backgroundSum / used.size(), noise, used);
 	}
 
-	/**
-	 * A robust standard deviation: started from 1.4826 x the median absolute deviation, then the RMS of the values
-	 * within {@value #CLIP_SIGMAS} sigmas of their mean, twice. Unlike the MAD alone it does not jump with the
-	 * integer steps of 8-bit data (MAD of uniform noise of amplitude 5 rounded: 3.7 or 4.4 instead of 2.9), and
-	 * clipping drops a neighbour's light in part of the annulus. Clipping a normal distribution at 3.5 sigmas
-	 * lowers its RMS by 0.3%.
-	 */
-	static double clippedSigma(final double[] values) {
-		if (values.length == 0) return Double.NaN;
-		final double[] dev = values.clone();
-		final double med = Statistics.quantile(dev, 0.5);
-		for (int i = 0; i < dev.length; i++)
-			dev[i] = Math.abs(values[i] - med);
-		double centre = med, sigma = Math.max(Statistics.MAD_TO_SIGMA * Statistics.quantile(dev, 0.5), 0.5);
-		for (int pass = 0; pass < 2; pass++) {
-			double n = 0, sum = 0, sum2 = 0;
-			for (final double v : values)
-				if (Math.abs(v - centre) <= CLIP_SIGMAS * sigma) {
-					n++;
-					sum += v;
-					sum2 += v * v;
-				}
-			if (n < 2) break;
-			centre = sum / n;
-			sigma = Math.sqrt(Math.max(0, sum2 / n - centre * centre));
-		}
-		return sigma;
-	}
-
 	private static boolean masked(final List<double[]> others, final int x, final int y, final double mask) {
 		final double m2 = mask * mask; // (squares: hypot's care for overflow costs a tenth of the helper's time)
 		for (final double[] s : others) {
@@ -1012,62 +910,6 @@ public final class ProfileAnalysis {
 			if (dx * dx + dy * dy < m2) return true;
 		}
 		return false;
-	}
-
-	/**
-	 * The plane {@code a + b x + c y} through the points by least squares, refitted once without the points more
-	 * than 3 robust sigmas off (a neighbour's light in part of the annulus).
-	 */
-	static double[] robustPlane(final DoubleList x, final DoubleList y, final DoubleList v) {
-		final boolean[] use = new boolean[x.size];
-		Arrays.fill(use, true);
-		double[] p = fitPlane(x, y, v, use);
-		final double[] dev = new double[x.size];
-		for (int i = 0; i < dev.length; i++)
-			dev[i] = Math.abs(v.get(i) - p[0] - p[1] * x.get(i) - p[2] * y.get(i));
-		final double cut = 3 * Statistics.MAD_TO_SIGMA * Statistics.quantile(dev.clone(), 0.5);
-		int kept = 0;
-		for (int i = 0; i < dev.length; i++)
-			if (use[i] = dev[i] <= cut) kept++;
-		if (kept >= MIN_BACKGROUND_PIXELS) p = fitPlane(x, y, v, use);
-		return p;
-	}
-
-	private static double[] fitPlane(final DoubleList x, final DoubleList y, final DoubleList v, final boolean[] use) {
-		double n = 0, sx = 0, sy = 0, sv = 0, sxx = 0, sxy = 0, syy = 0, sxv = 0, syv = 0;
-		for (int i = 0; i < x.size; i++) {
-			if (!use[i]) continue;
-			final double a = x.get(i), b = y.get(i), c = v.get(i);
-			n++;
-			sx += a;
-			sy += b;
-			sv += c;
-			sxx += a * a;
-			sxy += a * b;
-			syy += b * b;
-			sxv += a * c;
-			syv += b * c;
-		}
-		final double[][] m = { { n, sx, sy }, { sx, sxx, sxy }, { sy, sxy, syy } };
-		final double[] rhs = { sv, sxv, syv };
-		final double det = det3(m);
-		if (!(Math.abs(det) > 1e-9 * Math.max(1, n * sxx * syy))) {
-			// points on a line (an annulus cut to a sliver by the border): a constant
-			return new double[] { sv / Math.max(n, 1), 0, 0 };
-		}
-		final double[] p = new double[3];
-		for (int j = 0; j < 3; j++) {
-			final double[][] mj = { m[0].clone(), m[1].clone(), m[2].clone() };
-			for (int i = 0; i < 3; i++)
-				mj[i][j] = rhs[i];
-			p[j] = det3(mj) / det;
-		}
-		return p;
-	}
-
-	private static double det3(final double[][] m) {
-		return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-			m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
 	}
 
 	/** The reach: scanning inwards from the background annulus, the first ring off the background by more than s. */
@@ -1229,24 +1071,5 @@ public final class ProfileAnalysis {
 	/** How the helper's error messages write a number: {@value #SIGNIFICANT_DIGITS} significant digits. */
 	private static String fmt(final double v) {
 		return Numbers.significant(v, SIGNIFICANT_DIGITS);
-	}
-
-	/** A growable array of doubles. */
-	static final class DoubleList {
-		private double[] a = new double[64];
-		int size;
-
-		void add(final double v) {
-			if (size == a.length) a = Arrays.copyOf(a, 2 * size);
-			a[size++] = v;
-		}
-
-		double get(final int i) {
-			return a[i];
-		}
-
-		double[] toArray() {
-			return Arrays.copyOf(a, size);
-		}
 	}
 }
