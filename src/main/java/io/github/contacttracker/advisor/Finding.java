@@ -60,8 +60,9 @@ public sealed interface Finding {
 	record MergedAtPoint() implements Finding {}
 
 	/**
-	 * The particle at the point given is not isolated: its nearest neighbour is closer than twice {@code r_out}, so its profile does not return to the background between them: the profile and the values are
-	 * the frame's most isolated particles'.
+	 * The particle at the point given is not isolated: its nearest neighbour is closer than twice {@code r_out}, so its
+	 * profile does not return to the background between them: the profile and the values are the frame's most isolated
+	 * particles'.
 	 *
 	 * @param neighbour its nearest neighbour's distance, or the image edge's when that is nearer (px)
 	 * @param edge whether {@code neighbour} is the edge's distance (beyond the edge neighbours go unseen)

@@ -320,20 +320,20 @@ public final class ProfileAnalysis {
 		final Sized sized = sizeAndMeasure(plane, spots, at, diameterGiven, maxRadiusGiven, findings);
 		final double diameter = sized.diameter();
 		final Measured m = sized.measured();
-		final Pooled pooled = m.pooled();
+		final PooledProfile pooled = m.pooled();
 		final double[] centre = m.centres().get(0), subject = m.at() != null ? m.at() : centre;
 		final double rOut = m.reach() + R_OUT_MARGIN_PX;
 		final double[] level = levels(pooled);
 		final Threshold t = threshold(plane, pooled, level, diameter, m.reach(), centre, findings);
-		final double activeRadius = activeRadius(pooled.radius, level, pooled.count, t.threshold());
+		final double activeRadius = activeRadius(pooled.radius(), level, pooled.count(), t.threshold());
 		if (activeRadius == 0) findings.add(new Finding.ThresholdAboveCentre());
 		final List<double[]> inFrame = new ArrayList<>();
 		for (final double[] c : m.centres())
 			inFrame.add(new double[] { c[0] + plane.minX(), c[1] + plane.minY() });
-		return new Result(subject[0] + plane.minX(), subject[1] + plane.minY(), m.refined(), diameter, sized.estimated(),
-			m.centres().size(), m.radiusCap(), pooled.radius, level, pooled.count, pooled.background, pooled.noise, t
-				.peak(), m.reach(), rOut, t.bridge(), t.atContact(), t.threshold(), activeRadius, inFrame, findings, kinds(
-					kindFrames, t.threshold(), rOut, minArea(activeRadius)));
+		return new Result(subject[0] + plane.minX(), subject[1] + plane.minY(), m.refined(), diameter, sized
+			.estimated(), m.centres().size(), m.radiusCap(), pooled.radius(), level, pooled.count(), pooled.background(), pooled
+				.noise(), t.peak(), m.reach(), rOut, t.bridge(), t.atContact(), t.threshold(), activeRadius, inFrame,
+			findings, kinds(kindFrames, t.threshold(), rOut, minArea(activeRadius)));
 	}
 
 	/**
@@ -491,7 +491,7 @@ public final class ProfileAnalysis {
 	 *         at {@code level}: the brightest point between them lies below it
 	 */
 	private static boolean apart(final Measured m, final double distance, final double level) {
-		return m.pooled().background + brightestBetween(m.pooled(), distance, m.reach()) < level;
+		return m.pooled().background() + ThresholdRules.brightestBetween(m.pooled(), distance, m.reach()) < level;
 	}
 
 	/**
@@ -526,21 +526,24 @@ public final class ProfileAnalysis {
 	 * particle (bright fringes between touching particles in bright field are brighter than the sum of two
 	 * profiles), up to half the cores' height.
 	 */
-	private static Threshold threshold(final Plane plane, final Pooled pooled, final double[] level,
+	private static Threshold threshold(final Plane plane, final PooledProfile pooled, final double[] level,
 		final double diameter, final double reach, final double[] centre, final List<Finding> findings)
 	{
-		final double bridge = pooled.background + Math.max(0, brightestBetween(pooled, diameter, reach));
-		final double atContact = bridge + THRESHOLD_MARGIN_SIGMAS * pooled.noise;
+		final double bridge = pooled.background() + Math.max(0, ThresholdRules.brightestBetween(pooled, diameter,
+			reach));
+		final double atContact = bridge + THRESHOLD_MARGIN_SIGMAS * pooled.noise();
 		// the active areas that count as particles at a threshold: as the tracker will keep them (small particles' are
 		// smaller than the default min_area: counting only the larger ones would judge the merges alone)
-		final DoubleToIntFunction minArea = th -> minArea(activeRadius(pooled.radius, level, pooled.count, th));
-		final double[] gap = ThresholdRules.textureGap(plane, atContact, pooled.background, minArea.applyAsInt(atContact));
-		final double clear = Math.max(atContact, Double.isNaN(gap[0]) ? atContact : pooled.background + (gap[0] +
+		final DoubleToIntFunction minArea = th -> minArea(activeRadius(pooled.radius(), level, pooled.count(), th));
+		final double[] gap = ThresholdRules.textureGap(plane, atContact, pooled.background(), minArea.applyAsInt(
+			atContact));
+		final double clear = Math.max(atContact, Double.isNaN(gap[0]) ? atContact : pooled.background() + (gap[0] +
 			gap[1]) / 2);
 		if (clear > atContact) findings.add(new Finding.BackgroundTexture(atContact, (int) gap[2], gap[0], gap[1]));
 		final double peak = peak(plane, centre[0], centre[1], Math.max(2, diameter / 4));
-		final double ceiling = pooled.background + 0.5 * (peak - pooled.background);
-		final double[] shaped = ThresholdRules.roundFrom(plane, clear, ceiling, Math.max(0.5, pooled.noise / 2), minArea);
+		final double ceiling = pooled.background() + 0.5 * (peak - pooled.background());
+		final double[] shaped = ThresholdRules.roundFrom(plane, clear, ceiling, Math.max(0.5, pooled.noise() / 2),
+			minArea);
 		final double threshold = shaped[0];
 		if (threshold > clear) findings.add(new Finding.RaisedUntilRound(clear, (int) shaped[1], (int) shaped[2]));
 		else if (shaped[1] > 0) findings.add(new Finding.NotRound((int) shaped[1], (int) shaped[2], ceiling));
@@ -548,10 +551,10 @@ public final class ProfileAnalysis {
 	}
 
 	/** @return each ring's grey level: the background plus its height (NaN for an empty ring) */
-	private static double[] levels(final Pooled pooled) {
-		final double[] level = new double[pooled.radius.length];
+	private static double[] levels(final PooledProfile pooled) {
+		final double[] level = new double[pooled.radius().length];
 		for (int k = 0; k < level.length; k++)
-			level[k] = pooled.count[k] > 0 ? pooled.background + pooled.height[k] : Double.NaN;
+			level[k] = pooled.count()[k] > 0 ? pooled.background() + pooled.height()[k] : Double.NaN;
 		return level;
 	}
 
@@ -594,12 +597,13 @@ public final class ProfileAnalysis {
 
 	/**
 	 * The profile of the particles chosen for a diameter: their centres, how far out it is measured, the pooled
-	 * profile, its reach and where the particles' own image ends ({@link #imageEdge(Pooled, double)}).
+	 * profile, its reach and where the particles' own image ends
+	 * ({@link PooledProfile#imageEdge(PooledProfile, double)}).
 	 *
 	 * @param at the centre of the particle at the point given (whether profiled or not), {@code null} without a point
 	 */
-	private record Measured(List<double[]> centres, double[] at, boolean refined, double radiusCap, Pooled pooled,
-		double reach, double imageEdge, List<Finding> findings) {
+	private record Measured(List<double[]> centres, double[] at, boolean refined, double radiusCap,
+		PooledProfile pooled, double reach, double imageEdge, List<Finding> findings) {
 
 		Measured withAt(final double[] point, final boolean pointRefined, final List<Finding> more) {
 			final List<Finding> all = new ArrayList<>(more);
@@ -613,15 +617,16 @@ public final class ProfileAnalysis {
 	 * pools their profile, twice (the masks widened to the measured reach the second time).
 	 * <p>
 	 * A particle at a point is profiled alone only when it is isolated: its nearest neighbour, and the image's edge
-	 * (beyond which a neighbour goes unseen), at least twice {@code r_out} away (the reach plus {@value #R_OUT_MARGIN_PX} px, measured on the frame's most isolated
-	 * particles or on the particle alone, whichever is larger), so that no pixel holds the light of both and the
-	 * neighbours' masks leave its own pixels. Closer,
-	 * its profile never returns to the background between it and its neighbours: its own background, noise and
-	 * reach would be the neighbours' halos (a reach of twice the true one, masks that swallow the particle itself),
-	 * so the profile and the values are the frame's most isolated particles' instead (as without a point), and said
-	 * ({@link Finding.FrameValuesAtPoint}).
+	 * (beyond which a neighbour goes unseen), at least twice {@code r_out} away (the reach plus
+	 * {@value #R_OUT_MARGIN_PX} px, measured on the frame's most isolated particles or on the particle alone,
+	 * whichever is larger), so that no pixel holds the light of both and the neighbours' masks leave its own pixels.
+	 * Closer, its profile never returns to the background between it and its neighbours: its own background, noise
+	 * and reach would be the neighbours' halos (a reach of twice the true one, masks that swallow the particle
+	 * itself), so the profile and the values are the frame's most isolated particles' instead (as without a point),
+	 * and said ({@link Finding.FrameValuesAtPoint}).
 	 *
-	 * @param narrow whether the masks may narrow where they leave no background ({@link #poolNarrowing}): for an
+	 * @param narrow whether the masks may narrow where they leave no background ({@link PooledProfile#poolNarrowing}):
+	 *        for an
 	 *        estimated diameter; a given one that leaves none is wrong for the image, and the front ends say so and
 	 *        estimate it instead
 	 */
@@ -753,231 +758,14 @@ public final class ProfileAnalysis {
 		final double radiusCap = Math.min(wanted, farthestCorner(centres.get(0)[0], centres.get(0)[1], plane.width(),
 			plane.height()));
 		final double narrowest = narrow ? diameter / 2 : Double.POSITIVE_INFINITY;
-		Pooled pooled = poolNarrowing(plane, centres, s.xy(), diameter, radiusCap, narrowest, null);
-		double reach = reach(pooled, radiusCap, null);
-		pooled = poolNarrowing(plane, centres, s.xy(), Math.max(diameter, reach + R_OUT_MARGIN_PX), radiusCap,
-			narrowest, findings);
-		reach = reach(pooled, radiusCap, findings);
-		return new Measured(pooled.centres(), null, true, radiusCap, pooled, reach, imageEdge(pooled, reach),
-			findings);
-	}
-
-	/**
-	 * Where the particle's own image ends: the outer edge of its dark ring (where the profile, past its minimum,
-	 * comes back within the noise of the background) when it has one deeper than {@value #THRESHOLD_MARGIN_SIGMAS}
-	 * noise sigmas, as bright-field particles do; otherwise the reach. A faint halo beyond the ring is light the
-	 * particle scatters, not the particle: in bright field it can reach beyond a neighbour at contact, so taking it
-	 * for the particle's image would make every particle of a dense field look touched (figures: fiji.md).
-	 */
-	private static double imageEdge(final Pooled p, final double reach) {
-		int deepest = -1;
-		for (int k = 0; k < p.radius.length && p.radius[k] < reach; k++)
-			if (p.count[k] > 0 && (deepest < 0 || p.height[k] < p.height[deepest])) deepest = k;
-		if (deepest < 0 || !(p.height[deepest] < -THRESHOLD_MARGIN_SIGMAS * p.noise)) return reach;
-		int previous = deepest;
-		for (int k = deepest + 1; k < p.radius.length; k++) {
-			if (p.count[k] == 0) continue;
-			if (p.height[k] >= -p.noise) return p.radius[previous] + (p.radius[k] - p.radius[previous]) * (-p.noise -
-				p.height[previous]) / (p.height[k] - p.height[previous]);
-			previous = k;
-		}
-		return reach;
-	}
-
-	/** The profile pooled over particles: ring heights above the local background, and the noise. */
-	private record Pooled(double[] radius, double[] height, int[] count, double background, double noise,
-		List<double[]> centres) {}
-
-	/**
-	 * {@link #pool}, the mask narrowed (by {@value #MASK_NARROWING} at a time, down to {@code narrowest}) while no
-	 * particle has background pixels left around it: in a dense field of particles that do not touch (spaced a
-	 * little more than a diameter apart), every pixel lies within a diameter of some neighbour. Narrowed, it is
-	 * reported in {@code findings} (when not null).
-	 *
-	 * @param narrowest the narrowest mask tried (half the diameter; infinite: the mask as it is)
-	 * @throws InvalidInputException naming the particle tried first when no mask down to {@code narrowest} leaves
-	 *         background
-	 */
-	private static Pooled poolNarrowing(final Plane plane, final List<double[]> centres, final double[][] spots,
-		final double mask, final double radiusCap, final double narrowest, final List<Finding> findings)
-	{
-		NoBackground first = null;
-		for (double m = mask; m == mask || m >= narrowest; m *= MASK_NARROWING)
-			try {
-				final Pooled pooled = pool(plane, centres, spots, m, radiusCap);
-				if (first != null && findings != null) findings.add(new Finding.NeighboursMaskedCloser(m, mask));
-				return pooled;
-			}
-			catch (final NoBackground e) {
-				if (first == null) first = e;
-			}
-		throw first;
-	}
-
-	/** Each step of {@link #poolNarrowing} multiplies the mask by this. */
-	static final double MASK_NARROWING = 0.8;
-
-	/** No particle pooled has enough background pixels around it: the message names the first one tried. */
-	private static final class NoBackground extends InvalidInputException {
-
-		private static final long serialVersionUID = 1L;
-
-		NoBackground(final String message) {
-			super(message);
-		}
-	}
-
-	/**
-	 * Pools the pixels around {@code centres} within {@code radiusCap}, masking pixels within {@code mask} of every
-	 * other spot of {@code spots}; each particle's local background is a plane fitted robustly to its annulus.
-	 *
-	 * @throws NoBackground when no particle has enough background pixels
-	 */
-	private static Pooled pool(final Plane plane, final List<double[]> centres, final double[][] spots,
-		final double mask, final double radiusCap)
-	{
-		final int bins = (int) Math.floor(radiusCap + 0.5) + 1;
-		final DoubleList[] rings = new DoubleList[bins];
-		for (int k = 0; k < bins; k++)
-			rings[k] = new DoubleList();
-		final double[] sumR = new double[bins];
-		final DoubleList residuals = new DoubleList();
-		final double inner = innerBackgroundRadius(radiusCap);
-		final int w = plane.width(), h = plane.height();
-		double backgroundSum = 0;
-		String failure = null;
-		final List<double[]> used = new ArrayList<>();
-		for (final double[] c : centres) {
-			final int x0 = (int) Math.max(0, Math.floor(c[0] - radiusCap)), x1 = (int) Math.min(w - 1, Math.ceil(c[0] +
-				radiusCap));
-			final int y0 = (int) Math.max(0, Math.floor(c[1] - radiusCap)), y1 = (int) Math.min(h - 1, Math.ceil(c[1] +
-				radiusCap));
-			// the other spots that can reach into this window
-			final List<double[]> others = new ArrayList<>();
-			for (final double[] s : spots)
-				if (Math.hypot(s[0] - c[0], s[1] - c[1]) > 1 && Math.hypot(s[0] - c[0], s[1] - c[1]) < radiusCap + mask)
-					others.add(s);
-			final DoubleList ax = new DoubleList(), ay = new DoubleList(), av = new DoubleList();
-			for (int y = y0; y <= y1; y++)
-				for (int x = x0; x <= x1; x++) {
-					final double r = Math.sqrt((x - c[0]) * (x - c[0]) + (y - c[1]) * (y - c[1]));
-					if (r < inner || r > radiusCap || masked(others, x, y, mask)) continue;
-					ax.add(x - c[0]);
-					ay.add(y - c[1]);
-					av.add(plane.get(x, y));
-				}
-			if (ax.size < MIN_BACKGROUND_PIXELS) {
-				// neighbours all round (a dense monolayer) or the border: the next particle may do
-				if (failure == null) failure = String.format(Locale.ROOT, "only %d background pixels lie between %s and " +
-					"%s px from the particle at (%s, %s) inside the image and away from its neighbours: too few to " +
-					"measure the background; use a larger max_radius or another particle", ax.size, fmt(round2(inner)),
-					fmt(round2(radiusCap)), fmt(round2(c[0] + plane.minX())), fmt(round2(c[1] + plane.minY())));
-				continue;
-			}
-			used.add(c);
-			final double[] plane3 = BackgroundPlane.robust(ax, ay, av);
-			backgroundSum += plane3[0];
-			for (int i = 0; i < ax.size; i++)
-				residuals.add(av.get(i) - plane3[0] - plane3[1] * ax.get(i) - plane3[2] * ay.get(i));
-			for (int y = y0; y <= y1; y++)
-				for (int x = x0; x <= x1; x++) {
-					final double r = Math.sqrt((x - c[0]) * (x - c[0]) + (y - c[1]) * (y - c[1]));
-					final int k = (int) Math.floor(r + 0.5);
-					if (r > radiusCap || k >= bins || masked(others, x, y, mask)) continue;
-					rings[k].add(plane.get(x, y) - plane3[0] - plane3[1] * (x - c[0]) - plane3[2] * (y - c[1]));
-					sumR[k] += r;
-				}
-		}
-		if (used.isEmpty()) throw new NoBackground(failure);
-		final double noise = Statistics.clippedSigma(residuals.toArray(), CLIP_SIGMAS);
-		int filled = bins;
-		while (filled > 0 && rings[filled - 1].size == 0)
-			filled--;
-		final double[] radius = new double[filled], height = new double[filled];
-		final int[] count = new int[filled];
-		for (int k = 0; k < filled; k++) {
-			count[k] = rings[k].size;
-			radius[k] = count[k] > 0 ? sumR[k] / count[k] : k;
-			height[k] = count[k] > 0 ? Statistics.interquartileMean(rings[k].toArray(), count[k]) : Double.NaN;
-		}
-		return new Pooled(radius, height, count, backgroundSum / used.size(), noise, used);
-	}
-
-	private static boolean masked(final List<double[]> others, final int x, final int y, final double mask) {
-		final double m2 = mask * mask; // (squares: hypot's care for overflow costs a tenth of the helper's time)
-		for (final double[] s : others) {
-			final double dx = x - s[0], dy = y - s[1];
-			if (dx * dx + dy * dy < m2) return true;
-		}
-		return false;
-	}
-
-	/** The reach: scanning inwards from the background annulus, the first ring off the background by more than s. */
-	private static double reach(final Pooled p, final double radiusCap, final List<Finding> findings) {
-		final double inner = innerBackgroundRadius(radiusCap);
-		int last = -1;
-		for (int k = 0; k < p.radius.length; k++)
-			if (p.radius[k] < inner && p.count[k] > 0) last = k;
-		for (int k = last; k >= 0; k--) {
-			if (p.count[k] == 0 || !(Math.abs(p.height[k]) > p.noise)) continue;
-			if (k == last) {
-				if (findings != null) findings.add(new Finding.NotBackToBackground(inner));
-				return p.radius[k];
-			}
-			int j = k + 1;
-			while (j < last && p.count[j] == 0)
-				j++;
-			final double a = Math.abs(p.height[k]), b = Math.abs(p.height[j]);
-			return p.radius[k] + (p.radius[j] - p.radius[k]) * (a - p.noise) / (a - b);
-		}
-		return 0;
-	}
-
-	/**
-	 * The brightest height above background, at points at least {@code D/2} from every centre, of two particles
-	 * at contact and of three in a touching triangle (0 where nothing reaches).
-	 */
-	private static double brightestBetween(final Pooled p, final double diameter, final double reach) {
-		final double[][][] configurations = { { { 0, 0 }, { diameter, 0 } }, { { 0, 0 }, { diameter, 0 }, { diameter /
-			2, diameter * Math.sqrt(3) / 2 } } };
-		double best = Double.NEGATIVE_INFINITY;
-		final double half2 = diameter * diameter / 4;
-		for (final double[][] conf : configurations) {
-			final double x0 = -reach, x1 = diameter + reach, y0 = -reach, y1 = diameter + reach;
-			for (double y = y0; y <= y1; y += BRIDGE_STEP_PX)
-				for (double x = x0; x <= x1; x += BRIDGE_STEP_PX) {
-					boolean outside = true;
-					double sum = 0;
-					for (final double[] c : conf) {
-						final double d2 = (x - c[0]) * (x - c[0]) + (y - c[1]) * (y - c[1]);
-						if (d2 < half2) {
-							outside = false;
-							break;
-						}
-						sum += height(p, Math.sqrt(d2), reach);
-					}
-					if (outside) best = Math.max(best, sum);
-				}
-		}
-		return best;
-	}
-
-	/** The pooled profile at radius {@code r}, linearly interpolated; 0 beyond the reach. */
-	private static double height(final Pooled p, final double r, final double reach) {
-		if (r > reach) return 0;
-		int below = -1, above = -1;
-		for (int k = 0; k < p.radius.length; k++) {
-			if (p.count[k] == 0) continue;
-			if (p.radius[k] <= r) below = k;
-			else {
-				above = k;
-				break;
-			}
-		}
-		if (below < 0) return above < 0 ? 0 : p.height[above];
-		if (above < 0) return p.height[below];
-		return p.height[below] + (p.height[above] - p.height[below]) * (r - p.radius[below]) / (p.radius[above] -
-			p.radius[below]);
+		PooledProfile pooled = PooledProfile.poolNarrowing(plane, centres, s.xy(), diameter, radiusCap, narrowest,
+			null);
+		double reach = PooledProfile.reach(pooled, radiusCap, null);
+		pooled = PooledProfile.poolNarrowing(plane, centres, s.xy(), Math.max(diameter, reach + R_OUT_MARGIN_PX),
+			radiusCap, narrowest, findings);
+		reach = PooledProfile.reach(pooled, radiusCap, findings);
+		return new Measured(pooled.centres(), null, true, radiusCap, pooled, reach, PooledProfile.imageEdge(pooled,
+			reach), findings);
 	}
 
 	/**
@@ -1043,10 +831,6 @@ public final class ProfileAnalysis {
 	}
 
 
-	private static double innerBackgroundRadius(final double radiusCap) {
-		return radiusCap * (1 - BACKGROUND_ANNULUS_PERCENT / 100.0);
-	}
-
 	private static double peak(final Plane plane, final double cx, final double cy, final double within) {
 		double peak = Double.NEGATIVE_INFINITY;
 		final int x0 = (int) Math.max(0, Math.floor(cx - within)), x1 = (int) Math.min(plane.width() - 1, Math.ceil(cx +
@@ -1064,12 +848,12 @@ public final class ProfileAnalysis {
 		return Math.hypot(dx, dy);
 	}
 
-	private static double round2(final double v) {
+	static double round2(final double v) {
 		return Math.round(v * 100) / 100.0;
 	}
 
 	/** How the helper's error messages write a number: {@value #SIGNIFICANT_DIGITS} significant digits. */
-	private static String fmt(final double v) {
+	static String fmt(final double v) {
 		return Numbers.significant(v, SIGNIFICANT_DIGITS);
 	}
 }

@@ -32,9 +32,10 @@ import io.github.contacttracker.core.image.Region;
 import io.github.contacttracker.core.radial.ComponentShape;
 
 /**
- * The rules that raise the helper's threshold above the contact rule's: clear of the background's texture (bright
+ * The helper's threshold rules: the contact rule's bridge (the brightest point between particles at contact, from
+ * the pooled profile), and the rules that raise the threshold above it: clear of the background's texture (bright
  * spots of halos and rings that are no particle's core) and until the frame's active areas have the shape of one
- * particle each. Both read the frame at candidate thresholds.
+ * particle each (these two read the frame at candidate thresholds).
  */
 final class ThresholdRules {
 
@@ -112,5 +113,34 @@ final class ThresholdRules {
 			if (ComponentShape.of(r).outlineMerged(false)) bad++;
 		}
 		return new int[] { bad, all };
+	}
+
+	/**
+	 * The brightest height above background, at points at least {@code D/2} from every centre, of two particles
+	 * at contact and of three in a touching triangle (0 where nothing reaches).
+	 */
+	static double brightestBetween(final PooledProfile p, final double diameter, final double reach) {
+		final double[][][] configurations = { { { 0, 0 }, { diameter, 0 } }, { { 0, 0 }, { diameter, 0 }, { diameter /
+			2, diameter * Math.sqrt(3) / 2 } } };
+		double best = Double.NEGATIVE_INFINITY;
+		final double half2 = diameter * diameter / 4;
+		for (final double[][] conf : configurations) {
+			final double x0 = -reach, x1 = diameter + reach, y0 = -reach, y1 = diameter + reach;
+			for (double y = y0; y <= y1; y += ProfileAnalysis.BRIDGE_STEP_PX)
+				for (double x = x0; x <= x1; x += ProfileAnalysis.BRIDGE_STEP_PX) {
+					boolean outside = true;
+					double sum = 0;
+					for (final double[] c : conf) {
+						final double d2 = (x - c[0]) * (x - c[0]) + (y - c[1]) * (y - c[1]);
+						if (d2 < half2) {
+							outside = false;
+							break;
+						}
+						sum += PooledProfile.height(p, Math.sqrt(d2), reach);
+					}
+					if (outside) best = Math.max(best, sum);
+				}
+		}
+		return best;
 	}
 }
