@@ -59,6 +59,19 @@ public sealed interface Finding {
 	/** The particle at the point given has an active area that looks merged with a neighbour's. */
 	record MergedAtPoint() implements Finding {}
 
+	/**
+	 * The particle at the point given is not isolated: its nearest neighbour is closer than twice {@code r_out}, so its
+	 * profile does not return to the background between them: the profile and the values are the frame's most isolated
+	 * particles'.
+	 *
+	 * @param neighbour its nearest neighbour's distance, or the image edge's when that is nearer (px)
+	 * @param edge whether {@code neighbour} is the edge's distance (beyond the edge neighbours go unseen)
+	 * @param rOut {@code r_out} (px): the reach plus the margin, of the frame's most isolated particles' profile or
+	 *        of the particle's own, whichever is larger
+	 * @param others how many of the frame's particles are profiled instead
+	 */
+	record FrameValuesAtPoint(double neighbour, boolean edge, double rOut, int others) implements Finding {}
+
 	/** No spot near the point given: the profile is taken around the point itself. */
 	record NotRefined() implements Finding {}
 
@@ -118,12 +131,4 @@ public sealed interface Finding {
 
 	/** The suggested threshold is above the particle's centre. */
 	record ThresholdAboveCentre() implements Finding {}
-
-	/**
-	 * {@code r_out} is larger than the diameter.
-	 *
-	 * @param rOut the suggested {@code r_out}, not rounded (px)
-	 * @param diameter the diameter (px)
-	 */
-	record ROutAboveDiameter(double rOut, double diameter) implements Finding {}
 }

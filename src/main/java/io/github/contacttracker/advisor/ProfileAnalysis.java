@@ -55,15 +55,16 @@ import net.imglib2.type.numeric.RealType;
  * across the frame, dense neighbours and compression (MJPEG) noise.
  * <ol>
  * <li>Particles: the frame's bright spots at half height between the frame's median and its brightest pixels
- * (a point given: the brightest pixel near it), localized by one radial-symmetry pass; merged spots (by shape)
- * and spots at the border are not profiled.</li>
+ * (a point given on a particle fainter than that: half its brightest pixel's height), localized by one
+ * radial-symmetry pass; merged spots (by shape) and spots at the border are not profiled.</li>
  * <li>Diameter {@code D}: given, or the smaller of the 10th percentile of the spots' nearest-neighbour distances
  * (colloids at contact sit one diameter apart) and twice where the particles' own image ends (the outer edge of a
  * dark ring, else the reach), read off a profile taken to a provisional diameter and measured again at the
  * estimate; a warning says which.</li>
- * <li>Profiled particles: the point given, or up to {@value #MAX_PARTICLES} spots with the largest distances to
- * their nearest neighbour. Pixels within the reach of any other spot are masked (first {@code D}, then the
- * measured reach).</li>
+ * <li>Profiled particles: up to {@value #MAX_PARTICLES} spots with the largest distances to their nearest
+ * neighbour; a point given, its particle alone when isolated (nearest neighbour and image edge at least twice
+ * {@code r_out} away), else those spots, and said. Pixels within the reach of any other spot are masked (first
+ * {@code D}, then the measured reach).</li>
  * <li>Local background: around each particle a plane fitted robustly to the outer {@value #BACKGROUND_ANNULUS_PERCENT}%
  * of {@code max_radius} ({@value #AUTO_RADIUS_DIAMETERS} diameters unless given): a background drifting across
  * the frame is removed with it.</li>
@@ -81,8 +82,8 @@ import net.imglib2.type.numeric.RealType;
  * centres (outside every particle's own half): the brightest such point is the bridge their active areas must
  * not reach. The threshold is the bridge plus {@value #THRESHOLD_MARGIN_SIGMAS} {@code s}. On a saturated core
  * only the plateau is flat, and the rule does not look inside {@code D/2}.</li>
- * <li>Raised, when it must be, clear of the background's texture ({@link #textureGap}) and until the frame's
- * active areas are round ({@link #roundFrom}).</li>
+ * <li>Raised, when it must be, clear of the background's texture ({@link ThresholdRules#textureGap}) and until the
+ * frame's active areas are round ({@link ThresholdRules#roundFrom}).</li>
  * <li>Kinds of particle ({@link #kinds}): the frame tracked at the suggested threshold and {@code r_out} (the
  * paper's method), each particle measured about its centre ({@link KindFeatures}) and the kinds found
  * automatically ({@link Kinds#find(java.util.Collection)}), as the tracker finds them.</li>
@@ -112,10 +113,6 @@ public final class ProfileAnalysis {
 	 * its dark ring lying outside a narrow bright core; six leaves a margin above both.
 	 */
 	static final double PROVISIONAL_CORE_RADII = 6;
-	/** Smallest ratio of peak heights that separates the background's texture from the particles' cores. */
-	static final double TEXTURE_GAP_RATIO = 2;
-	/** At most this share (percent) of the active areas may fail the outline tests at the suggested threshold. */
-	static final int MAX_NOT_ROUND_PERCENT = 1;
 	/** Grid step (px) of the bridge search. */
 	static final double BRIDGE_STEP_PX = 0.5;
 	/** Significant digits of the numbers in the helper's messages and warnings ({@link Numbers#significant}). */
@@ -124,7 +121,8 @@ public final class ProfileAnalysis {
 	/**
 	 * What the profile shows.
 	 *
-	 * @param x refined centre x of the (first) profiled particle (px, TrackMate convention)
+	 * @param x refined centre x of the particle at the point given, else of the first profiled particle (px,
+	 *        TrackMate convention)
 	 * @param y refined centre y (px)
 	 * @param refined whether the particle was found by radial symmetry (else the point given is used)
 	 * @param diameter the particle diameter (px), given or estimated
@@ -176,6 +174,21 @@ public final class ProfileAnalysis {
 		/** @return {@link #rOut} rounded up to whole pixels */
 		public double suggestedROut() {
 			return Math.ceil(rOut - 1e-9);
+		}
+
+		/**
+		 * What the paper's second pass keeps of a particle at contact with one neighbour, at the suggested values:
+		 * the part of its active disc (radius {@link #activeRadius}) farther than {@link #suggestedROut} from the
+		 * neighbour's centre, {@link #diameter} away. {@code r_out} is where a particle's light returns to the
+		 * background, which for a haloed particle lies beyond a diameter; the second pass then keeps less than half
+		 * of the active area, and nothing once {@code r_out >= D + activeRadius}. Below
+		 * {@link TrackerParameters#DEFAULT_MIN_SECOND_AREA} px the paper's method keeps the first pass there
+		 * ({@code FELL_BACK}); the profile methods model the neighbours' light and need no undistorted area.
+		 *
+		 * @return that area (px, the discs' geometry)
+		 */
+		public double secondPassArea() {
+			return discOutside(activeRadius, suggestedROut(), diameter);
 		}
 
 		/**
@@ -307,21 +320,20 @@ public final class ProfileAnalysis {
 		final Sized sized = sizeAndMeasure(plane, spots, at, diameterGiven, maxRadiusGiven, findings);
 		final double diameter = sized.diameter();
 		final Measured m = sized.measured();
-		final Pooled pooled = m.pooled();
-		final double[] centre = m.centres().get(0);
+		final PooledProfile pooled = m.pooled();
+		final double[] centre = m.centres().get(0), subject = m.at() != null ? m.at() : centre;
 		final double rOut = m.reach() + R_OUT_MARGIN_PX;
 		final double[] level = levels(pooled);
 		final Threshold t = threshold(plane, pooled, level, diameter, m.reach(), centre, findings);
-		final double activeRadius = activeRadius(pooled.radius, level, pooled.count, t.threshold());
+		final double activeRadius = activeRadius(pooled.radius(), level, pooled.count(), t.threshold());
 		if (activeRadius == 0) findings.add(new Finding.ThresholdAboveCentre());
-		if (rOut > diameter) findings.add(new Finding.ROutAboveDiameter(rOut, diameter));
 		final List<double[]> inFrame = new ArrayList<>();
 		for (final double[] c : m.centres())
 			inFrame.add(new double[] { c[0] + plane.minX(), c[1] + plane.minY() });
-		return new Result(centre[0] + plane.minX(), centre[1] + plane.minY(), m.refined(), diameter, sized.estimated(),
-			m.centres().size(), m.radiusCap(), pooled.radius, level, pooled.count, pooled.background, pooled.noise, t
-				.peak(), m.reach(), rOut, t.bridge(), t.atContact(), t.threshold(), activeRadius, inFrame, findings, kinds(
-					kindFrames, t.threshold(), rOut, minArea(activeRadius)));
+		return new Result(subject[0] + plane.minX(), subject[1] + plane.minY(), m.refined(), diameter, sized
+			.estimated(), m.centres().size(), m.radiusCap(), pooled.radius(), level, pooled.count(), pooled.background(), pooled
+				.noise(), t.peak(), m.reach(), rOut, t.bridge(), t.atContact(), t.threshold(), activeRadius, inFrame,
+			findings, kinds(kindFrames, t.threshold(), rOut, minArea(activeRadius)));
 	}
 
 	/**
@@ -384,7 +396,9 @@ public final class ProfileAnalysis {
 
 	/**
 	 * Step 1: the spots at half height between the frame's median and its brightest pixels (or the brightest pixel
-	 * near the point given), by one radial-symmetry pass.
+	 * near the point given, when that lies below the frame's half height), by one radial-symmetry pass. The same
+	 * spots with a point as without, wherever the particle at the point is among them: the frame's values, when the
+	 * particle at a point gives them ({@link #measure}), are then those of the frame.
 	 *
 	 * @param point the point given, in the frame's coordinates ({@code null} if none)
 	 * @param at the same point in the plane's coordinates
@@ -397,8 +411,10 @@ public final class ProfileAnalysis {
 		final double median0 = Statistics.quantile(sample, 0.5);
 		final double noise0 = Math.max(NoiseEstimate.sigma(plane), 1e-6);
 		final double near = diameterGiven > 0 ? Math.max(2, diameterGiven / 4) : 5;
-		final double top = point != null ? peak(plane, at[0], at[1], near) : Statistics.quantile(sample, 1 - Math.max(1e-4, 20.0 /
-			sample.length));
+		final double frameTop = Statistics.quantile(sample, 1 - Math.max(1e-4, 20.0 / sample.length));
+		// the frame's spots, as without a point, unless the particle at the point would not be among them
+		final double own = point != null ? peak(plane, at[0], at[1], near) : frameTop;
+		final double top = own >= median0 + 0.5 * (frameTop - median0) ? frameTop : own;
 		if (!(top - median0 > THRESHOLD_MARGIN_SIGMAS * noise0)) {
 			if (point != null) throw new InvalidInputException(String.format(Locale.ROOT, "no bright particle at " +
 				"(%s, %s): the brightest pixel within %s px is %s, within %s noise sigmas (%s) of the background %s", fmt(
@@ -475,7 +491,7 @@ public final class ProfileAnalysis {
 	 *         at {@code level}: the brightest point between them lies below it
 	 */
 	private static boolean apart(final Measured m, final double distance, final double level) {
-		return m.pooled().background + brightestBetween(m.pooled(), distance, m.reach()) < level;
+		return m.pooled().background() + ThresholdRules.brightestBetween(m.pooled(), distance, m.reach()) < level;
 	}
 
 	/**
@@ -510,21 +526,24 @@ public final class ProfileAnalysis {
 	 * particle (bright fringes between touching particles in bright field are brighter than the sum of two
 	 * profiles), up to half the cores' height.
 	 */
-	private static Threshold threshold(final Plane plane, final Pooled pooled, final double[] level,
+	private static Threshold threshold(final Plane plane, final PooledProfile pooled, final double[] level,
 		final double diameter, final double reach, final double[] centre, final List<Finding> findings)
 	{
-		final double bridge = pooled.background + Math.max(0, brightestBetween(pooled, diameter, reach));
-		final double atContact = bridge + THRESHOLD_MARGIN_SIGMAS * pooled.noise;
+		final double bridge = pooled.background() + Math.max(0, ThresholdRules.brightestBetween(pooled, diameter,
+			reach));
+		final double atContact = bridge + THRESHOLD_MARGIN_SIGMAS * pooled.noise();
 		// the active areas that count as particles at a threshold: as the tracker will keep them (small particles' are
 		// smaller than the default min_area: counting only the larger ones would judge the merges alone)
-		final DoubleToIntFunction minArea = th -> minArea(activeRadius(pooled.radius, level, pooled.count, th));
-		final double[] gap = textureGap(plane, atContact, pooled.background, minArea.applyAsInt(atContact));
-		final double clear = Math.max(atContact, Double.isNaN(gap[0]) ? atContact : pooled.background + (gap[0] +
+		final DoubleToIntFunction minArea = th -> minArea(activeRadius(pooled.radius(), level, pooled.count(), th));
+		final double[] gap = ThresholdRules.textureGap(plane, atContact, pooled.background(), minArea.applyAsInt(
+			atContact));
+		final double clear = Math.max(atContact, Double.isNaN(gap[0]) ? atContact : pooled.background() + (gap[0] +
 			gap[1]) / 2);
 		if (clear > atContact) findings.add(new Finding.BackgroundTexture(atContact, (int) gap[2], gap[0], gap[1]));
 		final double peak = peak(plane, centre[0], centre[1], Math.max(2, diameter / 4));
-		final double ceiling = pooled.background + 0.5 * (peak - pooled.background);
-		final double[] shaped = roundFrom(plane, clear, ceiling, Math.max(0.5, pooled.noise / 2), minArea);
+		final double ceiling = pooled.background() + 0.5 * (peak - pooled.background());
+		final double[] shaped = ThresholdRules.roundFrom(plane, clear, ceiling, Math.max(0.5, pooled.noise() / 2),
+			minArea);
 		final double threshold = shaped[0];
 		if (threshold > clear) findings.add(new Finding.RaisedUntilRound(clear, (int) shaped[1], (int) shaped[2]));
 		else if (shaped[1] > 0) findings.add(new Finding.NotRound((int) shaped[1], (int) shaped[2], ceiling));
@@ -532,10 +551,10 @@ public final class ProfileAnalysis {
 	}
 
 	/** @return each ring's grey level: the background plus its height (NaN for an empty ring) */
-	private static double[] levels(final Pooled pooled) {
-		final double[] level = new double[pooled.radius.length];
+	private static double[] levels(final PooledProfile pooled) {
+		final double[] level = new double[pooled.radius().length];
 		for (int k = 0; k < level.length; k++)
-			level[k] = pooled.count[k] > 0 ? pooled.background + pooled.height[k] : Double.NaN;
+			level[k] = pooled.count()[k] > 0 ? pooled.background() + pooled.height()[k] : Double.NaN;
 		return level;
 	}
 
@@ -578,453 +597,190 @@ public final class ProfileAnalysis {
 
 	/**
 	 * The profile of the particles chosen for a diameter: their centres, how far out it is measured, the pooled
-	 * profile, its reach and where the particles' own image ends ({@link #imageEdge(Pooled, double)}).
+	 * profile, its reach and where the particles' own image ends
+	 * ({@link PooledProfile#imageEdge(PooledProfile, double)}).
+	 *
+	 * @param at the centre of the particle at the point given (whether profiled or not), {@code null} without a point
 	 */
-	private record Measured(List<double[]> centres, boolean refined, double radiusCap, Pooled pooled, double reach,
-		double imageEdge, List<Finding> findings) {}
+	private record Measured(List<double[]> centres, double[] at, boolean refined, double radiusCap,
+		PooledProfile pooled, double reach, double imageEdge, List<Finding> findings) {
+
+		Measured withAt(final double[] point, final boolean pointRefined, final List<Finding> more) {
+			final List<Finding> all = new ArrayList<>(more);
+			all.addAll(findings);
+			return new Measured(centres, point, pointRefined, radiusCap, pooled, reach, imageEdge, all);
+		}
+	}
 
 	/**
 	 * Steps 3-6: picks the particles (the one at {@code point}, else the most isolated), masks their neighbours and
 	 * pools their profile, twice (the masks widened to the measured reach the second time).
+	 * <p>
+	 * A particle at a point is profiled alone only when it is isolated: its nearest neighbour, and the image's edge
+	 * (beyond which a neighbour goes unseen), at least twice {@code r_out} away (the reach plus
+	 * {@value #R_OUT_MARGIN_PX} px, measured on the frame's most isolated particles or on the particle alone,
+	 * whichever is larger), so that no pixel holds the light of both and the neighbours' masks leave its own pixels.
+	 * Closer, its profile never returns to the background between it and its neighbours: its own background, noise
+	 * and reach would be the neighbours' halos (a reach of twice the true one, masks that swallow the particle
+	 * itself), so the profile and the values are the frame's most isolated particles' instead (as without a point),
+	 * and said ({@link Finding.FrameValuesAtPoint}).
 	 *
-	 * @param narrow whether the masks may narrow where they leave no background ({@link #poolNarrowing}): for an
+	 * @param narrow whether the masks may narrow where they leave no background ({@link PooledProfile#poolNarrowing}):
+	 *        for an
 	 *        estimated diameter; a given one that leaves none is wrong for the image, and the front ends say so and
 	 *        estimate it instead
 	 */
 	private static Measured measure(final Plane plane, final Spots s, final double[] point, final double diameter,
 		final double maxRadiusGiven, final boolean narrow)
 	{
-		final int w = plane.width(), h = plane.height();
 		final List<Localization> spots = s.spots();
 		final double[][] xy = s.xy();
-		final double[] nn = s.nn();
-		final double near = s.near();
-		final List<Finding> findings = new ArrayList<>();
 		final double wanted = maxRadiusGiven > 0 ? maxRadiusGiven : AUTO_RADIUS_DIAMETERS * diameter;
-		final List<Integer> chosen = new ArrayList<>();
-		boolean refined = true;
-		double[] own = null;
-		if (point != null) {
-			int best = -1;
-			for (int k = 0; k < xy.length; k++) {
-				final double d = Math.hypot(xy[k][0] - point[0], xy[k][1] - point[1]);
-				if (d <= Math.max(near, diameter / 2) && (best < 0 || d < Math.hypot(xy[best][0] - point[0], xy[best][1] -
-					point[1]))) best = k;
-			}
-			if (best >= 0) {
-				chosen.add(best);
-				if (spots.get(best).has(Flag.MERGED))
-					findings.add(new Finding.MergedAtPoint());
-			}
-			else {
-				refined = false;
-				own = point;
-				findings.add(new Finding.NotRefined());
-			}
-		}
-		else {
-			final Integer[] order = new Integer[xy.length];
-			for (int k = 0; k < order.length; k++)
-				order[k] = k;
-			Arrays.sort(order, Comparator.comparingDouble(k -> -nn[k]));
-			for (final int k : order) {
-				final Localization spot = spots.get(k);
-				if (spot.has(Flag.MERGED) || spot.has(Flag.AT_BORDER) || spot.has(Flag.DEGENERATE)) continue;
-				if (xy[k][0] < diameter / 2 || xy[k][1] < diameter / 2 || xy[k][0] > w - 1 - diameter / 2 || xy[k][1] > h -
-					1 - diameter / 2) continue;
-				if (!chosen.isEmpty() && nn[k] < Math.min(wanted, 0.5 * nn[chosen.get(0)])) break;
-				chosen.add(k);
-				if (chosen.size() == MAX_PARTICLES) break;
-			}
+		if (point == null) {
+			final List<Finding> findings = new ArrayList<>();
+			final List<Integer> chosen = mostIsolated(plane, s, diameter, wanted);
 			if (chosen.isEmpty()) throw new InvalidInputException("no single particle away from the border found in " +
 				"the frame: give a point on one");
-			if (nn.length > 1 && nn[chosen.get(0)] < 2 * diameter)
-				findings.add(new Finding.NotIsolated(nn[chosen.get(0)], diameter));
+			if (s.nn().length > 1 && s.nn()[chosen.get(0)] < 2 * diameter)
+				findings.add(new Finding.NotIsolated(s.nn()[chosen.get(0)], diameter));
+			return pooledTwice(plane, s, centresOf(xy, chosen), diameter, wanted, narrow, findings);
 		}
-		final List<double[]> centres = new ArrayList<>();
-		if (own != null) centres.add(own);
-		for (final int k : chosen)
-			centres.add(xy[k]);
-		final double radiusCap = Math.min(wanted, farthestCorner(centres.get(0)[0], centres.get(0)[1], w, h));
-		final double narrowest = narrow ? diameter / 2 : Double.POSITIVE_INFINITY;
-		Pooled pooled = poolNarrowing(plane, centres, xy, diameter, radiusCap, narrowest, null);
-		double reach = reach(pooled, radiusCap, null);
-		pooled = poolNarrowing(plane, centres, xy, Math.max(diameter, reach + R_OUT_MARGIN_PX), radiusCap, narrowest,
-			findings);
-		reach = reach(pooled, radiusCap, findings);
-		return new Measured(pooled.centres(), refined, radiusCap, pooled, reach, imageEdge(pooled, reach), findings);
-	}
-
-	/**
-	 * Where the particle's own image ends: the outer edge of its dark ring (where the profile, past its minimum,
-	 * comes back within the noise of the background) when it has one deeper than {@value #THRESHOLD_MARGIN_SIGMAS}
-	 * noise sigmas, as bright-field particles do; otherwise the reach. A faint halo beyond the ring is light the
-	 * particle scatters, not the particle: in bright field it can reach beyond a neighbour at contact, so taking it
-	 * for the particle's image would make every particle of a dense field look touched (figures: fiji.md).
-	 */
-	private static double imageEdge(final Pooled p, final double reach) {
-		int deepest = -1;
-		for (int k = 0; k < p.radius.length && p.radius[k] < reach; k++)
-			if (p.count[k] > 0 && (deepest < 0 || p.height[k] < p.height[deepest])) deepest = k;
-		if (deepest < 0 || !(p.height[deepest] < -THRESHOLD_MARGIN_SIGMAS * p.noise)) return reach;
-		int previous = deepest;
-		for (int k = deepest + 1; k < p.radius.length; k++) {
-			if (p.count[k] == 0) continue;
-			if (p.height[k] >= -p.noise) return p.radius[previous] + (p.radius[k] - p.radius[previous]) * (-p.noise -
-				p.height[previous]) / (p.height[k] - p.height[previous]);
-			previous = k;
+		final List<Finding> findings = new ArrayList<>();
+		int best = -1;
+		for (int k = 0; k < xy.length; k++) {
+			final double d = Math.hypot(xy[k][0] - point[0], xy[k][1] - point[1]);
+			if (d <= Math.max(s.near(), diameter / 2) && (best < 0 || d < Math.hypot(xy[best][0] - point[0], xy[best][1] -
+				point[1]))) best = k;
 		}
-		return reach;
-	}
-
-	/**
-	 * Components of the frame at a threshold, split by their peak height above the background at the largest gap
-	 * (a ratio of at least {@value #TEXTURE_GAP_RATIO}) below half the highest peak: below it the background's
-	 * texture (bright-field halos and rings, their sums between particles, an uneven background), above it the
-	 * particles' cores. The texture is the sum of faint tails, an order of magnitude below the cores' peaks, so the
-	 * heights fall in two groups with a wide gap between them; a threshold just above the sum of two profiles at
-	 * contact but below that gap picks up texture spots.
-	 * Components below {@code minArea} pixels are left out, as the tracker drops them.
-	 *
-	 * @return {@code {highest texture peak, lowest core peak, texture components}} above the background, or NaNs
-	 *         when there is no such gap
-	 */
-	static double[] textureGap(final Plane plane, final double threshold, final double background, final int minArea) {
-		final List<Region> regions = ComponentLabeling.label(plane, threshold, Connectivity.EIGHT);
-		final DoubleList heights = new DoubleList();
-		for (final Region r : regions) {
-			if (r.area() < minArea) continue;
-			double peak = Double.NEGATIVE_INFINITY;
-			for (int k = 0; k < r.runCount(); k++)
-				for (int x = r.runStart(k); x <= r.runEnd(k); x++)
-					peak = Math.max(peak, plane.get(x, r.runY(k)));
-			heights.add(peak - background);
+		final double[] own;
+		if (best >= 0) {
+			own = xy[best];
+			if (spots.get(best).has(Flag.MERGED) && outlineMerged(plane, s.level(), own)) findings.add(
+				new Finding.MergedAtPoint());
 		}
-		final double[] hs = heights.toArray();
-		Arrays.sort(hs);
-		int cut = -1;
-		double best = TEXTURE_GAP_RATIO;
-		for (int i = 0; i + 1 < hs.length && hs[i] < hs[hs.length - 1] / 2; i++) {
-			final double ratio = hs[i + 1] / Math.max(hs[i], 1e-9);
-			if (ratio >= best) {
-				best = ratio;
-				cut = i;
-			}
+		else {
+			own = point;
+			findings.add(new Finding.NotRefined());
 		}
-		return cut < 0 ? new double[] { Double.NaN, Double.NaN, 0 } : new double[] { hs[cut], hs[cut + 1], cut + 1 };
-	}
-
-	/**
-	 * The lowest threshold from {@code from} up to {@code ceiling} (in steps of {@code step}) at which at most
-	 * {@value #MAX_NOT_ROUND_PERCENT}% of the frame's active areas (of at least {@code minArea} px at that threshold,
-	 * away from the border) fail the outline tests of merge detection ({@link ComponentShape}: elongated, or with a
-	 * bay).
-	 *
-	 * @return {@code {threshold, active areas that fail at the threshold from, active areas there}}; the threshold
-	 *         is {@code from} when no step up to the ceiling does better
-	 */
-	static double[] roundFrom(final Plane plane, final double from, final double ceiling, final double step,
-		final DoubleToIntFunction minArea)
-	{
-		final int[] first = notRound(plane, from, minArea.applyAsInt(from));
-		for (double t = from; t <= ceiling; t += step) {
-			final int[] n = t == from ? first : notRound(plane, t, minArea.applyAsInt(t));
-			if (n[0] * 100 <= MAX_NOT_ROUND_PERCENT * n[1]) return new double[] { t, first[0], first[1] };
-		}
-		return new double[] { from, first[0], first[1] };
-	}
-
-	/** @return {@code {active areas that fail the outline tests, active areas}} at a threshold */
-	private static int[] notRound(final Plane plane, final double threshold, final int minArea) {
-		int bad = 0, all = 0;
-		for (final Region r : ComponentLabeling.label(plane, threshold, Connectivity.EIGHT)) {
-			if (r.area() < minArea || r.minX() == 0 || r.minY() == 0 || r.maxX() == plane
-				.width() - 1 || r.maxY() == plane.height() - 1) continue;
-			all++;
-			if (ComponentShape.of(r).outlineMerged(false)) bad++;
-		}
-		return new int[] { bad, all };
-	}
-
-	/** The profile pooled over particles: ring heights above the local background, and the noise. */
-	private record Pooled(double[] radius, double[] height, int[] count, double background, double noise,
-		List<double[]> centres) {}
-
-	/**
-	 * {@link #pool}, the mask narrowed (by {@value #MASK_NARROWING} at a time, down to {@code narrowest}) while no
-	 * particle has background pixels left around it: in a dense field of particles that do not touch (spaced a
-	 * little more than a diameter apart), every pixel lies within a diameter of some neighbour. Narrowed, it is
-	 * reported in {@code findings} (when not null).
-	 *
-	 * @param narrowest the narrowest mask tried (half the diameter; infinite: the mask as it is)
-	 * @throws InvalidInputException naming the particle tried first when no mask down to {@code narrowest} leaves
-	 *         background
-	 */
-	private static Pooled poolNarrowing(final Plane plane, final List<double[]> centres, final double[][] spots,
-		final double mask, final double radiusCap, final double narrowest, final List<Finding> findings)
-	{
-		NoBackground first = null;
-		for (double m = mask; m == mask || m >= narrowest; m *= MASK_NARROWING)
+		double neighbour = Double.POSITIVE_INFINITY;
+		for (int k = 0; k < xy.length; k++)
+			if (k != best) neighbour = Math.min(neighbour, Math.hypot(xy[k][0] - own[0], xy[k][1] - own[1]));
+		// beyond the image's edge a neighbour goes unseen: the edge counts as one
+		final double edge = Math.min(Math.min(own[0], plane.width() - 1 - own[0]), Math.min(own[1], plane.height() - 1 -
+			own[1]));
+		final boolean byEdge = edge < neighbour;
+		neighbour = Math.min(neighbour, edge);
+		final List<Integer> frame = mostIsolated(plane, s, diameter, wanted);
+		Measured m = null;
+		if (!frame.isEmpty()) {
 			try {
-				final Pooled pooled = pool(plane, centres, spots, m, radiusCap);
-				if (first != null && findings != null) findings.add(new Finding.NeighboursMaskedCloser(m, mask));
-				return pooled;
+				m = pooledTwice(plane, s, centresOf(xy, frame), diameter, wanted, narrow, new ArrayList<>());
 			}
-			catch (final NoBackground e) {
-				if (first == null) first = e;
+			catch (final InvalidInputException e) {
+				m = null; // the frame's particles have no background: the particle is measured alone
 			}
-		throw first;
-	}
-
-	/** Each step of {@link #poolNarrowing} multiplies the mask by this. */
-	static final double MASK_NARROWING = 0.8;
-
-	/** No particle pooled has enough background pixels around it: the message names the first one tried. */
-	private static final class NoBackground extends InvalidInputException {
-
-		private static final long serialVersionUID = 1L;
-
-		NoBackground(final String message) {
-			super(message);
 		}
+		Measured alone = null;
+		final List<Finding> ownFindings = new ArrayList<>();
+		try {
+			alone = pooledTwice(plane, s, List.of(own), diameter, wanted, narrow, ownFindings);
+		}
+		catch (final InvalidInputException e) {
+			if (m == null) throw e;
+		}
+		// r_out as the frame gives it or as the particle alone does, whichever reaches further
+		final double rOut = Math.max(m == null ? 0 : m.reach(), alone == null ? 0 : alone.reach()) + R_OUT_MARGIN_PX;
+		if (m != null && (alone == null || neighbour < 2 * rOut)) {
+			findings.add(new Finding.FrameValuesAtPoint(neighbour, byEdge, rOut, m.centres().size()));
+			return m.withAt(own, best >= 0, findings);
+		}
+		return alone.withAt(own, best >= 0, findings);
 	}
 
 	/**
-	 * Pools the pixels around {@code centres} within {@code radiusCap}, masking pixels within {@code mask} of every
-	 * other spot of {@code spots}; each particle's local background is a plane fitted robustly to its annulus.
-	 *
-	 * @throws NoBackground when no particle has enough background pixels
+	 * Whether the active area at {@code level} that holds the pixel nearest {@code at} has the outline of several
+	 * particles ({@link ComponentShape#outlineMerged}: elongated, or with a bay). The spot finder also flags an
+	 * area whose gradient lines miss one another, as a saturated core's flat top makes them: a particle larger or
+	 * brighter than the rest, not merged, and no reason to send the user to another.
 	 */
-	private static Pooled pool(final Plane plane, final List<double[]> centres, final double[][] spots,
-		final double mask, final double radiusCap)
-	{
-		final int bins = (int) Math.floor(radiusCap + 0.5) + 1;
-		final DoubleList[] rings = new DoubleList[bins];
-		for (int k = 0; k < bins; k++)
-			rings[k] = new DoubleList();
-		final double[] sumR = new double[bins];
-		final DoubleList residuals = new DoubleList();
-		final double inner = innerBackgroundRadius(radiusCap);
-		final int w = plane.width(), h = plane.height();
-		double backgroundSum = 0;
-		String failure = null;
-		final List<double[]> used = new ArrayList<>();
-		for (final double[] c : centres) {
-			final int x0 = (int) Math.max(0, Math.floor(c[0] - radiusCap)), x1 = (int) Math.min(w - 1, Math.ceil(c[0] +
-				radiusCap));
-			final int y0 = (int) Math.max(0, Math.floor(c[1] - radiusCap)), y1 = (int) Math.min(h - 1, Math.ceil(c[1] +
-				radiusCap));
-			// the other spots that can reach into this window
-			final List<double[]> others = new ArrayList<>();
-			for (final double[] s : spots)
-				if (Math.hypot(s[0] - c[0], s[1] - c[1]) > 1 && Math.hypot(s[0] - c[0], s[1] - c[1]) < radiusCap + mask)
-					others.add(s);
-			final DoubleList ax = new DoubleList(), ay = new DoubleList(), av = new DoubleList();
-			for (int y = y0; y <= y1; y++)
-				for (int x = x0; x <= x1; x++) {
-					final double r = Math.sqrt((x - c[0]) * (x - c[0]) + (y - c[1]) * (y - c[1]));
-					if (r < inner || r > radiusCap || masked(others, x, y, mask)) continue;
-					ax.add(x - c[0]);
-					ay.add(y - c[1]);
-					av.add(plane.get(x, y));
-				}
-			if (ax.size < MIN_BACKGROUND_PIXELS) {
-				// neighbours all round (a dense monolayer) or the border: the next particle may do
-				if (failure == null) failure = String.format(Locale.ROOT, "only %d background pixels lie between %s and " +
-					"%s px from the particle at (%s, %s) inside the image and away from its neighbours: too few to " +
-					"measure the background; use a larger max_radius or another particle", ax.size, fmt(round2(inner)),
-					fmt(round2(radiusCap)), fmt(round2(c[0] + plane.minX())), fmt(round2(c[1] + plane.minY())));
-				continue;
-			}
-			used.add(c);
-			final double[] plane3 = robustPlane(ax, ay, av);
-			backgroundSum += plane3[0];
-			for (int i = 0; i < ax.size; i++)
-				residuals.add(av.get(i) - plane3[0] - plane3[1] * ax.get(i) - plane3[2] * ay.get(i));
-			for (int y = y0; y <= y1; y++)
-				for (int x = x0; x <= x1; x++) {
-					final double r = Math.sqrt((x - c[0]) * (x - c[0]) + (y - c[1]) * (y - c[1]));
-					final int k = (int) Math.floor(r + 0.5);
-					if (r > radiusCap || k >= bins || masked(others, x, y, mask)) continue;
-					rings[k].add(plane.get(x, y) - plane3[0] - plane3[1] * (x - c[0]) - plane3[2] * (y - c[1]));
-					sumR[k] += r;
-				}
-		}
-		if (used.isEmpty()) throw new NoBackground(failure);
-		final double noise = clippedSigma(residuals.toArray());
-		int filled = bins;
-		while (filled > 0 && rings[filled - 1].size == 0)
-			filled--;
-		final double[] radius = new double[filled], height = new double[filled];
-		final int[] count = new int[filled];
-		for (int k = 0; k < filled; k++) {
-			count[k] = rings[k].size;
-			radius[k] = count[k] > 0 ? sumR[k] / count[k] : k;
-			height[k] = count[k] > 0 ? Statistics.interquartileMean(rings[k].toArray(), count[k]) : Double.NaN;
-		}
-		return new Pooled(radius, height, count, backgroundSum / used.size(), noise, used);
-	}
-
-	/**
-	 * A robust standard deviation: started from 1.4826 x the median absolute deviation, then the RMS of the values
-	 * within {@value #CLIP_SIGMAS} sigmas of their mean, twice. Unlike the MAD alone it does not jump with the
-	 * integer steps of 8-bit data (MAD of uniform noise of amplitude 5 rounded: 3.7 or 4.4 instead of 2.9), and
-	 * clipping drops a neighbour's light in part of the annulus. Clipping a normal distribution at 3.5 sigmas
-	 * lowers its RMS by 0.3%.
-	 */
-	static double clippedSigma(final double[] values) {
-		if (values.length == 0) return Double.NaN;
-		final double[] dev = values.clone();
-		final double med = Statistics.quantile(dev, 0.5);
-		for (int i = 0; i < dev.length; i++)
-			dev[i] = Math.abs(values[i] - med);
-		double centre = med, sigma = Math.max(Statistics.MAD_TO_SIGMA * Statistics.quantile(dev, 0.5), 0.5);
-		for (int pass = 0; pass < 2; pass++) {
-			double n = 0, sum = 0, sum2 = 0;
-			for (final double v : values)
-				if (Math.abs(v - centre) <= CLIP_SIGMAS * sigma) {
-					n++;
-					sum += v;
-					sum2 += v * v;
-				}
-			if (n < 2) break;
-			centre = sum / n;
-			sigma = Math.sqrt(Math.max(0, sum2 / n - centre * centre));
-		}
-		return sigma;
-	}
-
-	private static boolean masked(final List<double[]> others, final int x, final int y, final double mask) {
-		final double m2 = mask * mask; // (squares: hypot's care for overflow costs a tenth of the helper's time)
-		for (final double[] s : others) {
-			final double dx = x - s[0], dy = y - s[1];
-			if (dx * dx + dy * dy < m2) return true;
-		}
+	private static boolean outlineMerged(final Plane plane, final double level, final double[] at) {
+		final int x = (int) Math.round(at[0]), y = (int) Math.round(at[1]);
+		for (final Region r : ComponentLabeling.label(plane, level, Connectivity.EIGHT))
+			for (int k = 0; k < r.runCount(); k++)
+				if (r.runY(k) == y && r.runStart(k) <= x && x <= r.runEnd(k)) return ComponentShape.of(r).outlineMerged(
+					false);
 		return false;
 	}
 
 	/**
-	 * The plane {@code a + b x + c y} through the points by least squares, refitted once without the points more
-	 * than 3 robust sigmas off (a neighbour's light in part of the annulus).
+	 * The spots to profile when no point is given: the ones with the largest distances to their nearest neighbours,
+	 * none merged, degenerate or near the border, at most {@value #MAX_PARTICLES}, down to half the first one's
+	 * distance (or {@code wanted}).
 	 */
-	static double[] robustPlane(final DoubleList x, final DoubleList y, final DoubleList v) {
-		final boolean[] use = new boolean[x.size];
-		Arrays.fill(use, true);
-		double[] p = fitPlane(x, y, v, use);
-		final double[] dev = new double[x.size];
-		for (int i = 0; i < dev.length; i++)
-			dev[i] = Math.abs(v.get(i) - p[0] - p[1] * x.get(i) - p[2] * y.get(i));
-		final double cut = 3 * Statistics.MAD_TO_SIGMA * Statistics.quantile(dev.clone(), 0.5);
-		int kept = 0;
-		for (int i = 0; i < dev.length; i++)
-			if (use[i] = dev[i] <= cut) kept++;
-		if (kept >= MIN_BACKGROUND_PIXELS) p = fitPlane(x, y, v, use);
-		return p;
+	private static List<Integer> mostIsolated(final Plane plane, final Spots s, final double diameter,
+		final double wanted)
+	{
+		final int w = plane.width(), h = plane.height();
+		final double[][] xy = s.xy();
+		final double[] nn = s.nn();
+		final Integer[] order = new Integer[xy.length];
+		for (int k = 0; k < order.length; k++)
+			order[k] = k;
+		Arrays.sort(order, Comparator.comparingDouble(k -> -nn[k]));
+		final List<Integer> chosen = new ArrayList<>();
+		for (final int k : order) {
+			final Localization spot = s.spots().get(k);
+			if (spot.has(Flag.MERGED) || spot.has(Flag.AT_BORDER) || spot.has(Flag.DEGENERATE)) continue;
+			if (xy[k][0] < diameter / 2 || xy[k][1] < diameter / 2 || xy[k][0] > w - 1 - diameter / 2 || xy[k][1] > h - 1 -
+				diameter / 2) continue;
+			if (!chosen.isEmpty() && nn[k] < Math.min(wanted, 0.5 * nn[chosen.get(0)])) break;
+			chosen.add(k);
+			if (chosen.size() == MAX_PARTICLES) break;
+		}
+		return chosen;
 	}
 
-	private static double[] fitPlane(final DoubleList x, final DoubleList y, final DoubleList v, final boolean[] use) {
-		double n = 0, sx = 0, sy = 0, sv = 0, sxx = 0, sxy = 0, syy = 0, sxv = 0, syv = 0;
-		for (int i = 0; i < x.size; i++) {
-			if (!use[i]) continue;
-			final double a = x.get(i), b = y.get(i), c = v.get(i);
-			n++;
-			sx += a;
-			sy += b;
-			sv += c;
-			sxx += a * a;
-			sxy += a * b;
-			syy += b * b;
-			sxv += a * c;
-			syv += b * c;
-		}
-		final double[][] m = { { n, sx, sy }, { sx, sxx, sxy }, { sy, sxy, syy } };
-		final double[] rhs = { sv, sxv, syv };
-		final double det = det3(m);
-		if (!(Math.abs(det) > 1e-9 * Math.max(1, n * sxx * syy))) {
-			// points on a line (an annulus cut to a sliver by the border): a constant
-			return new double[] { sv / Math.max(n, 1), 0, 0 };
-		}
-		final double[] p = new double[3];
-		for (int j = 0; j < 3; j++) {
-			final double[][] mj = { m[0].clone(), m[1].clone(), m[2].clone() };
-			for (int i = 0; i < 3; i++)
-				mj[i][j] = rhs[i];
-			p[j] = det3(mj) / det;
-		}
-		return p;
-	}
-
-	private static double det3(final double[][] m) {
-		return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-			m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
-	}
-
-	/** The reach: scanning inwards from the background annulus, the first ring off the background by more than s. */
-	private static double reach(final Pooled p, final double radiusCap, final List<Finding> findings) {
-		final double inner = innerBackgroundRadius(radiusCap);
-		int last = -1;
-		for (int k = 0; k < p.radius.length; k++)
-			if (p.radius[k] < inner && p.count[k] > 0) last = k;
-		for (int k = last; k >= 0; k--) {
-			if (p.count[k] == 0 || !(Math.abs(p.height[k]) > p.noise)) continue;
-			if (k == last) {
-				if (findings != null) findings.add(new Finding.NotBackToBackground(inner));
-				return p.radius[k];
-			}
-			int j = k + 1;
-			while (j < last && p.count[j] == 0)
-				j++;
-			final double a = Math.abs(p.height[k]), b = Math.abs(p.height[j]);
-			return p.radius[k] + (p.radius[j] - p.radius[k]) * (a - p.noise) / (a - b);
-		}
-		return 0;
+	private static List<double[]> centresOf(final double[][] xy, final List<Integer> chosen) {
+		final List<double[]> centres = new ArrayList<>();
+		for (final int k : chosen)
+			centres.add(xy[k]);
+		return centres;
 	}
 
 	/**
-	 * The brightest height above background, at points at least {@code D/2} from every centre, of two particles
-	 * at contact and of three in a touching triangle (0 where nothing reaches).
+	 * Pools the profile of {@code centres} (the first one's window sets how far out), masking the other spots within
+	 * a diameter, then again within the measured reach plus the margin.
 	 */
-	private static double brightestBetween(final Pooled p, final double diameter, final double reach) {
-		final double[][][] configurations = { { { 0, 0 }, { diameter, 0 } }, { { 0, 0 }, { diameter, 0 }, { diameter /
-			2, diameter * Math.sqrt(3) / 2 } } };
-		double best = Double.NEGATIVE_INFINITY;
-		final double half2 = diameter * diameter / 4;
-		for (final double[][] conf : configurations) {
-			final double x0 = -reach, x1 = diameter + reach, y0 = -reach, y1 = diameter + reach;
-			for (double y = y0; y <= y1; y += BRIDGE_STEP_PX)
-				for (double x = x0; x <= x1; x += BRIDGE_STEP_PX) {
-					boolean outside = true;
-					double sum = 0;
-					for (final double[] c : conf) {
-						final double d2 = (x - c[0]) * (x - c[0]) + (y - c[1]) * (y - c[1]);
-						if (d2 < half2) {
-							outside = false;
-							break;
-						}
-						sum += height(p, Math.sqrt(d2), reach);
-					}
-					if (outside) best = Math.max(best, sum);
-				}
-		}
-		return best;
+	private static Measured pooledTwice(final Plane plane, final Spots s, final List<double[]> centres,
+		final double diameter, final double wanted, final boolean narrow,
+		final List<Finding> findings)
+	{
+		final double radiusCap = Math.min(wanted, farthestCorner(centres.get(0)[0], centres.get(0)[1], plane.width(),
+			plane.height()));
+		final double narrowest = narrow ? diameter / 2 : Double.POSITIVE_INFINITY;
+		PooledProfile pooled = PooledProfile.poolNarrowing(plane, centres, s.xy(), diameter, radiusCap, narrowest,
+			null);
+		double reach = PooledProfile.reach(pooled, radiusCap, null);
+		pooled = PooledProfile.poolNarrowing(plane, centres, s.xy(), Math.max(diameter, reach + R_OUT_MARGIN_PX),
+			radiusCap, narrowest, findings);
+		reach = PooledProfile.reach(pooled, radiusCap, findings);
+		return new Measured(pooled.centres(), null, true, radiusCap, pooled, reach, PooledProfile.imageEdge(pooled,
+			reach), findings);
 	}
 
-	/** The pooled profile at radius {@code r}, linearly interpolated; 0 beyond the reach. */
-	private static double height(final Pooled p, final double r, final double reach) {
-		if (r > reach) return 0;
-		int below = -1, above = -1;
-		for (int k = 0; k < p.radius.length; k++) {
-			if (p.count[k] == 0) continue;
-			if (p.radius[k] <= r) below = k;
-			else {
-				above = k;
-				break;
-			}
-		}
-		if (below < 0) return above < 0 ? 0 : p.height[above];
-		if (above < 0) return p.height[below];
-		return p.height[below] + (p.height[above] - p.height[below]) * (r - p.radius[below]) / (p.radius[above] -
-			p.radius[below]);
+	/**
+	 * @return the area of the disc of radius {@code a} about the origin outside the disc of radius {@code r} whose
+	 *         centre lies {@code d} away (the circles' lens formula)
+	 */
+	static double discOutside(final double a, final double r, final double d) {
+		final double whole = Math.PI * a * a;
+		if (!(a > 0)) return 0;
+		if (d >= a + r) return whole;
+		if (d <= r - a) return 0; // inside the other disc
+		if (d <= a - r) return whole - Math.PI * r * r; // the other disc inside
+		final double lens = a * a * Math.acos((d * d + a * a - r * r) / (2 * d * a)) + r * r * Math.acos((d * d + r * r -
+			a * a) / (2 * d * r)) - 0.5 * Math.sqrt((-d + a + r) * (d + a - r) * (d - a + r) * (d + a + r));
+		return Math.max(0, whole - lens);
 	}
 
 	/** Distance of each point to its nearest other point (infinite for a lone point). */
@@ -1075,10 +831,6 @@ public final class ProfileAnalysis {
 	}
 
 
-	private static double innerBackgroundRadius(final double radiusCap) {
-		return radiusCap * (1 - BACKGROUND_ANNULUS_PERCENT / 100.0);
-	}
-
 	private static double peak(final Plane plane, final double cx, final double cy, final double within) {
 		double peak = Double.NEGATIVE_INFINITY;
 		final int x0 = (int) Math.max(0, Math.floor(cx - within)), x1 = (int) Math.min(plane.width() - 1, Math.ceil(cx +
@@ -1096,31 +848,12 @@ public final class ProfileAnalysis {
 		return Math.hypot(dx, dy);
 	}
 
-	private static double round2(final double v) {
+	static double round2(final double v) {
 		return Math.round(v * 100) / 100.0;
 	}
 
 	/** How the helper's error messages write a number: {@value #SIGNIFICANT_DIGITS} significant digits. */
-	private static String fmt(final double v) {
+	static String fmt(final double v) {
 		return Numbers.significant(v, SIGNIFICANT_DIGITS);
-	}
-
-	/** A growable array of doubles. */
-	static final class DoubleList {
-		private double[] a = new double[64];
-		int size;
-
-		void add(final double v) {
-			if (size == a.length) a = Arrays.copyOf(a, 2 * size);
-			a[size++] = v;
-		}
-
-		double get(final int i) {
-			return a[i];
-		}
-
-		double[] toArray() {
-			return Arrays.copyOf(a, size);
-		}
 	}
 }

@@ -28,6 +28,7 @@ import java.util.Locale;
 import io.github.contacttracker.advisor.Finding;
 import io.github.contacttracker.advisor.ProfileAnalysis;
 import io.github.contacttracker.core.Numbers;
+import io.github.contacttracker.core.TrackerParameters;
 import io.github.contacttracker.core.kind.Kinds;
 
 /**
@@ -67,6 +68,12 @@ public final class ProfileReport {
 			.activeRadius(), r.diameter() / 2, r.smallParticles(threshold) ? String.format(Locale.ROOT,
 				"; area %.1f px, below twice the default min_area -> min_area = %d (half the area)", Math.PI * r
 					.activeRadius() * r.activeRadius(), r.suggestedMinArea(threshold)) : ""));
+		final double kept = r.secondPassArea();
+		if (r.activeRadius() > 0 && kept < TrackerParameters.DEFAULT_MIN_SECOND_AREA) lines.add(String.format(Locale.ROOT, "  at contact " +
+			"(D = %.2f px), r_out %.0f px leaves %.0f of the active area's %.0f px outside the neighbour's disc, fewer " +
+			"than min_second_area (%d): --method paper keeps the first pass there (FELL_BACK); the default fit models " +
+			"the neighbours' light and needs none", r.diameter(), r.suggestedROut(), kept, Math.PI * r.activeRadius() * r
+				.activeRadius(), TrackerParameters.DEFAULT_MIN_SECOND_AREA));
 		for (final String k : kinds(r.kinds()))
 			lines.add("  " + k);
 		for (final String w : warnings(r))
@@ -134,6 +141,11 @@ public final class ProfileReport {
 				"bar)? In Fiji, select the region to track";
 		if (finding instanceof Finding.MergedAtPoint)
 			return "the particle's active area looks merged with a neighbour's: pick an isolated particle";
+		if (finding instanceof Finding.FrameValuesAtPoint f)
+			return (f.edge() ? "the particle lies " + fmt2(f.neighbour()) + " px from the image's edge (beyond it " +
+				"neighbours go unseen)" : "the particle's nearest neighbour is " + fmt2(f.neighbour()) + " px away") + ", less than twice the r_out measured (2 x " +
+				fmt2(f.rOut()) + " px, the larger of its own profile's and the frame's): its own profile does not return to the background, so the profile and values " +
+				"are those of the frame's " + f.others() + " most isolated particle" + (f.others() == 1 ? "" : "s");
 		if (finding instanceof Finding.NotRefined)
 			return "could not refine the centre; the profile is taken around the point given";
 		if (finding instanceof Finding.NotIsolated f)
@@ -161,10 +173,6 @@ public final class ProfileReport {
 		if (finding instanceof Finding.ThresholdAboveCentre)
 			return "the suggested threshold is above the particle's centre: at contact no threshold separates two such " +
 				"particles (the profile is too long-ranged for the method)";
-		if (finding instanceof Finding.ROutAboveDiameter f)
-			return "r_out (" + fmt2(f.rOut()) + " px) is larger than the diameter (" + fmt2(f.diameter()) + " px): at " +
-				"contact little undistorted active area is left for the paper's second pass (the paper needs r_out <= D; " +
-				"the deblend and fit methods do not)";
 		throw new IllegalArgumentException("no words for " + finding);
 	}
 

@@ -69,6 +69,14 @@ class ProfileReportTest {
 			"scale bar)? In Fiji, select the region to track");
 		expected.put(new Finding.MergedAtPoint(), "the particle's active area looks merged with a neighbour's: pick an " +
 			"isolated particle");
+		expected.put(new Finding.FrameValuesAtPoint(11.5, true, 42.1634, 6), "the particle lies 11.50 px from the " +
+			"image's edge (beyond it neighbours go unseen), less than twice the r_out measured (2 x 42.16 px, the larger " +
+			"of its own profile's and the frame's): its own profile does not return to the background, so the profile " +
+			"and values are those of the frame's 6 most isolated particles");
+		expected.put(new Finding.FrameValuesAtPoint(52.3912, false, 42.1634, 6), "the particle's nearest neighbour is 52.39 px " +
+			"away, less than twice the r_out measured (2 x 42.16 px, the larger of its own profile's and the frame's): " +
+			"its own profile does not return to the background, so the profile and values are those of the frame's 6 " +
+			"most isolated particles");
 		expected.put(new Finding.NotRefined(), "could not refine the centre; the profile is taken around the point " +
 			"given");
 		expected.put(new Finding.NotIsolated(93.0844, 52.44), "no particle is isolated: the most isolated has a " +
@@ -89,9 +97,6 @@ class ProfileReportTest {
 			"than two particles' active areas (fringes, marks)");
 		expected.put(new Finding.ThresholdAboveCentre(), "the suggested threshold is above the particle's centre: at " +
 			"contact no threshold separates two such particles (the profile is too long-ranged for the method)");
-		expected.put(new Finding.ROutAboveDiameter(42.1634, 30), "r_out (42.16 px) is larger than the diameter (30 px): " +
-			"at contact little undistorted active area is left for the paper's second pass (the paper needs r_out <= D; " +
-			"the deblend and fit methods do not)");
 		for (final Map.Entry<Finding, String> e : expected.entrySet())
 			assertEquals(e.getValue(), ProfileReport.sentence(e.getKey()), e.getKey().toString());
 		// a new kind of finding needs its sentence here too

@@ -197,4 +197,37 @@ public final class Statistics {
 			else return;
 		}
 	}
+
+	/**
+	 * A robust standard deviation: started from 1.4826 x the median absolute deviation (at least 0.5, half a grey
+	 * level), then the RMS of the values within {@code clip} sigmas of their mean, twice. Unlike the MAD alone it
+	 * does not jump with the integer steps of 8-bit data (MAD of uniform noise of amplitude 5 rounded: 3.7 or 4.4
+	 * instead of 2.9), and clipping drops outliers (a neighbour's light in part of a background annulus). Clipping a normal distribution at 3.5 sigmas
+	 * lowers its RMS by 0.3%.
+	 *
+	 * @param values the values (not changed)
+	 * @param clip how many sigmas from the mean a value may lie and still count
+	 * @return the standard deviation; NaN for no values
+	 */
+	public static double clippedSigma(final double[] values, final double clip) {
+		if (values.length == 0) return Double.NaN;
+		final double[] dev = values.clone();
+		final double med = quantile(dev, 0.5);
+		for (int i = 0; i < dev.length; i++)
+			dev[i] = Math.abs(values[i] - med);
+		double centre = med, sigma = Math.max(MAD_TO_SIGMA * quantile(dev, 0.5), 0.5);
+		for (int pass = 0; pass < 2; pass++) {
+			double n = 0, sum = 0, sum2 = 0;
+			for (final double v : values)
+				if (Math.abs(v - centre) <= clip * sigma) {
+					n++;
+					sum += v;
+					sum2 += v * v;
+				}
+			if (n < 2) break;
+			centre = sum / n;
+			sigma = Math.sqrt(Math.max(0, sum2 / n - centre * centre));
+		}
+		return sigma;
+	}
 }
