@@ -52,6 +52,7 @@ import io.github.contacttracker.core.profile.ProfileAccess;
 @Fork(1)
 public class FitKernelBenchmark {
 
+	private final NormalEquations passes = new NormalEquations();
 	private FitPixels pixels;
 	private EmpiricalProfile[] profile;
 	private final double[] p = new double[GroupFit.PER_PARTICLE + GroupFit.BACKGROUND];
@@ -94,12 +95,12 @@ public class FitKernelBenchmark {
 	/** @return the pass that starts a step: J^T J, J^T r, the residuals and their variances */
 	@Benchmark
 	public double normalEquations() {
-		return NormalEquations.accumulate(pixels, p, 1, profile, jtj, jtr, noise, null);
+		return passes.accumulate(pixels, p, 1, profile, jtj, jtr, noise, null);
 	}
 
 	/** @return the pass that evaluates a step: J^T r and the residuals alone */
 	@Benchmark
 	public double residuals() {
-		return NormalEquations.accumulate(pixels, p, 1, profile, null, jtr, noise, null);
+		return passes.accumulate(pixels, p, 1, profile, null, jtr, noise, null);
 	}
 }

@@ -149,7 +149,8 @@ public final class GroupFit {
 		final Estimate[] start = new Estimate[group.length];
 		for (int q = 0; q < group.length; q++)
 			start[q] = e[group[q]];
-		final int it = fitGroup(plane, particles, e, group, profile, window, censoring, JOINT, null);
+		final int it = fitGroup(plane, particles, e, group, profile, window, censoring, JOINT, null,
+			new NormalEquations());
 		// flagged here, per group: a group that hit the limit says nothing of the frame's other groups
 		final int flag = it == 0 ? Flag.FELL_BACK.bit() : it < 0 ? Flag.NOT_CONVERGED.bit() : 0;
 		for (int q = 0; q < group.length; q++) {
@@ -214,6 +215,7 @@ public final class GroupFit {
 		final Kept[] kept = new Kept[n];
 		for (int q = 0; q < n; q++)
 			kept[q] = new Kept();
+		final NormalEquations passes = new NormalEquations(); // (its work array serves every member's fits)
 		int most = 0;
 		boolean any = true;
 		long sweepStart = 0;
@@ -227,7 +229,8 @@ public final class GroupFit {
 				// the first sweep chooses the member's pixels (as a joint fit does), the later ones keep them and its
 				// window, with the neighbours' light at their latest estimates
 				final int it = fitGroup(plane, particles, e, new int[] { k }, profile, memberWindow[q], censoring,
-					new Budget(ITERATIONS_PER_SWEEP, sweep == 1 ? OWN_ERROR : settled(before), MAX_SELECTIONS), kept[q]);
+					new Budget(ITERATIONS_PER_SWEEP, sweep == 1 ? OWN_ERROR : settled(before), MAX_SELECTIONS), kept[q],
+					passes);
 				// a centre that slid away from its particle (onto a neighbour, or off into the background): no fit
 				failed[q] = it == 0 || e[k].distanceTo(start[q]) > MAX_SLIDE * Math.sqrt(particles[k].region().area() /
 					Math.PI);
@@ -336,7 +339,7 @@ public final class GroupFit {
 	 */
 	private static int fitGroup(final Plane plane, final Particle[] ps, final Estimate[] e, final int[] group,
 		final EmpiricalProfile[] profile, final double window, final Censoring censoring, final Budget budget,
-		final Kept kept)
+		final Kept kept, final NormalEquations passes)
 	{
 		final int n = group.length, np = PER_PARTICLE * n + BACKGROUND;
 		final FitPixels candidates;
@@ -390,16 +393,16 @@ public final class GroupFit {
 		if (previous != null) {
 			for (int a = 0; a < np; a++)
 				System.arraycopy(previous[a], 0, jtj[a], 0, np);
-			rss = NormalEquations.accumulate(pixels, p, n, members, null, jtr, startNoise, null);
+			rss = passes.accumulate(pixels, p, n, members, null, jtr, startNoise, null);
 		}
-		else if (frozen) rss = NormalEquations.accumulate(pixels, p, n, members, jtj, jtr, startNoise, null);
+		else if (frozen) rss = passes.accumulate(pixels, p, n, members, jtj, jtr, startNoise, null);
 		else if (use == null || FitPixels.allUsable(candidates, p, n, members, censoring, use))
-			rss = NormalEquations.accumulate(candidates, p, n, members, jtj, jtr, startNoise, null);
+			rss = passes.accumulate(candidates, p, n, members, jtj, jtr, startNoise, null);
 		else {
 			// The first pass over every candidate chooses the pixels from the model it computes, and the pixels left
 			// out are then taken out of its sums (a pass over them alone): one pass, not a choice and a pass.
 			final double[] models = new double[candidates.count()];
-			rss = NormalEquations.accumulate(candidates, p, n, members, jtj, jtr, startNoise, models);
+			rss = passes.accumulate(candidates, p, n, members, jtj, jtr, startNoise, models);
 			initial = new Evaluated(candidates, p.clone(), models);
 			final boolean[] out = new boolean[use.length];
 			for (int i = 0; i < use.length; i++) {
@@ -410,7 +413,7 @@ public final class GroupFit {
 			if (pixels != candidates) {
 				final double[][] outJtj = new double[np][np];
 				final double[] outJtr = new double[np], outNoise = new double[startNoise.length];
-				rss -= NormalEquations.accumulate(candidates.subset(out), p, n, members, outJtj, outJtr, outNoise, null);
+				rss -= passes.accumulate(candidates.subset(out), p, n, members, outJtj, outJtr, outNoise, null);
 				for (int i = 0; i < startNoise.length; i++)
 					startNoise[i] -= outNoise[i];
 				for (int a = 0; a < np; a++) {
@@ -482,7 +485,7 @@ public final class GroupFit {
 					final FitPixels chosen = candidates.subset(use);
 					if (chosen.count() <= np) break;
 					pixels = chosen;
-					rss = NormalEquations.accumulate(pixels, p, n, members, jtj, jtr, latest.clearedNoise(), latest.models);
+					rss = passes.accumulate(pixels, p, n, members, jtj, jtr, latest.clearedNoise(), latest.models);
 					latest.take(pixels, p);
 					hessianAtP = true;
 					sinceHessian = 0;
@@ -493,7 +496,7 @@ public final class GroupFit {
 				// the uncertainties want J^T J near the solution: after a run of chord steps it is that of a point
 				// several steps back, so it is computed once more here (with the residuals' variances)
 				if (sinceHessian > 1) {
-					rss = NormalEquations.accumulate(pixels, p, n, members, jtj, jtr, latest.clearedNoise(), null);
+					rss = passes.accumulate(pixels, p, n, members, jtj, jtr, latest.clearedNoise(), null);
 					latest.takeNoise();
 				}
 				break;
@@ -502,7 +505,7 @@ public final class GroupFit {
 			if (hessianAtP || allowed && move <= CHORD_CONTRACTION * lastMove) {
 				double trialRss = Double.POSITIVE_INFINITY;
 				if (allowed) {
-					trialRss = NormalEquations.accumulate(pixels, trial, n, members, null, tr, latest.clearedNoise(),
+					trialRss = passes.accumulate(pixels, trial, n, members, null, tr, latest.clearedNoise(),
 						latest.models);
 				}
 				if (trialRss <= rss) {
@@ -518,7 +521,7 @@ public final class GroupFit {
 				}
 			}
 			if (!hessianAtP) { // a chord step that does not shrink fast, or that failed: J^T J at p, and the step again
-				rss = NormalEquations.accumulate(pixels, p, n, members, jtj, jtr, latest.clearedNoise(), latest.models);
+				rss = passes.accumulate(pixels, p, n, members, jtj, jtr, latest.clearedNoise(), latest.models);
 				latest.take(pixels, p);
 				hessianAtP = true;
 				sinceHessian = 0;

@@ -26,13 +26,17 @@ import io.github.contacttracker.core.profile.EmpiricalProfile;
 /**
  * The passes of {@link GroupFit}'s least squares over a group's pixels ({@link FitPixels}): J^T J, J^T r and the
  * residuals at given parameters, in the layout per member x, y, amplitude, scale, then the background plane. One
- * pass for every group size, and one for groups of one ({@link #accumulateOne}, its sums in local variables, bit for
- * bit the same): large groups are fitted member by member, so on dense footage groups of one are most of the work,
+ * pass for groups of more than one, and two for groups of one (with and without J^T J, their sums in local variables,
+ * bit for bit the same): large groups are fitted member by member, so on dense footage groups of one are most of the work,
  * and sums kept in local variables spare that pass the array traffic of the general one (its speed: speed.md).
  */
 final class NormalEquations {
 
-	private NormalEquations() {}
+	/** A group of one's J^T J pass: each pixel's gradient and residual ({@value #GRADIENT} numbers), grown on demand. */
+	private double[] gradients = new double[0];
+
+	/** Passes with their own work array: one per fit (not shared between threads). */
+	NormalEquations() {}
 
 	/** The numbers per pixel of a group of one's first loop: the gradient's four and the residual. */
 	private static final int GRADIENT = 5;
@@ -50,10 +54,19 @@ final class NormalEquations {
 	 * updated, on a flat lower triangle; the background's own block does not depend on {@code p} and was summed once
 	 * ({@link FitPixels#backgroundBlock}).
 	 */
-	static double accumulate(final FitPixels px, final double[] p, final int n, final EmpiricalProfile[] profile,
+	double accumulate(final FitPixels px, final double[] p, final int n, final EmpiricalProfile[] profile,
 		final double[][] jtj, final double[] jtr, final double[] noise, final double[] models)
 	{
-		if (n == 1) return accumulateOne(px, p, profile[0], jtj, jtr, noise, models);
+		if (n > 1) return accumulateGroup(px, p, n, profile, jtj, jtr, noise, models);
+		if (jtj == null) return residualsOne(px, p, profile[0], jtr, noise, models);
+		return normalEquationsOne(px, p, profile[0], jtj, jtr, noise, models);
+	}
+
+	/** {@link #accumulate} for a group of more than one. */
+	private static double accumulateGroup(final FitPixels px, final double[] p, final int n,
+		final EmpiricalProfile[] profile, final double[][] jtj, final double[] jtr, final double[] noise,
+		final double[] models)
+	{
 		final int np = GroupFit.PER_PARTICLE * n + GroupFit.BACKGROUND, b0 = np - GroupFit.BACKGROUND;
 		// each member's profile (its kind's): the tables, and its reach
 		final double[][] tvs = new double[n][], tds = new double[n][];
@@ -64,8 +77,7 @@ final class NormalEquations {
 			Rs[q] = profile[q].radius();
 		}
 		final double perStep = 1 / EmpiricalProfile.TABLE_STEP;
-		final int[] xs = px.x(), ys = px.y();
-		final double[] us = px.u(), vs = px.v(), values = px.value(), fixed = px.fixed();
+		final double[] pixels = px.packed();
 		final int count = px.count();
 		java.util.Arrays.fill(jtr, 0);
 		final boolean hessian = jtj != null;
@@ -81,13 +93,13 @@ final class NormalEquations {
 			perScale[q] = 1 / sc;
 		}
 		double rss = 0, r0 = 0, ru = 0, rv = 0;
-		for (int i = 0; i < count; i++) {
-			final double u = us[i], v = vs[i];
-			double model = pb + pu * u + pv * v + fixed[i];
+		for (int i = 0, o = 0; i < count; i++, o += FitPixels.PACKED) {
+			final double x = pixels[o], y = pixels[o + 1], u = pixels[o + 2], v = pixels[o + 3];
+			double model = pb + pu * u + pv * v + pixels[o + 5];
 			int m = 0;
 			for (int q = 0; q < n; q++) {
 				final int b = GroupFit.PER_PARTICLE * q;
-				final double dx = xs[i] - p[b], dy = ys[i] - p[b + 1], r2 = dx * dx + dy * dy;
+				final double dx = x - p[b], dy = y - p[b + 1], r2 = dx * dx + dy * dy;
 				if (!(r2 < reach2[q])) continue;
 				final double r = Math.sqrt(r2), rs = r * perScale[q];
 				if (!(rs < Rs[q])) continue; // (rounding at the very edge)
@@ -108,7 +120,7 @@ final class NormalEquations {
 				within[m++] = b;
 			}
 			if (models != null) models[i] = model;
-			final double res = values[i] - model;
+			final double res = pixels[o + 4] - model;
 			rss += res * res;
 			r0 += res;
 			ru += res * u;
@@ -140,11 +152,11 @@ final class NormalEquations {
 	}
 
 	/**
-	 * {@link #accumulate} for a group of one, with the same sums in the same order (the same results to the last bit):
-	 * J^T J's member block and its rows against the background plane, J^T r and the residuals' sums in local variables.
+	 * {@link #accumulate} without J^T J for a group of one, with the same sums in the same order (the same results to
+	 * the last bit): a pass that evaluates a step. Its few sums fit in the processor's registers, so it is one loop.
 	 */
-	private static double accumulateOne(final FitPixels px, final double[] p, final EmpiricalProfile profile,
-		final double[][] jtj, final double[] jtr, final double[] noise, final double[] models)
+	private static double residualsOne(final FitPixels px, final double[] p, final EmpiricalProfile profile,
+		final double[] jtr, final double[] noise, final double[] models)
 	{
 		final int np = GroupFit.PER_PARTICLE + GroupFit.BACKGROUND, b0 = GroupFit.PER_PARTICLE;
 		final double[] tv = profile.valueTable(), td = profile.derivativeTable();
@@ -154,66 +166,15 @@ final class NormalEquations {
 		final double cx = p[0], cy = p[1], a = p[2], sc = p[3], pb = p[b0], pu = p[b0 + 1], pv = p[b0 + 2];
 		final double reach2 = R * sc * (R * sc), perScale = 1 / sc;
 		double rss = 0, r0 = 0, ru = 0, rv = 0, j0 = 0, j1 = 0, j2 = 0, j3 = 0;
-		final boolean weights = noise != null;
+		final boolean weights = noise != null; // (its sums add to those given, as the general pass's do)
 		double n0 = weights ? noise[0] : 0, n1 = weights ? noise[1] : 0, n2 = weights ? noise[2] : 0, n3 = weights ?
 			noise[3] : 0;
-		// the member's block (lower triangle) and its rows against the plane's 1, u, v
-		double h00 = 0, h10 = 0, h11 = 0, h20 = 0, h21 = 0, h22 = 0, h30 = 0, h31 = 0, h32 = 0, h33 = 0;
-		double c0 = 0, c1 = 0, c2 = 0, c3 = 0, cu0 = 0, cu1 = 0, cu2 = 0, cu3 = 0, cv0 = 0, cv1 = 0, cv2 = 0, cv3 = 0;
-		final boolean hessian = jtj != null;
-		if (!hessian) { // a pass that evaluates a step: its few sums fit in registers, one loop
-			for (int i = 0, o = 0; i < count; i++, o += FitPixels.PACKED) {
-				final double u = pixels[o + 2], v = pixels[o + 3];
-				double model = pb + pu * u + pv * v + pixels[o + 5];
-				final double dx = pixels[o] - cx, dy = pixels[o + 1] - cy, r2 = dx * dx + dy * dy;
-				boolean within = false;
-				double g0 = 0, g1 = 0, g2 = 0, g3 = 0;
-				if (r2 < reach2) {
-					final double r = Math.sqrt(r2), rs = r * perScale;
-					if (rs < R) {
-						final double t = rs * perStep;
-						final int k = (int) t;
-						final double f = t - k;
-						final double val = tv[k] + f * (tv[k + 1] - tv[k]);
-						final double d = a * (td[k] + f * (td[k + 1] - td[k])) * perScale;
-						model += a * val;
-						final double radial = r > 1e-12 ? -d / r : 0;
-						g0 = radial * dx;
-						g1 = radial * dy;
-						g2 = val;
-						g3 = -d * rs;
-						within = true;
-					}
-				}
-				if (models != null) models[i] = model;
-				final double res = pixels[o + 4] - model;
-				rss += res * res;
-				r0 += res;
-				ru += res * u;
-				rv += res * v;
-				if (!within) continue;
-				j0 += g0 * res;
-				j1 += g1 * res;
-				j2 += g2 * res;
-				j3 += g3 * res;
-				if (weights) {
-					final double rr = res * res, wx = g0 * g0, wy = g1 * g1;
-					n0 += wx;
-					n1 += wx * rr;
-					n2 += wy;
-					n3 += wy * rr;
-				}
-			}
-			store(jtr, noise, j0, j1, j2, j3, n0, n1, n2, n3);
-			return finish(px, np, null, null, jtr, r0, ru, rv, rss);
-		}
-		// J^T J: first each pixel's gradient and residual (0 out of reach: they add nothing below), then the sums, each in a
-		// small loop: one loop for all would keep more sums than the processor has registers
-		final double[] gr = new double[GRADIENT * count];
-		for (int i = 0, o = 0, q = 0; i < count; i++, o += FitPixels.PACKED, q += GRADIENT) {
+		for (int i = 0, o = 0; i < count; i++, o += FitPixels.PACKED) {
 			final double u = pixels[o + 2], v = pixels[o + 3];
 			double model = pb + pu * u + pv * v + pixels[o + 5];
 			final double dx = pixels[o] - cx, dy = pixels[o + 1] - cy, r2 = dx * dx + dy * dy;
+			boolean within = false;
+			double g0 = 0, g1 = 0, g2 = 0, g3 = 0;
 			if (r2 < reach2) {
 				final double r = Math.sqrt(r2), rs = r * perScale;
 				if (rs < R) {
@@ -224,16 +185,84 @@ final class NormalEquations {
 					final double d = a * (td[k] + f * (td[k + 1] - td[k])) * perScale;
 					model += a * val;
 					final double radial = r > 1e-12 ? -d / r : 0;
-					gr[q] = radial * dx;
-					gr[q + 1] = radial * dy;
-					gr[q + 2] = val;
-					gr[q + 3] = -d * rs;
+					g0 = radial * dx;
+					g1 = radial * dy;
+					g2 = val;
+					g3 = -d * rs;
+					within = true;
 				}
 			}
 			if (models != null) models[i] = model;
+			final double res = pixels[o + 4] - model;
+			rss += res * res;
+			r0 += res;
+			ru += res * u;
+			rv += res * v;
+			if (!within) continue;
+			j0 += g0 * res;
+			j1 += g1 * res;
+			j2 += g2 * res;
+			j3 += g3 * res;
+			if (weights) {
+				final double rr = res * res, wx = g0 * g0, wy = g1 * g1;
+				n0 += wx;
+				n1 += wx * rr;
+				n2 += wy;
+				n3 += wy * rr;
+			}
+		}
+		store(jtr, noise, j0, j1, j2, j3, n0, n1, n2, n3);
+		return finish(px, np, null, null, jtr, r0, ru, rv, rss);
+	}
+
+	/**
+	 * {@link #accumulate} with J^T J for a group of one, with the same sums in the same order (the same results to the
+	 * last bit): J^T J's member block and its rows against the background plane, J^T r and the residuals' sums in
+	 * local variables. First each pixel's gradient and residual (0 out of reach: they add nothing below), then the
+	 * sums, each in a small loop: one loop for all would keep more sums than the processor has registers.
+	 */
+	private double normalEquationsOne(final FitPixels px, final double[] p, final EmpiricalProfile profile,
+		final double[][] jtj, final double[] jtr, final double[] noise, final double[] models)
+	{
+		final int np = GroupFit.PER_PARTICLE + GroupFit.BACKGROUND, b0 = GroupFit.PER_PARTICLE;
+		final double[] tv = profile.valueTable(), td = profile.derivativeTable();
+		final double R = profile.radius(), perStep = 1 / EmpiricalProfile.TABLE_STEP;
+		final double[] pixels = px.packed();
+		final int count = px.count();
+		final double cx = p[0], cy = p[1], a = p[2], sc = p[3], pb = p[b0], pu = p[b0 + 1], pv = p[b0 + 2];
+		final double reach2 = R * sc * (R * sc), perScale = 1 / sc;
+		if (gradients.length < GRADIENT * count) gradients = new double[GRADIENT * count];
+		final double[] gr = gradients;
+		for (int i = 0, o = 0, q = 0; i < count; i++, o += FitPixels.PACKED, q += GRADIENT) {
+			final double u = pixels[o + 2], v = pixels[o + 3];
+			double model = pb + pu * u + pv * v + pixels[o + 5];
+			final double dx = pixels[o] - cx, dy = pixels[o + 1] - cy, r2 = dx * dx + dy * dy;
+			double g0 = 0, g1 = 0, g2 = 0, g3 = 0;
+			if (r2 < reach2) {
+				final double r = Math.sqrt(r2), rs = r * perScale;
+				if (rs < R) {
+					final double t = rs * perStep;
+					final int k = (int) t;
+					final double f = t - k;
+					final double val = tv[k] + f * (tv[k + 1] - tv[k]);
+					final double d = a * (td[k] + f * (td[k + 1] - td[k])) * perScale;
+					model += a * val;
+					final double radial = r > 1e-12 ? -d / r : 0;
+					g0 = radial * dx;
+					g1 = radial * dy;
+					g2 = val;
+					g3 = -d * rs;
+				}
+			}
+			gr[q] = g0;
+			gr[q + 1] = g1;
+			gr[q + 2] = g2;
+			gr[q + 3] = g3;
+			if (models != null) models[i] = model;
 			gr[q + 4] = pixels[o + 4] - model;
 		}
-		for (int i = 0, o = 0, q = 0; i < count; i++, o += FitPixels.PACKED, q += GRADIENT) {
+		double rss = 0, r0 = 0, ru = 0, rv = 0, j0 = 0, j1 = 0, j2 = 0, j3 = 0;
+		for (int o = 0, q = 0; q < GRADIENT * count; o += FitPixels.PACKED, q += GRADIENT) {
 			final double res = gr[q + 4];
 			rss += res * res;
 			r0 += res;
@@ -244,6 +273,9 @@ final class NormalEquations {
 			j2 += gr[q + 2] * res;
 			j3 += gr[q + 3] * res;
 		}
+		final boolean weights = noise != null;
+		double n0 = weights ? noise[0] : 0, n1 = weights ? noise[1] : 0, n2 = weights ? noise[2] : 0, n3 = weights ?
+			noise[3] : 0;
 		if (weights) for (int q = 0; q < GRADIENT * count; q += GRADIENT) {
 			final double res = gr[q + 4], rr = res * res, wx = gr[q] * gr[q], wy = gr[q + 1] * gr[q + 1];
 			n0 += wx;
@@ -251,49 +283,56 @@ final class NormalEquations {
 			n2 += wy;
 			n3 += wy * rr;
 		}
-		if (hessian) {
-			for (int q = 0; q < GRADIENT * count; q += GRADIENT) {
-				final double g0 = gr[q], g1 = gr[q + 1], g2 = gr[q + 2], g3 = gr[q + 3];
-				h00 += g0 * g0;
-				h10 += g1 * g0;
-				h11 += g1 * g1;
-				h20 += g2 * g0;
-				h21 += g2 * g1;
-				h22 += g2 * g2;
-				h30 += g3 * g0;
-				h31 += g3 * g1;
-				h32 += g3 * g2;
-				h33 += g3 * g3;
-			}
-			for (int o = 0, q = 0; q < GRADIENT * count; o += FitPixels.PACKED, q += GRADIENT) {
-				final double g0 = gr[q], g1 = gr[q + 1], g2 = gr[q + 2], g3 = gr[q + 3], u = pixels[o + 2], v = pixels[o + 3];
-				c0 += g0;
-				c1 += g1;
-				c2 += g2;
-				c3 += g3;
-				cu0 += u * g0;
-				cu1 += u * g1;
-				cu2 += u * g2;
-				cu3 += u * g3;
-				cv0 += v * g0;
-				cv1 += v * g1;
-				cv2 += v * g2;
-				cv3 += v * g3;
-			}
-		}
 		store(jtr, noise, j0, j1, j2, j3, n0, n1, n2, n3);
-		double[] h = null;
-		if (hessian) { // laid out as accumulate's flat lower triangle
-			h = new double[np * np];
-			final double[] own = { h00, h10, h11, h20, h21, h22, h30, h31, h32, h33 };
-			for (int r = 0, o = 0; r < GroupFit.PER_PARTICLE; r++)
-				for (int c = 0; c <= r; c++)
-					h[r * np + c] = own[o++];
-			final double[][] plane = { { c0, c1, c2, c3 }, { cu0, cu1, cu2, cu3 }, { cv0, cv1, cv2, cv3 } };
-			for (int r = 0; r < GroupFit.BACKGROUND; r++)
-				System.arraycopy(plane[r], 0, h, (b0 + r) * np, GroupFit.PER_PARTICLE);
-		}
+		final double[] h = new double[np * np]; // laid out as accumulate's flat lower triangle
+		ownBlockOne(h, np, b0, gr, pixels, count);
 		return finish(px, np, h, jtj, jtr, r0, ru, rv, rss);
+	}
+
+	/**
+	 * A group of one's block of J^T J (lower triangle) and its rows against the background plane's 1, u, v, summed
+	 * from the gradients {@code gr} onto the flat {@code h}.
+	 */
+	private static void ownBlockOne(final double[] h, final int np, final int b0, final double[] gr,
+		final double[] pixels, final int count)
+	{
+		double h00 = 0, h10 = 0, h11 = 0, h20 = 0, h21 = 0, h22 = 0, h30 = 0, h31 = 0, h32 = 0, h33 = 0;
+		for (int q = 0; q < GRADIENT * count; q += GRADIENT) {
+			final double g0 = gr[q], g1 = gr[q + 1], g2 = gr[q + 2], g3 = gr[q + 3];
+			h00 += g0 * g0;
+			h10 += g1 * g0;
+			h11 += g1 * g1;
+			h20 += g2 * g0;
+			h21 += g2 * g1;
+			h22 += g2 * g2;
+			h30 += g3 * g0;
+			h31 += g3 * g1;
+			h32 += g3 * g2;
+			h33 += g3 * g3;
+		}
+		double c0 = 0, c1 = 0, c2 = 0, c3 = 0, cu0 = 0, cu1 = 0, cu2 = 0, cu3 = 0, cv0 = 0, cv1 = 0, cv2 = 0, cv3 = 0;
+		for (int o = 0, q = 0; q < GRADIENT * count; o += FitPixels.PACKED, q += GRADIENT) {
+			final double g0 = gr[q], g1 = gr[q + 1], g2 = gr[q + 2], g3 = gr[q + 3], u = pixels[o + 2], v = pixels[o + 3];
+			c0 += g0;
+			c1 += g1;
+			c2 += g2;
+			c3 += g3;
+			cu0 += u * g0;
+			cu1 += u * g1;
+			cu2 += u * g2;
+			cu3 += u * g3;
+			cv0 += v * g0;
+			cv1 += v * g1;
+			cv2 += v * g2;
+			cv3 += v * g3;
+		}
+		final double[] own = { h00, h10, h11, h20, h21, h22, h30, h31, h32, h33 };
+		for (int r = 0, o = 0; r < GroupFit.PER_PARTICLE; r++)
+			for (int c = 0; c <= r; c++)
+				h[r * np + c] = own[o++];
+		final double[][] plane = { { c0, c1, c2, c3 }, { cu0, cu1, cu2, cu3 }, { cv0, cv1, cv2, cv3 } };
+		for (int r = 0; r < GroupFit.BACKGROUND; r++)
+			System.arraycopy(plane[r], 0, h, (b0 + r) * np, GroupFit.PER_PARTICLE);
 	}
 
 	/** A group of one's J^T r and, where asked ({@code noise} not null), its residuals' variance sums. */

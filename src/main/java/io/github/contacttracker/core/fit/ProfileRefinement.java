@@ -180,12 +180,14 @@ public final class ProfileRefinement implements Refinement {
 			// (the first round's moves are from the iterative centres; a verdict needs a round on a measured profile)
 			final Rounds.Verdict verdict = round == 0 ? Rounds.Verdict.GOING_ON : settling.next(moves);
 			if (verdict == Rounds.Verdict.GOING_ON) continue;
+			if (verdict == Rounds.Verdict.STALLED) break; // (no fixed point: flagged below)
 			if (verdict == Rounds.Verdict.CYCLING) for (int k = 0; k < e.length; k++)
 				if (settling.stillMoving(k)) e[k] = e[k].withFlags(e[k].flags() | Flag.NOT_CONVERGED.bit());
 			settled = true;
 			break;
 		}
-		// profile and centres still moving at the last round: no fixed point, the centres can be off by that much
+		// profile and centres still moving at the last round, or stalled: no fixed point, the centres can be off by that
+		// much
 		if (!settled) for (int k = 0; k < e.length; k++)
 			e[k] = e[k].withFlags(e[k].flags() | Flag.NOT_CONVERGED.bit());
 		flagUnmodelledNeighbours(ps, e, params.groupingDistance());

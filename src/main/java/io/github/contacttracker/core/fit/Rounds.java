@@ -36,7 +36,14 @@ import io.github.contacttracker.core.math.Statistics;
  * The rounds stop, and only the centres that moved more than their tolerance in the last
  * round are flagged ({@link #stillMoving}). A geometric approach to the fixed point (every simulation) never
  * stalls over two rounds, so it always ends {@code SETTLED}.
- * <li>{@link Verdict#GOING_ON}: neither.
+ * <li>{@link Verdict#STALLED}: the centres as a whole are far from settled (the median move above
+ * {@value #STALL_MEDIAN} tolerances, a whole standard error) and it has not come below half its value of
+ * {@value #STALL_ROUNDS} or more rounds before (the last round that halved it, or the first). An approach to the fixed
+ * point shrinks the median move several times each round; one that stays at a standard error and more round after round is no approach (a profile that
+ * cannot describe the particles, such as a field too dense or too blurred for the model, moves the centres anew
+ * every round), and the rounds, each a refit of every sample frame, would run to their limit for nothing. The
+ * rounds stop as at their limit: no fixed point, every centre flagged.
+ * <li>{@link Verdict#GOING_ON}: none of these.
  * </ul>
  */
 public final class Rounds {
@@ -48,13 +55,24 @@ public final class Rounds {
 		/** every centre settled */
 		SETTLED,
 		/** the centres as a whole settled, a few still go back and forth: stop, flag those */
-		CYCLING
+		CYCLING,
+		/** the centres as a whole far from settled, and not approaching it: stop, flag all */
+		STALLED
 	}
 
 	/** The median move (in tolerances) below which the centres as a whole count as settled. */
 	static final double BULK = 0.5;
 
+	/** The median move (in tolerances) above which rounds that do not shrink it count as stalled. */
+	static final double STALL_MEDIAN = 10;
+
+	/** How many rounds in a row may leave the median move above half its last anchor before they count as stalled. */
+	static final int STALL_ROUNDS = 3;
+
 	private double maxPrevious = Double.POSITIVE_INFINITY, maxBefore = Double.POSITIVE_INFINITY;
+	/** the median move of the latest round that halved the one before (the first round's), and the rounds since */
+	private double anchorMedian = Double.POSITIVE_INFINITY;
+	private int sinceShrunk;
 	private double[] last = new double[0];
 
 	/**
@@ -73,7 +91,14 @@ public final class Rounds {
 		maxBefore = maxPrevious;
 		maxPrevious = max;
 		if (max <= 1) return Verdict.SETTLED;
-		return max >= twoBack && Statistics.median(moves.clone()) <= BULK ? Verdict.CYCLING : Verdict.GOING_ON;
+		final double median = Statistics.median(moves.clone());
+		if (median < anchorMedian / 2) {
+			anchorMedian = median;
+			sinceShrunk = 0;
+		}
+		else sinceShrunk++;
+		if (max >= twoBack && median <= BULK) return Verdict.CYCLING;
+		return median > STALL_MEDIAN && sinceShrunk >= STALL_ROUNDS ? Verdict.STALLED : Verdict.GOING_ON;
 	}
 
 	/** @return whether centre {@code i} moved more than its tolerance in the latest round */

@@ -320,12 +320,14 @@ public final class StackTracker {
 			round = pass(tracker, profiles(used), sample, frame, false, progress, cancelled);
 			verdict = rounds.next(moves(previous, round));
 		}
-		// no fixed point within the rounds: every centre rests on a profile that was still moving. Settled: the
+		// no fixed point within the rounds, or rounds that stalled far from one: every centre rests on a profile that
+		// was still moving. Settled: the
 		// profile of the last round is the fixed point's (to within the tolerance), and the sample frames were just
 		// refined with that very profile: without regions to keep, their results are the final ones. Cycling: so
 		// is the profile, but a few centres of the sample frames went back and forth between two fits; they are flagged.
 		if (verdict == Rounds.Verdict.CYCLING) round = stillMovingFlagged(round, rounds);
-		return new ProfileStage(sample, profiles(used), verdict != Rounds.Verdict.GOING_ON, round);
+		final boolean settled = verdict == Rounds.Verdict.SETTLED || verdict == Rounds.Verdict.CYCLING;
+		return new ProfileStage(sample, profiles(used), settled, round);
 	}
 
 	/** @return the elements of {@code array} at {@code positions}, in that order */
@@ -375,10 +377,11 @@ public final class StackTracker {
 
 	/**
 	 * The moves of the spots between two results of the same frames, in frame order, each in units of its
-	 * {@link GroupFit#settled tolerance}; NaN for a spot whose centre is not the fit's own. Where a frame's spots are
-	 * the same in number they are in the same order; where not (a detection by the image added or removed a particle
-	 * as the profile changed), each spot's move is from the nearest spot before, and a spot with none within its
-	 * particle's size (a particle added) has NaN: the others' moves say whether the frame settled.
+	 * {@link GroupFit#settled tolerance}; NaN for a spot whose centre is not the fit's own. A spot's partner before is
+	 * the one at its place in the list where the frame's spots are the same in number and that one lies within its
+	 * particle's size; otherwise (a detection by the image added or removed particles as the profile changed, as many
+	 * as it added or not) the nearest spot before, and a spot with none within its particle's size (a particle
+	 * added) has NaN: the others' moves say whether the frame settled.
 	 */
 	static double[] moves(final List<FrameResult> before, final List<FrameResult> after) {
 		int n = 0;
@@ -390,12 +393,17 @@ public final class StackTracker {
 			final List<Localization> a = before.get(t).spots(), b = after.get(t).spots();
 			final boolean same = a.size() == b.size();
 			for (int k = 0; k < b.size(); k++, i++) {
-				final Localization now = b.get(k), then = same ? a.get(k) : nearest(a, now);
+				final Localization now = b.get(k), then = same && near(a.get(k), now) ? a.get(k) : nearest(a, now);
 				moves[i] = fitted(now) && then != null ? Math.hypot(then.x() - now.x(), then.y() - now.y()) / GroupFit
 					.settled(now.sigmaX(), now.sigmaY()) : Double.NaN;
 			}
 		}
 		return moves;
+	}
+
+	/** @return whether {@code then} lies within {@code now}'s radius (at least a pixel) of it */
+	private static boolean near(final Localization then, final Localization now) {
+		return Math.hypot(then.x() - now.x(), then.y() - now.y()) < Math.max(1, now.radius());
 	}
 
 	/** @return the spot of {@code spots} nearest to {@code l} within {@code l}'s radius, or null */

@@ -95,7 +95,7 @@ class NormalEquationsTest {
 		final int n = profile.length, np = p.length;
 		final double[][] jtj = new double[np][np];
 		final double[] jtr = new double[np], models = new double[px.count()];
-		final double rss = NormalEquations.accumulate(px, p, n, profile, jtj, jtr, new double[4 * n], models);
+		final double rss = new NormalEquations().accumulate(px, p, n, profile, jtj, jtr, new double[4 * n], models);
 		final double[][] wantJtj = new double[np][np];
 		final double[] wantJtr = new double[np], g = new double[np];
 		double wantRss = 0;
@@ -147,9 +147,9 @@ class NormalEquationsTest {
 		final double[][] jtj1 = new double[7][7], jtj2 = new double[11][11];
 		final double[] jtr1 = new double[7], jtr2 = new double[11], noise1 = new double[4], noise2 = new double[8];
 		final double[] models1 = new double[px.count()], models2 = new double[px.count()];
-		final double rss1 = NormalEquations.accumulate(px, one, 1, new EmpiricalProfile[] { profile }, jtj1, jtr1,
+		final double rss1 = new NormalEquations().accumulate(px, one, 1, new EmpiricalProfile[] { profile }, jtj1, jtr1,
 			noise1, models1);
-		final double rss2 = NormalEquations.accumulate(px, two, 2, new EmpiricalProfile[] { profile, profile }, jtj2,
+		final double rss2 = new NormalEquations().accumulate(px, two, 2, new EmpiricalProfile[] { profile, profile }, jtj2,
 			jtr2, noise2, models2);
 		assertEquals(rss2, rss1, 0);
 		assertArrayEquals(models2, models1, 0);
@@ -166,8 +166,8 @@ class NormalEquationsTest {
 		final double[] more1 = { 1.5, 2.5, 3.5, 4.5 }, more2 = { 1.5, 2.5, 3.5, 4.5, 0, 0, 0, 0 };
 		one[0] += 0.03;
 		two[0] += 0.03;
-		assertEquals(NormalEquations.accumulate(px, two, 2, new EmpiricalProfile[] { profile, profile }, null, jtr2,
-			more2, null), NormalEquations.accumulate(px, one, 1, new EmpiricalProfile[] { profile }, null, jtr1, more1,
+		assertEquals(new NormalEquations().accumulate(px, two, 2, new EmpiricalProfile[] { profile, profile }, null, jtr2,
+			more2, null), new NormalEquations().accumulate(px, one, 1, new EmpiricalProfile[] { profile }, null, jtr1, more1,
 				null), 0);
 		assertArrayEquals(java.util.Arrays.copyOf(more2, 4), more1, 0);
 		for (int a = 0; a < 7; a++)

@@ -206,4 +206,28 @@ class StackTrackerTest {
 				false)));
 		assertTrue(e.getMessage().startsWith("frame 2: pixel (36, 1) is Infinity"), e.getMessage());
 	}
+
+	/**
+	 * A profile round whose detection removed one particle and added another keeps the frame's count but not its
+	 * order: each spot's move is from its own particle before, not from the spot at its place in the list.
+	 */
+	@Test
+	void roundMovesMatchParticlesWhenOneIsRemovedAndAnotherAdded() {
+		final List<Localization> before = List.of(spot(10, 10), spot(40, 10), spot(70, 10));
+		// the particle at (40, 10) removed, one at (100, 10) added, the others moved by 0.01 px
+		final List<Localization> after = List.of(spot(10.01, 10), spot(70.01, 10), spot(100, 10));
+		final double[] moves = StackTracker.moves(List.of(result(before)), List.of(result(after)));
+		final double tolerance = io.github.contacttracker.core.fit.GroupFit.settled(0.02, 0.02);
+		assertEquals(0.01 / tolerance, moves[0], 1e-9);
+		assertEquals(0.01 / tolerance, moves[1], 1e-9);
+		assertTrue(Double.isNaN(moves[2]), "the added particle has no move: " + moves[2]);
+	}
+
+	private static Localization spot(final double x, final double y) {
+		return new Localization(0, x, y, x, y, 300, 0, 1, 10, 0, 3, 0.02, 0.02, 1, 1, 0);
+	}
+
+	private static FrameResult result(final List<Localization> spots) {
+		return new FrameResult(spots, List.of(), List.of(), 1, 0, false);
+	}
 }
