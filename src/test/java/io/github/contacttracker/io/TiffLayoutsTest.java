@@ -403,6 +403,56 @@ class TiffLayoutsTest {
 		assertRefused(bad, "damaged Deflate data", "bad-deflate.tif");
 	}
 
+	/**
+	 * Files of each layout with bytes changed at random (in the directory, the tables, the compressed data): every
+	 * one is read or refused with an {@link IOException} of one line naming the file, by file and by offset; nothing
+	 * else is thrown. Cases: {@code contact.tracker.fuzz.cases} (default 300), from {@code contact.tracker.fuzz.seed}.
+	 */
+	@Test
+	void damagedLayoutsAreReadOrRefusedInOneLine() throws IOException {
+		final Page[] layouts = { new Page(37, 13, 16, 1, 3, 2, 2, 5, 2, 0, 5), new Page(37, 13, 8, 1, 4, 2, 2, 8, 1, 16,
+			0), new Page(37, 13, 16, 1, 2, 1, 1, 32773, 1, 0, 4), new Page(37, 13, 32, 3, 3, 2, 2, 5, 1, 16, 0) };
+		final int cases = Integer.getInteger("contact.tracker.fuzz.cases", 300);
+		final java.util.SplittableRandom rnd = new java.util.SplittableRandom(Long.getLong("contact.tracker.fuzz.seed",
+			20261205L));
+		int read = 0, refused = 0;
+		for (int c = 0; c < cases; c++) {
+			final long seed = rnd.nextLong();
+			final java.util.SplittableRandom r = new java.util.SplittableRandom(seed);
+			final Page p = layouts[r.nextInt(layouts.length)];
+			final Path file = write(dir.resolve("mutant" + c + ".tif"), p, 1 + r.nextInt(2), r.nextBoolean()
+				? ByteOrder.BIG_ENDIAN : ByteOrder.LITTLE_ENDIAN);
+			final byte[] b = Files.readAllBytes(file);
+			final int changes = 1 + r.nextInt(8);
+			for (int k = 0; k < changes; k++) {
+				final int at = r.nextInt(4) == 0 ? b.length - 1 - r.nextInt(Math.min(b.length, 400)) : r.nextInt(b.length);
+				b[at] = (byte) (r.nextBoolean() ? r.nextInt(256) : b[at] ^ 1 << r.nextInt(8));
+			}
+			Files.write(file, b);
+			for (final boolean byOffset : new boolean[] { false, true }) {
+				try {
+					final ImagePlus imp = byOffset ? ImageFiles.openByOffset(SeekableBytes.of(file)) : ImageFiles.open(file);
+					for (int i = 1; i <= imp.getStackSize(); i++)
+						imp.getStack().getProcessor(i);
+					read++;
+				}
+				catch (final IOException | UncheckedIOException e) {
+					final String m = e instanceof UncheckedIOException u ? u.getCause().getMessage() : e.getMessage();
+					assertTrue(m != null && m.lines().count() == 1 && m.contains(file.getFileName().toString()), "seed " +
+						seed + ": " + m);
+					refused++;
+				}
+				catch (final RuntimeException | OutOfMemoryError e) {
+					throw new AssertionError("seed " + seed + " (" + p + "), by " + (byOffset ? "offset" : "file") + ": " + e,
+						e);
+				}
+			}
+			Files.delete(file);
+		}
+		System.out.println("TIFF layout mutants: " + cases + " files, " + read + " reads, " + refused + " refusals");
+		assertTrue(read > 0 && refused > 0, read + " read, " + refused + " refused");
+	}
+
 	/** Asserts that the file is refused in one line naming it and saying {@code what} and {@code how}. */
 	private static void assertRefused(final Path file, final String what, final String how) {
 		for (final boolean byOffset : new boolean[] { false, true }) {
