@@ -40,6 +40,7 @@ import java.util.Map;
 import java.util.SplittableRandom;
 import java.util.concurrent.ExecutionException;
 
+import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.scijava.Cancelable;
@@ -80,6 +81,12 @@ class FijiCommandFuzzTest extends WithContext {
 
 	@TempDir
 	Path dir;
+
+	/** The command remembers its inputs: the fuzz's odd ones must not open another test's dialog. */
+	@AfterEach
+	void forgetRememberedValues() {
+		context.service(PrefService.class).clearAll();
+	}
 
 	@Test
 	void noInputEndsInAnException() throws Exception {
@@ -122,6 +129,44 @@ class FijiCommandFuzzTest extends WithContext {
 		System.out.println("Fiji command fuzz: " + cases + " cases (" + macros + " as macros), " + tracked +
 			" tracked, " + refused + " refused in one line");
 		assertTrue(tracked > 0 && refused > 0, tracked + " tracked, " + refused + " refused");
+	}
+
+	/**
+	 * Found by this fuzz (seed 3, case seed -91774238770812134): an r_out of 2 px or less with a method that measures
+	 * the profile (fit, the default, or deblend) on a movie of particles ended in an exception from the profile's
+	 * estimator (its reach, 1.5 r_out, must exceed 3 px), in Fiji and as {@code track}'s internal error. Now refused
+	 * in one line naming r_out and the method that tracks particles this small; r_out just above 2 px tracks.
+	 */
+	@Test
+	void anROutTooSmallForTheProfileIsRefusedInOneLine(@TempDir final Path tmp) throws Exception {
+		final ij.process.ByteProcessor ip = new ij.process.ByteProcessor(80, 80);
+		for (int y = 0; y < 80; y++)
+			for (int x = 0; x < 80; x++) {
+				double v = 20;
+				for (int cy = 10; cy < 80; cy += 16)
+					for (int cx = 10; cx < 80; cx += 16)
+						v += 180 * Math.exp(-((x - cx) * (x - cx) + (y - cy) * (y - cy)) / (2 * 2.5 * 2.5));
+				ip.set(x, y, (int) Math.min(255, v));
+			}
+		final Path tif = tmp.resolve("grid.tif");
+		io.github.contacttracker.io.ImageFiles.saveTiff(new ImagePlus("grid", ip), tif);
+		for (final String method : new String[] { "fit", "deblend" })
+			for (final double rOut : new double[] { 0.5, 2 }) {
+				final Map<String, Object> inputs = new LinkedHashMap<>(Map.of("threshold", 100.0, "r_out", rOut, "method",
+					method, "table", false, "overlay", false));
+				final Cancelable run = (Cancelable) runAsScript(new ImagePlus("grid", ip.duplicate()), inputs, method + " " +
+					rOut);
+				assertTrue(run.isCanceled(), method + " " + rOut);
+				assertTrue(run.getCancelReason().startsWith("r_out must exceed 2.0 px for the " + method + " method") && run
+					.getCancelReason().contains("paper method"), run.getCancelReason());
+				final FuzzCase cli = new FuzzCase(0, List.of("track", tif.toString(), "--threshold", "100", "--r-out", String
+					.valueOf(rOut), "--method", method, "--csv", tmp.resolve("o.csv").toString()));
+				assertTrue(cli.refused() && cli.said.contains("r_out must exceed 2.0 px"), cli.what);
+			}
+		final Module tracked = runAsScript(new ImagePlus("grid", ip.duplicate()), new LinkedHashMap<>(Map.of("threshold",
+			100.0, "r_out", 2.1, "table", false, "overlay", false)), "fit 2.1");
+		assertFalse(((Cancelable) tracked).isCanceled(), ((Cancelable) tracked).getCancelReason());
+		assertEquals(25, ((ResultsTable) tracked.getOutput("spots")).size());
 	}
 
 	/**
