@@ -80,7 +80,7 @@ final class TiffMovie {
 		// every directory checked before ImageJ's decoder or ours reads one: the file's numbers size nothing unchecked
 		final TiffDirectories.Layout layout = TiffDirectories.read(file);
 		if (samplesAsChannels(layout)) return channels(own(file, samplePlanes(layout), true), layout);
-		if (layout.big()) return own(file, layout, false);
+		if (layout.big() || misreadByImageJ(file.toString(), layout)) return own(file, layout, false);
 		final Path abs = file.toAbsolutePath();
 		final ImageJMessages.Result<FileInfo[]> info;
 		try {
@@ -282,6 +282,21 @@ final class TiffMovie {
 		return true;
 	}
 
+	/**
+	 * @return whether ImageJ 1's decoder would give wrong pixels without a word: the floating-point predictor (3),
+	 *         which it ignores; our reader undoes it
+	 * @throws IOException naming the file and the layout, for a compression neither decoder reads right (JPEG, which
+	 *         ImageJ 1 decodes wrongly; LZMA, Zstd, ...)
+	 */
+	private static boolean misreadByImageJ(final String file, final TiffDirectories.Layout layout) throws IOException {
+		boolean predicted = false;
+		for (final TiffDirectories.Directory d : layout.directories()) {
+			if (!TiffCompression.supported(d.compression())) TiffChunks.check(file, d);
+			predicted |= d.predictor() == 3;
+		}
+		return predicted;
+	}
+
 	/** @return the layout with each image's samples as images of one sample each, page after page */
 	private static TiffDirectories.Layout samplePlanes(final TiffDirectories.Layout layout) {
 		final List<TiffDirectories.Directory> planes = new ArrayList<>();
@@ -324,8 +339,10 @@ final class TiffMovie {
 			final int bits = p.bits(), format = p.format();
 			final boolean ok = (bits == 8 || bits == 16 || bits == 32) && (format == 1 || format == 2 || format == 3 &&
 				bits == 32) || bits == 64 && format == 3;
-			if (!ok) throw new IOException("cannot read " + file + ": " + bits + "-bit samples of format " + format +
-				" are not supported (8/16/32-bit integer, 32/64-bit float)");
+			if (!ok) throw new IOException("cannot read " + file + ": " + bits + "-bit " + (format == 3 ? "float" : format ==
+				2 ? "signed integer" : format == 1 ? "integer" : "format " + format) + " samples are not supported " +
+				"(8/16/32-bit integer, 32/64-bit float); convert them, e.g. tifffile.imwrite(p, a.astype('float32'), " +
+				"photometric='minisblack')");
 			if (p.width() != p0.width() || p.height() != p0.height() || p.bits() != p0.bits() || p.format() != p0
 				.format()) throw new IOException("cannot read " + file + ": its pages differ in size or pixel type (a " +
 					"pyramid or thumbnails?)");
@@ -353,8 +370,9 @@ final class TiffMovie {
 		if (samplesAsChannels(layout)) return channels(own(bytes, title, samplePlanes(layout), true), layout);
 		if (layout.big()) return own(bytes, title, layout, false);
 		for (final TiffDirectories.Directory p : layout.directories())
-			if (p.compression() != 1) throw new IOException("cannot read " + file + ": compressed TIFF " +
-				"(compression " + p.compression() + "), which cannot be read plane by plane by offset; save it " +
+			if (p.compression() != 1) throw new IOException("cannot read " + file + ": " + TiffCompression.name(p
+				.compression()) + "-compressed TIFF (compression " + p.compression() + "), which cannot be read plane by " +
+				"plane by offset; save it " +
 				"uncompressed (Fiji: File > Save As > Tiff..., or tifffile without compression)");
 		final ImageJMessages.Result<FileInfo[]> info;
 		try {

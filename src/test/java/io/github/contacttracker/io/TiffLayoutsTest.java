@@ -97,6 +97,7 @@ class TiffLayoutsTest {
 					}
 			final byte[] raw = b.array();
 			if (predictor == 2) differences(raw, ph, pw * spp, spp, bytes, order);
+			if (predictor == 3) floatDifferences(raw, ph, pw * spp, spp, bytes, order);
 			return raw;
 		}
 	}
@@ -212,6 +213,25 @@ class TiffLayoutsTest {
 					case 2 -> b.putShort(2 * i, (short) (b.getShort(2 * i) - b.getShort(2 * (i - spp))));
 					default -> b.putInt(4 * i, b.getInt(4 * i) - b.getInt(4 * (i - spp)));
 				}
+	}
+
+	/**
+	 * The floating-point predictor (3): each row's bytes reordered, the most significant byte of every sample first,
+	 * then the next, and stored as byte-wise differences one pixel's samples apart.
+	 */
+	private static void floatDifferences(final byte[] raw, final int rows, final int values, final int spp,
+		final int bytes, final ByteOrder order)
+	{
+		final int n = values * bytes;
+		final byte[] row = new byte[n];
+		for (int y = 0; y < rows; y++) {
+			for (int k = 0; k < values; k++)
+				for (int m = 0; m < bytes; m++)
+					row[m * values + k] = raw[y * n + k * bytes + (order == ByteOrder.LITTLE_ENDIAN ? bytes - 1 - m : m)];
+			for (int i = n - 1; i >= spp; i--)
+				row[i] -= row[i - spp];
+			System.arraycopy(row, 0, raw, y * n, n);
+		}
 	}
 
 	static byte[] compress(final int compression, final byte[] raw) {
@@ -366,6 +386,40 @@ class TiffLayoutsTest {
 			predictor, tile, rows);
 		assertChannels(write(dir.resolve("c" + compression + "p" + predictor + "t" + tile + "r" + rows + "-" + planar +
 			".tif"), p, pages, bigEndian ? ByteOrder.BIG_ENDIAN : ByteOrder.LITTLE_ENDIAN), p, pages);
+	}
+
+	/**
+	 * Pages of one sample that ImageJ 1's decoder reads without a word but wrongly: the floating-point predictor (it
+	 * ignores it) is read by ours, in strips and tiles, one page or several; JPEG (it decodes it wrongly) and half
+	 * floats are refused in one line naming the layout and how to convert.
+	 */
+	@Test
+	void oneSampleLayoutsImageJMisreadsAreReadByOursOrRefused() throws IOException {
+		for (final Page p : new Page[] { new Page(37, 13, 32, 3, 1, 1, 1, 8, 3, 0, 5), new Page(37, 13, 32, 3, 1, 1, 1, 5,
+			3, 16, 0) })
+			for (final ByteOrder order : new ByteOrder[] { ByteOrder.LITTLE_ENDIAN, ByteOrder.BIG_ENDIAN })
+				for (final int pages : new int[] { 1, 3 }) {
+					final Path file = write(dir.resolve("predictor3-" + p.tile + order + pages + ".tif"), p, pages, order);
+					for (final ImagePlus imp : new ImagePlus[] { ImageFiles.open(file) }) {
+						assertEquals(pages, imp.getStackSize());
+						for (int t = 0; t < pages; t++)
+							for (int y = 0; y < p.height; y++)
+								for (int x = 0; x < p.width; x++)
+									assertEquals(value(t, 0, x, y, 32, 3), imp.getStack().getProcessor(t + 1).getf(x, y), 1e-6, file
+										.getFileName() + " page " + t + " at " + x + "," + y);
+					}
+				}
+		assertRefused(write(dir.resolve("grey-jpeg.tif"), new Page(16, 16, 8, 1, 1, 1, 1, 7, 1, 0, 16), 1,
+			ByteOrder.LITTLE_ENDIAN), "JPEG-compressed TIFF", "save it uncompressed");
+		final Path half = write(dir.resolve("half.tif"), new Page(16, 16, 16, 1, 1, 1, 1, 1, 1, 0, 16), 1,
+			ByteOrder.LITTLE_ENDIAN);
+		final byte[] b = Files.readAllBytes(half);
+		final ByteBuffer bb = ByteBuffer.wrap(b).order(ByteOrder.LITTLE_ENDIAN);
+		final int ifd = bb.getInt(4);
+		for (int e = 0; e < bb.getShort(ifd); e++)
+			if (bb.getShort(ifd + 2 + 12 * e) == 339) bb.putShort(ifd + 2 + 12 * e + 8, (short) 3); // SampleFormat float
+		Files.write(half, b);
+		assertRefused(half, "16-bit float samples are not supported", "a.astype('float32')");
 	}
 
 	/** LZW of data long enough that its table fills and is cleared, the codes 12 bits wide. */
