@@ -283,18 +283,18 @@ final class TiffMovie {
 	}
 
 	/**
-	 * @return whether ImageJ 1's decoder would give wrong pixels without a word: the floating-point predictor (3),
-	 *         which it ignores; our reader undoes it
+	 * @return whether ImageJ 1's decoder would give wrong pixels without a word, which our reader gives right: the
+	 *         floating-point predictor (3), which it ignores, and signed 8-bit samples, which it reads as unsigned
 	 * @throws IOException naming the file and the layout, for a compression neither decoder reads right (JPEG, which
 	 *         ImageJ 1 decodes wrongly; LZMA, Zstd, ...)
 	 */
 	private static boolean misreadByImageJ(final String file, final TiffDirectories.Layout layout) throws IOException {
-		boolean predicted = false;
+		boolean misread = false;
 		for (final TiffDirectories.Directory d : layout.directories()) {
 			if (!TiffCompression.supported(d.compression())) TiffChunks.check(file, d);
-			predicted |= d.predictor() == 3;
+			misread |= d.predictor() == 3 || d.bits() == 8 && d.format() == 2;
 		}
-		return predicted;
+		return misread;
 	}
 
 	/** @return the layout with each image's samples as images of one sample each, page after page */
@@ -374,6 +374,7 @@ final class TiffMovie {
 				.compression()) + "-compressed TIFF (compression " + p.compression() + "), which cannot be read plane by " +
 				"plane by offset; save it " +
 				"uncompressed (Fiji: File > Save As > Tiff..., or tifffile without compression)");
+		if (misreadByImageJ(file, layout)) return own(bytes, title, layout, false);
 		final ImageJMessages.Result<FileInfo[]> info;
 		try {
 			info = ImageJMessages.call(file, () -> new TiffDecoder(bytes.stream(layout.firstNext()), title)

@@ -390,8 +390,9 @@ class TiffLayoutsTest {
 
 	/**
 	 * Pages of one sample that ImageJ 1's decoder reads without a word but wrongly: the floating-point predictor (it
-	 * ignores it) is read by ours, in strips and tiles, one page or several; JPEG (it decodes it wrongly) and half
-	 * floats are refused in one line naming the layout and how to convert.
+	 * ignores it; in strips and tiles, one page or several) and signed 8-bit samples (it reads them as unsigned) are
+	 * read by ours; JPEG (it decodes it wrongly) and half floats are refused in one line naming the layout and how
+	 * to convert.
 	 */
 	@Test
 	void oneSampleLayoutsImageJMisreadsAreReadByOursOrRefused() throws IOException {
@@ -409,6 +410,21 @@ class TiffLayoutsTest {
 										.getFileName() + " page " + t + " at " + x + "," + y);
 					}
 				}
+		// signed 8-bit: ImageJ 1 reads the bytes as unsigned (-5 as 251); ours gives the file's values, both ways
+		final Path signed = write(dir.resolve("int8.tif"), new Page(16, 16, 8, 2, 1, 1, 1, 1, 1, 0, 16), 2,
+			ByteOrder.LITTLE_ENDIAN);
+		final byte[] s8 = Files.readAllBytes(signed);
+		for (int i = 8; i < 8 + 256; i++)
+			s8[i] = (byte) (i % 256 - 128); // page 1's pixels: -128 to 127
+		Files.write(signed, s8);
+		for (final ImagePlus imp : new ImagePlus[] { ImageFiles.open(signed), ImageFiles.openByOffset(SeekableBytes.of(
+			signed)) })
+		{
+			final net.imglib2.RandomAccessibleInterval<? extends net.imglib2.type.numeric.RealType<?>> f = ImagePlusFrames
+				.of(imp, 0).frame(0);
+			for (int i = 0; i < 256; i++)
+				assertEquals((i + 8) % 256 - 128, f.getAt(i % 16, i / 16).getRealDouble(), 0, "signed 8-bit pixel " + i);
+		}
 		assertRefused(write(dir.resolve("grey-jpeg.tif"), new Page(16, 16, 8, 1, 1, 1, 1, 7, 1, 0, 16), 1,
 			ByteOrder.LITTLE_ENDIAN), "JPEG-compressed TIFF", "save it uncompressed");
 		final Path half = write(dir.resolve("half.tif"), new Page(16, 16, 16, 1, 1, 1, 1, 1, 1, 0, 16), 1,
