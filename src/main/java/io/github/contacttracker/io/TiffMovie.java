@@ -271,12 +271,13 @@ final class TiffMovie {
 	 * @return whether the file's images hold several samples per pixel that are not ImageJ's colour: samples stored
 	 *         plane after plane (PlanarConfiguration 2, at any bit depth: Python's {@code tifffile.imwrite} writes a
 	 *         stack of 3 or 4 frames so, and ImageJ 1 reads such pages wrongly or not at all), or grey samples side by
-	 *         side with extra ones (grey and alpha). Each sample is read as a channel, by our reader. Chunky RGB (a
-	 *         colour camera's) is left to ImageJ, which reads it as colour.
+	 *         side with extra ones (grey and alpha), or colour of more than 8 bits a sample (ImageJ 1 reads it only
+	 *         whole). Each sample is read as a channel, by our reader. Chunky 8-bit RGB (a colour camera's) is left to
+	 *         ImageJ, which reads it as colour.
 	 */
 	private static boolean samplesAsChannels(final TiffDirectories.Layout layout) {
 		final TiffDirectories.Directory d0 = layout.directories().get(0);
-		if (d0.samples() < 2 || d0.planar() != 2 && d0.photometric() == 2) return false;
+		if (d0.samples() < 2 || d0.planar() != 2 && d0.photometric() == 2 && d0.bits() == 8) return false;
 		for (final TiffDirectories.Directory d : layout.directories())
 			if (d.samples() != d0.samples() || d.planar() != d0.planar()) return false;
 		return true;
@@ -319,8 +320,10 @@ final class TiffMovie {
 		imp.setProperty(SAMPLES, d0.planar() == 2 ? "they are the " + n + " samples of " + (pages == 1 ? "one page" :
 			"each of its " + pages + " pages") + ", stored plane after plane (TIFF PlanarConfiguration 2), as Python's " +
 			"tifffile.imwrite stores a stack of " + n + " frames: if they are frames, save one page per frame: " +
-			"tifffile.imwrite(p, a, photometric='minisblack')" : "they are the " + n + " samples of each pixel, grey " +
-				"and " + (n - 1) + " extra (TIFF ExtraSamples, e.g. alpha): channel 1 is the grey");
+			"tifffile.imwrite(p, a, photometric='minisblack')" : d0.photometric() == 2 ? "they are the red, green and " +
+				"blue" + (n > 3 ? " (and " + (n - 3) + " extra)" : "") + " samples of each pixel, " + d0.bits() + "-bit colour" :
+				"they are the " + n + " samples of each pixel, grey and " + (n - 1) + " extra (TIFF ExtraSamples, e.g. " +
+					"alpha): channel 1 is the grey");
 		return imp;
 	}
 

@@ -343,7 +343,8 @@ class TiffLayoutsTest {
 			assertEquals(1, e.getMessage().lines().count(), e.getMessage());
 			assertTrue(e.getMessage().contains("has " + p.samples + " channels: choose one"), e.getMessage());
 			assertTrue(p.planar == 2 ? e.getMessage().contains("plane after plane") && e.getMessage().contains(
-				"tifffile.imwrite(p, a, photometric='minisblack')") : e.getMessage().contains("extra"), e.getMessage());
+				"tifffile.imwrite(p, a, photometric='minisblack')") : e.getMessage().contains(p.photometric == 2 ? "red, " +
+					"green and blue" : "extra"), e.getMessage());
 			final ImagePlusFrames two = ImagePlusFrames.of(imp, 2);
 			assertEquals(pages, two.frameCount());
 			assertEquals(value(pages - 1, 1, 5, 4, p.bits, p.format), two.frame(pages - 1).getAt(5, 4).getRealDouble(),
@@ -360,11 +361,16 @@ class TiffLayoutsTest {
 			1);
 	}
 
-	/** Chunky grey with extra samples (grey and alpha): each sample a channel. */
+	/**
+	 * Chunky grey with extra samples (grey and alpha), and colour of 16 or 32 bits a sample (ImageJ 1 reads it only
+	 * whole, not plane by plane): each sample a channel.
+	 */
 	@ParameterizedTest
-	@CsvSource({ "2, 8, 1", "2, 16, 1", "3, 16, 1", "2, 32, 3" })
-	void greyWithExtraSamplesIsChannels(final int samples, final int bits, final int format) throws IOException {
-		final Page p = new Page(19, 11, bits, format, samples, 1, 1, 1, 1, 0, 4);
+	@CsvSource({ "2, 8, 1, 1", "2, 16, 1, 1", "3, 16, 1, 1", "2, 32, 3, 1", "3, 16, 1, 2", "4, 16, 1, 2", "3, 32, 3, 2" })
+	void greyWithExtraSamplesAndDeepColourAreChannels(final int samples, final int bits, final int format,
+		final int photometric) throws IOException
+	{
+		final Page p = new Page(19, 11, bits, format, samples, 1, photometric, 1, 1, 0, 4);
 		assertChannels(write(dir.resolve("extra" + samples + "-" + bits + ".tif"), p, 1, ByteOrder.LITTLE_ENDIAN), p, 1);
 	}
 
