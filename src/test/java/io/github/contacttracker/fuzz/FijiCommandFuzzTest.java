@@ -170,6 +170,31 @@ class FijiCommandFuzzTest extends WithContext {
 	}
 
 	/**
+	 * A movie on disk (a virtual stack, as Fiji opens a long one) whose later frame cannot be read, its compressed
+	 * data damaged: the run is refused in one line naming the file, as for any other reason, not ended by the
+	 * reader's exception.
+	 */
+	@Test
+	void aFrameThatCannotBeReadIsRefusedInOneLine(@TempDir final Path tmp) throws Exception {
+		final io.github.contacttracker.io.TiffLayoutsTest.Page p = new io.github.contacttracker.io.TiffLayoutsTest.Page(
+			40, 30, 16, 1, 2, 2, 1, 5, 1, 0, 30);
+		final Path movie = io.github.contacttracker.io.TiffLayoutsTest.write(tmp.resolve("damaged.tif"), p, 3,
+			java.nio.ByteOrder.LITTLE_ENDIAN);
+		final byte[] b = Files.readAllBytes(movie);
+		final long pageBytes = (b.length - 8) / 3;
+		for (int i = 0; i < 40; i++)
+			b[(int) (8 + 2 * pageBytes / 2 + pageBytes / 4 + i)] = (byte) 0xff; // page 3's LZW codes: beyond the table
+		Files.write(movie, b);
+		final ImagePlus imp = io.github.contacttracker.io.ImageFiles.open(movie);
+		final Module m = runAsScript(imp, new LinkedHashMap<>(Map.of("threshold", 950.0, "r_out", 5.0, "channel", 1,
+			"table", false, "overlay", false)), "damaged.tif");
+		final Cancelable run = (Cancelable) m;
+		assertTrue(run.isCanceled(), "refused");
+		assertEquals(1, run.getCancelReason().lines().count(), run.getCancelReason());
+		assertTrue(run.getCancelReason().contains("damaged.tif"), run.getCancelReason());
+	}
+
+	/**
 	 * Gives the image a shape a Fiji user has: as it is, its frames as channels, or a selection (1 pixel wide, a
 	 * random rectangle, an oval, one outside the image).
 	 *

@@ -56,7 +56,7 @@ import io.github.contacttracker.core.InvalidInputException;
  * that does not choose a channel is refused in one line that says what the channels are; what cannot be read is
  * refused in one line naming the file and the layout.
  */
-class TiffLayoutsTest {
+public class TiffLayoutsTest {
 
 	@TempDir
 	Path dir;
@@ -75,7 +75,7 @@ class TiffLayoutsTest {
 	 * @param compression 1, 5 LZW, 8 or 32946 Deflate, 32773 PackBits (7 JPEG: written as if, to be refused)
 	 * @param tile the tiles' side, 0 for strips of {@code rows} rows
 	 */
-	record Page(int width, int height, int bits, int format, int samples, int planar, int photometric,
+	public record Page(int width, int height, int bits, int format, int samples, int planar, int photometric,
 		int compression, int predictor, int tile, int rows)
 	{
 		/** @return the uncompressed bytes of one strip or tile of pixels x0.., y0.. of {@code sampleOf} (-1: all) */
@@ -103,7 +103,7 @@ class TiffLayoutsTest {
 	}
 
 	/** Writes {@code pages} pages of {@code p}'s layout, each piece compressed, and returns the file. */
-	static Path write(final Path file, final Page p, final int pages, final ByteOrder order) throws IOException {
+	public static Path write(final Path file, final Page p, final int pages, final ByteOrder order) throws IOException {
 		final ByteArrayOutputStream data = new ByteArrayOutputStream();
 		data.write(new byte[8]);
 		final List<long[]> offsets = new ArrayList<>(), counts = new ArrayList<>();
