@@ -67,6 +67,13 @@ public record TrackerParameters(double threshold, double rOut, int minArea, Conn
 	public static final double R_OUT_ABOVE = 0;
 	/** What a valid {@code r_out} is, for messages. */
 	public static final String R_OUT_ALLOWED = "a positive number of pixels";
+	/**
+	 * The measured profile's reach ({@link #profileReach()}) must exceed this (px): the profile is sampled every
+	 * pixel from its centre, and fewer than three samples describe no particle ({@code core.profile.ProfileEstimator}).
+	 */
+	public static final double PROFILE_REACH_ABOVE = 3;
+	/** {@code r_out} must be above this (px) for the methods that measure the profile. */
+	public static final double PROFILE_R_OUT_ABOVE = PROFILE_REACH_ABOVE / PROFILE_REACH_FACTOR;
 	/** Smallest {@code min_area} (px): one pixel. */
 	public static final int MIN_AREA_AT_LEAST = 1;
 	/** What a valid {@code min_area} is, for messages. */
@@ -95,6 +102,10 @@ public record TrackerParameters(double threshold, double rOut, int minArea, Conn
 				minSecondArea);
 		if (connectivity == null) throw new InvalidInputException("connectivity must be given (4 or 8)");
 		if (method == null) throw new InvalidInputException("method must be given");
+		if (method.needsProfile() && !(rOut > PROFILE_R_OUT_ABOVE)) throw new InvalidInputException("r_out must exceed " +
+			PROFILE_R_OUT_ABOVE + " px for the " + method.key() + " method, not " + rOut + ": it measures the particles' " +
+			"profile out to 1.5 r_out, which needs more than " + PROFILE_REACH_ABOVE + " px; particles this small are " +
+			"tracked with the paper method");
 		if (!(diameter >= DIAMETER_AT_LEAST) || !Double.isFinite(diameter))
 			throw new InvalidInputException("diameter must be >= 0 pixels (0 = not given), not " + diameter);
 		if (kinds < 0 || kinds > KINDS_AT_MOST) throw new InvalidInputException("kinds must be " + KINDS_ALLOWED +

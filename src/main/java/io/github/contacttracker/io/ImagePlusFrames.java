@@ -147,9 +147,7 @@ public final class ImagePlusFrames {
 				" channel" + (nc == 1 ? "" : "s"));
 		if (channel == 0 && nc > 1 && !rgb)
 			throw new InvalidInputException(name + " has " + nc + " channels: choose one to track (channel = 1.." +
-				nc + ")" + (imp.getProperty(TiffMovie.SAMPLES) != null ? "; they are one page's " + nc + " samples, as " +
-					"Python's tifffile.imwrite stores a stack of " + nc + " frames: if they are frames, write them with " +
-					"photometric='minisblack'" : ""));
+				nc + ")" + (imp.getProperty(TiffMovie.SAMPLES) instanceof String samples ? "; " + samples : ""));
 		final int c = rgb ? 1 : Math.max(channel, 1); // an RGB image's colours are in each of its planes
 		final int count = Math.max(nz, nt); // Z slices of a plain stack are frames
 		final int[] index = new int[count];

@@ -50,4 +50,31 @@ public final class OutputFolder {
 		if (!Files.isWritable(dir)) throw new InvalidInputException("--out-dir " + dir + " cannot be written");
 		return dir;
 	}
+
+	/**
+	 * @return the outermost folder {@link #prepare} would make for {@code dir} (itself or a parent), or null when
+	 *         {@code dir} exists
+	 */
+	public static Path missing(final Path dir) {
+		Path first = null;
+		for (Path p = dir.toAbsolutePath().normalize(); p != null && !Files.exists(p); p = p.getParent())
+			first = p;
+		return first;
+	}
+
+	/**
+	 * Removes the folders a refused run made ({@code made}, from {@link #missing}, down to {@code dir}) while they
+	 * are empty: a run that wrote nothing leaves nothing behind. A folder that holds anything is kept.
+	 */
+	public static void removeEmpty(final Path made, final Path dir) {
+		if (made == null) return;
+		for (Path p = dir.toAbsolutePath().normalize(); p != null && p.startsWith(made); p = p.getParent()) {
+			try {
+				Files.deleteIfExists(p); // refuses a folder that is not empty
+			}
+			catch (final IOException | SecurityException e) {
+				return;
+			}
+		}
+	}
 }

@@ -27,6 +27,7 @@ import java.nio.ByteOrder;
 import java.nio.channels.FileChannel;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
@@ -56,29 +57,50 @@ final class TiffDirectories {
 	/** An upper bound on how many times LZW, Deflate or PackBits expand their data (Deflate's limit is 1032). */
 	static final long MAX_EXPANSION = 4096;
 
-	/** One image's layout, from its directory. */
+	/**
+	 * One image's layout, from its directory.
+	 *
+	 * @param samples the samples stored per pixel in each strip or tile (1 for one sample of a planar image)
+	 * @param planar TIFF's PlanarConfiguration: 1 chunky (a pixel's samples side by side), 2 planar (plane after plane)
+	 * @param photometric TIFF's PhotometricInterpretation (0, 1 grey; 2 RGB)
+	 * @param rowsPerStrip the rows each strip holds (the last one fewer); the image's height for tiles
+	 * @param tileWidth the tiles' width, 0 for strips
+	 * @param tileLength the tiles' height, 0 for strips
+	 * @param predictor TIFF's Predictor: 1 none, 2 horizontal differences, 3 floating point
+	 * @param sample the sample of each pixel this image is (0-based; of a chunky image read one sample at a time)
+	 */
 	record Directory(int width, int height, int bits, int samples, int format, int compression, long[] offsets,
-		long[] counts, int planar)
+		long[] counts, int planar, int photometric, int rowsPerStrip, int tileWidth, int tileLength, int predictor,
+		int sample)
 	{
-		/** One sample per pixel, chunky (TIFF's PlanarConfiguration 1). */
+		/** One sample per pixel, in strips of the whole image, no predictor. */
 		Directory(final int width, final int height, final int bits, final int samples, final int format,
 			final int compression, final long[] offsets, final long[] counts)
 		{
-			this(width, height, bits, samples, format, compression, offsets, counts, 1);
+			this(width, height, bits, samples, format, compression, offsets, counts, 1, 1, height, 0, 0, 1, 0);
 		}
 
 		/**
-		 * @return each sample of a planar image (PlanarConfiguration 2: the samples stored plane after plane, the
-		 *         strips of sample {@code s} the {@code s}-th share of the strip table) as an image of one sample
+		 * @return each sample of the image as an image of one sample: of a planar image (PlanarConfiguration 2: the
+		 *         strips or tiles of sample {@code s} the {@code s}-th share of the table) with its own strips; of a
+		 *         chunky one, the same strips read for sample {@code s}
 		 */
-		java.util.List<Directory> samplePlanes() {
+		List<Directory> samplePlanes() {
+			final List<Directory> out = new ArrayList<>(samples);
 			final int per = offsets.length / samples;
-			final java.util.List<Directory> out = new java.util.ArrayList<>(samples);
 			for (int s = 0; s < samples; s++)
-				out.add(new Directory(width, height, bits, 1, format, compression, java.util.Arrays.copyOfRange(offsets, s *
-					per, (s + 1) * per), java.util.Arrays.copyOfRange(counts, s * per, (s + 1) * per)));
+				out.add(planar == 2 ? new Directory(width, height, bits, 1, format, compression, Arrays.copyOfRange(offsets,
+					s * per, (s + 1) * per), Arrays.copyOfRange(counts, s * per, (s + 1) * per), 1, photometric,
+					rowsPerStrip, tileWidth, tileLength, predictor, 0) : new Directory(width, height, bits, samples, format,
+						compression, offsets, counts, 1, photometric, rowsPerStrip, tileWidth, tileLength, predictor, s));
 			return out;
 		}
+
+		/** @return whether the image is stored in tiles rather than strips */
+		boolean tiled() {
+			return tileWidth > 0;
+		}
+
 		/** @return the bytes one plane of it takes uncompressed */
 		long planeBytes() {
 			return ((long) width * bits * samples + 7) / 8 * height;
@@ -179,7 +201,8 @@ final class TiffDirectories {
 	private static Directory directory(final SeekableBytes ch, final ByteBuffer dir, final int entries,
 		final boolean big, final long size, final String file, final int index) throws IOException
 	{
-		long width = -1, height = -1, bits = 1, format = 1, compression = 1, samples = 1, planar = 1;
+		long width = -1, height = -1, bits = 1, format = 1, compression = 1, samples = 1, planar = 1, photometric = 1;
+		long rowsPerStrip = Integer.MAX_VALUE, tileWidth = 0, tileLength = 0, predictor = 1;
 		// entries whose values are tables, read once the image's size bounds them
 		int offsetsAt = -1, countsAt = -1, metaCountsAt = -1, metaAt = -1;
 		boolean tiles = false;
@@ -200,13 +223,19 @@ final class TiffDirectories {
 			switch (tag) {
 				case 256 -> width = value(dir, at, type, big);
 				case 257 -> height = value(dir, at, type, big);
-				// one size per sample (the readers check them alike): the first
+				// one size and one format per sample (the readers check them alike): the first
 				case 258 -> bits = bytes <= inline ? value(dir, at, type, big) : table(ch, dir, at, type, 1, big, size,
 					file)[0];
 				case 259 -> compression = value(dir, at, type, big);
+				case 262 -> photometric = value(dir, at, type, big);
 				case 277 -> samples = value(dir, at, type, big);
+				case 278 -> rowsPerStrip = value(dir, at, type, big);
 				case 284 -> planar = value(dir, at, type, big);
-				case 339 -> format = value(dir, at, type, big);
+				case 317 -> predictor = value(dir, at, type, big);
+				case 322 -> tileWidth = value(dir, at, type, big);
+				case 323 -> tileLength = value(dir, at, type, big);
+				case 339 -> format = bytes <= inline ? value(dir, at, type, big) : table(ch, dir, at, type, 1, big, size,
+					file)[0];
 				case 273, 324 -> {
 					offsetsAt = at;
 					tiles = tag == 324;
@@ -235,8 +264,12 @@ final class TiffDirectories {
 		final long[] offsets = table(ch, dir, offsetsAt, type(dir, offsetsAt), count(dir, offsetsAt, big), big, size,
 			file);
 		final long[] counts = table(ch, dir, countsAt, type(dir, countsAt), offsets.length, big, size, file);
+		if (tiles && (tileWidth < 1 || tileLength < 1 || tileWidth > 65536 || tileLength > 65536))
+			throw damaged(file, "tiles of " + tileWidth + " x " + tileLength + " pixels" + where);
 		final Directory d = new Directory((int) width, (int) height, (int) bits, (int) samples, (int) format,
-			(int) compression, offsets, counts, planar == 2 && samples > 1 && offsets.length % samples == 0 ? 2 : 1);
+			(int) compression, offsets, counts, planar == 2 && samples > 1 && offsets.length % samples == 0 ? 2 : 1,
+			(int) photometric, (int) Math.max(1, Math.min(height, rowsPerStrip)), tiles ? (int) tileWidth : 0, tiles ?
+				(int) tileLength : 0, (int) predictor, 0);
 		long stored = 0;
 		for (int s = 0; s < offsets.length; s++) {
 			if (offsets[s] < 0 || counts[s] < 0 || offsets[s] > size || counts[s] > size - offsets[s])

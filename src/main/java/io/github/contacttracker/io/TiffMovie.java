@@ -51,7 +51,9 @@ import ij.process.ShortProcessor;
  * and the hyperstack's dimensions. ImageJ 1.54p cannot read two kinds of TIFF, both read here by a small reader of
  * our own: <b>BigTIFF</b> (64-bit offsets, files over 4 GB; ImageJ reads its header as a classic TIFF and fails)
  * and <b>64-bit float</b> samples (what numpy writes by default; ImageJ stops at "Unsupported BitsPerSample: 64").
- * That reader takes uncompressed, one-sample-per-pixel data, the way tifffile and numpy write them; it reads no
+ * The same reader takes the pages ImageJ 1 reads wrongly or not at all: several samples per pixel stored plane
+ * after plane (what tifffile writes for a stack of 3 or 4 frames) or grey with extra samples (alpha), each sample
+ * read as a channel; strips or tiles, uncompressed or LZW, Deflate or PackBits ({@link TiffChunks}). It reads no
  * calibration. OME-TIFF is read as ImageJ 1 reads it (its planes, in file order); its OME-XML sizes and order are
  * checked so that channels or Z planes are not taken for time points.
  * <p>
@@ -77,8 +79,8 @@ final class TiffMovie {
 	static ImagePlus open(final Path file) throws IOException {
 		// every directory checked before ImageJ's decoder or ours reads one: the file's numbers size nothing unchecked
 		final TiffDirectories.Layout layout = TiffDirectories.read(file);
-		if (layout.big()) return own(file, layout);
-		if (samplesAsChannels(layout)) return channels(own(file, samplePlanes(layout)));
+		if (samplesAsChannels(layout)) return channels(own(file, samplePlanes(layout), true), layout);
+		if (layout.big() || misreadByImageJ(file.toString(), layout)) return own(file, layout, false);
 		final Path abs = file.toAbsolutePath();
 		final ImageJMessages.Result<FileInfo[]> info;
 		try {
@@ -87,7 +89,7 @@ final class TiffMovie {
 		}
 		catch (final IOException e) {
 			// what ImageJ 1 cannot decode, ours may (64-bit float); if not, ours says why
-			return own(file, layout);
+			return own(file, layout, false);
 		}
 		if (info.value() == null || info.value().length == 0) throw new IOException("cannot read " + file + ": no " +
 			"image in this TIFF" + (info.messages().isEmpty() ? "" : " (ImageJ: " + info.messages() + ")"));
@@ -231,8 +233,11 @@ final class TiffMovie {
 
 	// ---- our own reader: BigTIFF, 64-bit float, and every plane read by offset ----
 
-	private static ImagePlus own(final Path file, final TiffDirectories.Layout layout) throws IOException {
-		final List<TiffDirectories.Directory> planes = checked(file.toString(), layout.directories());
+	/** @param samples whether the layout's images are the samples of the file's, each read on its own */
+	private static ImagePlus own(final Path file, final TiffDirectories.Layout layout, final boolean samples)
+		throws IOException
+	{
+		final List<TiffDirectories.Directory> planes = checked(file.toString(), layout.directories(), samples);
 		final TiffDirectories.Directory p0 = planes.get(0);
 		return own(file.getFileName().toString(), new FileStack(file, planes.size(), p0.width(), p0.height(), true, t -> {
 			try (FileChannel ch = FileChannel.open(file, StandardOpenOption.READ)) {
@@ -241,10 +246,10 @@ final class TiffMovie {
 		}), p0);
 	}
 
-	private static ImagePlus own(final SeekableBytes bytes, final String title, final TiffDirectories.Layout layout)
-		throws IOException
+	private static ImagePlus own(final SeekableBytes bytes, final String title, final TiffDirectories.Layout layout,
+		final boolean samples) throws IOException
 	{
-		final List<TiffDirectories.Directory> planes = checked(bytes.name(), layout.directories());
+		final List<TiffDirectories.Directory> planes = checked(bytes.name(), layout.directories(), samples);
 		final TiffDirectories.Directory p0 = planes.get(0);
 		return own(title, new FileStack(bytes.name(), "", planes.size(), p0.width(), p0.height(), true, t -> decode(
 			bytes, planes.get(t), layout.order())), p0);
@@ -263,54 +268,88 @@ final class TiffMovie {
 	}
 
 	/**
-	 * @return whether the file is one image of several samples stored plane after plane, which ImageJ 1 reads wrongly
-	 *         or not at all (16-bit, or more than 3 samples: Python's {@code tifffile.imwrite} writes a stack of 3 or 4
-	 *         frames so): its samples are read as channels, each by our reader. An 8-bit image of 3 samples is left to
-	 *         ImageJ, which reads it as RGB.
+	 * @return whether the file's images hold several samples per pixel that are not ImageJ's colour: samples stored
+	 *         plane after plane (PlanarConfiguration 2, at any bit depth: Python's {@code tifffile.imwrite} writes a
+	 *         stack of 3 or 4 frames so, and ImageJ 1 reads such pages wrongly or not at all), or grey samples side by
+	 *         side with extra ones (grey and alpha), or colour of more than 8 bits a sample (ImageJ 1 reads it only
+	 *         whole). Each sample is read as a channel, by our reader. Chunky 8-bit RGB (a colour camera's) is left to
+	 *         ImageJ, which reads it as colour.
 	 */
 	private static boolean samplesAsChannels(final TiffDirectories.Layout layout) {
-		if (layout.directories().size() != 1) return false;
-		final TiffDirectories.Directory d = layout.directories().get(0);
-		return d.planar() == 2 && d.compression() == 1 && !(d.bits() == 8 && d.samples() == 3);
-	}
-
-	/** @return the layout with its one image's samples as images of one sample each */
-	private static TiffDirectories.Layout samplePlanes(final TiffDirectories.Layout layout) {
-		return new TiffDirectories.Layout(layout.little(), layout.big(), layout.directories().get(0).samplePlanes(), layout
-			.firstNext());
+		final TiffDirectories.Directory d0 = layout.directories().get(0);
+		if (d0.samples() < 2 || d0.planar() != 2 && d0.photometric() == 2 && d0.bits() == 8) return false;
+		for (final TiffDirectories.Directory d : layout.directories())
+			if (d.samples() != d0.samples() || d.planar() != d0.planar()) return false;
+		return true;
 	}
 
 	/**
-	 * Set on an image whose channels are one page's samples ({@link #samplesAsChannels}), so that the refusal to
-	 * choose a channel can say what a user who wrote frames so should do.
+	 * @return whether ImageJ 1's decoder would give wrong pixels without a word, which our reader gives right: the
+	 *         floating-point predictor (3), which it ignores, and signed 8-bit samples, which it reads as unsigned
+	 * @throws IOException naming the file and the layout, for a compression neither decoder reads right (JPEG, which
+	 *         ImageJ 1 decodes wrongly; LZMA, Zstd, ...)
+	 */
+	private static boolean misreadByImageJ(final String file, final TiffDirectories.Layout layout) throws IOException {
+		boolean misread = false;
+		for (final TiffDirectories.Directory d : layout.directories()) {
+			if (!TiffCompression.supported(d.compression())) TiffChunks.check(file, d);
+			misread |= d.predictor() == 3 || d.bits() == 8 && d.format() == 2;
+		}
+		return misread;
+	}
+
+	/** @return the layout with each image's samples as images of one sample each, page after page */
+	private static TiffDirectories.Layout samplePlanes(final TiffDirectories.Layout layout) {
+		final List<TiffDirectories.Directory> planes = new ArrayList<>();
+		for (final TiffDirectories.Directory d : layout.directories())
+			planes.addAll(d.samplePlanes());
+		return new TiffDirectories.Layout(layout.little(), layout.big(), planes, layout.firstNext());
+	}
+
+	/**
+	 * Set on an image whose channels are its pages' samples ({@link #samplesAsChannels}): what they are and, for a
+	 * user who wrote frames so, how to write them as frames; said when a run does not choose a channel.
 	 */
 	static final String SAMPLES = "contact-tracker.samples";
 
-	/** @return the image with its planes as channels (one time point, one slice) */
-	private static ImagePlus channels(final ImagePlus imp) {
-		imp.setDimensions(imp.getStackSize(), 1, 1);
-		imp.setProperty(SAMPLES, Boolean.TRUE);
+	/** @return the image with its planes as channels, one per sample, and the file's pages as time points */
+	private static ImagePlus channels(final ImagePlus imp, final TiffDirectories.Layout layout) {
+		final TiffDirectories.Directory d0 = layout.directories().get(0);
+		final int n = d0.samples(), pages = layout.directories().size();
+		imp.setDimensions(n, 1, pages);
+		imp.setProperty(SAMPLES, d0.planar() == 2 ? "they are the " + n + " samples of " + (pages == 1 ? "one page" :
+			"each of its " + pages + " pages") + ", stored plane after plane (TIFF PlanarConfiguration 2), as Python's " +
+			"tifffile.imwrite stores a stack of " + n + " frames: if they are frames, save one page per frame: " +
+			"tifffile.imwrite(p, a, photometric='minisblack')" : d0.photometric() == 2 ? "they are the red, green and " +
+				"blue" + (n > 3 ? " (and " + (n - 3) + " extra)" : "") + " samples of each pixel, " + d0.bits() + "-bit colour" :
+				"they are the " + n + " samples of each pixel, grey and " + (n - 1) + " extra (TIFF ExtraSamples, e.g. " +
+					"alpha): channel 1 is the grey");
 		return imp;
 	}
 
-	/** @return {@code planes}, which our reader decodes: uncompressed, one sample, of one size and pixel type */
+	/**
+	 * @param samples whether the planes are the samples of the file's images (each plane one sample of its pixels)
+	 * @return {@code planes}, which our reader decodes: one sample each, of one size and pixel type, in strips or
+	 *         tiles it reads ({@link TiffChunks#check})
+	 */
 	private static List<TiffDirectories.Directory> checked(final String file,
-		final List<TiffDirectories.Directory> planes) throws IOException
+		final List<TiffDirectories.Directory> planes, final boolean samples) throws IOException
 	{
 		final TiffDirectories.Directory p0 = planes.get(0);
 		for (final TiffDirectories.Directory p : planes) {
-			if (p.compression() != 1) throw new IOException("cannot read " + file + ": compressed BigTIFF or 64-bit " +
-				"TIFF (compression " + p.compression() + ") is not supported; save it uncompressed");
-			if (p.samples() != 1) throw new IOException("cannot read " + file + ": " + p.samples() + " samples per pixel " +
+			if (p.samples() != 1 && !samples) throw new IOException("cannot read " + file + ": " + p.samples() + " samples per pixel " +
 				"(colour?); save one grey channel");
 			final int bits = p.bits(), format = p.format();
 			final boolean ok = (bits == 8 || bits == 16 || bits == 32) && (format == 1 || format == 2 || format == 3 &&
 				bits == 32) || bits == 64 && format == 3;
-			if (!ok) throw new IOException("cannot read " + file + ": " + bits + "-bit samples of format " + format +
-				" are not supported (8/16/32-bit integer, 32/64-bit float)");
+			if (!ok) throw new IOException("cannot read " + file + ": " + bits + "-bit " + (format == 3 ? "float" : format ==
+				2 ? "signed integer" : format == 1 ? "integer" : "format " + format) + " samples are not supported " +
+				"(8/16/32-bit integer, 32/64-bit float); convert them, e.g. tifffile.imwrite(p, a.astype('float32'), " +
+				"photometric='minisblack')");
 			if (p.width() != p0.width() || p.height() != p0.height() || p.bits() != p0.bits() || p.format() != p0
 				.format()) throw new IOException("cannot read " + file + ": its pages differ in size or pixel type (a " +
 					"pyramid or thumbnails?)");
+			if (!simple(p)) TiffChunks.check(file, p);
 		}
 		return planes;
 	}
@@ -331,24 +370,26 @@ final class TiffMovie {
 		if (!isTiff(head.array())) throw new IOException("cannot read " + file + ": not a TIFF (the Spark job " +
 			"reads TIFF, BigTIFF and OME-TIFF); convert it, e.g. in Fiji: open it, then File > Save As > Tiff...");
 		final TiffDirectories.Layout layout = TiffDirectories.read(bytes);
+		if (samplesAsChannels(layout)) return channels(own(bytes, title, samplePlanes(layout), true), layout);
+		if (layout.big()) return own(bytes, title, layout, false);
 		for (final TiffDirectories.Directory p : layout.directories())
-			if (p.compression() != 1) throw new IOException("cannot read " + file + ": compressed TIFF " +
-				"(compression " + p.compression() + "), which cannot be read plane by plane by offset; save it " +
+			if (p.compression() != 1) throw new IOException("cannot read " + file + ": " + TiffCompression.name(p
+				.compression()) + "-compressed TIFF (compression " + p.compression() + "), which cannot be read plane by " +
+				"plane by offset; save it " +
 				"uncompressed (Fiji: File > Save As > Tiff..., or tifffile without compression)");
-		if (layout.big()) return own(bytes, title, layout);
-		if (samplesAsChannels(layout)) return channels(own(bytes, title, samplePlanes(layout)));
+		if (misreadByImageJ(file, layout)) return own(bytes, title, layout, false);
 		final ImageJMessages.Result<FileInfo[]> info;
 		try {
 			info = ImageJMessages.call(file, () -> new TiffDecoder(bytes.stream(layout.firstNext()), title)
 				.getTiffInfo());
 		}
 		catch (final IOException e) {
-			return own(bytes, title, layout); // what ImageJ 1 cannot decode (64-bit float), as open() does
+			return own(bytes, title, layout, false); // what ImageJ 1 cannot decode (64-bit float), as open() does
 		}
 		if (info.value() == null || info.value().length == 0) throw new IOException("cannot read " + file + ": no " +
 			"image in this TIFF" + (info.messages().isEmpty() ? "" : " (ImageJ: " + info.messages() + ")"));
 		final FileInfo fi = info.value()[0];
-		List<TiffDirectories.Directory> planes = checked(file, layout.directories());
+		List<TiffDirectories.Directory> planes = checked(file, layout.directories(), false);
 		if (fi.nImages > planes.size()) { // an ImageJ stack written with one directory: contiguous planes
 			final TiffDirectories.Directory p0 = planes.get(0);
 			final long bytesPerPlane = (long) fi.width * fi.height * fi.getBytesPerPixel();
@@ -371,13 +412,18 @@ final class TiffMovie {
 		return withMetadata(file, title, stack, one, described, read.size());
 	}
 
-	/** Reads one plane's strips (positional reads: threads may read planes at once) and converts the samples. */
-	private static ImageProcessor decode(final SeekableBytes file, final TiffDirectories.Directory p,
+	/** @return whether the plane is stored as our reader reads a movie's: uncompressed strips of one sample */
+	private static boolean simple(final TiffDirectories.Directory p) {
+		return p.compression() == 1 && !p.tiled() && p.samples() == 1 && p.predictor() == 1;
+	}
+
+	/** @return the bytes of a {@link #simple} plane, its strips read one after the other into one buffer */
+	private static ByteBuffer strips(final SeekableBytes file, final TiffDirectories.Directory p,
 		final ByteOrder order) throws IOException
 	{
-		final int n = p.width() * p.height(), bytes = p.bits() / 8;
 		// the directory was checked: the plane's bytes fit the frame budget, its strips lie inside the file
-		final ByteBuffer data = ByteBuffer.allocate(Math.multiplyExact(n, bytes)).order(order);
+		final ByteBuffer data = ByteBuffer.allocate(Math.multiplyExact(p.width() * p.height(), p.bits() / 8)).order(
+			order);
 		for (int s = 0; s < p.offsets().length && data.hasRemaining(); s++) {
 			final int len = (int) Math.min(p.counts()[s], data.remaining());
 			file.read(p.offsets()[s], data.slice(data.position(), len));
@@ -385,7 +431,19 @@ final class TiffMovie {
 		}
 		if (data.hasRemaining()) throw new IOException("cannot read " + file.name() + ": a plane's strips hold fewer " +
 			"pixels than " + p.width() + " x " + p.height());
-		data.flip();
+		return data.flip();
+	}
+
+	/**
+	 * Reads one plane (positional reads: threads may read planes at once) and converts the samples: a
+	 * {@link #simple} plane strip after strip, any other by {@link TiffChunks}.
+	 */
+	private static ImageProcessor decode(final SeekableBytes file, final TiffDirectories.Directory p,
+		final ByteOrder order) throws IOException
+	{
+		final int n = p.width() * p.height();
+		final ByteBuffer data = simple(p) ? strips(file, p, order) : ByteBuffer.wrap(TiffChunks.plane(file, p, order))
+			.order(order);
 		switch (p.bits()) {
 			case 8: {
 				final byte[] px = new byte[n];

@@ -261,5 +261,17 @@ class ContactTrackerCliTest {
 		assertTrue(Files.isRegularFile(made.resolve("pair.csv")));
 		assertBadInput("is a file, not a folder", null, "track", a.toString(), "--threshold", "85", "--r-out", "61",
 			"--out-dir", bad.toString());
+		// a refused run leaves no folder behind: neither the one it made nor its parents, nor several movies that all
+		// fail; a folder that existed stays
+		final Path notYet = dir.resolve("later").resolve("spots");
+		assertBadInput("threshold", null, "track", a.toString(), "--threshold", "1e9", "--r-out", "61", "--out-dir",
+			notYet.toString());
+		assertFalse(Files.exists(dir.resolve("later")), "no folder left behind a refusal");
+		assertEquals(ContactTrackerCli.EXIT_BAD_INPUT, run("track", bad.toString(), dir.resolve("missing.tif").toString(), "--threshold",
+			"85", "--r-out", "61", "--out-dir", notYet.toString())[0]);
+		assertFalse(Files.exists(dir.resolve("later")), "no folder left behind movies that all failed");
+		assertBadInput("threshold", null, "track", a.toString(), "--threshold", "1e9", "--r-out", "61", "--out-dir",
+			fresh.toString());
+		assertTrue(Files.isDirectory(fresh), "a folder that existed stays");
 	}
 }

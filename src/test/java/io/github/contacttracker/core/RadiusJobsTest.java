@@ -30,7 +30,7 @@ class RadiusJobsTest {
 
 	@Test
 	void eachJobIsItsMultipleOfROut() {
-		for (final double rOut : new double[] { 0.5, 8, 20.25 }) {
+		for (final double rOut : new double[] { 2.5, 8, 20.25 }) { // the fit method (the default) needs r_out > 2 px
 			final TrackerParameters p = TrackerParameters.of(100, rOut);
 			assertEquals(rOut, p.exclusionRadius(), "the paper's exclusion disc");
 			assertEquals(rOut, p.aloneReach(), "merge detection's reach beyond the component");

@@ -34,12 +34,6 @@ import java.util.SplittableRandom;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
-import ij.ImagePlus;
-import ij.ImageStack;
-import ij.process.ByteProcessor;
-import ij.process.FloatProcessor;
-import ij.process.ImageProcessor;
-import ij.process.ShortProcessor;
 import io.github.contacttracker.io.ImageFiles;
 
 /**
@@ -72,7 +66,7 @@ class EntryPointFuzzTest {
 			final long caseSeed = rnd.nextLong();
 			final SplittableRandom r = new SplittableRandom(caseSeed);
 			final Path movie = dir.resolve("case" + c + ".tif");
-			ImageFiles.saveTiff(image(r), movie);
+			ImageFiles.saveTiff(FuzzImages.image(r, 3), movie);
 			final Path csv = dir.resolve("case" + c + ".csv");
 			final List<String> args = new ArrayList<>();
 			if (r.nextInt(5) == 0) {
@@ -130,46 +124,6 @@ class EntryPointFuzzTest {
 				flagged |= v[f].equals("1");
 			assertTrue(flagged || px >= -0.5 && py >= -0.5, "inside unless flagged: " + line + " " + what);
 		}
-	}
-
-	/** @return a random movie: a size from 1x1, a pixel type, a content */
-	private static ImagePlus image(final SplittableRandom r) {
-		final int w = size(r), h = size(r), frames = 1 + r.nextInt(3), type = r.nextInt(3), content = r.nextInt(5);
-		final ImageStack stack = new ImageStack(w, h);
-		for (int t = 0; t < frames; t++) {
-			final ImageProcessor ip = type == 0 ? new ByteProcessor(w, h) : type == 1 ? new ShortProcessor(w, h)
-				: new FloatProcessor(w, h);
-			final double max = type == 0 ? 255 : type == 1 ? 65535 : 1e4;
-			// particles: one to twenty of one size, some touching; dark ones on a bright background for content 3
-			final int n = 1 + r.nextInt(20);
-			final double radius = 1 + r.nextDouble() * 8;
-			final double[] cx = new double[n], cy = new double[n];
-			for (int k = 0; k < n; k++) {
-				cx[k] = r.nextDouble() * w;
-				cy[k] = r.nextDouble() * h;
-			}
-			final double sign = content == 3 ? -1 : 1, base = content == 3 ? 0.8 * max : 0.1 * max;
-			for (int y = 0; y < h; y++)
-				for (int x = 0; x < w; x++) {
-					double light = 0;
-					for (int k = 0; k < n; k++)
-						light += Math.exp(-((x - cx[k]) * (x - cx[k]) + (y - cy[k]) * (y - cy[k])) / (2 * radius * radius));
-					double v = switch (content) {
-						case 0 -> max / 3; // constant
-						case 1 -> r.nextDouble() * max; // noise
-						default -> base + sign * 0.6 * max * Math.min(1, light) + 0.02 * max * r.nextGaussian();
-					};
-					if (type == 2 && content == 4 && r.nextInt(50) == 0) v = r.nextBoolean() ? Double.NaN : Double.POSITIVE_INFINITY;
-					ip.putPixelValue(x, y, type == 2 ? v : Math.max(0, Math.min(max, v)));
-				}
-			stack.addSlice(ip);
-		}
-		return new ImagePlus("fuzz", stack);
-	}
-
-	/** @return a side: a quarter of them thin (1 to 4 px), the others 8 to 120 */
-	private static int size(final SplittableRandom r) {
-		return r.nextInt(4) == 0 ? 1 + r.nextInt(4) : 8 + r.nextInt(113);
 	}
 
 	/** Random options: values given or measured, some out of range, some not numbers. */

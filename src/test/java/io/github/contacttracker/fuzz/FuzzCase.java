@@ -30,13 +30,17 @@ import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.util.List;
 import java.util.SplittableRandom;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.FutureTask;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
 
 import io.github.contacttracker.cli.ContactTrackerCli;
 
 /**
  * One fuzz case of the command line: runs it with the given arguments and asserts the property every front end
- * keeps, whatever the input: no exception escapes, no internal error, the exit status 0 or 2, and a refusal is one
- * line. The fuzz tests share it so that the property is stated once.
+ * keeps, whatever the input: no exception escapes, no internal error, an answer within {@link #timeout()} seconds,
+ * the exit status 0 or 2, and a refusal is one line. The fuzz tests share it so that the property is stated once.
  */
 final class FuzzCase {
 
@@ -57,14 +61,32 @@ final class FuzzCase {
 		return new SplittableRandom(Long.getLong("contact.tracker.fuzz.seed", 20261205L));
 	}
 
+	/** @return the seconds a case may take: the property {@code contact.tracker.fuzz.timeout}, else 120 */
+	static int timeout() {
+		return Integer.getInteger("contact.tracker.fuzz.timeout", 120);
+	}
+
 	FuzzCase(final long caseSeed, final List<String> args) {
 		final ByteArrayOutputStream out = new ByteArrayOutputStream(), err = new ByteArrayOutputStream();
+		// on a thread of its own, so that a case that never ends is a failure naming it, not a run that never ends
+		final FutureTask<Integer> run = new FutureTask<>(() -> ContactTrackerCli.run(args.toArray(String[]::new),
+			new PrintStream(out, true, StandardCharsets.UTF_8), new PrintStream(err, true, StandardCharsets.UTF_8)));
+		final Thread thread = new Thread(run, "fuzz case " + caseSeed);
+		thread.setDaemon(true);
+		thread.start();
 		try {
-			status = ContactTrackerCli.run(args.toArray(String[]::new), new PrintStream(out, true,
-				StandardCharsets.UTF_8), new PrintStream(err, true, StandardCharsets.UTF_8));
+			status = run.get(timeout(), TimeUnit.SECONDS);
 		}
-		catch (final RuntimeException e) {
-			throw new AssertionError("case seed " + caseSeed + " " + args + ": an exception escaped", e);
+		catch (final ExecutionException e) {
+			throw new AssertionError("case seed " + caseSeed + " " + args + ": an exception escaped", e.getCause());
+		}
+		catch (final TimeoutException e) {
+			run.cancel(true);
+			throw new AssertionError("case seed " + caseSeed + " " + args + ": no answer in " + timeout() + " s (a hang?)");
+		}
+		catch (final InterruptedException e) {
+			Thread.currentThread().interrupt();
+			throw new AssertionError("interrupted", e);
 		}
 		said = err.toString(StandardCharsets.UTF_8);
 		what = "case seed " + caseSeed + " " + args + ":\n" + said;

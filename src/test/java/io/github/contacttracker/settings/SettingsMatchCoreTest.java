@@ -33,14 +33,15 @@ import org.junit.jupiter.api.Test;
 /**
  * The descriptor's limits are the core's: at each limit and just past it, a setting ({@link Setting#check}) and
  * {@link TrackerParameters} accept and refuse the same values, with the same message where the descriptor words it
- * as the core does.
+ * as the core does. The core is asked with the paper method: the profile methods' rule for r_out (above
+ * {@link TrackerParameters#PROFILE_R_OUT_ABOVE}) is one of two settings together, which no single setting checks.
  */
 class SettingsMatchCoreTest {
 
 	private static TrackerParameters with(final double threshold, final double rOut, final int minArea,
 		final int minSecondArea, final double diameter)
 	{
-		return new TrackerParameters(threshold, rOut, minArea, Connectivity.EIGHT, minSecondArea, Method.DEFAULT,
+		return new TrackerParameters(threshold, rOut, minArea, Connectivity.EIGHT, minSecondArea, Method.PAPER,
 			diameter);
 	}
 
