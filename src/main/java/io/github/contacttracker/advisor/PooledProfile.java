@@ -84,7 +84,9 @@ record PooledProfile(double[] radius, double[] height, int[] count, double backg
 		final double mask, final double radiusCap, final double narrowest, final List<Finding> findings)
 	{
 		NoBackground first = null;
-		for (double m = mask; m == mask || m >= narrowest; m *= MASK_NARROWING)
+		// (never narrower than a pixel: a diameter of 0 would otherwise narrow a mask of 0 for ever)
+		final double floor = Math.max(narrowest, NARROWEST_MASK_PX);
+		for (double m = mask; ; m *= MASK_NARROWING) {
 			try {
 				final PooledProfile pooled = pool(plane, centres, spots, m, radiusCap);
 				if (first != null && findings != null) findings.add(new Finding.NeighboursMaskedCloser(m, mask));
@@ -93,8 +95,12 @@ record PooledProfile(double[] radius, double[] height, int[] count, double backg
 			catch (final NoBackground e) {
 				if (first == null) first = e;
 			}
-		throw first;
+			if (!(m * MASK_NARROWING >= floor)) throw first;
+		}
 	}
+
+	/** The narrowest mask {@link #poolNarrowing} tries (px). */
+	static final double NARROWEST_MASK_PX = 1;
 
 	/** Each step of {@link #poolNarrowing} multiplies the mask by this. */
 	static final double MASK_NARROWING = 0.8;
