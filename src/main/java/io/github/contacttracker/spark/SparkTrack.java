@@ -125,6 +125,23 @@ public final class SparkTrack {
 			return 0;
 		}
 		final Path outDir = Path.of(o.outDir).toAbsolutePath();
+		// the folders made here are removed again, while empty, by a run that wrote nothing
+		final Path made = io.github.contacttracker.io.OutputFolder.missing(outDir);
+		try {
+			final int status = prepareAndTrack(o, outDir, out, err);
+			if (status != 0) io.github.contacttracker.io.OutputFolder.removeEmpty(made, outDir);
+			return status;
+		}
+		catch (final RuntimeException e) {
+			io.github.contacttracker.io.OutputFolder.removeEmpty(made, outDir);
+			throw e;
+		}
+	}
+
+	/** {@link #run} once the options are read: the output folder made, the movies tracked. */
+	private static int prepareAndTrack(final SparkOptions o, final Path outDir, final PrintStream out,
+		final PrintStream err)
+	{
 		try {
 			io.github.contacttracker.io.OutputFolder.prepare(outDir);
 		}

@@ -168,4 +168,18 @@ class SparkTrackTest {
 			reader.stop();
 		}
 	}
+
+	/** A refused run leaves no output folder it made behind (two movies that would write one CSV). */
+	@Test
+	void aRefusedRunRemovesTheFolderItMade() throws IOException {
+		final Path other = Files.createDirectories(dir.resolve("elsewhere")).resolve(pair.getFileName());
+		Files.copy(pair, other, java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+		final Path out = dir.resolve("new").resolve("folder");
+		final Object[] r = spark(pair.toString(), other.toString(), "--out-dir", out.toString(), "--threshold", "100",
+			"--r-out", "10");
+		org.junit.jupiter.api.Assertions.assertEquals(2, r[0], () -> "refused: " + r[2]);
+		org.junit.jupiter.api.Assertions.assertTrue(r[2].toString().contains("would both be written"), () -> r[2]
+			.toString());
+		org.junit.jupiter.api.Assertions.assertFalse(Files.exists(dir.resolve("new")), "no folder left behind");
+	}
 }
