@@ -60,17 +60,20 @@ public sealed interface Finding {
 	record MergedAtPoint() implements Finding {}
 
 	/**
-	 * The particle at the point given is not isolated: its nearest neighbour is closer than twice {@code r_out}, so its
-	 * profile does not return to the background between them: the profile and the values are the frame's most isolated
-	 * particles'.
+	 * The particle at the point given is not isolated: its nearest neighbour (or the image's edge) is closer than twice
+	 * {@code r_out}, so its own profile holds its neighbours' light and does not return to the background between
+	 * them. The profile and the values are the frame's most isolated particles'; the particle's own r_out is kept
+	 * only to say why it is not used.
 	 *
 	 * @param neighbour its nearest neighbour's distance, or the image edge's when that is nearer (px)
 	 * @param edge whether {@code neighbour} is the edge's distance (beyond the edge neighbours go unseen)
-	 * @param rOut {@code r_out} (px): the reach plus the margin, of the frame's most isolated particles' profile or
-	 *        of the particle's own, whichever is larger
+	 * @param frameROut {@code r_out} of the frame's most isolated particles' profile (px): the one given
+	 * @param ownROut {@code r_out} of the particle's own profile (px), disturbed by its neighbours; NaN when it
+	 *        could not be measured
 	 * @param others how many of the frame's particles are profiled instead
 	 */
-	record FrameValuesAtPoint(double neighbour, boolean edge, double rOut, int others) implements Finding {}
+	record FrameValuesAtPoint(double neighbour, boolean edge, double frameROut, double ownROut, int others)
+		implements Finding {}
 
 	/** No spot near the point given: the profile is taken around the point itself. */
 	record NotRefined() implements Finding {}

@@ -691,7 +691,8 @@ public final class ProfileAnalysis {
 		// r_out as the frame gives it or as the particle alone does, whichever reaches further
 		final double rOut = Math.max(m == null ? 0 : m.reach(), alone == null ? 0 : alone.reach()) + R_OUT_MARGIN_PX;
 		if (m != null && (alone == null || neighbour < 2 * rOut)) {
-			findings.add(new Finding.FrameValuesAtPoint(neighbour, byEdge, rOut, m.centres().size()));
+			findings.add(new Finding.FrameValuesAtPoint(neighbour, byEdge, m.reach() + R_OUT_MARGIN_PX, alone == null
+				? Double.NaN : alone.reach() + R_OUT_MARGIN_PX, m.centres().size()));
 			return m.withAt(own, best >= 0, findings);
 		}
 		return alone.withAt(own, best >= 0, findings);

@@ -27,6 +27,7 @@ import io.github.contacttracker.pipeline.MeasuredSettings;
 import io.github.contacttracker.pipeline.Outputs;
 import io.github.contacttracker.pipeline.TrackingPipeline;
 import io.github.contacttracker.pipeline.TrackingResult;
+import io.github.contacttracker.settings.FrontEnd;
 import io.github.contacttracker.settings.InvalidSettingException;
 import io.github.contacttracker.settings.Setting;
 import io.github.contacttracker.settings.SettingValues;
@@ -416,8 +417,8 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 		final BooleanSupplier cancelled = () -> isCanceled() || caller.isInterrupted() || IJ.escapePressed();
 		progress(0, count);
 		// checks, tracking and both files, all or nothing; nothing is shown before everything is computed
-		final TrackingResult result = new TrackingPipeline(settings).run(FrameSource.of(frames, imp.getTitle()).within(
-			region), outputs, threads > 0 ? threads : Prefs.getThreads(), overlay, this::progress, cancelled);
+		final TrackingResult result = new TrackingPipeline(settings, FrontEnd.FIJI).run(FrameSource.of(frames, imp
+			.getTitle()).within(region), outputs, threads > 0 ? threads : Prefs.getThreads(), overlay, this::progress, cancelled);
 		final List<FrameResult> found = result.frames();
 		final List<Localization> all = result.spots();
 		final TitledResultsTable spotTable = SpotTables.spots(all, frames.calibration(), imp.getTitle(),
@@ -572,7 +573,7 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 		final FrameResult r;
 		try {
 			// the frame alone, through the same pipeline as a run (no file, no data-range pass over the stack)
-			r = new TrackingPipeline(settings).run(FrameSource.of(frames, imp.getTitle()).within(region).only(t),
+			r = new TrackingPipeline(settings, FrontEnd.FIJI).run(FrameSource.of(frames, imp.getTitle()).within(region).only(t),
 				Outputs.NONE, 1, true, null, () -> generation != previewGeneration.get()).frames().get(0);
 		}
 		catch (final RuntimeException | IOException e) {

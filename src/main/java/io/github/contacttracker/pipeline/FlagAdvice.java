@@ -31,7 +31,7 @@ import io.github.contacttracker.core.Localization;
 import io.github.contacttracker.core.Method;
 import io.github.contacttracker.core.Numbers;
 import io.github.contacttracker.core.TrackerParameters;
-import io.github.contacttracker.settings.Setting;
+import io.github.contacttracker.settings.FrontEnd;
 import io.github.contacttracker.settings.TrackingSettings;
 
 /**
@@ -39,6 +39,8 @@ import io.github.contacttracker.settings.TrackingSettings;
  * try. A result most of whose spots are flagged is not one to use as it is, and the user must hear why. The same
  * flag has different causes under different methods (a second pass that falls back for want of pixels, a fit that
  * cannot be made), so the words follow the parameters the run used, and what to try is never what it already did.
+ * Each setting to change is named as the user meets it ({@link FrontEnd}): an option on the command line, a field
+ * and its macro key in Fiji, a field of TrackMate's panel.
  */
 public final class FlagAdvice {
 
@@ -58,9 +60,10 @@ public final class FlagAdvice {
 	/**
 	 * @param spots the run's spots
 	 * @param used the parameters the run used
+	 * @param ui where the user changes the settings, which names them in the advice
 	 * @return the warning for these spots, or null when at most {@link #SHARE} of them are flagged
 	 */
-	public static String of(final List<Localization> spots, final TrackerParameters used) {
+	public static String of(final List<Localization> spots, final TrackerParameters used, final FrontEnd ui) {
 		final Map<Flag, Integer> count = new EnumMap<>(Flag.class);
 		int flagged = 0;
 		for (final Localization s : spots) {
@@ -74,40 +77,45 @@ public final class FlagAdvice {
 		for (final Flag f : CAUSES)
 			if (count.containsKey(f) && (main == null || count.get(f) > count.get(main))) main = f;
 		return String.format(Locale.ROOT, "%d of %d spots (%.0f%%) are flagged, most %s (%d): %s", flagged, spots
-			.size(), 100.0 * flagged / spots.size(), main.name(), count.get(main), advice(main, used));
+			.size(), 100.0 * flagged / spots.size(), main.name(), count.get(main), advice(main, used, ui));
 	}
 
 	/**
 	 * @param used the parameters of the run that flagged the spots
+	 * @param ui where the user changes the settings, which names them in the advice
 	 * @return the flag's usual cause under those parameters and what to try that the run did not, in words
 	 */
-	static String advice(final Flag flag, final TrackerParameters used) {
+	static String advice(final Flag flag, final TrackerParameters used, final FrontEnd ui) {
 		return switch (flag) {
 			case AT_BORDER -> "particles cut by the frame's edge; their centres move when the frame is cropped, use the " +
 				"others (a larger field of view, or a selection away from the edge)";
 			case MERGED -> "active areas holding several particles; " + (used.detectsByImage() ? "detection by the " +
-				"image did not split them: " + checkDiameter(used) : "the threshold joins touching particles: " + byImage(
-					used) + ", or raise " + option(TrackingSettings.THRESHOLD));
-			case FELL_BACK -> secondPass(used) ? fellBackFromSecondPass(used) : fellBackFromFit();
+				"image did not split them: " + checkDiameter(used, ui) : "the threshold joins touching particles: " +
+					byImage(used, ui) + ", or raise " + ui.name(TrackingSettings.THRESHOLD));
+			case FELL_BACK -> secondPass(used) ? fellBackFromSecondPass(used, ui) : fellBackFromFit(ui);
 			case NOT_CONVERGED -> secondPass(used) ? "second passes that stopped at their limit before the centres " +
-				"settled: neighbours' discs that take pixels from each other in turn; try a smaller " + option(
-					TrackingSettings.R_OUT) + ", or " + MODELS_NEIGHBOURS : notSettledFit(used);
+				"settled: neighbours' discs that take pixels from each other in turn; try a smaller " + ui.name(
+					TrackingSettings.R_OUT) + ", or " + modelsNeighbours(ui) : notSettledFit(used, ui);
 			case UNMODELLED_NEIGHBOUR -> "a neighbour the fit could not model lies within reach; it is usually a merge " +
 				"of particles" + (used.detectsByImage() ? " that detection by the image did not split: " + checkDiameter(
-					used) : ": " + byImage(used));
-			case DEGENERATE -> "areas without gradient lines that meet (flat tops or noise); raise " + option(
+					used, ui) : ": " + byImage(used, ui));
+			case DEGENERATE -> "areas without gradient lines that meet (flat tops or noise); raise " + ui.name(
 				TrackingSettings.MIN_AREA) + " (now " + used.minArea() + ")" + (used.diameter() > 0 ? "" : " or give " +
-					option(TrackingSettings.DIAMETER));
+					ui.name(TrackingSettings.DIAMETER));
 			case SECOND_PASS -> "";
 		};
 	}
 
-	/** The advice for centres the paper's second pass cannot place: a method that needs no exclusion disc. */
-	private static final String MODELS_NEIGHBOURS = option(TrackingSettings.METHOD, Method.FIT.key()) + " (or " +
-		Method.DEBLEND.key() + "), which models each neighbour's light instead of cutting it out";
+	/** @return the advice for centres the paper's second pass cannot place: a method that needs no exclusion disc */
+	private static String modelsNeighbours(final FrontEnd ui) {
+		return ui.name(TrackingSettings.METHOD, Method.FIT.key()) + " (or " + Method.DEBLEND.key() + "), which models " +
+			"each neighbour's light instead of cutting it out";
+	}
 
-	/** Where to read the particles' size from a movie. */
-	private static final String PROFILE = "('contact-tracker profile MOVIE' shows it)";
+	/** @return where to read the particles' size from a movie */
+	private static String profile(final FrontEnd ui) {
+		return "(" + ui.measuresSize() + " shows it)";
+	}
 
 	/** @return whether the run's centres come from the paper's second pass (once or iterated) */
 	private static boolean secondPass(final TrackerParameters used) {
@@ -119,59 +127,51 @@ public final class FlagAdvice {
 	 * centre of a touching neighbour lies one diameter away, so once r_out reaches the diameter its disc covers the
 	 * particle's centre. Repeating the pass does not help; a method that models the neighbours' light does.
 	 */
-	private static String fellBackFromSecondPass(final TrackerParameters used) {
+	private static String fellBackFromSecondPass(final TrackerParameters used, final FrontEnd ui) {
 		final double r = used.exclusionRadius(), d = used.diameter();
 		final String cover = d > 0 && r >= d ? " (r_out is at least the diameter, " + Numbers.fmt(d, 2) + " px: a " +
 			"touching neighbour's disc covers the particle's centre)" : "";
 		return "centres kept from the first pass because the neighbours' discs of radius r_out, " + Numbers.fmt(r, 2) +
-			" px, left fewer than " + option(TrackingSettings.MIN_SECOND_AREA) + " (" + used.minSecondArea() + ") " +
+			" px, left fewer than " + ui.name(TrackingSettings.MIN_SECOND_AREA) + " (" + used.minSecondArea() + ") " +
 			"pixels of the active area, or lines that do not meet" + cover + "; in a field of touching particles use " +
-			MODELS_NEIGHBOURS + ", or check " + option(TrackingSettings.R_OUT) + " against the particles' size " + PROFILE;
+			modelsNeighbours(ui) + ", or check " + ui.name(TrackingSettings.R_OUT) + " against the particles' size " +
+			profile(ui);
 	}
 
 	/** A profile method whose fit could not be made: the second pass's centres need no fit. */
-	private static String fellBackFromFit() {
+	private static String fellBackFromFit(final FrontEnd ui) {
 		return "centres kept from a first pass because the refinement could not be made (too few pixels left, or a fit " +
 			"without enough light; on a background clipped at 0, as confocal images have, the fit leaves out every " +
-			"pixel near 0 and cannot place the background); check " + option(TrackingSettings.R_OUT) + " against the " +
-			"particles' size " + PROFILE + ", or use " + option(TrackingSettings.METHOD, Method.ITERATIVE.key()) +
+			"pixel near 0 and cannot place the background); check " + ui.name(TrackingSettings.R_OUT) + " against the " +
+			"particles' size " + profile(ui) + ", or use " + ui.name(TrackingSettings.METHOD, Method.ITERATIVE.key()) +
 			", whose centres need no fit";
 	}
 
 	/** A profile method's fit or rounds that did not settle: one profile for unlike particles, or too dense a field. */
-	private static String notSettledFit(final TrackerParameters used) {
+	private static String notSettledFit(final TrackerParameters used, final FrontEnd ui) {
 		final String kinds = switch (used.kinds()) {
-			case 0 -> "the particles' profile may differ between them (give their number of kinds with " + option(
-				TrackingSettings.KINDS) + "), ";
-			case 1 -> "the particles may be of several kinds, each with its own profile (" + option(TrackingSettings.KINDS,
+			case 0 -> "the particles' profile may differ between them (give their number of kinds with " +
+				ui.name(TrackingSettings.KINDS) + "), ";
+			case 1 -> "the particles may be of several kinds, each with its own profile (" + ui.name(TrackingSettings.KINDS,
 				"0") + " finds them), ";
 			default -> "";
 		};
 		return "fits or profile rounds that did not settle; " + kinds + "or the field is denser than the fit can " +
-			"hold: try a smaller " + option(TrackingSettings.R_OUT);
+			"hold: try a smaller " + ui.name(TrackingSettings.R_OUT);
 	}
 
 	/** @return the advice to check a given diameter, which sets the scale of the detection by the image */
-	private static String checkDiameter(final TrackerParameters used) {
-		return "check " + option(TrackingSettings.DIAMETER) + " (" + Numbers.fmt(used.diameter(), 2) + " px) against " +
-			"the particles' size " + PROFILE;
+	private static String checkDiameter(final TrackerParameters used, final FrontEnd ui) {
+		return "check " + ui.name(TrackingSettings.DIAMETER) + " (" + Numbers.fmt(used.diameter(), 2) + " px) against " +
+			"the particles' size " + profile(ui);
 	}
 
 	/** @return what to try for particles the threshold merges: detection by the image, and what it needs */
-	private static String byImage(final TrackerParameters used) {
+	private static String byImage(final TrackerParameters used, final FrontEnd ui) {
 		final boolean methodFinds = used.method().needsProfile() || used.method() == Method.ITERATIVE;
-		return "use the detection by the image (" + (methodFinds ? "" : option(TrackingSettings.METHOD, Method.FIT
-			.key()) + " ") + option(TrackingSettings.DETECTION, TrackingSettings.IMAGE) + (used.diameter() > 0 ? ""
-				: " with the particles' " + option(TrackingSettings.DIAMETER)) + ")";
-	}
-
-	/** @return the setting's command-line option: {@code --r-out} */
-	private static String option(final Setting<?> setting) {
-		return setting.cliOption();
-	}
-
-	/** @return the setting's command-line option with a value: {@code --method fit} */
-	private static String option(final Setting<?> setting, final String value) {
-		return setting.cliOption() + " " + value;
+		final String and = ui == FrontEnd.COMMAND_LINE ? " " : " and ";
+		return "use the detection by the image (" + (methodFinds ? "" : ui.name(TrackingSettings.METHOD, Method.FIT
+			.key()) + and) + ui.name(TrackingSettings.DETECTION, TrackingSettings.IMAGE) + (used.diameter() > 0 ? ""
+				: " with the particles' " + ui.name(TrackingSettings.DIAMETER)) + ")";
 	}
 }

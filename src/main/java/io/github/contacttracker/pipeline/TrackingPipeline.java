@@ -35,6 +35,7 @@ import io.github.contacttracker.core.TrackerParameters;
 import io.github.contacttracker.core.track.FrameResult;
 import io.github.contacttracker.core.track.StackTracker;
 import io.github.contacttracker.io.Calibration;
+import io.github.contacttracker.settings.FrontEnd;
 import io.github.contacttracker.settings.SettingValues;
 import net.imglib2.RandomAccessibleInterval;
 
@@ -55,11 +56,21 @@ public final class TrackingPipeline {
 
 	private final SettingValues settings;
 	private final TrackerParameters params;
+	private final FrontEnd ui;
 
-	/** @param settings the checked settings of the run */
+	/** @param settings the checked settings of the run, given on the command line (which names them in warnings) */
 	public TrackingPipeline(final SettingValues settings) {
+		this(settings, FrontEnd.COMMAND_LINE);
+	}
+
+	/**
+	 * @param settings the checked settings of the run
+	 * @param ui where the user gave the settings: the warnings name them as the user meets them there
+	 */
+	public TrackingPipeline(final SettingValues settings, final FrontEnd ui) {
 		this.settings = settings;
 		this.params = settings.parameters();
+		this.ui = ui;
 	}
 
 	/** @return the settings */
@@ -145,7 +156,7 @@ public final class TrackingPipeline {
 		if (ownProfile > 0 && frames.size() > 1) warnings.add("the particles' profile could not be measured over the " +
 			"movie (too few isolated, unflagged particles); " + ownProfile + " frames measured their own, which is " +
 			"less precise");
-		final String most = FlagAdvice.of(spots, params);
+		final String most = FlagAdvice.of(spots, params, ui);
 		if (most != null) warnings.add(most);
 		return new TrackingResult(frames, spots, flagged, discarded, (System.nanoTime() - startNanos) * 1e-9, List
 			.copyOf(warnings));

@@ -126,6 +126,28 @@ public final class ProfileReport {
 		return sentences;
 	}
 
+	/**
+	 * The values at a particle that is not isolated are the frame's: the sentence names the frame's r_out, the one
+	 * given, says that the particle's own profile is disturbed within that reach, and names the particle's own r_out
+	 * only as the value not used, so that a user reads which r_out to take.
+	 */
+	private static String frameValuesAtPoint(final Finding.FrameValuesAtPoint f) {
+		final String near = f.edge() ? "the particle lies " + fmt2(f.neighbour()) + " px from the image's edge " +
+			"(beyond it neighbours go unseen)" : "the particle's nearest neighbour is " + fmt2(f.neighbour()) + " px away";
+		final String disturbed = f.edge() ? "its own profile is cut by the edge" : "its own profile holds its " +
+			"neighbours' light";
+		final String given = ", so the profile and values given are the frame's, from its " + f.others() + " most " +
+			"isolated particle" + (f.others() == 1 ? "" : "s") + ": use them";
+		if (Double.isNaN(f.ownROut())) return near + " and its own profile could not be measured (the frame's r_out " +
+			"is " + fmt2(f.frameROut()) + " px)" + given;
+		if (f.neighbour() < 2 * f.frameROut()) return near + ", less than twice the frame's r_out (2 x " + fmt2(f
+			.frameROut()) + " px): within that reach " + disturbed + " (its own r_out, " + fmt2(f.ownROut()) + " px, is " +
+			"not used)" + given;
+		return near + ", less than twice the r_out its own profile gives (2 x " + fmt2(f.ownROut()) + " px), a reach " +
+			"the frame's isolated particles do not show (the frame's r_out is " + fmt2(f.frameROut()) + " px): " +
+			disturbed + given;
+	}
+
 	/** @return the finding in words: one sentence, no full stop */
 	public static String sentence(final Finding finding) {
 		if (finding instanceof Finding.DiameterFromImage f)
@@ -142,10 +164,7 @@ public final class ProfileReport {
 		if (finding instanceof Finding.MergedAtPoint)
 			return "the particle's active area looks merged with a neighbour's: pick an isolated particle";
 		if (finding instanceof Finding.FrameValuesAtPoint f)
-			return (f.edge() ? "the particle lies " + fmt2(f.neighbour()) + " px from the image's edge (beyond it " +
-				"neighbours go unseen)" : "the particle's nearest neighbour is " + fmt2(f.neighbour()) + " px away") + ", less than twice the r_out measured (2 x " +
-				fmt2(f.rOut()) + " px, the larger of its own profile's and the frame's): its own profile does not return to the background, so the profile and values " +
-				"are those of the frame's " + f.others() + " most isolated particle" + (f.others() == 1 ? "" : "s");
+			return frameValuesAtPoint(f);
 		if (finding instanceof Finding.NotRefined)
 			return "could not refine the centre; the profile is taken around the point given";
 		if (finding instanceof Finding.NotIsolated f)

@@ -21,6 +21,7 @@
  */
 package io.github.contacttracker.trackmate;
 
+import io.github.contacttracker.settings.FrontEnd;
 import io.github.contacttracker.settings.TrackingSettings;
 import io.github.contacttracker.settings.SettingValues;
 import io.github.contacttracker.pipeline.TrackingResult;
@@ -190,7 +191,7 @@ public final class ContactTrackerDetector<T extends RealType<T> & NativeType<T>>
 		try {
 			status("Contact Tracker: " + settings.get(TrackingSettings.METHOD) + " on " + count + (count == 1 ? " frame" :
 				" frames"));
-			found = new TrackingPipeline(settings).run(source(), Outputs.NONE, numThreads, false, (done,
+			found = new TrackingPipeline(settings, FrontEnd.TRACKMATE).run(source(), Outputs.NONE, numThreads, false, (done,
 				total) -> progress((double) done / total), this::isCanceled);
 		}
 		catch (final CancellationException e) {

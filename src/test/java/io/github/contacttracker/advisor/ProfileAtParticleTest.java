@@ -102,10 +102,12 @@ class ProfileAtParticleTest {
 			CROWDED[1] - 1), 0, 0);
 		assertEquals(CROWDED[0], one.x(), 0.2, "centred on the particle clicked");
 		assertEquals(CROWDED[1], one.y(), 0.2);
-		assertTrue(one.findings().stream().anyMatch(f -> f instanceof Finding.FrameValuesAtPoint), one.findings()
-			.toString());
+		final Finding.FrameValuesAtPoint why = one.findings().stream().filter(f -> f instanceof Finding.FrameValuesAtPoint)
+			.map(f -> (Finding.FrameValuesAtPoint) f).findFirst().orElseThrow(() -> new AssertionError(one.findings()));
 		assertEquals(all.suggestedThreshold(true), one.suggestedThreshold(true), "threshold");
 		assertEquals(all.suggestedROut(), one.suggestedROut(), "r_out");
+		// the finding names the r_out given, the frame's, and keeps the particle's own apart
+		assertEquals(one.rOut(), why.frameROut(), 1e-9, "the finding's r_out is the one given");
 		assertEquals(all.suggestedDiameter(), one.suggestedDiameter(), "diameter");
 		assertTrue(one.count()[1] > 0 && one.level()[1] > 250, "the profile holds the cores: " + one.level()[1]);
 	}

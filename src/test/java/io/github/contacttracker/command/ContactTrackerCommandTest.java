@@ -919,19 +919,37 @@ class ContactTrackerCommandTest extends WithContext {
 		assertEquals("the selection on 'scene' lies outside the image", ((Cancelable) outside).getCancelReason());
 	}
 
-	@Test
-	void summaryGoesToTheLogWindow() throws Exception {
-		// headless, ImageJ's Log window is standard output
+	/** @return what a successful run printed to ImageJ's Log window, which headless is standard output */
+	private static String logOf(final ImagePlus imp, final Object... more) throws Exception {
 		final java.io.PrintStream out = System.out;
 		final java.io.ByteArrayOutputStream printed = new java.io.ByteArrayOutputStream();
 		System.setOut(new java.io.PrintStream(printed, true, java.nio.charset.StandardCharsets.UTF_8));
 		try {
-			assertSucceeded(run(Simulated.image()));
+			assertSucceeded(run(imp, more));
 		}
 		finally {
 			System.setOut(out);
 		}
-		final String log = printed.toString(java.nio.charset.StandardCharsets.UTF_8);
+		return printed.toString(java.nio.charset.StandardCharsets.UTF_8);
+	}
+
+	/**
+	 * A run whose r_out reaches past the touching neighbour's centre flags its spots; the Log's advice names the
+	 * dialog's fields and the macro keys, as a Fiji user sets them, not the command line's options.
+	 */
+	@Test
+	void flaggedRunIsAdvisedInTheDialogsTerms() throws Exception {
+		final String log = logOf(Simulated.image(), "method", "iterative", "r_out", 2 * Simulated.SEPARATION *
+			Simulated.TYPE.diameterPx(), "diameter", Simulated.TYPE.diameterPx(), "overlay", false).replaceAll("\\s+",
+				" ");
+		assertTrue(log.contains("are flagged, most FELL_BACK"), log);
+		assertTrue(log.contains("'Method: fit' (macro method=fit)"), log);
+		assertFalse(log.contains("--method") || log.contains("--r-out"), log);
+	}
+
+	@Test
+	void summaryGoesToTheLogWindow() throws Exception {
+		final String log = logOf(Simulated.image());
 		assertTrue(log.contains("Contact Tracker: 10 spots in 5 frames of 'simulated pair', 0 flagged\n"), log);
 		assertTrue(log.contains("\n  0 components discarded, "), log);
 		assertTrue(log.contains("\n  positions, RADIUS, SIGMA in micron; r_out and areas in pixels\n"), log);

@@ -39,6 +39,8 @@ import io.github.contacttracker.lab.sim.PaperParticles;
 import io.github.contacttracker.lab.sim.ParticleType;
 import io.github.contacttracker.lab.sim.Scenario;
 import io.github.contacttracker.lab.sim.SimulatedStack;
+import io.github.contacttracker.settings.FrontEnd;
+import io.github.contacttracker.settings.Setting;
 import io.github.contacttracker.settings.SettingValues;
 import io.github.contacttracker.settings.TrackingSettings;
 
@@ -51,6 +53,21 @@ class FlagAdviceTest {
 		return new TrackerParameters(100, 43, 20, Connectivity.EIGHT, 10, method, diameter, kinds, detection);
 	}
 
+	/** Calls {@code check} with every warning flag under every method, detection, diameter given or not and kinds. */
+	private static void forEveryWarning(final java.util.function.BiConsumer<Flag, TrackerParameters> check) {
+		for (final Method method : Method.values())
+			for (final Detection detection : Detection.values())
+				for (final double diameter : new double[] { 0, 34.06 })
+					for (final int kinds : new int[] { 0, 1, 2 })
+						for (final Flag flag : Flag.values())
+							if (flag.isWarning()) check.accept(flag, used(method, detection, diameter, kinds));
+	}
+
+	/** @return the advice as the command line words it */
+	private static String cli(final Flag flag, final TrackerParameters used) {
+		return FlagAdvice.advice(flag, used, FrontEnd.COMMAND_LINE);
+	}
+
 	/**
 	 * Every warning flag under every method, detection, diameter given or not and kinds: the advice never names the
 	 * method the run used, the detection by the image when the run already found its particles so, a diameter to
@@ -58,24 +75,17 @@ class FlagAdviceTest {
 	 */
 	@Test
 	void noAdviceRepeatsWhatTheRunDid() {
-		for (final Method method : Method.values())
-			for (final Detection detection : Detection.values())
-				for (final double diameter : new double[] { 0, 34.06 })
-					for (final int kinds : new int[] { 0, 1, 2 }) {
-						final TrackerParameters used = used(method, detection, diameter, kinds);
-						for (final Flag flag : Flag.values()) {
-							if (!flag.isWarning()) continue;
-							final String advice = FlagAdvice.advice(flag, used);
-							final String where = flag + " under " + used;
-							assertFalse(advice.isBlank(), where);
-							assertFalse(advice.contains("--method " + method.key()), () -> where + ": " + advice);
-							if (used.detectsByImage()) assertFalse(advice.contains("--detection image"), () -> where + ": " +
-								advice);
-							if (diameter > 0) assertFalse(advice.matches(".*(give|with the particles') --diameter.*"),
-								() -> where + ": " + advice);
-							if (kinds > 1) assertFalse(advice.contains("--kinds"), () -> where + ": " + advice);
-						}
-					}
+		forEveryWarning((flag, used) -> {
+			final Method method = used.method();
+			final String advice = cli(flag, used);
+			final String where = flag + " under " + used;
+			assertFalse(advice.isBlank(), where);
+			assertFalse(advice.contains("--method " + method.key()), () -> where + ": " + advice);
+			if (used.detectsByImage()) assertFalse(advice.contains("--detection image"), () -> where + ": " + advice);
+			if (used.diameter() > 0) assertFalse(advice.matches(".*(give|with the particles') --diameter.*"),
+				() -> where + ": " + advice);
+			if (used.kinds() > 1) assertFalse(advice.contains("--kinds"), () -> where + ": " + advice);
+		});
 	}
 
 	/**
@@ -86,22 +96,22 @@ class FlagAdviceTest {
 	@Test
 	void fellBackIsExplainedByTheMethodUsed() {
 		for (final Method m : List.of(Method.PAPER, Method.ITERATIVE)) {
-			final String a = FlagAdvice.advice(Flag.FELL_BACK, used(m, Detection.THRESHOLD, 34.06, 0));
+			final String a = cli(Flag.FELL_BACK, used(m, Detection.THRESHOLD, 34.06, 0));
 			assertTrue(a.contains("r_out, 43 px") && a.contains("--min-second-area (10)"), a);
 			assertTrue(a.contains("r_out is at least the diameter, 34.06 px"), a);
 			assertTrue(a.contains("--method fit"), a);
 			assertFalse(a.contains("--method iterative"), a);
 		}
 		// a diameter above r_out: the neighbour's disc does not reach the centre, and the advice does not say it does
-		assertFalse(FlagAdvice.advice(Flag.FELL_BACK, used(Method.PAPER, Detection.THRESHOLD, 50, 0)).contains(
+		assertFalse(cli(Flag.FELL_BACK, used(Method.PAPER, Detection.THRESHOLD, 50, 0)).contains(
 			"at least the diameter"));
 		for (final Method m : List.of(Method.FIT, Method.DEBLEND))
-			assertTrue(FlagAdvice.advice(Flag.FELL_BACK, used(m, Detection.THRESHOLD, 0, 0)).contains(
+			assertTrue(cli(Flag.FELL_BACK, used(m, Detection.THRESHOLD, 0, 0)).contains(
 				"--method iterative"), m::key);
 		// merges under the paper's method: the detection by the image comes with a method that uses it
-		assertTrue(FlagAdvice.advice(Flag.MERGED, used(Method.PAPER, Detection.THRESHOLD, 34.06, 0)).contains(
+		assertTrue(cli(Flag.MERGED, used(Method.PAPER, Detection.THRESHOLD, 34.06, 0)).contains(
 			"--method fit --detection image"));
-		assertTrue(FlagAdvice.advice(Flag.MERGED, used(Method.FIT, Detection.THRESHOLD, 0, 0)).contains(
+		assertTrue(cli(Flag.MERGED, used(Method.FIT, Detection.THRESHOLD, 0, 0)).contains(
 			"--detection image with the particles' --diameter"));
 	}
 
@@ -128,5 +138,41 @@ class FlagAdviceTest {
 		assertTrue(warning.contains("r_out is at least the diameter"), warning);
 		assertTrue(warning.contains("--method fit"), warning);
 		assertFalse(warning.contains("--method iterative"), warning);
+
+		// the same run in Fiji names the dialog's fields and the macro keys, in TrackMate the panel's fields
+		final List<String> fiji = new TrackingPipeline(settings, FrontEnd.FIJI).run(source, false).warnings();
+		final String inFiji = fiji.get(fiji.size() - 1);
+		assertTrue(inFiji.startsWith("4 of 4 spots (100%) are flagged, most FELL_BACK (4): "), inFiji);
+		assertTrue(inFiji.contains("'Method: fit' (macro method=fit)"), inFiji);
+		assertTrue(inFiji.contains("'Min second area' (macro min_second_area)"), inFiji);
+		assertTrue(inFiji.contains("Contact Tracker Profile"), inFiji);
+		assertFalse(inFiji.contains("--"), inFiji);
+		final List<String> panel = new TrackingPipeline(settings, FrontEnd.TRACKMATE).run(source, false).warnings();
+		final String inPanel = panel.get(panel.size() - 1);
+		assertTrue(inPanel.contains("'Method: fit'"), inPanel);
+		assertFalse(inPanel.contains("--") || inPanel.contains("macro"), inPanel);
+	}
+
+	/**
+	 * Every advice, in every front end, names each setting as its users meet it: no command-line option outside the
+	 * command line, and in Fiji each field's label (the start of the dialog's) with its macro key.
+	 */
+	@Test
+	void eachFrontEndNamesTheSettingsItsOwnWay() {
+		forEveryWarning((flag, used) -> {
+			final String cli = cli(flag, used);
+			final String fiji = FlagAdvice.advice(flag, used, FrontEnd.FIJI);
+			final String panel = FlagAdvice.advice(flag, used, FrontEnd.TRACKMATE);
+			for (final String a : List.of(fiji, panel))
+				assertFalse(a.contains("--") || a.contains("contact-tracker "), flag + ": " + a);
+			for (final Setting<?> s : TrackingSettings.ALL)
+				if (cli.contains(s.cliOption() + " ") || cli.endsWith(s.cliOption()) || cli.contains(s.cliOption() +
+					")"))
+				{
+					assertTrue(fiji.contains("'" + s.label()) && fiji.contains("macro " + s.name()), () -> s.name() +
+						" in " + fiji);
+					assertTrue(panel.contains("'" + s.label()), () -> s.name() + " in " + panel);
+				}
+		});
 	}
 }

@@ -69,14 +69,22 @@ class ProfileReportTest {
 			"scale bar)? In Fiji, select the region to track");
 		expected.put(new Finding.MergedAtPoint(), "the particle's active area looks merged with a neighbour's: pick an " +
 			"isolated particle");
-		expected.put(new Finding.FrameValuesAtPoint(11.5, true, 42.1634, 6), "the particle lies 11.50 px from the " +
-			"image's edge (beyond it neighbours go unseen), less than twice the r_out measured (2 x 42.16 px, the larger " +
-			"of its own profile's and the frame's): its own profile does not return to the background, so the profile " +
-			"and values are those of the frame's 6 most isolated particles");
-		expected.put(new Finding.FrameValuesAtPoint(52.3912, false, 42.1634, 6), "the particle's nearest neighbour is 52.39 px " +
-			"away, less than twice the r_out measured (2 x 42.16 px, the larger of its own profile's and the frame's): " +
-			"its own profile does not return to the background, so the profile and values are those of the frame's 6 " +
-			"most isolated particles");
+		expected.put(new Finding.FrameValuesAtPoint(11.5, true, 42.1634, 55.2, 6), "the particle lies 11.50 px from " +
+			"the image's edge (beyond it neighbours go unseen), less than twice the frame's r_out (2 x 42.16 px): within " +
+			"that reach its own profile is cut by the edge (its own r_out, 55.20 px, is not used), so the profile and " +
+			"values given are the frame's, from its 6 most isolated particles: use them");
+		expected.put(new Finding.FrameValuesAtPoint(52.3912, false, 42.1634, 68.6187, 6), "the particle's nearest " +
+			"neighbour is 52.39 px away, less than twice the frame's r_out (2 x 42.16 px): within that reach its own " +
+			"profile holds its neighbours' light (its own r_out, 68.62 px, is not used), so the profile and values " +
+			"given are the frame's, from its 6 most isolated particles: use them");
+		expected.put(new Finding.FrameValuesAtPoint(100, false, 42.1634, 68.6187, 1), "the particle's nearest " +
+			"neighbour is 100 px away, less than twice the r_out its own profile gives (2 x 68.62 px), a reach the " +
+			"frame's isolated particles do not show (the frame's r_out is 42.16 px): its own profile holds its " +
+			"neighbours' light, so the profile and values given are the frame's, from its 1 most isolated particle: " +
+			"use them");
+		expected.put(new Finding.FrameValuesAtPoint(52.3912, false, 42.1634, Double.NaN, 6), "the particle's nearest " +
+			"neighbour is 52.39 px away and its own profile could not be measured (the frame's r_out is 42.16 px), so " +
+			"the profile and values given are the frame's, from its 6 most isolated particles: use them");
 		expected.put(new Finding.NotRefined(), "could not refine the centre; the profile is taken around the point " +
 			"given");
 		expected.put(new Finding.NotIsolated(93.0844, 52.44), "no particle is isolated: the most isolated has a " +
