@@ -40,9 +40,16 @@ import io.github.contacttracker.core.math.Statistics;
 record DiameterEstimate(double diameter, boolean estimated, ProfiledParticles measured) {
 
 	/**
+	 * The provisional diameter (to measure the profile on) is at most this many times the spots' median radius at
+	 * half height: a Gaussian particle's image ends about 2.5 half-height radii out, a bright-field particle's further,
+	 * its dark ring lying outside a narrow bright core; six leaves a margin above both.
+	 */
+	static final double PROVISIONAL_CORE_RADII = 6;
+
+	/**
 	 * Step 2 and the profile (steps 3-6): the diameter given; or where the particles' own image ends, unless the
 	 * spots sit closer than that. It is measured on a profile taken out to a provisional diameter: the spots'
-	 * spacing, but no more than {@link ProfileAnalysis#PROVISIONAL_CORE_RADII} times their half-height radius
+	 * spacing, but no more than {@link #PROVISIONAL_CORE_RADII} times their half-height radius
 	 * (isolated particles sit far apart: their spacing would take the profile far out, over the background's texture
 	 * and every neighbour), and measured again at the estimate.
 	 */
@@ -60,7 +67,7 @@ record DiameterEstimate(double diameter, boolean estimated, ProfiledParticles me
 		final double[] radii = new double[s.spots().size()];
 		for (int k = 0; k < radii.length; k++)
 			radii[k] = Math.sqrt(s.spots().get(k).activeArea() / Math.PI);
-		final double fromCores = ProfileAnalysis.PROVISIONAL_CORE_RADII * Statistics.quantile(radii, 0.5);
+		final double fromCores = PROVISIONAL_CORE_RADII * Statistics.quantile(radii, 0.5);
 		double provisional = Double.isFinite(fromSpots) ? Math.min(fromSpots, fromCores) : fromCores;
 		ProfiledParticles m = ProfiledParticles.measure(plane, s, at, provisional, maxRadiusGiven, true);
 		// Two particles of this profile closer than 'closest' would have been one spot where the spots were found; spots

@@ -81,6 +81,9 @@ import net.imglib2.type.numeric.RealType;
  * paper's method), each particle measured about its centre ({@link KindFeatures}) and the kinds found
  * automatically ({@link Kinds#find(java.util.Collection)}), as the tracker finds them.</li>
  * </ol>
+ * The steps have their own classes: the spots {@link FrameSpots}, the diameter {@link DiameterEstimate}, the
+ * particles profiled {@link ProfiledParticles}, their background {@link BackgroundPlane} and pooled profile
+ * {@link PooledProfile}, the threshold's bridge and raises {@link ThresholdRules}; this class joins them.
  */
 public final class ProfileAnalysis {
 
@@ -100,12 +103,6 @@ public final class ProfileAnalysis {
 	static final int MIN_BACKGROUND_PIXELS = 20;
 	/** Values further than this many sigmas from the mean do not count in the noise. */
 	static final double CLIP_SIGMAS = 3.5;
-	/**
-	 * The provisional diameter (to measure the profile on) is at most this many times the spots' median radius at
-	 * half height: a Gaussian particle's image ends about 2.5 half-height radii out, a bright-field particle's further,
-	 * its dark ring lying outside a narrow bright core; six leaves a margin above both.
-	 */
-	static final double PROVISIONAL_CORE_RADII = 6;
 	/** Grid step (px) of the bridge search. */
 	static final double BRIDGE_STEP_PX = 0.5;
 	/** Significant digits of the numbers in the helper's messages and warnings ({@link Numbers#significant}). */
