@@ -29,21 +29,14 @@ import java.util.List;
 import java.util.Locale;
 import java.util.function.DoubleToIntFunction;
 
-import io.github.contacttracker.core.Connectivity;
-import io.github.contacttracker.core.Flag;
 import io.github.contacttracker.core.InvalidInputException;
-import io.github.contacttracker.core.Localization;
 import io.github.contacttracker.core.Method;
 import io.github.contacttracker.core.Numbers;
 import io.github.contacttracker.core.TrackerParameters;
-import io.github.contacttracker.core.image.ComponentLabeling;
-import io.github.contacttracker.core.image.NoiseEstimate;
 import io.github.contacttracker.core.image.Plane;
-import io.github.contacttracker.core.image.Region;
 import io.github.contacttracker.core.kind.KindFeatures;
 import io.github.contacttracker.core.kind.Kinds;
 import io.github.contacttracker.core.math.Statistics;
-import io.github.contacttracker.core.radial.ComponentShape;
 import io.github.contacttracker.core.track.ContactTracker;
 import net.imglib2.RandomAccessibleInterval;
 import net.imglib2.type.numeric.RealType;
@@ -88,6 +81,9 @@ import net.imglib2.type.numeric.RealType;
  * paper's method), each particle measured about its centre ({@link KindFeatures}) and the kinds found
  * automatically ({@link Kinds#find(java.util.Collection)}), as the tracker finds them.</li>
  * </ol>
+ * The steps have their own classes: the spots {@link FrameSpots}, the diameter {@link DiameterEstimate}, the
+ * particles profiled {@link ProfiledParticles}, their background {@link BackgroundPlane} and pooled profile
+ * {@link PooledProfile}, the threshold's bridge and raises {@link ThresholdRules}; this class joins them.
  */
 public final class ProfileAnalysis {
 
@@ -107,12 +103,6 @@ public final class ProfileAnalysis {
 	static final int MIN_BACKGROUND_PIXELS = 20;
 	/** Values further than this many sigmas from the mean do not count in the noise. */
 	static final double CLIP_SIGMAS = 3.5;
-	/**
-	 * The provisional diameter (to measure the profile on) is at most this many times the spots' median radius at
-	 * half height: a Gaussian particle's image ends about 2.5 half-height radii out, a bright-field particle's further,
-	 * its dark ring lying outside a narrow bright core; six leaves a margin above both.
-	 */
-	static final double PROVISIONAL_CORE_RADII = 6;
 	/** Grid step (px) of the bridge search. */
 	static final double BRIDGE_STEP_PX = 0.5;
 	/** Significant digits of the numbers in the helper's messages and warnings ({@link Numbers#significant}). */
@@ -315,11 +305,12 @@ public final class ProfileAnalysis {
 		checkArguments(diameterGiven, maxRadiusGiven);
 		final Plane plane = Plane.of(frame);
 		final double[] at = point == null ? null : local(plane, point);
-		final Spots spots = findSpots(plane, point, at, diameterGiven);
+		final FrameSpots spots = FrameSpots.find(plane, point, at, diameterGiven);
 		final List<Finding> findings = new ArrayList<>();
-		final Sized sized = sizeAndMeasure(plane, spots, at, diameterGiven, maxRadiusGiven, findings);
+		final DiameterEstimate sized = DiameterEstimate.sizeAndMeasure(plane, spots, at, diameterGiven,
+			maxRadiusGiven, findings);
 		final double diameter = sized.diameter();
-		final Measured m = sized.measured();
+		final ProfiledParticles m = sized.measured();
 		final PooledProfile pooled = m.pooled();
 		final double[] centre = m.centres().get(0), subject = m.at() != null ? m.at() : centre;
 		final double rOut = m.reach() + R_OUT_MARGIN_PX;
@@ -388,129 +379,6 @@ public final class ProfileAnalysis {
 	}
 
 	/**
-	 * The frame's spots, in the plane's coordinates, with their nearest-neighbour distances.
-	 *
-	 * @param near how far from a point given its particle's brightest pixel is looked for (px)
-	 */
-	private record Spots(List<Localization> spots, double[][] xy, double[] nn, double near, double level) {}
-
-	/**
-	 * Step 1: the spots at half height between the frame's median and its brightest pixels (or the brightest pixel
-	 * near the point given, when that lies below the frame's half height), by one radial-symmetry pass. The same
-	 * spots with a point as without, wherever the particle at the point is among them: the frame's values, when the
-	 * particle at a point gives them ({@link #measure}), are then those of the frame.
-	 *
-	 * @param point the point given, in the frame's coordinates ({@code null} if none)
-	 * @param at the same point in the plane's coordinates
-	 * @throws InvalidInputException if nothing is brighter than the noise
-	 */
-	private static Spots findSpots(final Plane plane, final double[] point, final double[] at,
-		final double diameterGiven)
-	{
-		final double[] sample = sample(plane);
-		final double median0 = Statistics.quantile(sample, 0.5);
-		final double noise0 = Math.max(NoiseEstimate.sigma(plane), 1e-6);
-		final double near = diameterGiven > 0 ? Math.max(2, diameterGiven / 4) : 5;
-		final double frameTop = Statistics.quantile(sample, 1 - Math.max(1e-4, 20.0 / sample.length));
-		// the frame's spots, as without a point, unless the particle at the point would not be among them
-		final double own = point != null ? peak(plane, at[0], at[1], near) : frameTop;
-		final double top = own >= median0 + 0.5 * (frameTop - median0) ? frameTop : own;
-		if (!(top - median0 > THRESHOLD_MARGIN_SIGMAS * noise0)) {
-			if (point != null) throw new InvalidInputException(String.format(Locale.ROOT, "no bright particle at " +
-				"(%s, %s): the brightest pixel within %s px is %s, within %s noise sigmas (%s) of the background %s", fmt(
-					point[0]), fmt(point[1]), fmt(near), fmt(top), fmt(THRESHOLD_MARGIN_SIGMAS), fmt(noise0), fmt(
-						median0)));
-			throw new InvalidInputException("no particle brighter than the noise in the frame");
-		}
-		final double level = median0 + 0.5 * (top - median0);
-		final TrackerParameters find = new TrackerParameters(level, 10, 5, Connectivity.EIGHT,
-			TrackerParameters.DEFAULT_MIN_SECOND_AREA, Method.FIRST);
-		final List<Localization> spots = new ContactTracker(find).analyse(plane, 0, false).spots();
-		final double[][] xy = new double[spots.size()][];
-		for (int k = 0; k < xy.length; k++)
-			xy[k] = new double[] { spots.get(k).x() - plane.minX(), spots.get(k).y() - plane.minY() };
-		return new Spots(spots, xy, nearestNeighbourDistances(xy), near, level);
-	}
-
-	/** The diameter the profile was measured with, whether it was estimated, and the profile. */
-	private record Sized(double diameter, boolean estimated, Measured measured) {}
-
-	/**
-	 * Step 2 and the profile (steps 3-6): the diameter given; or where the particles' own image ends, unless the
-	 * spots sit closer than that. It is measured on a profile taken out to a provisional diameter: the spots'
-	 * spacing, but no more than {@link #PROVISIONAL_CORE_RADII} times their half-height radius (isolated particles
-	 * sit far apart: their spacing would take the profile far out, over the background's texture and every
-	 * neighbour), and measured again at the estimate.
-	 */
-	private static Sized sizeAndMeasure(final Plane plane, final Spots s, final double[] at,
-		final double diameterGiven, final double maxRadiusGiven, final List<Finding> findings)
-	{
-		if (diameterGiven != 0) {
-			final Measured m = measure(plane, s, at, diameterGiven, maxRadiusGiven, false);
-			findings.addAll(m.findings());
-			return new Sized(diameterGiven, false, m);
-		}
-		double[] spacing = s.nn().clone();
-		double fromSpots = spacing.length >= 2 ? Statistics.quantile(spacing.clone(), DIAMETER_PERCENTILE / 100) : Double.NaN;
-		final double[] radii = new double[s.spots().size()];
-		for (int k = 0; k < radii.length; k++)
-			radii[k] = Math.sqrt(s.spots().get(k).activeArea() / Math.PI);
-		final double fromCores = PROVISIONAL_CORE_RADII * Statistics.quantile(radii, 0.5);
-		double provisional = Double.isFinite(fromSpots) ? Math.min(fromSpots, fromCores) : fromCores;
-		Measured m = measure(plane, s, at, provisional, maxRadiusGiven, true);
-		// Two particles of this profile closer than 'closest' would have been one spot where the spots were found; spots
-		// that close are not both such particles (bright marks burned into the frame: a timestamp's digits 6 px apart
-		// among particles 20-50 px across gave a diameter of 5.6 px and a threshold above every pixel). Their distances
-		// are left out of the spacing, and the profile measured again. Not when no two spots are left: in a field with
-		// no background between the particles (a lattice at contact) the profile holds the neighbours' light, and two
-		// of it would never stay apart.
-		if (fromSpots > 0 && !apart(m, fromSpots, s.level())) {
-			final double closest = closestApart(m, fromSpots, s.level());
-			final double[] kept = Arrays.stream(spacing).filter(d -> d >= closest).toArray();
-			if (kept.length >= 2) {
-				findings.add(new Finding.SpotsTooClose(spacing.length - kept.length, closest));
-				spacing = kept;
-				fromSpots = Statistics.quantile(kept.clone(), DIAMETER_PERCENTILE / 100);
-				provisional = Math.min(fromSpots, fromCores);
-				m = measure(plane, s, at, provisional, maxRadiusGiven, true);
-			}
-		}
-		final double own = 2 * m.imageEdge();
-		final boolean fromImage = !(fromSpots < own);
-		final double diameter = fromImage ? own : fromSpots;
-		if (Math.abs(diameter - provisional) > 0.01 * provisional) m = measure(plane, s, at, diameter, maxRadiusGiven,
-			true);
-		findings.add(fromImage ? new Finding.DiameterFromImage(diameter, own / 2) : new Finding.DiameterFromSpacing(
-			diameter, DIAMETER_PERCENTILE, spacing.length, own));
-		findings.addAll(m.findings());
-		return new Sized(diameter, true, m);
-	}
-
-	/**
-	 * @return whether two particles of {@code m}'s profile {@code distance} apart (and three in a triangle) stay apart
-	 *         at {@code level}: the brightest point between them lies below it
-	 */
-	private static boolean apart(final Measured m, final double distance, final double level) {
-		return m.pooled().background() + ThresholdRules.brightestBetween(m.pooled(), distance, m.reach()) < level;
-	}
-
-	/**
-	 * @return the shortest distance (to {@value #BRIDGE_STEP_PX} px, above {@code from}, at which they are not) at
-	 *         which particles of {@code m}'s profile stay {@link #apart} at {@code level}; beyond twice the profile's
-	 *         reach if they never do within it
-	 */
-	private static double closestApart(final Measured m, final double from, final double level) {
-		double lo = from, hi = 2 * m.reach() + 1;
-		if (!apart(m, hi, level)) return hi;
-		while (hi - lo > BRIDGE_STEP_PX) {
-			final double mid = (lo + hi) / 2;
-			if (apart(m, mid, level)) hi = mid;
-			else lo = mid;
-		}
-		return hi;
-	}
-
-	/**
 	 * The suggested threshold and what it was raised from.
 	 *
 	 * @param bridge the brightest grey level between particles at contact
@@ -540,7 +408,7 @@ public final class ProfileAnalysis {
 		final double clear = Math.max(atContact, Double.isNaN(gap[0]) ? atContact : pooled.background() + (gap[0] +
 			gap[1]) / 2);
 		if (clear > atContact) findings.add(new Finding.BackgroundTexture(atContact, (int) gap[2], gap[0], gap[1]));
-		final double peak = peak(plane, centre[0], centre[1], Math.max(2, diameter / 4));
+		final double peak = FrameSpots.peak(plane, centre[0], centre[1], Math.max(2, diameter / 4));
 		final double ceiling = pooled.background() + 0.5 * (peak - pooled.background());
 		final double[] shaped = ThresholdRules.roundFrom(plane, clear, ceiling, Math.max(0.5, pooled.noise() / 2),
 			minArea);
@@ -596,180 +464,6 @@ public final class ProfileAnalysis {
 	}
 
 	/**
-	 * The profile of the particles chosen for a diameter: their centres, how far out it is measured, the pooled
-	 * profile, its reach and where the particles' own image ends
-	 * ({@link PooledProfile#imageEdge(PooledProfile, double)}).
-	 *
-	 * @param at the centre of the particle at the point given (whether profiled or not), {@code null} without a point
-	 */
-	private record Measured(List<double[]> centres, double[] at, boolean refined, double radiusCap,
-		PooledProfile pooled, double reach, double imageEdge, List<Finding> findings) {
-
-		Measured withAt(final double[] point, final boolean pointRefined, final List<Finding> more) {
-			final List<Finding> all = new ArrayList<>(more);
-			all.addAll(findings);
-			return new Measured(centres, point, pointRefined, radiusCap, pooled, reach, imageEdge, all);
-		}
-	}
-
-	/**
-	 * Steps 3-6: picks the particles (the one at {@code point}, else the most isolated), masks their neighbours and
-	 * pools their profile, twice (the masks widened to the measured reach the second time).
-	 * <p>
-	 * A particle at a point is profiled alone only when it is isolated: its nearest neighbour, and the image's edge
-	 * (beyond which a neighbour goes unseen), at least twice {@code r_out} away (the reach plus
-	 * {@value #R_OUT_MARGIN_PX} px, measured on the frame's most isolated particles or on the particle alone,
-	 * whichever is larger), so that no pixel holds the light of both and the neighbours' masks leave its own pixels.
-	 * Closer, its profile never returns to the background between it and its neighbours: its own background, noise
-	 * and reach would be the neighbours' halos (a reach of twice the true one, masks that swallow the particle
-	 * itself), so the profile and the values are the frame's most isolated particles' instead (as without a point),
-	 * and said ({@link Finding.FrameValuesAtPoint}).
-	 *
-	 * @param narrow whether the masks may narrow where they leave no background ({@link PooledProfile#poolNarrowing}):
-	 *        for an
-	 *        estimated diameter; a given one that leaves none is wrong for the image, and the front ends say so and
-	 *        estimate it instead
-	 */
-	private static Measured measure(final Plane plane, final Spots s, final double[] point, final double diameter,
-		final double maxRadiusGiven, final boolean narrow)
-	{
-		final List<Localization> spots = s.spots();
-		final double[][] xy = s.xy();
-		final double wanted = maxRadiusGiven > 0 ? maxRadiusGiven : AUTO_RADIUS_DIAMETERS * diameter;
-		if (point == null) {
-			final List<Finding> findings = new ArrayList<>();
-			final List<Integer> chosen = mostIsolated(plane, s, diameter, wanted);
-			if (chosen.isEmpty()) throw new InvalidInputException("no single particle away from the border found in " +
-				"the frame: give a point on one");
-			if (s.nn().length > 1 && s.nn()[chosen.get(0)] < 2 * diameter)
-				findings.add(new Finding.NotIsolated(s.nn()[chosen.get(0)], diameter));
-			return pooledTwice(plane, s, centresOf(xy, chosen), diameter, wanted, narrow, findings);
-		}
-		final List<Finding> findings = new ArrayList<>();
-		int best = -1;
-		for (int k = 0; k < xy.length; k++) {
-			final double d = Math.hypot(xy[k][0] - point[0], xy[k][1] - point[1]);
-			if (d <= Math.max(s.near(), diameter / 2) && (best < 0 || d < Math.hypot(xy[best][0] - point[0], xy[best][1] -
-				point[1]))) best = k;
-		}
-		final double[] own;
-		if (best >= 0) {
-			own = xy[best];
-			if (spots.get(best).has(Flag.MERGED) && outlineMerged(plane, s.level(), own)) findings.add(
-				new Finding.MergedAtPoint());
-		}
-		else {
-			own = point;
-			findings.add(new Finding.NotRefined());
-		}
-		double neighbour = Double.POSITIVE_INFINITY;
-		for (int k = 0; k < xy.length; k++)
-			if (k != best) neighbour = Math.min(neighbour, Math.hypot(xy[k][0] - own[0], xy[k][1] - own[1]));
-		// beyond the image's edge a neighbour goes unseen: the edge counts as one
-		final double edge = Math.min(Math.min(own[0], plane.width() - 1 - own[0]), Math.min(own[1], plane.height() - 1 -
-			own[1]));
-		final boolean byEdge = edge < neighbour;
-		neighbour = Math.min(neighbour, edge);
-		final List<Integer> frame = mostIsolated(plane, s, diameter, wanted);
-		Measured m = null;
-		if (!frame.isEmpty()) {
-			try {
-				m = pooledTwice(plane, s, centresOf(xy, frame), diameter, wanted, narrow, new ArrayList<>());
-			}
-			catch (final InvalidInputException e) {
-				m = null; // the frame's particles have no background: the particle is measured alone
-			}
-		}
-		Measured alone = null;
-		final List<Finding> ownFindings = new ArrayList<>();
-		try {
-			alone = pooledTwice(plane, s, List.of(own), diameter, wanted, narrow, ownFindings);
-		}
-		catch (final InvalidInputException e) {
-			if (m == null) throw e;
-		}
-		// r_out as the frame gives it or as the particle alone does, whichever reaches further
-		final double rOut = Math.max(m == null ? 0 : m.reach(), alone == null ? 0 : alone.reach()) + R_OUT_MARGIN_PX;
-		if (m != null && (alone == null || neighbour < 2 * rOut)) {
-			findings.add(new Finding.FrameValuesAtPoint(neighbour, byEdge, m.reach() + R_OUT_MARGIN_PX, alone == null
-				? Double.NaN : alone.reach() + R_OUT_MARGIN_PX, m.centres().size()));
-			return m.withAt(own, best >= 0, findings);
-		}
-		return alone.withAt(own, best >= 0, findings);
-	}
-
-	/**
-	 * Whether the active area at {@code level} that holds the pixel nearest {@code at} has the outline of several
-	 * particles ({@link ComponentShape#outlineMerged}: elongated, or with a bay). The spot finder also flags an
-	 * area whose gradient lines miss one another, as a saturated core's flat top makes them: a particle larger or
-	 * brighter than the rest, not merged, and no reason to send the user to another.
-	 */
-	private static boolean outlineMerged(final Plane plane, final double level, final double[] at) {
-		final int x = (int) Math.round(at[0]), y = (int) Math.round(at[1]);
-		for (final Region r : ComponentLabeling.label(plane, level, Connectivity.EIGHT))
-			for (int k = 0; k < r.runCount(); k++)
-				if (r.runY(k) == y && r.runStart(k) <= x && x <= r.runEnd(k)) return ComponentShape.of(r).outlineMerged(
-					false);
-		return false;
-	}
-
-	/**
-	 * The spots to profile when no point is given: the ones with the largest distances to their nearest neighbours,
-	 * none merged, degenerate or near the border, at most {@value #MAX_PARTICLES}, down to half the first one's
-	 * distance (or {@code wanted}).
-	 */
-	private static List<Integer> mostIsolated(final Plane plane, final Spots s, final double diameter,
-		final double wanted)
-	{
-		final int w = plane.width(), h = plane.height();
-		final double[][] xy = s.xy();
-		final double[] nn = s.nn();
-		final Integer[] order = new Integer[xy.length];
-		for (int k = 0; k < order.length; k++)
-			order[k] = k;
-		Arrays.sort(order, Comparator.comparingDouble(k -> -nn[k]));
-		final List<Integer> chosen = new ArrayList<>();
-		for (final int k : order) {
-			final Localization spot = s.spots().get(k);
-			if (spot.has(Flag.MERGED) || spot.has(Flag.AT_BORDER) || spot.has(Flag.DEGENERATE)) continue;
-			if (xy[k][0] < diameter / 2 || xy[k][1] < diameter / 2 || xy[k][0] > w - 1 - diameter / 2 || xy[k][1] > h - 1 -
-				diameter / 2) continue;
-			if (!chosen.isEmpty() && nn[k] < Math.min(wanted, 0.5 * nn[chosen.get(0)])) break;
-			chosen.add(k);
-			if (chosen.size() == MAX_PARTICLES) break;
-		}
-		return chosen;
-	}
-
-	private static List<double[]> centresOf(final double[][] xy, final List<Integer> chosen) {
-		final List<double[]> centres = new ArrayList<>();
-		for (final int k : chosen)
-			centres.add(xy[k]);
-		return centres;
-	}
-
-	/**
-	 * Pools the profile of {@code centres} (the first one's window sets how far out), masking the other spots within
-	 * a diameter, then again within the measured reach plus the margin.
-	 */
-	private static Measured pooledTwice(final Plane plane, final Spots s, final List<double[]> centres,
-		final double diameter, final double wanted, final boolean narrow,
-		final List<Finding> findings)
-	{
-		final double radiusCap = Math.min(wanted, farthestCorner(centres.get(0)[0], centres.get(0)[1], plane.width(),
-			plane.height()));
-		final double narrowest = narrow ? diameter / 2 : Double.POSITIVE_INFINITY;
-		PooledProfile pooled = PooledProfile.poolNarrowing(plane, centres, s.xy(), diameter, radiusCap, narrowest,
-			null);
-		double reach = PooledProfile.reach(pooled, radiusCap, null);
-		pooled = PooledProfile.poolNarrowing(plane, centres, s.xy(), Math.max(diameter, reach + R_OUT_MARGIN_PX),
-			radiusCap, narrowest, findings);
-		reach = PooledProfile.reach(pooled, radiusCap, findings);
-		return new Measured(pooled.centres(), null, true, radiusCap, pooled, reach, PooledProfile.imageEdge(pooled,
-			reach), findings);
-	}
-
-	/**
 	 * @return the area of the disc of radius {@code a} about the origin outside the disc of radius {@code r} whose
 	 *         centre lies {@code d} away (the circles' lens formula)
 	 */
@@ -784,29 +478,6 @@ public final class ProfileAnalysis {
 		return Math.max(0, whole - lens);
 	}
 
-	/** Distance of each point to its nearest other point (infinite for a lone point). */
-	static double[] nearestNeighbourDistances(final double[][] xy) {
-		final double[] nn = new double[xy.length];
-		Arrays.fill(nn, Double.POSITIVE_INFINITY);
-		for (int i = 0; i < xy.length; i++)
-			for (int j = i + 1; j < xy.length; j++) {
-				final double d = Math.hypot(xy[i][0] - xy[j][0], xy[i][1] - xy[j][1]);
-				nn[i] = Math.min(nn[i], d);
-				nn[j] = Math.min(nn[j], d);
-			}
-		return nn;
-	}
-
-	/** Up to about a million pixels of the frame on a regular grid. */
-	private static double[] sample(final Plane plane) {
-		final long n = (long) plane.width() * plane.height();
-		final int stride = (int) Math.max(1, Math.ceil(Math.sqrt(n / 1e6)));
-		final DoubleList s = new DoubleList();
-		for (int y = 0; y < plane.height(); y += stride)
-			for (int x = 0; x < plane.width(); x += stride)
-				s.add(plane.get(x, y));
-		return s.toArray();
-	}
 
 
 	/**
@@ -821,33 +492,16 @@ public final class ProfileAnalysis {
 
 	/**
 	 * @return whether the frame's darkest pixel lies more than {@link #DARK_RATIO} times as far below its median as
-	 *         its brightest above it (the pixels as {@link #findSpots} samples them): particles darker than the
+	 *         its brightest above it (the pixels as {@link FrameSpots#find} samples them): particles darker than the
 	 *         background, to be inverted first ({@code core.image.Inversion})
 	 */
 	@SuppressWarnings({ "rawtypes", "unchecked" })
 	public static boolean looksDark(final RandomAccessibleInterval<? extends RealType<?>> frame) {
-		final double[] v = sample(Plane.of((RandomAccessibleInterval) frame));
+		final double[] v = FrameSpots.sample(Plane.of((RandomAccessibleInterval) frame));
 		final double median = Statistics.quantile(v, 0.5); // sorted by it
 		return median - v[0] > DARK_RATIO * (v[v.length - 1] - median);
 	}
 
-
-	private static double peak(final Plane plane, final double cx, final double cy, final double within) {
-		double peak = Double.NEGATIVE_INFINITY;
-		final int x0 = (int) Math.max(0, Math.floor(cx - within)), x1 = (int) Math.min(plane.width() - 1, Math.ceil(cx +
-			within));
-		final int y0 = (int) Math.max(0, Math.floor(cy - within)), y1 = (int) Math.min(plane.height() - 1, Math.ceil(
-			cy + within));
-		for (int y = y0; y <= y1; y++)
-			for (int x = x0; x <= x1; x++)
-				if (Math.hypot(x - cx, y - cy) <= within) peak = Math.max(peak, plane.get(x, y));
-		return peak;
-	}
-
-	private static double farthestCorner(final double x, final double y, final int w, final int h) {
-		final double dx = Math.max(x, w - 1 - x), dy = Math.max(y, h - 1 - y);
-		return Math.hypot(dx, dy);
-	}
 
 	static double round2(final double v) {
 		return Math.round(v * 100) / 100.0;
