@@ -134,7 +134,7 @@ record ProfiledParticles(List<double[]> centres, double[] at, boolean refined, d
 			alone = pooledTwice(plane, s, List.of(own), diameter, wanted, narrow, ownFindings);
 		}
 		catch (final InvalidInputException e) {
-			if (m == null) throw e;
+			if (m == null) throw best >= 0 ? e : noParticleAt(plane, point, xy);
 		}
 		// r_out as the frame gives it or as the particle alone does, whichever reaches further
 		final double rOut = Math.max(m == null ? 0 : m.reach(), alone == null ? 0 : alone.reach()) +
@@ -221,5 +221,26 @@ record ProfiledParticles(List<double[]> centres, double[] at, boolean refined, d
 	private static double farthestCorner(final double x, final double y, final int w, final int h) {
 		final double dx = Math.max(x, w - 1 - x), dy = Math.max(y, h - 1 - y);
 		return Math.hypot(dx, dy);
+	}
+
+	/**
+	 * @return the refusal of a point that is on no particle found, naming the nearest spot (the frame's own
+	 *         measurement failed too, so there is nothing to give instead), in the image's coordinates
+	 */
+	private static InvalidInputException noParticleAt(final Plane plane, final double[] point, final double[][] xy) {
+		final double ox = plane.minX(), oy = plane.minY();
+		int nearest = -1;
+		double d = Double.POSITIVE_INFINITY;
+		for (int k = 0; k < xy.length; k++) {
+			final double e = Math.hypot(xy[k][0] - point[0], xy[k][1] - point[1]);
+			if (e < d) {
+				d = e;
+				nearest = k;
+			}
+		}
+		return new InvalidInputException(String.format(java.util.Locale.ROOT, "no particle found at (%.0f, %.0f)%s: " +
+			"give a point on a particle", point[0] + ox, point[1] + oy, nearest < 0 ? "" : String.format(
+				java.util.Locale.ROOT, " (the nearest spot is at (%.1f, %.1f), %.1f px away)", xy[nearest][0] + ox,
+				xy[nearest][1] + oy, d)));
 	}
 }
