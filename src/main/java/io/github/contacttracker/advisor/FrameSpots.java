@@ -21,6 +21,7 @@
  */
 package io.github.contacttracker.advisor;
 
+import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
@@ -50,10 +51,12 @@ import io.github.contacttracker.core.track.ContactTracker;
 record FrameSpots(List<Localization> spots, double[][] xy, double[] nn, double near, double level) {
 
 	/**
-	 * Step 1: the spots at half height between the frame's median and its brightest pixels (or the brightest pixel
-	 * near the point given, when that lies below the frame's half height), by one radial-symmetry pass. The same
-	 * spots with a point as without, wherever the particle at the point is among them: the frame's values, when the
-	 * particle at a point gives them ({@link ProfiledParticles#measure}), are then those of the frame.
+	 * Step 1: the spots at half height between the frame's median and its brightest pixels, by one radial-symmetry
+	 * pass: the same spots with a point as without, so that the frame's values (its diameter, its most isolated
+	 * particles) do not depend on where the point was given. A particle at the point fainter than that half height
+	 * (its brightest pixel below it) is found by a second pass at half its own height and added: only the spot of
+	 * that pass nearest to the point, within {@link #near} of it; a point on the background or on a halo adds none
+	 * and is then no particle's ({@link ProfiledParticles#measure} says so).
 	 *
 	 * @param point the point given, in the frame's coordinates ({@code null} if none)
 	 * @param at the same point in the plane's coordinates
@@ -67,25 +70,50 @@ record FrameSpots(List<Localization> spots, double[][] xy, double[] nn, double n
 		final double noise0 = Math.max(NoiseEstimate.sigma(plane), 1e-6);
 		final double near = diameterGiven > 0 ? Math.max(2, diameterGiven / 4) : 5;
 		final double frameTop = Statistics.quantile(sample, 1 - Math.max(1e-4, 20.0 / sample.length));
-		// the frame's spots, as without a point, unless the particle at the point would not be among them
 		final double own = point != null ? peak(plane, at[0], at[1], near) : frameTop;
-		final double top = own >= median0 + 0.5 * (frameTop - median0) ? frameTop : own;
-		if (!(top - median0 > ProfileAnalysis.THRESHOLD_MARGIN_SIGMAS * noise0)) {
-			if (point != null) throw new InvalidInputException(String.format(Locale.ROOT, "no bright particle at " +
-				"(%s, %s): the brightest pixel within %s px is %s, within %s noise sigmas (%s) of the background %s",
-				ProfileAnalysis.fmt(point[0]), ProfileAnalysis.fmt(point[1]), ProfileAnalysis.fmt(near), ProfileAnalysis
-					.fmt(top), ProfileAnalysis.fmt(ProfileAnalysis.THRESHOLD_MARGIN_SIGMAS), ProfileAnalysis.fmt(noise0),
-				ProfileAnalysis.fmt(median0)));
+		if (point != null && !(own - median0 > ProfileAnalysis.THRESHOLD_MARGIN_SIGMAS * noise0))
+			throw new InvalidInputException(String.format(Locale.ROOT, "no bright particle at (%s, %s): the brightest " +
+				"pixel within %s px is %s, within %s noise sigmas (%s) of the background %s", ProfileAnalysis.fmt(
+					point[0]), ProfileAnalysis.fmt(point[1]), ProfileAnalysis.fmt(near), ProfileAnalysis.fmt(own),
+				ProfileAnalysis.fmt(ProfileAnalysis.THRESHOLD_MARGIN_SIGMAS), ProfileAnalysis.fmt(noise0), ProfileAnalysis
+					.fmt(median0)));
+		if (!(frameTop - median0 > ProfileAnalysis.THRESHOLD_MARGIN_SIGMAS * noise0))
 			throw new InvalidInputException("no particle brighter than the noise in the frame");
+		final double level = median0 + 0.5 * (frameTop - median0);
+		final List<Localization> spots = new ArrayList<>(spotsAt(plane, level));
+		// a particle at the point fainter than the frame's half height: found at half its own height, and added
+		if (point != null && own < level && nearest(spots, plane, at, near) < 0) {
+			final List<Localization> faint = spotsAt(plane, median0 + 0.5 * (own - median0));
+			final int k = nearest(faint, plane, at, near);
+			if (k >= 0) spots.add(faint.get(k));
 		}
-		final double level = median0 + 0.5 * (top - median0);
-		final TrackerParameters find = new TrackerParameters(level, 10, 5, Connectivity.EIGHT,
-			TrackerParameters.DEFAULT_MIN_SECOND_AREA, Method.FIRST);
-		final List<Localization> spots = new ContactTracker(find).analyse(plane, 0, false).spots();
 		final double[][] xy = new double[spots.size()][];
 		for (int k = 0; k < xy.length; k++)
 			xy[k] = new double[] { spots.get(k).x() - plane.minX(), spots.get(k).y() - plane.minY() };
 		return new FrameSpots(spots, xy, nearestNeighbourDistances(xy), near, level);
+	}
+
+	/** @return the spots of the frame at grey level {@code level}, by one radial-symmetry pass */
+	private static List<Localization> spotsAt(final Plane plane, final double level) {
+		final TrackerParameters find = new TrackerParameters(level, 10, 5, Connectivity.EIGHT,
+			TrackerParameters.DEFAULT_MIN_SECOND_AREA, Method.FIRST);
+		return new ContactTracker(find).analyse(plane, 0, false).spots();
+	}
+
+	/** @return the index of the spot nearest to {@code at} (plane coordinates) within {@code near} of it, or -1 */
+	private static int nearest(final List<Localization> spots, final Plane plane, final double[] at,
+		final double near)
+	{
+		int best = -1;
+		double d = near;
+		for (int k = 0; k < spots.size(); k++) {
+			final double e = Math.hypot(spots.get(k).x() - plane.minX() - at[0], spots.get(k).y() - plane.minY() - at[1]);
+			if (e <= d) {
+				d = e;
+				best = k;
+			}
+		}
+		return best;
 	}
 
 	/** Distance of each point to its nearest other point (infinite for a lone point). */

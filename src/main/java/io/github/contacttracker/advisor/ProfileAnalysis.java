@@ -48,8 +48,8 @@ import net.imglib2.type.numeric.RealType;
  * across the frame, dense neighbours and compression (MJPEG) noise.
  * <ol>
  * <li>Particles: the frame's bright spots at half height between the frame's median and its brightest pixels
- * (a point given on a particle fainter than that: half its brightest pixel's height), localized by one
- * radial-symmetry pass; merged spots (by shape) and spots at the border are not profiled.</li>
+ * (the same with a point as without; a particle at the point fainter than that is added, found at half its own
+ * height), localized by one radial-symmetry pass; merged spots (by shape) and spots at the border are not profiled.</li>
  * <li>Diameter {@code D}: given, or the smaller of the 10th percentile of the spots' nearest-neighbour distances
  * (colloids at contact sit one diameter apart) and twice where the particles' own image ends (the outer edge of a
  * dark ring, else the reach), read off a profile taken to a provisional diameter and measured again at the

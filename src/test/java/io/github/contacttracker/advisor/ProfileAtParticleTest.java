@@ -143,4 +143,37 @@ class ProfileAtParticleTest {
 			r -= 0.01;
 		return r;
 	}
+
+	/**
+	 * A point on no particle: on a particle's bright halo, the frame's values (before, the spots were found at the
+	 * point's own height, and the halos' fringes taken for particles halved the diameter); on the bare background, a
+	 * refusal in one line that says no particle is there.
+	 */
+	@Test
+	void aPointOnNoParticleGivesTheFramesValuesOrSaysNoneIsThere() {
+		final RandomAccessibleInterval<UnsignedByteType> frame = frame(1);
+		final ProfileAnalysis.Result all = ProfileAnalysis.analyse(frame, 0, 0);
+		final long hx = Math.round(ISOLATED[0] + 26), hy = Math.round(ISOLATED[1]);
+		final ProfileAnalysis.Result halo = ProfileAnalysis.analyse(frame, hx, hy, 0, 0);
+		assertEquals(all.diameter(), halo.diameter(), 1e-9, "the frame's diameter");
+		assertEquals(all.threshold(), halo.threshold(), 1e-9, "the frame's threshold");
+		assertEquals(all.rOut(), halo.rOut(), 1e-9, "the frame's r_out");
+		final List<double[]> centres = field(new SplittableRandom(1));
+		long bx = -1, by = -1;
+		for (int y = 20; y < H - 20 && bx < 0; y += 5)
+			for (int x = 20; x < W - 20 && bx < 0; x += 5) {
+				boolean far = true;
+				for (final double[] c : centres)
+					far &= Math.hypot(c[0] - x, c[1] - y) > 80;
+				if (far) {
+					bx = x;
+					by = y;
+				}
+			}
+		assertTrue(bx >= 0, "a background point exists in the frame");
+		final long px = bx, py = by;
+		final io.github.contacttracker.core.InvalidInputException e = org.junit.jupiter.api.Assertions.assertThrows(
+			io.github.contacttracker.core.InvalidInputException.class, () -> ProfileAnalysis.analyse(frame, px, py, 0, 0));
+		assertTrue(e.getMessage().startsWith("no bright particle at (" + px + ", " + py + ")"), e.getMessage());
+	}
 }
