@@ -30,6 +30,8 @@ import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.util.Map;
 import java.util.concurrent.ExecutionException;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
 
 import org.scijava.Cancelable;
 import org.scijava.Context;
@@ -47,7 +49,8 @@ final class CommandRuns {
 	private CommandRuns() {}
 
 	/**
-	 * @return the module run; an exception that escaped the command is an assertion error naming the case
+	 * @return the module run; an exception that escaped the command, or no answer within {@link FuzzCase#timeout()}
+	 *         seconds, is an assertion error naming the case
 	 */
 	static Module run(final Context context, final Class<? extends Command> command, final Map<String, Object> inputs,
 		final String what) throws InterruptedException
@@ -55,7 +58,11 @@ final class CommandRuns {
 		final PrintStream out = System.out, err = System.err;
 		quiet();
 		try {
-			return context.service(CommandService.class).run(command, true, inputs).get();
+			return context.service(CommandService.class).run(command, true, inputs).get(FuzzCase.timeout(),
+				TimeUnit.SECONDS);
+		}
+		catch (final TimeoutException e) {
+			throw new AssertionError("no answer in " + FuzzCase.timeout() + " s (a hang?): " + what);
 		}
 		catch (final ExecutionException e) {
 			throw new AssertionError("an exception escaped the command: " + what, e.getCause());

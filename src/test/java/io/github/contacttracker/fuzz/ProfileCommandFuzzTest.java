@@ -94,6 +94,27 @@ class ProfileCommandFuzzTest extends WithContext {
 		assertTrue(measured > 0 && refused > 0, measured + " measured, " + refused + " refused");
 	}
 
+	/**
+	 * Found by this fuzz (seed 7, case seed 610438763714647442): a diameter far beyond the frame (1e6 px on a 4 x 96
+	 * image) kept the Profile command, and {@code profile --diameter}, busy for hours in the threshold's search
+	 * between touching particles, whose work grows as the diameter squared. Now refused in one line naming the
+	 * diameter and the frame.
+	 */
+	@Test
+	void aDiameterWiderThanTheFrameIsRefusedInOneLine() throws Exception {
+		final ij.process.ByteProcessor ip = new ij.process.ByteProcessor(4, 96);
+		for (int y = 0; y < 96; y++)
+			for (int x = 0; x < 4; x++)
+				ip.set(x, y, (int) (20 + 200 * Math.exp(-((y - 32) * (y - 32)) / 8.0)));
+		final ImagePlus imp = new ImagePlus("thin", ip);
+		imp.setRoi(new PointRoi(3, 32));
+		final Map<String, Object> inputs = new LinkedHashMap<>(Map.of("imp", imp, "diameter", 1e6, "plot", false));
+		final Module m = CommandRuns.run(context, ContactTrackerProfileCommand.class, inputs, "diameter 1e6");
+		assertTrue(CommandRuns.refused(m, "diameter 1e6"), "refused");
+		final String reason = ((org.scijava.Cancelable) m).getCancelReason();
+		assertTrue(reason.startsWith("diameter 1000000 px is wider than the frame (4 x 96 px)"), reason);
+	}
+
 	/** @return the selection given to the image, for a failure's message */
 	private static String select(final SplittableRandom r, final ImagePlus imp) {
 		final int w = imp.getWidth(), h = imp.getHeight();
