@@ -304,6 +304,10 @@ public final class ProfileAnalysis {
 	{
 		checkArguments(diameterGiven, maxRadiusGiven);
 		final Plane plane = Plane.of(frame);
+		// a particle wider than the frame cannot be profiled, and the helper's work grows as the diameter squared
+		if (diameterGiven > Math.max(plane.width(), plane.height()))
+			throw new InvalidInputException("diameter " + fmt(diameterGiven) + " px is wider than the frame (" + plane
+				.width() + " x " + plane.height() + " px): give the particle diameter in pixels, or 0 to estimate it");
 		final double[] at = point == null ? null : local(plane, point);
 		final FrameSpots spots = FrameSpots.find(plane, point, at, diameterGiven);
 		final List<Finding> findings = new ArrayList<>();

@@ -25,11 +25,9 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.io.ByteArrayOutputStream;
 import java.io.File;
 import java.io.IOException;
 import java.io.PrintStream;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -38,7 +36,6 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.SplittableRandom;
-import java.util.concurrent.ExecutionException;
 
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
@@ -280,18 +277,7 @@ class FijiCommandFuzzTest extends WithContext {
 	{
 		final Map<String, Object> all = new LinkedHashMap<>(inputs);
 		all.put("imp", imp);
-		final PrintStream out = System.out, err = System.err;
-		quiet();
-		try {
-			return context.service(CommandService.class).run(ContactTrackerCommand.class, true, all).get();
-		}
-		catch (final ExecutionException e) {
-			throw new AssertionError("an exception escaped the command: " + what, e.getCause());
-		}
-		finally {
-			System.setOut(out);
-			System.setErr(err);
-		}
+		return CommandRuns.run(context, ContactTrackerCommand.class, all, what);
 	}
 
 	/**
@@ -323,7 +309,7 @@ class FijiCommandFuzzTest extends WithContext {
 		}, "fuzz-macro");
 		Macro.setOptions(thread, options.isEmpty() ? " " : options);
 		final PrintStream out = System.out, err = System.err;
-		quiet();
+		CommandRuns.quiet();
 		try {
 			thread.start();
 			thread.join();
@@ -335,13 +321,6 @@ class FijiCommandFuzzTest extends WithContext {
 		}
 		if (escaped[0] != null) throw new AssertionError("an exception escaped the command: " + what, escaped[0]);
 		return module;
-	}
-
-	/** Headless, the command's summary and errors go to the standard streams: not into the test's output. */
-	private static void quiet() {
-		final PrintStream sink = new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8);
-		System.setOut(sink);
-		System.setErr(sink);
 	}
 
 	/** Every spot has finite coordinates, within the image's extent unless it is flagged. */

@@ -101,7 +101,7 @@ class PotentialFuzzTest {
 	}
 
 	/** @return a random spots table: mostly well formed, so that the computation is reached as often as a refusal */
-	private static List<String> table(final SplittableRandom r) {
+	static List<String> table(final SplittableRandom r) {
 		final List<String> lines = new ArrayList<>();
 		if (r.nextInt(20) == 0) return lines; // empty
 		final List<String> columns = new ArrayList<>(List.of("ID", "FRAME", "POSITION_X", "POSITION_Y",
