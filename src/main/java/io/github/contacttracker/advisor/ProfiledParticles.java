@@ -94,12 +94,9 @@ record ProfiledParticles(List<double[]> centres, double[] at, boolean refined, d
 			return pooledTwice(plane, s, centresOf(xy, chosen), diameter, wanted, narrow, findings);
 		}
 		final List<Finding> findings = new ArrayList<>();
-		int best = -1;
-		for (int k = 0; k < xy.length; k++) {
-			final double d = Math.hypot(xy[k][0] - point[0], xy[k][1] - point[1]);
-			if (d <= Math.max(s.near(), diameter / 2) && (best < 0 || d < Math.hypot(xy[best][0] - point[0], xy[best][1] -
-				point[1]))) best = k;
-		}
+		// the particle at the point: the spot nearest to it, if near enough
+		final int nearest = nearest(xy, point);
+		final int best = nearest >= 0 && distance(xy[nearest], point) <= Math.max(s.near(), diameter / 2) ? nearest : -1;
 		final double[] own;
 		if (best >= 0) {
 			own = xy[best];
@@ -112,7 +109,7 @@ record ProfiledParticles(List<double[]> centres, double[] at, boolean refined, d
 		}
 		double neighbour = Double.POSITIVE_INFINITY;
 		for (int k = 0; k < xy.length; k++)
-			if (k != best) neighbour = Math.min(neighbour, Math.hypot(xy[k][0] - own[0], xy[k][1] - own[1]));
+			if (k != best) neighbour = Math.min(neighbour, distance(xy[k], own));
 		// beyond the image's edge a neighbour goes unseen: the edge counts as one
 		final double edge = Math.min(Math.min(own[0], plane.width() - 1 - own[0]), Math.min(own[1], plane.height() - 1 -
 			own[1]));
@@ -134,7 +131,7 @@ record ProfiledParticles(List<double[]> centres, double[] at, boolean refined, d
 			alone = pooledTwice(plane, s, List.of(own), diameter, wanted, narrow, ownFindings);
 		}
 		catch (final InvalidInputException e) {
-			if (m == null) throw best >= 0 ? e : noParticleAt(plane, point, xy);
+			if (m == null) throw best >= 0 ? e : noParticleAt(plane, point, xy, nearest);
 		}
 		// r_out as the frame gives it or as the particle alone does, whichever reaches further
 		final double rOut = Math.max(m == null ? 0 : m.reach(), alone == null ? 0 : alone.reach()) +
@@ -224,23 +221,35 @@ record ProfiledParticles(List<double[]> centres, double[] at, boolean refined, d
 	}
 
 	/**
-	 * @return the refusal of a point that is on no particle found, naming the nearest spot (the frame's own
-	 *         measurement failed too, so there is nothing to give instead), in the image's coordinates
+	 * @return the refusal of a point that is on no particle found, naming the nearest spot ({@code nearest}, -1 if
+	 *         none; the frame's own measurement failed too, so there is nothing to give instead), in the image's
+	 *         coordinates
 	 */
-	private static InvalidInputException noParticleAt(final Plane plane, final double[] point, final double[][] xy) {
+	private static InvalidInputException noParticleAt(final Plane plane, final double[] point, final double[][] xy,
+		final int nearest)
+	{
 		final double ox = plane.minX(), oy = plane.minY();
+		return new InvalidInputException(String.format(java.util.Locale.ROOT, "no particle found at (%.0f, %.0f)%s: " +
+			"give a point on a particle", point[0] + ox, point[1] + oy, nearest < 0 ? "" : String.format(
+				java.util.Locale.ROOT, " (the nearest spot is at (%.1f, %.1f), %.1f px away)", xy[nearest][0] + ox,
+				xy[nearest][1] + oy, distance(xy[nearest], point))));
+	}
+
+	/** @return the index of the point of {@code xy} nearest to {@code at} (the first of equals), -1 if none */
+	private static int nearest(final double[][] xy, final double[] at) {
 		int nearest = -1;
 		double d = Double.POSITIVE_INFINITY;
 		for (int k = 0; k < xy.length; k++) {
-			final double e = Math.hypot(xy[k][0] - point[0], xy[k][1] - point[1]);
+			final double e = distance(xy[k], at);
 			if (e < d) {
 				d = e;
 				nearest = k;
 			}
 		}
-		return new InvalidInputException(String.format(java.util.Locale.ROOT, "no particle found at (%.0f, %.0f)%s: " +
-			"give a point on a particle", point[0] + ox, point[1] + oy, nearest < 0 ? "" : String.format(
-				java.util.Locale.ROOT, " (the nearest spot is at (%.1f, %.1f), %.1f px away)", xy[nearest][0] + ox,
-				xy[nearest][1] + oy, d)));
+		return nearest;
+	}
+
+	private static double distance(final double[] a, final double[] b) {
+		return Math.hypot(a[0] - b[0], a[1] - b[1]);
 	}
 }
