@@ -104,16 +104,8 @@ final class TrackCommand extends ContactTrackerCli.Subcommand {
 			"movie's CSV itself: give it without --csv and --trackmate-xml");
 		if (movies.size() > 1 && outDir == null) throw new InvalidInputException(movies.size() + " movies need " +
 			"--out-dir DIR (each movie's spots go to DIR/NAME.csv)");
-		final Path made = outDir == null ? null : io.github.contacttracker.io.OutputFolder.missing(outDir);
-		try {
-			final int status = run(movies, settings, outDir, csv, xml);
-			if (status != 0) io.github.contacttracker.io.OutputFolder.removeEmpty(made, outDir);
-			return status;
-		}
-		catch (final RuntimeException | IOException e) {
-			if (outDir != null) io.github.contacttracker.io.OutputFolder.removeEmpty(made, outDir);
-			throw e;
-		}
+		return io.github.contacttracker.io.OutputFolder.removedIfRefused(outDir, () -> run(movies, settings, outDir, csv,
+			xml));
 	}
 
 	/** Tracks the movies into their outputs; @return the exit status (some of several movies failed: 2) */

@@ -77,4 +77,30 @@ public final class OutputFolder {
 			}
 		}
 	}
+
+	/** A run that writes into an output folder: its exit status. */
+	@FunctionalInterface
+	public interface Run {
+		int run() throws IOException;
+	}
+
+	/**
+	 * Runs {@code run}, which writes into {@code dir} (null: none); when it ends with a status other than 0, or throws,
+	 * the folders it made for {@code dir} are removed while empty ({@link #removeEmpty}): a refused run leaves nothing
+	 * behind.
+	 *
+	 * @return the run's status
+	 */
+	public static int removedIfRefused(final Path dir, final Run run) throws IOException {
+		final Path made = dir == null ? null : missing(dir);
+		try {
+			final int status = run.run();
+			if (status != 0 && dir != null) removeEmpty(made, dir);
+			return status;
+		}
+		catch (final RuntimeException | IOException e) {
+			if (dir != null) removeEmpty(made, dir);
+			throw e;
+		}
+	}
 }

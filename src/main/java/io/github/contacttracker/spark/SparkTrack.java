@@ -126,15 +126,12 @@ public final class SparkTrack {
 		}
 		final Path outDir = Path.of(o.outDir).toAbsolutePath();
 		// the folders made here are removed again, while empty, by a run that wrote nothing
-		final Path made = io.github.contacttracker.io.OutputFolder.missing(outDir);
 		try {
-			final int status = prepareAndTrack(o, outDir, out, err);
-			if (status != 0) io.github.contacttracker.io.OutputFolder.removeEmpty(made, outDir);
-			return status;
+			return io.github.contacttracker.io.OutputFolder.removedIfRefused(outDir, () -> prepareAndTrack(o, outDir, out,
+				err));
 		}
-		catch (final RuntimeException e) {
-			io.github.contacttracker.io.OutputFolder.removeEmpty(made, outDir);
-			throw e;
+		catch (final java.io.IOException e) { // (prepareAndTrack throws none)
+			throw new java.io.UncheckedIOException(e);
 		}
 	}
 
