@@ -32,6 +32,9 @@ import io.github.contacttracker.core.math.Statistics;
  */
 final class BackgroundPlane {
 
+	/** Fewest pixels accepted in the background annulus. */
+	static final int MIN_BACKGROUND_PIXELS = 20;
+
 	private BackgroundPlane() {}
 
 	/**
@@ -49,7 +52,7 @@ final class BackgroundPlane {
 		int kept = 0;
 		for (int i = 0; i < dev.length; i++)
 			if (use[i] = dev[i] <= cut) kept++;
-		if (kept >= ProfileAnalysis.MIN_BACKGROUND_PIXELS) p = fitPlane(x, y, v, use);
+		if (kept >= MIN_BACKGROUND_PIXELS) p = fitPlane(x, y, v, use);
 		return p;
 	}
 

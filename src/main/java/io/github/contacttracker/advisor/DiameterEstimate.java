@@ -39,6 +39,9 @@ import io.github.contacttracker.core.math.Statistics;
  */
 record DiameterEstimate(double diameter, boolean estimated, ProfiledParticles measured) {
 
+	/** Percentile of the nearest-neighbour distances taken as the diameter when it is not given. */
+	static final double DIAMETER_PERCENTILE = 10;
+
 	/**
 	 * The provisional diameter (to measure the profile on) is at most this many times the spots' median radius at
 	 * half height: a Gaussian particle's image ends about 2.5 half-height radii out, a bright-field particle's further,
@@ -63,7 +66,7 @@ record DiameterEstimate(double diameter, boolean estimated, ProfiledParticles me
 		}
 		double[] spacing = s.nn().clone();
 		double fromSpots = spacing.length >= 2 ? Statistics.quantile(spacing.clone(),
-			ProfileAnalysis.DIAMETER_PERCENTILE / 100) : Double.NaN;
+			DIAMETER_PERCENTILE / 100) : Double.NaN;
 		final double[] radii = new double[s.spots().size()];
 		for (int k = 0; k < radii.length; k++)
 			radii[k] = Math.sqrt(s.spots().get(k).activeArea() / Math.PI);
@@ -82,7 +85,7 @@ record DiameterEstimate(double diameter, boolean estimated, ProfiledParticles me
 			if (kept.length >= 2) {
 				findings.add(new Finding.SpotsTooClose(spacing.length - kept.length, closest));
 				spacing = kept;
-				fromSpots = Statistics.quantile(kept.clone(), ProfileAnalysis.DIAMETER_PERCENTILE / 100);
+				fromSpots = Statistics.quantile(kept.clone(), DIAMETER_PERCENTILE / 100);
 				provisional = Math.min(fromSpots, fromCores);
 				m = ProfiledParticles.measure(plane, s, at, provisional, maxRadiusGiven, true);
 			}
@@ -93,7 +96,7 @@ record DiameterEstimate(double diameter, boolean estimated, ProfiledParticles me
 		if (Math.abs(diameter - provisional) > 0.01 * provisional) m = ProfiledParticles.measure(plane, s, at, diameter,
 			maxRadiusGiven, true);
 		findings.add(fromImage ? new Finding.DiameterFromImage(diameter, own / 2) : new Finding.DiameterFromSpacing(
-			diameter, ProfileAnalysis.DIAMETER_PERCENTILE, spacing.length, own));
+			diameter, DIAMETER_PERCENTILE, spacing.length, own));
 		findings.addAll(m.findings());
 		return new DiameterEstimate(diameter, true, m);
 	}
@@ -107,14 +110,14 @@ record DiameterEstimate(double diameter, boolean estimated, ProfiledParticles me
 	}
 
 	/**
-	 * @return the shortest distance (to {@value ProfileAnalysis#BRIDGE_STEP_PX} px, above {@code from}, at which they
+	 * @return the shortest distance (to {@value ThresholdRules#BRIDGE_STEP_PX} px, above {@code from}, at which they
 	 *         are not) at which particles of {@code m}'s profile stay {@link #apart} at {@code level}; beyond twice the
 	 *         profile's reach if they never do within it
 	 */
 	private static double closestApart(final ProfiledParticles m, final double from, final double level) {
 		double lo = from, hi = 2 * m.reach() + 1;
 		if (!apart(m, hi, level)) return hi;
-		while (hi - lo > ProfileAnalysis.BRIDGE_STEP_PX) {
+		while (hi - lo > ThresholdRules.BRIDGE_STEP_PX) {
 			final double mid = (lo + hi) / 2;
 			if (apart(m, mid, level)) hi = mid;
 			else lo = mid;

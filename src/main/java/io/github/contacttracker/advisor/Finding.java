@@ -22,8 +22,8 @@
 package io.github.contacttracker.advisor;
 
 /**
- * Something the profile helper ({@link ProfileAnalysis}) found that the user should know, with the numbers it is
- * about; the front ends put it into words ({@code report.ProfileReport}). Lengths in pixels, levels in grey levels.
+ * Something the profile helper found that the user should know, with the numbers it is about; the front ends put it
+ * into words ({@code report.ProfileReport}). Lengths in pixels, levels in grey levels.
  */
 public sealed interface Finding {
 

@@ -71,13 +71,13 @@ record FrameSpots(List<Localization> spots, double[][] xy, double[] nn, double n
 		final double near = diameterGiven > 0 ? Math.max(2, diameterGiven / 4) : 5;
 		final double frameTop = Statistics.quantile(sample, 1 - Math.max(1e-4, 20.0 / sample.length));
 		final double own = point != null ? peak(plane, at[0], at[1], near) : frameTop;
-		if (point != null && !(own - median0 > ProfileAnalysis.THRESHOLD_MARGIN_SIGMAS * noise0))
+		if (point != null && !(own - median0 > Margins.THRESHOLD_MARGIN_SIGMAS * noise0))
 			throw new InvalidInputException(String.format(Locale.ROOT, "no bright particle at (%s, %s): the brightest " +
-				"pixel within %s px is %s, within %s noise sigmas (%s) of the background %s", ProfileAnalysis.fmt(
-					point[0]), ProfileAnalysis.fmt(point[1]), ProfileAnalysis.fmt(near), ProfileAnalysis.fmt(own),
-				ProfileAnalysis.fmt(ProfileAnalysis.THRESHOLD_MARGIN_SIGMAS), ProfileAnalysis.fmt(noise0), ProfileAnalysis
-					.fmt(median0)));
-		if (!(frameTop - median0 > ProfileAnalysis.THRESHOLD_MARGIN_SIGMAS * noise0))
+				"pixel within %s px is %s, within %s noise sigmas (%s) of the background %s", HelperFormat.fmt(
+					point[0]), HelperFormat.fmt(point[1]), HelperFormat.fmt(near), HelperFormat.fmt(own),
+				HelperFormat.fmt(Margins.THRESHOLD_MARGIN_SIGMAS), HelperFormat.fmt(noise0), HelperFormat.fmt(
+					median0)));
+		if (!(frameTop - median0 > Margins.THRESHOLD_MARGIN_SIGMAS * noise0))
 			throw new InvalidInputException("no particle brighter than the noise in the frame");
 		final double level = median0 + 0.5 * (frameTop - median0);
 		final List<Localization> spots = new ArrayList<>(spotsAt(plane, level));

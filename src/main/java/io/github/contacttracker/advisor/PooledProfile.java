@@ -46,10 +46,15 @@ record PooledProfile(double[] radius, double[] height, int[] count, double backg
 	List<double[]> centres)
 {
 
+	/** The background is measured in this outer part of {@code max_radius} (percent). */
+	static final int BACKGROUND_ANNULUS_PERCENT = 20;
+	/** Values further than this many sigmas from the mean do not count in the noise. */
+	static final double CLIP_SIGMAS = 3.5;
+
 	/**
 	 * Where the particle's own image ends: the outer edge of its dark ring (where the profile, past its minimum,
 	 * comes back within the noise of the background) when it has one deeper than
-	 * {@value ProfileAnalysis#THRESHOLD_MARGIN_SIGMAS} noise sigmas, as bright-field particles do; otherwise the reach.
+	 * {@value Margins#THRESHOLD_MARGIN_SIGMAS} noise sigmas, as bright-field particles do; otherwise the reach.
 	 * A faint halo beyond the ring is light the particle scatters, not the particle: in bright field it can reach
 	 * beyond a neighbour at contact, so taking it for the particle's image would make every particle of a dense field
 	 * look touched (figures: fiji.md).
@@ -58,7 +63,7 @@ record PooledProfile(double[] radius, double[] height, int[] count, double backg
 		int deepest = -1;
 		for (int k = 0; k < p.radius().length && p.radius()[k] < reach; k++)
 			if (p.count()[k] > 0 && (deepest < 0 || p.height()[k] < p.height()[deepest])) deepest = k;
-		if (deepest < 0 || !(p.height()[deepest] < -ProfileAnalysis.THRESHOLD_MARGIN_SIGMAS * p.noise())) return reach;
+		if (deepest < 0 || !(p.height()[deepest] < -Margins.THRESHOLD_MARGIN_SIGMAS * p.noise())) return reach;
 		int previous = deepest;
 		for (int k = deepest + 1; k < p.radius().length; k++) {
 			if (p.count()[k] == 0) continue;
@@ -154,14 +159,13 @@ record PooledProfile(double[] radius, double[] height, int[] count, double backg
 					ay.add(y - c[1]);
 					av.add(plane.get(x, y));
 				}
-			if (ax.size < ProfileAnalysis.MIN_BACKGROUND_PIXELS) {
+			if (ax.size < BackgroundPlane.MIN_BACKGROUND_PIXELS) {
 				// neighbours all round (a dense monolayer) or the border: the next particle may do
 				if (failure == null) failure = String.format(Locale.ROOT, "only %d background pixels lie between %s " +
 					"and %s px from the particle at (%s, %s) inside the image and away from its neighbours: too few " +
-					"to measure the background; use a larger max_radius or another particle", ax.size, ProfileAnalysis
-						.fmt(ProfileAnalysis.round2(inner)), ProfileAnalysis.fmt(ProfileAnalysis.round2(radiusCap)),
-					ProfileAnalysis.fmt(ProfileAnalysis.round2(c[0] + plane.minX())), ProfileAnalysis.fmt(
-						ProfileAnalysis.round2(c[1] + plane.minY())));
+					"to measure the background; use a larger max_radius or another particle", ax.size, HelperFormat
+						.fmt2(inner), HelperFormat.fmt2(radiusCap), HelperFormat.fmt2(c[0] + plane.minX()), HelperFormat
+							.fmt2(c[1] + plane.minY()));
 				continue;
 			}
 			used.add(c);
@@ -179,7 +183,7 @@ record PooledProfile(double[] radius, double[] height, int[] count, double backg
 				}
 		}
 		if (used.isEmpty()) throw new NoBackground(failure);
-		final double noise = Statistics.clippedSigma(residuals.toArray(), ProfileAnalysis.CLIP_SIGMAS);
+		final double noise = Statistics.clippedSigma(residuals.toArray(), CLIP_SIGMAS);
 		int filled = bins;
 		while (filled > 0 && rings[filled - 1].size == 0)
 			filled--;
@@ -242,6 +246,6 @@ record PooledProfile(double[] radius, double[] height, int[] count, double backg
 	}
 
 	static double innerBackgroundRadius(final double radiusCap) {
-		return radiusCap * (1 - ProfileAnalysis.BACKGROUND_ANNULUS_PERCENT / 100.0);
+		return radiusCap * (1 - BACKGROUND_ANNULUS_PERCENT / 100.0);
 	}
 }

@@ -21,6 +21,9 @@
  */
 package io.github.contacttracker.advisor;
 
+import static io.github.contacttracker.advisor.HelperFormat.fmt;
+import static io.github.contacttracker.advisor.HelperFormat.round2;
+
 import java.io.UncheckedIOException;
 import java.util.ArrayList;
 import java.util.Arrays;
@@ -31,7 +34,6 @@ import java.util.function.DoubleToIntFunction;
 
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.core.Method;
-import io.github.contacttracker.core.Numbers;
 import io.github.contacttracker.core.TrackerParameters;
 import io.github.contacttracker.core.image.Plane;
 import io.github.contacttracker.core.kind.KindFeatures;
@@ -54,13 +56,13 @@ import net.imglib2.type.numeric.RealType;
  * (colloids at contact sit one diameter apart) and twice where the particles' own image ends (the outer edge of a
  * dark ring, else the reach), read off a profile taken to a provisional diameter and measured again at the
  * estimate; a warning says which.</li>
- * <li>Profiled particles: up to {@value #MAX_PARTICLES} spots with the largest distances to their nearest
- * neighbour; a point given, its particle alone when isolated (nearest neighbour and image edge at least twice
+ * <li>Profiled particles: up to {@value ProfiledParticles#MAX_PARTICLES} spots with the largest distances to their
+ * nearest neighbour; a point given, its particle alone when isolated (nearest neighbour and image edge at least twice
  * {@code r_out} away), else those spots, and said. Pixels within the reach of any other spot are masked (first
  * {@code D}, then the measured reach).</li>
- * <li>Local background: around each particle a plane fitted robustly to the outer {@value #BACKGROUND_ANNULUS_PERCENT}%
- * of {@code max_radius} ({@value #AUTO_RADIUS_DIAMETERS} diameters unless given): a background drifting across
- * the frame is removed with it.</li>
+ * <li>Local background: around each particle a plane fitted robustly to the outer
+ * {@value PooledProfile#BACKGROUND_ANNULUS_PERCENT}% of {@code max_radius} ({@value Margins#AUTO_RADIUS_DIAMETERS}
+ * diameters unless given): a background drifting across the frame is removed with it.</li>
  * <li>Noise {@code s}: the robust (3.5-sigma clipped) standard deviation of the pixels of those annuli about their
  * planes. It
  * sees compression noise that is smooth within 8x8 blocks, which a pixel-difference estimator (Immerkaer) misses,
@@ -68,12 +70,12 @@ import net.imglib2.type.numeric.RealType;
  * <li>Profile {@code P(r)}: the interquartile mean, over all profiled particles, of the pixels' heights above their
  * local background in 1 px wide rings. It ignores the part of a ring a neighbour covers (up to a quarter), and
  * unlike a median it is not stuck on the integer steps of 8-bit data.</li>
- * <li>{@code r_out}: the radius beyond which {@code |P(r)| <= s} (the reach), plus {@value #R_OUT_MARGIN_PX}
+ * <li>{@code r_out}: the radius beyond which {@code |P(r)| <= s} (the reach), plus {@value Margins#R_OUT_MARGIN_PX}
  * px.</li>
  * <li>{@code threshold}: particles at contact add up. For two (centres {@code D} apart) and three (a touching
  * triangle) the summed profiles are evaluated on a 0.5 px grid at every point at least {@code D/2} from all
  * centres (outside every particle's own half): the brightest such point is the bridge their active areas must
- * not reach. The threshold is the bridge plus {@value #THRESHOLD_MARGIN_SIGMAS} {@code s}. On a saturated core
+ * not reach. The threshold is the bridge plus {@value Margins#THRESHOLD_MARGIN_SIGMAS} {@code s}. On a saturated core
  * only the plateau is flat, and the rule does not look inside {@code D/2}.</li>
  * <li>Raised, when it must be, clear of the background's texture ({@link ThresholdRules#textureGap}) and until the
  * frame's active areas are round ({@link ThresholdRules#roundFrom}).</li>
@@ -86,27 +88,6 @@ import net.imglib2.type.numeric.RealType;
  * {@link PooledProfile}, the threshold's bridge and raises {@link ThresholdRules}; this class joins them.
  */
 public final class ProfileAnalysis {
-
-	/** Added to the reach for {@code r_out}: half the width of the gradient operator. */
-	public static final double R_OUT_MARGIN_PX = 2;
-	/** Noise margin of the threshold above the brightest point between particles at contact, in noise sigmas. */
-	public static final double THRESHOLD_MARGIN_SIGMAS = 3;
-	/** Default {@code max_radius}, in particle diameters. */
-	public static final double AUTO_RADIUS_DIAMETERS = 2.5;
-	/** The background is measured in this outer part of {@code max_radius} (percent). */
-	public static final int BACKGROUND_ANNULUS_PERCENT = 20;
-	/** At most this many particles are profiled together. */
-	public static final int MAX_PARTICLES = 8;
-	/** Percentile of the nearest-neighbour distances taken as the diameter when it is not given. */
-	public static final double DIAMETER_PERCENTILE = 10;
-	/** Fewest pixels accepted in the background annulus. */
-	static final int MIN_BACKGROUND_PIXELS = 20;
-	/** Values further than this many sigmas from the mean do not count in the noise. */
-	static final double CLIP_SIGMAS = 3.5;
-	/** Grid step (px) of the bridge search. */
-	static final double BRIDGE_STEP_PX = 0.5;
-	/** Significant digits of the numbers in the helper's messages and warnings ({@link Numbers#significant}). */
-	public static final int SIGNIFICANT_DIGITS = 4;
 
 	/**
 	 * What the profile shows.
@@ -250,7 +231,7 @@ public final class ProfileAnalysis {
 	 * @param px x of a point on the particle (px, in the frame's coordinates)
 	 * @param py y of a point on the particle (px)
 	 * @param diameter particle diameter (px): the centre distance at contact; 0 to estimate it from the frame
-	 * @param maxRadius radius to measure out to (px); 0 for {@value #AUTO_RADIUS_DIAMETERS} diameters. It is
+	 * @param maxRadius radius to measure out to (px); 0 for {@value Margins#AUTO_RADIUS_DIAMETERS} diameters. It is
 	 *        clipped to the farthest image corner.
 	 * @return the profile and the suggestions; the kinds of particle are those of this frame
 	 * @throws IllegalArgumentException with a one-line message: bad diameter or radius, point outside the frame,
@@ -317,7 +298,7 @@ public final class ProfileAnalysis {
 		final ProfiledParticles m = sized.measured();
 		final PooledProfile pooled = m.pooled();
 		final double[] centre = m.centres().get(0), subject = m.at() != null ? m.at() : centre;
-		final double rOut = m.reach() + R_OUT_MARGIN_PX;
+		final double rOut = m.reach() + Margins.R_OUT_MARGIN_PX;
 		final double[] level = levels(pooled);
 		final Threshold t = threshold(plane, pooled, level, diameter, m.reach(), centre, findings);
 		final double activeRadius = activeRadius(pooled.radius(), level, pooled.count(), t.threshold());
@@ -403,7 +384,7 @@ public final class ProfileAnalysis {
 	{
 		final double bridge = pooled.background() + Math.max(0, ThresholdRules.brightestBetween(pooled, diameter,
 			reach));
-		final double atContact = bridge + THRESHOLD_MARGIN_SIGMAS * pooled.noise();
+		final double atContact = bridge + Margins.THRESHOLD_MARGIN_SIGMAS * pooled.noise();
 		// the active areas that count as particles at a threshold: as the tracker will keep them (small particles' are
 		// smaller than the default min_area: counting only the larger ones would judge the merges alone)
 		final DoubleToIntFunction minArea = th -> minArea(activeRadius(pooled.radius(), level, pooled.count(), th));
@@ -504,15 +485,5 @@ public final class ProfileAnalysis {
 		final double[] v = FrameSpots.sample(Plane.of((RandomAccessibleInterval) frame));
 		final double median = Statistics.quantile(v, 0.5); // sorted by it
 		return median - v[0] > DARK_RATIO * (v[v.length - 1] - median);
-	}
-
-
-	static double round2(final double v) {
-		return Math.round(v * 100) / 100.0;
-	}
-
-	/** How the helper's error messages write a number: {@value #SIGNIFICANT_DIGITS} significant digits. */
-	static String fmt(final double v) {
-		return Numbers.significant(v, SIGNIFICANT_DIGITS);
 	}
 }

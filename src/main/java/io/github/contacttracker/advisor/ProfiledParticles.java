@@ -53,6 +53,9 @@ import io.github.contacttracker.core.radial.ComponentShape;
 record ProfiledParticles(List<double[]> centres, double[] at, boolean refined, double radiusCap,
 	PooledProfile pooled, double reach, double imageEdge, List<Finding> findings) {
 
+	/** At most this many particles are profiled together. */
+	static final int MAX_PARTICLES = 8;
+
 	/** @return the same profile, for the particle at a point: its centre, and what was found of it first */
 	ProfiledParticles withAt(final double[] point, final boolean pointRefined, final List<Finding> more) {
 		final List<Finding> all = new ArrayList<>(more);
@@ -66,7 +69,7 @@ record ProfiledParticles(List<double[]> centres, double[] at, boolean refined, d
 	 * <p>
 	 * A particle at a point is profiled alone only when it is isolated: its nearest neighbour, and the image's edge
 	 * (beyond which a neighbour goes unseen), at least twice {@code r_out} away (the reach plus
-	 * {@value ProfileAnalysis#R_OUT_MARGIN_PX} px, measured on the frame's most isolated particles or on the particle
+	 * {@value Margins#R_OUT_MARGIN_PX} px, measured on the frame's most isolated particles or on the particle
 	 * alone, whichever is larger), so that no pixel holds the light of both and the neighbours' masks leave its own
 	 * pixels. Closer, its profile never returns to the background between it and its neighbours: its own background, noise
 	 * and reach would be the neighbours' halos (a reach of twice the true one, masks that swallow the particle
@@ -83,7 +86,7 @@ record ProfiledParticles(List<double[]> centres, double[] at, boolean refined, d
 	{
 		final List<Localization> spots = s.spots();
 		final double[][] xy = s.xy();
-		final double wanted = maxRadiusGiven > 0 ? maxRadiusGiven : ProfileAnalysis.AUTO_RADIUS_DIAMETERS * diameter;
+		final double wanted = maxRadiusGiven > 0 ? maxRadiusGiven : Margins.AUTO_RADIUS_DIAMETERS * diameter;
 		if (point == null) {
 			final List<Finding> findings = new ArrayList<>();
 			final List<Integer> chosen = mostIsolated(plane, s, diameter, wanted);
@@ -135,10 +138,10 @@ record ProfiledParticles(List<double[]> centres, double[] at, boolean refined, d
 		}
 		// r_out as the frame gives it or as the particle alone does, whichever reaches further
 		final double rOut = Math.max(m == null ? 0 : m.reach(), alone == null ? 0 : alone.reach()) +
-			ProfileAnalysis.R_OUT_MARGIN_PX;
+			Margins.R_OUT_MARGIN_PX;
 		if (m != null && (alone == null || neighbour < 2 * rOut)) {
-			findings.add(new Finding.FrameValuesAtPoint(neighbour, byEdge, m.reach() + ProfileAnalysis.R_OUT_MARGIN_PX,
-				alone == null ? Double.NaN : alone.reach() + ProfileAnalysis.R_OUT_MARGIN_PX, m.centres().size()));
+			findings.add(new Finding.FrameValuesAtPoint(neighbour, byEdge, m.reach() + Margins.R_OUT_MARGIN_PX,
+				alone == null ? Double.NaN : alone.reach() + Margins.R_OUT_MARGIN_PX, m.centres().size()));
 			return m.withAt(own, best >= 0, findings);
 		}
 		return alone.withAt(own, best >= 0, findings);
@@ -161,7 +164,7 @@ record ProfiledParticles(List<double[]> centres, double[] at, boolean refined, d
 
 	/**
 	 * The spots to profile when no point is given: the ones with the largest distances to their nearest neighbours,
-	 * none merged, degenerate or near the border, at most {@value ProfileAnalysis#MAX_PARTICLES}, down to half the
+	 * none merged, degenerate or near the border, at most {@value #MAX_PARTICLES}, down to half the
 	 * first one's distance (or {@code wanted}).
 	 */
 	private static List<Integer> mostIsolated(final Plane plane, final FrameSpots s, final double diameter,
@@ -182,7 +185,7 @@ record ProfiledParticles(List<double[]> centres, double[] at, boolean refined, d
 				diameter / 2) continue;
 			if (!chosen.isEmpty() && nn[k] < Math.min(wanted, 0.5 * nn[chosen.get(0)])) break;
 			chosen.add(k);
-			if (chosen.size() == ProfileAnalysis.MAX_PARTICLES) break;
+			if (chosen.size() == MAX_PARTICLES) break;
 		}
 		return chosen;
 	}
@@ -209,7 +212,7 @@ record ProfiledParticles(List<double[]> centres, double[] at, boolean refined, d
 			null);
 		double reach = PooledProfile.reach(pooled, radiusCap, null);
 		pooled = PooledProfile.poolNarrowing(plane, centres, s.xy(), Math.max(diameter, reach +
-			ProfileAnalysis.R_OUT_MARGIN_PX), radiusCap, narrowest, findings);
+			Margins.R_OUT_MARGIN_PX), radiusCap, narrowest, findings);
 		reach = PooledProfile.reach(pooled, radiusCap, findings);
 		return new ProfiledParticles(pooled.centres(), null, true, radiusCap, pooled, reach, PooledProfile.imageEdge(pooled,
 			reach), findings);

@@ -43,6 +43,8 @@ final class ThresholdRules {
 	static final double TEXTURE_GAP_RATIO = 2;
 	/** At most this share (percent) of the active areas may fail the outline tests at the suggested threshold. */
 	static final int MAX_NOT_ROUND_PERCENT = 1;
+	/** Grid step (px) of the bridge search. */
+	static final double BRIDGE_STEP_PX = 0.5;
 
 	private ThresholdRules() {}
 
@@ -126,8 +128,8 @@ final class ThresholdRules {
 		final double half2 = diameter * diameter / 4;
 		for (final double[][] conf : configurations) {
 			final double x0 = -reach, x1 = diameter + reach, y0 = -reach, y1 = diameter + reach;
-			for (double y = y0; y <= y1; y += ProfileAnalysis.BRIDGE_STEP_PX)
-				for (double x = x0; x <= x1; x += ProfileAnalysis.BRIDGE_STEP_PX) {
+			for (double y = y0; y <= y1; y += BRIDGE_STEP_PX)
+				for (double x = x0; x <= x1; x += BRIDGE_STEP_PX) {
 					boolean outside = true;
 					double sum = 0;
 					for (final double[] c : conf) {

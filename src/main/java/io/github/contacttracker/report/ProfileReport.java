@@ -21,11 +21,15 @@
  */
 package io.github.contacttracker.report;
 
+import static io.github.contacttracker.advisor.HelperFormat.fmt;
+import static io.github.contacttracker.advisor.HelperFormat.fmt2;
+
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 
 import io.github.contacttracker.advisor.Finding;
+import io.github.contacttracker.advisor.Margins;
 import io.github.contacttracker.advisor.ProfileAnalysis;
 import io.github.contacttracker.core.Numbers;
 import io.github.contacttracker.core.TrackerParameters;
@@ -57,10 +61,10 @@ public final class ProfileReport {
 			.diameterEstimated() ? " (estimated)" : "", r.particles(), r.particles() == 1 ? "" : "s"));
 		lines.add(String.format(Locale.ROOT,
 			"  profile within the noise of the background beyond %.2f px; + %.0f px = %.2f -> r_out = %.0f px", r
-				.reach(), ProfileAnalysis.R_OUT_MARGIN_PX, r.rOut(), r.suggestedROut()));
+				.reach(), Margins.R_OUT_MARGIN_PX, r.rOut(), r.suggestedROut()));
 		lines.add(String.format(Locale.ROOT, "  brightest point between two or three particles at contact " +
 			"(D = %.2f px): %.2f; + %.0f sigma = %.2f%s -> threshold = %s", r.diameter(), r.bridge(),
-			ProfileAnalysis.THRESHOLD_MARGIN_SIGMAS, r.atContact(), r.threshold() > r.atContact() ? String.format(
+			Margins.THRESHOLD_MARGIN_SIGMAS, r.atContact(), r.threshold() > r.atContact() ? String.format(
 				Locale.ROOT, ", raised to %.2f (see the warnings)", r.threshold()) : "", fmt(r.suggestedThreshold(
 					integerData))));
 		final double threshold = r.suggestedThreshold(integerData);
@@ -197,14 +201,5 @@ public final class ProfileReport {
 
 	private static String diameterEstimated(final double diameter, final String how) {
 		return "the diameter (" + fmt2(diameter) + " px) is estimated as " + how + ": give it if you know it";
-	}
-
-	private static String fmt(final double v) {
-		return Numbers.significant(v, ProfileAnalysis.SIGNIFICANT_DIGITS);
-	}
-
-	/** A measured value: rounded to 0.01 first, then written as {@link #fmt} does. */
-	private static String fmt2(final double v) {
-		return fmt(Math.round(v * 100) / 100.0);
 	}
 }

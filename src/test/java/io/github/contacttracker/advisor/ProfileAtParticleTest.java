@@ -127,12 +127,12 @@ class ProfileAtParticleTest {
 		assertEquals(ISOLATED[1], one.y(), 0.2);
 		assertEquals(1, one.particles(), "alone: " + one.findings());
 		final double sigma = Math.sqrt(NOISE * NOISE + 1.0 / 12);
-		final double trueROut = reach(sigma) + ProfileAnalysis.R_OUT_MARGIN_PX;
+		final double trueROut = reach(sigma) + Margins.R_OUT_MARGIN_PX;
 		assertEquals(trueROut, one.rOut(), 2, "r_out at the particle, truth " + trueROut);
 		// the frame's particles have neighbours closer than twice r_out: their tails overlap, and its r_out is the
 		// rougher one (measured: the particle 43.78, the frame 41.26, the truth 44.09 px)
 		assertEquals(all.rOut(), one.rOut(), 3, "r_out: the frame's, truth " + trueROut);
-		assertEquals(all.threshold(), one.threshold(), ProfileAnalysis.THRESHOLD_MARGIN_SIGMAS * sigma, "threshold");
+		assertEquals(all.threshold(), one.threshold(), Margins.THRESHOLD_MARGIN_SIGMAS * sigma, "threshold");
 		assertEquals(all.diameter(), one.diameter(), 0.05 * all.diameter(), "diameter");
 	}
 

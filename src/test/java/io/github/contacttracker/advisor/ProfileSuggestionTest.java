@@ -301,7 +301,7 @@ class ProfileSuggestionTest {
 			}
 		assertTrue(n > 500, "background pixels: " + n);
 		final double trueNoise = Math.sqrt(sum2 / n);
-		final double trueROut = BRIGHT_FIELD.reach(trueNoise) + ProfileAnalysis.R_OUT_MARGIN_PX;
+		final double trueROut = BRIGHT_FIELD.reach(trueNoise) + Margins.R_OUT_MARGIN_PX;
 		// the conditions are the real movie's: the pixel-difference estimator sees little of the JPEG noise
 		assertTrue(NoiseEstimate.sigma(plane) < 0.8 * trueNoise, "Immerkaer " + NoiseEstimate.sigma(plane) +
 			" against the true " + trueNoise);

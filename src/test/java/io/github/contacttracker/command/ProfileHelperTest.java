@@ -43,6 +43,7 @@ import ij.ImagePlus;
 import ij.gui.Plot;
 import ij.gui.PointRoi;
 import io.github.contacttracker.advisor.Finding;
+import io.github.contacttracker.advisor.Margins;
 import io.github.contacttracker.advisor.ProfileAnalysis;
 import io.github.contacttracker.io.Calibration;
 import io.github.contacttracker.io.ImageFiles;
@@ -76,7 +77,7 @@ class ProfileHelperTest extends WithContext {
 	record Scene(ParticleType type, ArrayImg<?, ?> frame, double cx, double cy) {}
 
 	static Scene scene(final ParticleType type, final long seed) {
-		final int size = (int) Math.ceil(2 * ProfileAnalysis.AUTO_RADIUS_DIAMETERS * type.diameterPx()) + 12;
+		final int size = (int) Math.ceil(2 * Margins.AUTO_RADIUS_DIAMETERS * type.diameterPx()) + 12;
 		final double cx = size / 2.0 + 0.31, cy = size / 2.0 - 0.27;
 		final QuantisedFrame<?> q = SimulatedStack.renderFrame(type, List.of(new double[] { cx, cy }), size, size, type
 			.noise(), new SplittableRandom(seed), 8);
@@ -89,7 +90,7 @@ class ProfileHelperTest extends WithContext {
 	}
 
 	static double trueROut(final ParticleType type) {
-		return type.profile().reach(trueSigma(type)) + ProfileAnalysis.R_OUT_MARGIN_PX;
+		return type.profile().reach(trueSigma(type)) + Margins.R_OUT_MARGIN_PX;
 	}
 
 	static double trueThreshold(final ParticleType type) {
@@ -98,7 +99,7 @@ class ProfileHelperTest extends WithContext {
 		double brightest = 0;
 		for (double r = type.diameterPx() / 2; r <= reach; r += 0.01)
 			brightest = Math.max(brightest, p.value(r));
-		return type.background() + 2 * brightest + ProfileAnalysis.THRESHOLD_MARGIN_SIGMAS * trueSigma(type);
+		return type.background() + 2 * brightest + Margins.THRESHOLD_MARGIN_SIGMAS * trueSigma(type);
 	}
 
 	static Stream<Arguments> particles() {
@@ -119,7 +120,7 @@ class ProfileHelperTest extends WithContext {
 		assertEquals(type.background(), r.background(), 0.5, "background");
 		assertEquals(sigma, r.noise(), 0.1 * sigma, "noise");
 		assertEquals(trueROut(type), r.rOut(), 2, "r_out within 2 px");
-		assertEquals(trueThreshold(type), r.threshold(), ProfileAnalysis.THRESHOLD_MARGIN_SIGMAS * sigma,
+		assertEquals(trueThreshold(type), r.threshold(), Margins.THRESHOLD_MARGIN_SIGMAS * sigma,
 			"threshold within the noise margin");
 		// the measured profile is the true one
 		for (int k = 1; k < r.radius().length; k += 7)
