@@ -24,6 +24,7 @@ package io.github.contacttracker.advisor;
 import java.util.Arrays;
 
 import io.github.contacttracker.core.math.Statistics;
+import io.github.contacttracker.core.math.SymmetricSolver;
 
 /**
  * A particle's local background: the plane {@code a + b x + c y} (coordinates relative to the particle's centre)
@@ -56,6 +57,10 @@ final class BackgroundPlane {
 		return p;
 	}
 
+	/**
+	 * The least-squares plane through the points in use, its 3x3 normal equations solved by Cholesky; their mean where
+	 * they lie on a line (an annulus cut to a sliver by the border), or there are none.
+	 */
 	private static double[] fitPlane(final DoubleList x, final DoubleList y, final DoubleList v, final boolean[] use) {
 		double n = 0, sx = 0, sy = 0, sv = 0, sxx = 0, sxy = 0, syy = 0, sxv = 0, syv = 0;
 		for (int i = 0; i < x.size; i++) {
@@ -71,25 +76,8 @@ final class BackgroundPlane {
 			sxv += a * c;
 			syv += b * c;
 		}
-		final double[][] m = { { n, sx, sy }, { sx, sxx, sxy }, { sy, sxy, syy } };
-		final double[] rhs = { sv, sxv, syv };
-		final double det = det3(m);
-		if (!(Math.abs(det) > 1e-9 * Math.max(1, n * sxx * syy))) {
-			// points on a line (an annulus cut to a sliver by the border): a constant
-			return new double[] { sv / Math.max(n, 1), 0, 0 };
-		}
-		final double[] p = new double[3];
-		for (int j = 0; j < 3; j++) {
-			final double[][] mj = { m[0].clone(), m[1].clone(), m[2].clone() };
-			for (int i = 0; i < 3; i++)
-				mj[i][j] = rhs[i];
-			p[j] = det3(mj) / det;
-		}
-		return p;
-	}
-
-	private static double det3(final double[][] m) {
-		return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-			m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+		final double[] p = SymmetricSolver.solve(new double[][] { { n, sx, sy }, { sx, sxx, sxy }, { sy, sxy, syy } },
+			new double[] { sv, sxv, syv });
+		return p != null ? p : new double[] { sv / Math.max(n, 1), 0, 0 };
 	}
 }
