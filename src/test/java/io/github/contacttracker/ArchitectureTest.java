@@ -68,20 +68,22 @@ class ArchitectureTest {
 		Map.entry("settings", Set.of("core")), //
 		// io reads and writes file formats: not the helper's words, nor the potential's tables and plots
 		Map.entry("io", Set.of("core", "settings")), //
-		Map.entry("report", Set.of("core", "advisor", "potential", "io")), //
+		// ImageJ glue shared by front ends: the image on display, frames as an ImageJ time series
+		Map.entry("ij", Set.of("core", "io")), //
+		Map.entry("report", Set.of("core", "advisor", "potential", "io", "ij")), //
 		Map.entry("plot", Set.of("core", "advisor", "potential", "io")), //
 		Map.entry("ui", Set.of()), //
 		Map.entry("pipeline", Set.of("core", "advisor", "io", "settings", "report")), //
 		Map.entry("cli", Set.of("core", "advisor", "potential", "settings", "io", "report", "plot", "pipeline")), //
-		Map.entry("command", Set.of("core", "advisor", "potential", "settings", "io", "report", "plot", "ui",
+		Map.entry("command", Set.of("core", "advisor", "potential", "settings", "io", "ij", "report", "plot", "ui",
 			"pipeline")), //
 		Map.entry("trackmate", Set.of("core", "settings", "io", "report", "ui", "pipeline")), //
 		Map.entry("spark", Set.of("core", "potential", "settings", "io", "report", "pipeline")), //
 		// the lab: the simulator, the studies and the research subcommands; nothing outside it uses it
 		Map.entry("lab.sim", Set.of("core")), //
 		Map.entry("lab.eval", Set.of("core", "lab.sim", "potential")), //
-		Map.entry("lab.cli", Set.of("core", "advisor", "potential", "settings", "io", "report", "plot", "pipeline",
-			"cli", "lab.sim", "lab.eval")));
+		Map.entry("lab.cli", Set.of("core", "advisor", "potential", "settings", "io", "ij", "report", "plot",
+			"pipeline", "cli", "lab.sim", "lab.eval")));
 
 	/** A reference to a type of ours: the package (a core room with its name) followed by a type or a wildcard. */
 	private static final Pattern REFERENCE = Pattern.compile(

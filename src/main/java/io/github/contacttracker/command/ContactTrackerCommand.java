@@ -22,6 +22,7 @@
 package io.github.contacttracker.command;
 
 import io.github.contacttracker.core.InvalidInputException;
+import io.github.contacttracker.ij.ShownImage;
 import io.github.contacttracker.pipeline.FrameSource;
 import io.github.contacttracker.pipeline.MeasuredSettings;
 import io.github.contacttracker.pipeline.Outputs;
@@ -407,7 +408,7 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 		ValuesOrigin.run(helperValues());
 		final SettingValues settings = settings();
 		final TrackerParameters params = settings.parameters();
-		final Interval region = ImagePlusFrames.selection(imp);
+		final Interval region = ShownImage.selection(imp);
 		final File csvFile = given(csv), xmlFile = given(trackmate_xml);
 		final Outputs outputs = new Outputs(csvFile == null ? null : csvFile.toPath(), xmlFile == null ? null : xmlFile
 			.toPath(), xmlFile == null ? null : source(imp, frames));
@@ -456,7 +457,7 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 		// short lines: ImageJ's Log window cuts long ones
 		final List<String> lines = new java.util.ArrayList<>(result.summaryLines(imp.getTitle()));
 		lines.set(0, TITLE + ": " + lines.get(0));
-		if (region != null) lines.add(1, "  within the selection: " + ImagePlusFrames.describe(region));
+		if (region != null) lines.add(1, "  within the selection: " + ShownImage.describe(region));
 		if (measured != null) lines.add(1, measured);
 		final String unit = frames.calibration().unit();
 		lines.add("  positions, RADIUS, SIGMA in " + (unit == null || unit.isEmpty() ? "pixels" : unit) + "; r_out " +
@@ -540,7 +541,7 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 			// the values are read here, on the dialog's thread, as they are now
 			settings = settings();
 			frames = ImagePlusFrames.of(imp, channel);
-			region = ImagePlusFrames.selection(imp);
+			region = ShownImage.selection(imp);
 		}
 		catch (final RuntimeException e) {
 			// while values are being typed they are often invalid: say why, keep the last preview
@@ -548,7 +549,7 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 			note(false, previewText("not run, " + e.getMessage()));
 			return;
 		}
-		final int t = ImagePlusFrames.shownFrame(imp);
+		final int t = ShownImage.frame(imp);
 		if (status != null) status.showStatus(TITLE + " preview: tracking frame " + (t + 1) + "...");
 		note(false, previewText("working on frame " + (t + 1) + "..."));
 		synchronized (this) {

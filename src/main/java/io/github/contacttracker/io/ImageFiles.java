@@ -30,18 +30,12 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 
-import java.util.List;
-
 import ij.ImagePlus;
 import ij.ImageStack;
 import ij.io.FileSaver;
 import ij.process.ImageProcessor;
 import ij.io.Opener;
 import ij.plugin.AVI_Reader;
-import net.imglib2.img.array.ArrayImg;
-import net.imglib2.img.basictypeaccess.array.ByteArray;
-import net.imglib2.img.basictypeaccess.array.FloatArray;
-import net.imglib2.img.basictypeaccess.array.ShortArray;
 
 /** Opening and saving images with ImageJ's readers and writers (headless). */
 public final class ImageFiles {
@@ -171,36 +165,5 @@ public final class ImageFiles {
 		finally {
 			if (!done) Files.deleteIfExists(tmp);
 		}
-	}
-
-	/**
-	 * Builds an ImageJ time series (T = number of frames) sharing the frames' pixel arrays.
-	 *
-	 * @param frames 2D unsigned-byte, unsigned-short or float {@link ArrayImg}s of equal size
-	 * @param cal the calibration to set (pixel size, unit, frame interval)
-	 */
-	public static ImagePlus timeSeries(final String title, final List<? extends ArrayImg<?, ?>> frames,
-		final Calibration cal)
-	{
-		if (frames.isEmpty()) throw new InvalidInputException("no frames");
-		final int w = (int) frames.get(0).dimension(0), h = (int) frames.get(0).dimension(1);
-		final ImageStack stack = new ImageStack(w, h);
-		for (final ArrayImg<?, ?> f : frames) {
-			final Object access = f.update(null);
-			if (access instanceof ByteArray) stack.addSlice(null, ((ByteArray) access).getCurrentStorageArray());
-			else if (access instanceof ShortArray) stack.addSlice(null, ((ShortArray) access).getCurrentStorageArray());
-			else if (access instanceof FloatArray) stack.addSlice(null, ((FloatArray) access).getCurrentStorageArray());
-			else throw new InvalidInputException("unsupported pixel storage " + access.getClass().getSimpleName());
-		}
-		final ImagePlus imp = new ImagePlus(title, stack);
-		imp.setDimensions(1, 1, frames.size());
-		final ij.measure.Calibration c = imp.getCalibration();
-		c.pixelWidth = cal.pixelWidth();
-		c.pixelHeight = cal.pixelHeight();
-		c.pixelDepth = 1;
-		c.setUnit(cal.unit());
-		c.frameInterval = cal.frameInterval();
-		c.setTimeUnit(cal.timeUnit());
-		return imp;
 	}
 }

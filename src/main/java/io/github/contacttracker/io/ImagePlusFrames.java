@@ -29,14 +29,12 @@ import java.util.Map;
 
 import ij.ImagePlus;
 import ij.ImageStack;
-import ij.gui.Roi;
 import ij.process.ImageProcessor;
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.core.image.Inversion;
 import net.imglib2.Interval;
 import net.imglib2.RandomAccessibleInterval;
 import net.imglib2.img.array.ArrayImgs;
-import net.imglib2.util.Intervals;
 import net.imglib2.view.Views;
 import net.imglib2.type.numeric.RealType;
 
@@ -370,18 +368,6 @@ public final class ImagePlusFrames {
 		};
 	}
 
-	/**
-	 * The frame on display, as these frames count them: the time point shown, or the slice shown of a plain stack
-	 * (whose slices are frames). What Fiji's preview and the profile helper's buttons work on.
-	 *
-	 * @param imp the image
-	 * @return the 0-based index of the frame shown
-	 */
-	public static int shownFrame(final ImagePlus imp) {
-		final int[] czt = imp.convertIndexToPosition(imp.getCurrentSlice());
-		return (imp.getNFrames() > 1 ? czt[2] : czt[1]) - 1;
-	}
-
 	/** @return the number of frames */
 	public int frameCount() {
 		return stackIndex.length;
@@ -427,26 +413,7 @@ public final class ImagePlusFrames {
 	}
 
 	/**
-	 * The part of an image the Fiji command tracks and its button measures: the bounding rectangle of its area
-	 * selection, as TrackMate detects within it. Only the Fiji front ends ask: an image opened from a file may carry
-	 * a selection saved with it, which the command line does not use.
-	 *
-	 * @return the rectangle (x and y, pixel indices) of the image's area selection within the image, or {@code null}
-	 *         when it has none (no selection, or a line or points)
-	 * @throws InvalidInputException when the selection lies wholly outside the image
-	 */
-	public static Interval selection(final ImagePlus imp) {
-		final Roi roi = imp.getRoi();
-		if (roi == null || !roi.isArea()) return null;
-		final java.awt.Rectangle b = roi.getBounds().intersection(new java.awt.Rectangle(imp.getWidth(), imp
-			.getHeight()));
-		if (b.isEmpty()) throw new InvalidInputException("the selection on '" + imp.getTitle() + "' lies outside the " +
-			"image");
-		return Intervals.createMinSize(b.x, b.y, b.width, b.height);
-	}
-
-	/**
-	 * @param region the part to keep ({@link #selection}), or {@code null} for all
+	 * @param region the part to keep (the Fiji selection: {@code ij.ShownImage.selection}), or {@code null} for all
 	 * @return {@code frame} cut to {@code region}, its pixels at their places in the frame (a view)
 	 */
 	@SuppressWarnings({ "rawtypes", "unchecked" })
@@ -455,11 +422,6 @@ public final class ImagePlusFrames {
 	{
 		return region == null ? frame : (RandomAccessibleInterval) Views.interval((RandomAccessibleInterval) frame,
 			region);
-	}
-
-	/** @return how {@code region} ({@link #selection}) is named in messages, e.g. {@code x 10-109, y 20-79} */
-	public static String describe(final Interval region) {
-		return "x " + region.min(0) + "-" + region.max(0) + ", y " + region.min(1) + "-" + region.max(1);
 	}
 
 	/**

@@ -82,7 +82,7 @@ public interface FrameSource {
 	}
 
 	/**
-	 * @param region the part of each frame to track (x and y, pixel indices; {@link ImagePlusFrames#selection}), or
+	 * @param region the part of each frame to track (x and y, pixel indices; the Fiji selection), or
 	 *        {@code null} for all
 	 * @return these frames cut to {@code region}: spots keep the frame's coordinates, a particle cut by the region's
 	 *         edge is flagged as one cut by the frame's, and the data range is the region's

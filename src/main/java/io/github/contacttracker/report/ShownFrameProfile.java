@@ -30,6 +30,7 @@ import ij.ImagePlus;
 import io.github.contacttracker.advisor.ProfileAnalysis;
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.core.Numbers;
+import io.github.contacttracker.ij.ShownImage;
 import io.github.contacttracker.io.ImagePlusFrames;
 import net.imglib2.Interval;
 import net.imglib2.RandomAccessibleInterval;
@@ -55,7 +56,7 @@ import net.imglib2.type.numeric.RealType;
  * @param rejection why it could not, {@code null} if none
  * @param dark whether the frame was measured inverted: dark particles
  * @param darkFound whether that was found ({@link #measure}: the particles were said bright, the frame looks dark)
- * @param region the part of the frame measured ({@link ImagePlusFrames#selection}), {@code null} for all of it
+ * @param region the part of the frame measured ({@link ShownImage#selection}), {@code null} for all of it
  */
 public record ShownFrameProfile(ProfileAnalysis.Result result, String title, int frame, int frameCount, int channel,
 	boolean integerData, double rejectedDiameter, String rejection, boolean dark, boolean darkFound, Interval region)
@@ -86,9 +87,9 @@ public record ShownFrameProfile(ProfileAnalysis.Result result, String title, int
 	{
 		final ImagePlusFrames plain = ImagePlusFrames.of(imp, channel);
 		// within the selection, as the dialog tracks (text burned into a corner of the frame left out, say)
-		final Interval region = ImagePlusFrames.selection(imp);
-		final boolean found = !said && ProfileAnalysis.looksDark(ImagePlusFrames.within(plain.frame(ImagePlusFrames
-			.shownFrame(imp)), region));
+		final Interval region = ShownImage.selection(imp);
+		final boolean found = !said && ProfileAnalysis.looksDark(ImagePlusFrames.within(plain.frame(ShownImage.frame(
+			imp)), region));
 		final boolean dark = said || found;
 		// one view of the frames for both tries, its frames read once
 		final ImagePlusFrames frames = dark ? ImagePlusFrames.of(imp, channel, true) : plain;
@@ -136,7 +137,7 @@ public record ShownFrameProfile(ProfileAnalysis.Result result, String title, int
 		final boolean dark, final boolean darkFound, final double[] point, final double diameter,
 		final double maxRadius)
 	{
-		final int t = ImagePlusFrames.shownFrame(imp);
+		final int t = ShownImage.frame(imp);
 		// the frames' pixel type is known only at run time: the helper takes any real type
 		final RandomAccessibleInterval frame = ImagePlusFrames.within(frames.frame(t), region);
 		final List kindFrames = kindFrames(frames, t, region);
@@ -212,7 +213,7 @@ public record ShownFrameProfile(ProfileAnalysis.Result result, String title, int
 	public String summary() {
 		return String.format(Locale.ROOT, "'%s'%s%s%s: %sthreshold %s, r_out %s px, diameter %s px (%s)", title,
 			frameCount > 1 ? ", frame " + (frame + 1) : "", channel > 1 ? ", channel " + channel : "", region == null ? ""
-				: " within the selection (" + ImagePlusFrames.describe(region) + ")", darkFound
+				: " within the selection (" + ShownImage.describe(region) + ")", darkFound
 				? "dark particles (the frame looks so), " : dark ? "dark particles, " : "", Numbers.fmt(
 				threshold(), 3), Numbers.fmt(rOut(), 3), Numbers.fmt(diameter(), 3), rejectedDiameter > 0 ? "estimated: " +
 					Numbers.fmt(rejectedDiameter, 3) + " px given did not fit" : result.diameterEstimated() ? "estimated"

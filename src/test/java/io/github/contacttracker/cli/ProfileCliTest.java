@@ -39,6 +39,7 @@ import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
+import io.github.contacttracker.ij.TimeSeries;
 import io.github.contacttracker.io.Calibration;
 import io.github.contacttracker.io.ImageFiles;
 import io.github.contacttracker.lab.sim.PaperParticles;
@@ -68,7 +69,7 @@ class ProfileCliTest {
 		final var frame = SimulatedStack.renderFrame(type, centres, size, size, type.noise(), new SplittableRandom(1), 8)
 			.image();
 		final Path tif = dir.resolve("movie.tif");
-		ImageFiles.saveTiff(ImageFiles.timeSeries("movie", List.of(frame), Calibration.PIXELS), tif);
+		ImageFiles.saveTiff(TimeSeries.of("movie", List.of(frame), Calibration.PIXELS), tif);
 		final Path png = dir.resolve("profile.png"), csv = dir.resolve("profile.csv");
 		final Run r = run("profile", tif.toString(), "--png", png.toString(), "--csv", csv.toString());
 		assertEquals(0, r.status(), r.err());

@@ -41,6 +41,7 @@ import org.scijava.widget.Button;
 
 import ij.ImagePlus;
 import io.github.contacttracker.advisor.ProfileAnalysis;
+import io.github.contacttracker.ij.ShownImage;
 import io.github.contacttracker.io.Calibration;
 import io.github.contacttracker.io.ImagePlusFrames;
 import io.github.contacttracker.io.ProfileScenes;
@@ -178,7 +179,7 @@ class MeasureFromImageTest extends WithContext {
 		imp.setRoi(new ij.gui.Roi(0, 20, 200, 180));
 		final Module m = dialog(imp);
 		final String log = press(m);
-		final net.imglib2.Interval region = ImagePlusFrames.selection(imp);
+		final net.imglib2.Interval region = ShownImage.selection(imp);
 		final ProfileAnalysis.Result r = ProfileAnalysis.analyse((RandomAccessibleInterval) ImagePlusFrames.within(
 			ImagePlusFrames.of(imp, 1).frame(0), region), 0, 0);
 		assertEquals(r.suggestedThreshold(true), value(m, "threshold"), 0);

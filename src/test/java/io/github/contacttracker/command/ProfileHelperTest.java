@@ -45,8 +45,8 @@ import ij.gui.PointRoi;
 import io.github.contacttracker.advisor.Finding;
 import io.github.contacttracker.advisor.Margins;
 import io.github.contacttracker.advisor.ProfileAnalysis;
+import io.github.contacttracker.ij.TimeSeries;
 import io.github.contacttracker.io.Calibration;
-import io.github.contacttracker.io.ImageFiles;
 import io.github.contacttracker.report.ProfileReport;
 import io.github.contacttracker.lab.sim.GaussianBesselProfile;
 import io.github.contacttracker.lab.sim.NoiseModel;
@@ -183,7 +183,7 @@ class ProfileHelperTest extends WithContext {
 	@Test
 	void theCommandPlotsAndReturnsTheRoundedSuggestions() throws Exception {
 		final Scene s = scene(SHORT, 7L);
-		final ImagePlus imp = ImageFiles.timeSeries("one particle", List.of(s.frame()), Calibration.PIXELS);
+		final ImagePlus imp = TimeSeries.of("one particle", List.of(s.frame()), Calibration.PIXELS);
 		imp.setRoi(new PointRoi((int) Math.round(s.cx()) + 1, (int) Math.round(s.cy())));
 		final Module m = Simulated.run(context, ContactTrackerProfileCommand.class, "imp", imp, "diameter", Double
 			.toString(SHORT.diameterPx()), "max_radius", "0", "plot", "false");

@@ -29,8 +29,8 @@ import org.scijava.module.Module;
 import org.scijava.module.ModuleService;
 
 import ij.ImagePlus;
+import io.github.contacttracker.ij.TimeSeries;
 import io.github.contacttracker.io.Calibration;
-import io.github.contacttracker.io.ImageFiles;
 import io.github.contacttracker.lab.sim.PaperParticles;
 import io.github.contacttracker.lab.sim.ParticleType;
 import io.github.contacttracker.lab.sim.Scenario;
@@ -53,7 +53,7 @@ final class Simulated {
 
 	/** @return a fresh calibrated time series (T = 5) sharing the simulated pixels */
 	static ImagePlus image() {
-		return ImageFiles.timeSeries("simulated pair", STACK.frames(), CALIBRATION);
+		return TimeSeries.of("simulated pair", STACK.frames(), CALIBRATION);
 	}
 
 	/** @return the true centres of frame {@code t} (px) */

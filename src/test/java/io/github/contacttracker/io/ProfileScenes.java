@@ -26,6 +26,7 @@ import java.util.List;
 import java.util.SplittableRandom;
 
 import ij.ImagePlus;
+import io.github.contacttracker.ij.TimeSeries;
 import io.github.contacttracker.lab.sim.GaussianBesselProfile;
 import io.github.contacttracker.lab.sim.NoiseModel;
 import io.github.contacttracker.lab.sim.ParticleType;
@@ -66,7 +67,7 @@ public final class ProfileScenes {
 			c.add(new double[] { px + d / 2, py });
 			images.add(SimulatedStack.renderFrame(SMALL, c, SIZE, SIZE, SMALL.noise(), rnd, 8).image());
 		}
-		return ImageFiles.timeSeries(title, images, cal);
+		return TimeSeries.of(title, images, cal);
 	}
 
 	/**
@@ -74,7 +75,7 @@ public final class ProfileScenes {
 	 *         default {@code min_area}, and the buttons lower it
 	 */
 	public static ImagePlus tiny(final String title) {
-		return ImageFiles.timeSeries(title, SmallParticles.simulate(1, 11).frames(), Calibration.PIXELS);
+		return TimeSeries.of(title, SmallParticles.simulate(1, 11).frames(), Calibration.PIXELS);
 	}
 
 	/**
@@ -82,7 +83,7 @@ public final class ProfileScenes {
 	 *         suggests values, with warnings)
 	 */
 	public static ImagePlus empty(final String title) {
-		return ImageFiles.timeSeries(title, List.of(SimulatedStack.renderFrame(SMALL, List.of(), SIZE, SIZE, NoiseModel
+		return TimeSeries.of(title, List.of(SimulatedStack.renderFrame(SMALL, List.of(), SIZE, SIZE, NoiseModel
 			.none(), new SplittableRandom(3), 8).image()), Calibration.PIXELS);
 	}
 }

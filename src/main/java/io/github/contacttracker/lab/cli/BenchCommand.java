@@ -36,6 +36,7 @@ import io.github.contacttracker.core.Method;
 import io.github.contacttracker.core.Numbers;
 import io.github.contacttracker.core.TrackerParameters;
 import io.github.contacttracker.core.track.StackTracker;
+import io.github.contacttracker.ij.TimeSeries;
 import io.github.contacttracker.io.AtomicFile;
 import io.github.contacttracker.io.Calibration;
 import io.github.contacttracker.io.ImageFiles;
@@ -94,7 +95,7 @@ final class BenchCommand extends ContactTrackerCli.Subcommand {
 		final long start = System.nanoTime();
 		final ParticleType type = PaperParticles.silica553();
 		final SimulatedStack<UnsignedByteType> stack = SimulatedStack.benchmarkStack(type, frames, 7);
-		if (saveStack != null) ImageFiles.saveTiff(ImageFiles.timeSeries(saveStack.getFileName().toString(), stack
+		if (saveStack != null) ImageFiles.saveTiff(TimeSeries.of(saveStack.getFileName().toString(), stack
 			.frames(), Calibration.ofPixelSize(type.pixelSizeMicrons(), "micron")), saveStack);
 		final List<ArrayImg<UnsignedByteType, ?>> imgs = stack.frames();
 		final double mpx = (double) frames * stack.width() * stack.height() / 1e6;
@@ -167,7 +168,7 @@ final class BenchCommand extends ContactTrackerCli.Subcommand {
 		final Path dir = Files.createTempDirectory("contact-tracker-bench");
 		try {
 			final Path tif = dir.resolve("bench.tif"), csv = dir.resolve("spots.csv");
-			ImageFiles.saveTiff(ImageFiles.timeSeries("bench", stack.frames(), Calibration.ofPixelSize(type
+			ImageFiles.saveTiff(TimeSeries.of("bench", stack.frames(), Calibration.ofPixelSize(type
 				.pixelSizeMicrons(), "micron")), tif);
 			final Path launcher = launcher();
 			headings.add(String.format(Locale.ROOT, "End to end: track %s (%d frames, %.0f MB) --csv, best of %d: in " +
@@ -229,7 +230,7 @@ final class BenchCommand extends ContactTrackerCli.Subcommand {
 		throws IOException
 	{
 		final Path one = dir.resolve("one.tif");
-		ImageFiles.saveTiff(ImageFiles.timeSeries("one", stack.frames().subList(0, 1), Calibration.ofPixelSize(type
+		ImageFiles.saveTiff(TimeSeries.of("one", stack.frames().subList(0, 1), Calibration.ofPixelSize(type
 			.pixelSizeMicrons(), "micron")), one);
 		final int frames = stack.frames().size();
 		headings.add(String.format(Locale.ROOT, "Start-up of a new process (track on 1 frame, best of %d), and the rate " +

@@ -21,6 +21,7 @@
  */
 package io.github.contacttracker.lab.cli;
 
+import io.github.contacttracker.ij.TimeSeries;
 import io.github.contacttracker.io.AtomicFile;
 import java.nio.charset.StandardCharsets;
 import java.io.OutputStreamWriter;
@@ -83,7 +84,7 @@ final class SimulateCommand extends ContactTrackerCli.Subcommand {
 		final SimulatedStack<?> stack = SimulatedStack.simulate(type, scenario, separation, frames, options.value(
 			seedOption), bits);
 		final Calibration cal = Calibration.ofPixelSize(type.pixelSizeMicrons(), "micron");
-		ImageFiles.saveTiff(ImageFiles.timeSeries(stackFile.getFileName().toString(), stack.frames(), cal), stackFile);
+		ImageFiles.saveTiff(TimeSeries.of(stackFile.getFileName().toString(), stack.frames(), cal), stackFile);
 		try {
 			AtomicFile.write(truthFile, stream -> stack.writeTruthCsv(new BufferedWriter(new OutputStreamWriter(stream,
 				StandardCharsets.UTF_8))));
