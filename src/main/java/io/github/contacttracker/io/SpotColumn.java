@@ -44,19 +44,19 @@ public enum SpotColumn {
 	FIRST_PASS_X("FIRST_PASS_X", "First-pass X", "1st-pass X", Dimension.POSITION, false),
 	FIRST_PASS_Y("FIRST_PASS_Y", "First-pass Y", "1st-pass Y", Dimension.POSITION, false),
 	// "SE", not "dX": TrackMate's table shows short names, and dX reads as a displacement
-	SIGMA_X("SIGMA_X", "Std. error X", "SE X", Dimension.LENGTH, false),
-	SIGMA_Y("SIGMA_Y", "Std. error Y", "SE Y", Dimension.LENGTH, false),
-	ACTIVE_AREA("ACTIVE_AREA", "Active area (px)", "Area (px)", Dimension.NONE, true),
+	SIGMA_X("SIGMA_X", "Standard error of X", "SE X", Dimension.LENGTH, false),
+	SIGMA_Y("SIGMA_Y", "Standard error of Y", "SE Y", Dimension.LENGTH, false),
+	ACTIVE_AREA("ACTIVE_AREA", "Active area (pixels)", "Area (px)", Dimension.NONE, true),
 	ACTIVE_RADIUS("ACTIVE_RADIUS", "Active-area radius", "Area radius", Dimension.LENGTH, false),
-	SECOND_AREA("SECOND_AREA", "Second active area (px)", "2nd area (px)", Dimension.NONE, true),
-	ITERATIONS("ITERATIONS", "Solves", "Solves", Dimension.NONE, true),
+	SECOND_AREA("SECOND_AREA", "Second-pass active area (pixels)", "2nd area (px)", Dimension.NONE, true),
+	ITERATIONS("ITERATIONS", "Number of solves", "Solves", Dimension.NONE, true),
 	FLAG_SECOND_PASS("FLAG_SECOND_PASS", "Second pass applied", "2nd pass", Dimension.NONE, true),
 	FLAG_FELL_BACK("FLAG_FELL_BACK", "Fell back to first pass", "Fell back", Dimension.NONE, true),
-	FLAG_DEGENERATE("FLAG_DEGENERATE", "Degenerate system", "Degenerate", Dimension.NONE, true),
+	FLAG_DEGENERATE("FLAG_DEGENERATE", "Degenerate (near-singular) system", "Degenerate", Dimension.NONE, true),
 	FLAG_AT_BORDER("FLAG_AT_BORDER", "Touches border", "At border", Dimension.NONE, true),
 	FLAG_MERGED("FLAG_MERGED", "Suspected merge", "Merged", Dimension.NONE, true),
-	FLAG_NOT_CONVERGED("FLAG_NOT_CONVERGED", "Not converged", "Not conv.", Dimension.NONE, true),
-	FLAG_UNMODELLED_NEIGHBOUR("FLAG_UNMODELLED_NEIGHBOUR", "Neighbour not modelled", "Unmodelled", Dimension.NONE, true),
+	FLAG_NOT_CONVERGED("FLAG_NOT_CONVERGED", "Not converged", "Not converged", Dimension.NONE, true),
+	FLAG_UNMODELLED_NEIGHBOUR("FLAG_UNMODELLED_NEIGHBOUR", "Neighbour not modelled", "Unmodelled nbr.", Dimension.NONE, true),
 	// last, so that the columns before keep their places in files written before kinds
 	KIND("KIND", "Particle kind", "Kind", Dimension.NONE, true);
 

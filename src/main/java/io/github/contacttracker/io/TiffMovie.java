@@ -53,14 +53,16 @@ import ij.process.ShortProcessor;
  * and <b>64-bit float</b> samples (what numpy writes by default; ImageJ stops at "Unsupported BitsPerSample: 64").
  * The same reader takes the pages ImageJ 1 reads wrongly or not at all: several samples per pixel stored plane
  * after plane (what tifffile writes for a stack of 3 or 4 frames) or grey with extra samples (alpha), each sample
- * read as a channel; strips or tiles, uncompressed or LZW, Deflate or PackBits ({@link TiffChunks}). It reads no
+ * read as a channel; pages whose predictor or gapped strips ImageJ 1 ignores ({@link #misreadByImageJ}); strips or
+ * tiles, uncompressed or LZW, Deflate or PackBits ({@link TiffChunks}). It reads no
  * calibration. OME-TIFF is read as ImageJ 1 reads it (its planes, in file order); its OME-XML sizes and order are
  * checked so that channels or Z planes are not taken for time points.
  * <p>
  * Either way the file's directories are first read and checked by {@link TiffDirectories}, so that neither reader
  * believes a number the file has not backed (a looping chain, a size or a strip beyond the file), and ImageJ's
  * messages are caught ({@link ImageJMessages}). The same holds for a movie read by offset ({@link #openByOffset},
- * the Spark job's way, from any {@link SeekableBytes}): the same checks of its directories, then its planes.
+ * the Spark job's way, from any {@link SeekableBytes}): the same checks of its directories, then its planes, each
+ * decoded by our reader.
  */
 final class TiffMovie {
 
@@ -285,7 +287,9 @@ final class TiffMovie {
 
 	/**
 	 * @return whether ImageJ 1's decoder would give wrong pixels without a word, which our reader gives right: the
-	 *         floating-point predictor (3), which it ignores, and signed 8-bit samples, which it reads as unsigned
+	 *         floating-point predictor (3), which it ignores; the horizontal predictor (2) on anything but LZW and
+	 *         Deflate data (PackBits, none), which it ignores too; uncompressed strips with a gap between them, which
+	 *         it reads as one run of bytes from the first; and signed 8-bit samples, which it reads as unsigned
 	 * @throws IOException naming the file and the layout, for a compression neither decoder reads right (JPEG, which
 	 *         ImageJ 1 decodes wrongly; LZMA, Zstd, ...)
 	 */
@@ -293,9 +297,27 @@ final class TiffMovie {
 		boolean misread = false;
 		for (final TiffDirectories.Directory d : layout.directories()) {
 			if (!TiffCompression.supported(d.compression())) TiffChunks.check(file, d);
-			misread |= d.predictor() == 3 || d.bits() == 8 && d.format() == 2;
+			misread |= d.predictor() == 3 || d.predictor() == 2 && !differencedByImageJ(d.compression()) || gapped(d) ||
+				d.bits() == 8 && d.format() == 2;
 		}
 		return misread;
+	}
+
+	/** @return whether ImageJ 1 undoes the horizontal predictor on data of this compression: LZW and Deflate only */
+	private static boolean differencedByImageJ(final int compression) {
+		return compression == 5 || compression == 8 || compression == 32946;
+	}
+
+	/** @return whether {@code d} is stored in uncompressed strips that do not follow each other byte for byte */
+	private static boolean gapped(final TiffDirectories.Directory d) {
+		if (d.compression() != 1 || d.tiled()) return false;
+		final long rowBytes = d.planeBytes() / Math.max(1, d.height());
+		for (int s = 0; s + 1 < d.offsets().length; s++) {
+			final long rows = Math.min(d.rowsPerStrip(), d.height() - (long) s * d.rowsPerStrip());
+			if (rows <= 0) break;
+			if (d.offsets()[s + 1] != d.offsets()[s] + rows * rowBytes) return true;
+		}
+		return false;
 	}
 
 	/** @return the layout with each image's samples as images of one sample each, page after page */
@@ -356,10 +378,12 @@ final class TiffMovie {
 
 	/**
 	 * A TIFF, BigTIFF or OME-TIFF read plane by plane by offset, wherever its bytes are ({@link SeekableBytes}): the
-	 * same image, pixels and calibration as {@link #open} gives for the file, for uncompressed data (what large
-	 * movies are), after the same checks of its directories ({@link TiffDirectories}). Classic TIFF's calibration
-	 * and dimensions come from ImageJ's decoder, shown the first directory only (so a long movie's chain of
-	 * directories is walked once, by {@link TiffDirectories}, and never buffered).
+	 * same image, pixels and calibration as {@link #open} gives for the file, uncompressed or compressed (LZW,
+	 * Deflate, PackBits: each strip or tile is found by its offset and decoded by {@link TiffChunks}), after the
+	 * same checks of its directories ({@link TiffDirectories}); what {@link #open} refuses (JPEG, LZMA, ...) is
+	 * refused in the same line. Classic TIFF's calibration and dimensions come from ImageJ's decoder, shown the first
+	 * directory only (so a long movie's chain of directories is walked once, by {@link TiffDirectories}, and never
+	 * buffered).
 	 *
 	 * @throws IOException one line naming the file, and for what it cannot read, how to convert it
 	 */
@@ -372,11 +396,6 @@ final class TiffMovie {
 		final TiffDirectories.Layout layout = TiffDirectories.read(bytes);
 		if (samplesAsChannels(layout)) return channels(own(bytes, title, samplePlanes(layout), true), layout);
 		if (layout.big()) return own(bytes, title, layout, false);
-		for (final TiffDirectories.Directory p : layout.directories())
-			if (p.compression() != 1) throw new IOException("cannot read " + file + ": " + TiffCompression.name(p
-				.compression()) + "-compressed TIFF (compression " + p.compression() + "), which cannot be read plane by " +
-				"plane by offset; save it " +
-				"uncompressed (Fiji: File > Save As > Tiff..., or tifffile without compression)");
 		if (misreadByImageJ(file, layout)) return own(bytes, title, layout, false);
 		final ImageJMessages.Result<FileInfo[]> info;
 		try {

@@ -87,20 +87,20 @@ public final class FlagAdvice {
 	 */
 	static String advice(final Flag flag, final TrackerParameters used, final FrontEnd ui) {
 		return switch (flag) {
-			case AT_BORDER -> "particles cut by the frame's edge; their centres move when the frame is cropped, use the " +
-				"others (a larger field of view, or a selection away from the edge)";
-			case MERGED -> "active areas holding several particles; " + (used.detectsByImage() ? "detection by the " +
-				"image did not split them: " + checkDiameter(used, ui) : "the threshold joins touching particles: " +
-					byImage(used, ui) + ", or raise " + ui.name(TrackingSettings.THRESHOLD));
+			case AT_BORDER -> "particles cut by the frame's edge, whose centres move when the frame is cropped: use the " +
+				"others, a larger field of view, or a selection away from the edge";
+			case MERGED -> "active areas holding several particles, " + (used.detectsByImage() ? "which detection by " +
+				"the image did not split: " + checkDiameter(used, ui) : "as the threshold joins touching particles: " +
+					byImage(used, ui) + "; or raise " + ui.name(TrackingSettings.THRESHOLD));
 			case FELL_BACK -> secondPass(used) ? fellBackFromSecondPass(used, ui) : fellBackFromFit(ui);
 			case NOT_CONVERGED -> secondPass(used) ? "second passes that stopped at their limit before the centres " +
-				"settled: neighbours' discs that take pixels from each other in turn; try a smaller " + ui.name(
+				"settled, as neighbours' discs take pixels from each other in turn: try a smaller " + ui.name(
 					TrackingSettings.R_OUT) + ", or " + modelsNeighbours(ui) : notSettledFit(used, ui);
-			case UNMODELLED_NEIGHBOUR -> "a neighbour the fit could not model lies within reach; it is usually a merge " +
-				"of particles" + (used.detectsByImage() ? " that detection by the image did not split: " + checkDiameter(
+			case UNMODELLED_NEIGHBOUR -> "a neighbour within reach that the fit could not model, usually a merge of " +
+				"particles" + (used.detectsByImage() ? " that detection by the image did not split: " + checkDiameter(
 					used, ui) : ": " + byImage(used, ui));
-			case DEGENERATE -> "areas without gradient lines that meet (flat tops or noise); raise " + ui.name(
-				TrackingSettings.MIN_AREA) + " (now " + used.minArea() + ")" + (used.diameter() > 0 ? "" : " or give " +
+			case DEGENERATE -> "areas without gradient lines that meet, such as flat tops or noise: raise " + ui.name(
+				TrackingSettings.MIN_AREA) + " above " + used.minArea() + (used.diameter() > 0 ? "" : ", or give " +
 					ui.name(TrackingSettings.DIAMETER));
 			case SECOND_PASS -> "";
 		};
@@ -108,13 +108,13 @@ public final class FlagAdvice {
 
 	/** @return the advice for centres the paper's second pass cannot place: a method that needs no exclusion disc */
 	private static String modelsNeighbours(final FrontEnd ui) {
-		return ui.name(TrackingSettings.METHOD, Method.FIT.key()) + " (or " + Method.DEBLEND.key() + "), which models " +
+		return ui.set(TrackingSettings.METHOD, Method.FIT.key()) + " or " + Method.DEBLEND.key() + ", which model " +
 			"each neighbour's light instead of cutting it out";
 	}
 
-	/** @return where to read the particles' size from a movie */
-	private static String profile(final FrontEnd ui) {
-		return "(" + ui.measuresSize() + " shows it)";
+	/** @return the end of a sentence that checks a setting against the particles' size, and says what measures it */
+	private static String againstTheSize(final FrontEnd ui) {
+		return " against the particles' size, which " + ui.measuresSize() + " measures";
 	}
 
 	/** @return whether the run's centres come from the paper's second pass (once or iterated) */
@@ -129,49 +129,49 @@ public final class FlagAdvice {
 	 */
 	private static String fellBackFromSecondPass(final TrackerParameters used, final FrontEnd ui) {
 		final double r = used.exclusionRadius(), d = used.diameter();
-		final String cover = d > 0 && r >= d ? " (r_out is at least the diameter, " + Numbers.fmt(d, 2) + " px: a " +
-			"touching neighbour's disc covers the particle's centre)" : "";
-		return "centres kept from the first pass because the neighbours' discs of radius r_out, " + Numbers.fmt(r, 2) +
-			" px, left fewer than " + ui.name(TrackingSettings.MIN_SECOND_AREA) + " (" + used.minSecondArea() + ") " +
-			"pixels of the active area, or lines that do not meet" + cover + "; in a field of touching particles use " +
-			modelsNeighbours(ui) + ", or check " + ui.name(TrackingSettings.R_OUT) + " against the particles' size " +
-			profile(ui);
+		final String cover = d > 0 && r >= d ? "; r_out is at least the diameter, " + Numbers.fmt(d, 2) + " px, so a " +
+			"touching neighbour's disc covers the particle's centre" : "";
+		return "centres kept from the first pass: the neighbours' discs, of radius r_out = " + Numbers.fmt(r, 2) +
+			" px, left fewer than " + used.minSecondArea() + " pixels of the active area, the least that " + ui.name(
+				TrackingSettings.MIN_SECOND_AREA) + " allows, or lines that do not meet" + cover + ". In a field of " +
+			"touching particles " + modelsNeighbours(ui) + "; or check " + ui.name(TrackingSettings.R_OUT) +
+			againstTheSize(ui);
 	}
 
 	/** A profile method whose fit could not be made: the second pass's centres need no fit. */
 	private static String fellBackFromFit(final FrontEnd ui) {
-		return "centres kept from a first pass because the refinement could not be made (too few pixels left, or a fit " +
-			"without enough light; on a background clipped at 0, as confocal images have, the fit leaves out every " +
-			"pixel near 0 and cannot place the background); check " + ui.name(TrackingSettings.R_OUT) + " against the " +
-			"particles' size " + profile(ui) + ", or use " + ui.name(TrackingSettings.METHOD, Method.ITERATIVE.key()) +
-			", whose centres need no fit";
+		return "centres kept from a first pass because the refinement could not be made: too few pixels were left, or " +
+			"the fit had too little light; on a background clipped at 0, as confocal images have, the fit leaves out " +
+			"every pixel near 0 and cannot place the background. Check " + ui.name(TrackingSettings.R_OUT) +
+			againstTheSize(ui) + ", or " + ui.set(TrackingSettings.METHOD, Method.ITERATIVE.key()) + ", whose " +
+			"centres need no fit";
 	}
 
 	/** A profile method's fit or rounds that did not settle: one profile for unlike particles, or too dense a field. */
 	private static String notSettledFit(final TrackerParameters used, final FrontEnd ui) {
-		final String kinds = switch (used.kinds()) {
-			case 0 -> "the particles' profile may differ between them (give their number of kinds with " +
-				ui.name(TrackingSettings.KINDS) + "), ";
-			case 1 -> "the particles may be of several kinds, each with its own profile (" + ui.name(TrackingSettings.KINDS,
-				"0") + " finds them), ";
-			default -> "";
+		final String denser = "the field may be denser than the fit can hold, so try a smaller " + ui.name(
+			TrackingSettings.R_OUT);
+		return "fits or profile rounds that did not settle: " + switch (used.kinds()) {
+			case 0 -> "the particles' profiles may differ, so give their number of kinds with " + ui.name(
+				TrackingSettings.KINDS) + "; or " + denser;
+			case 1 -> "the particles may be of several kinds, each with its own profile, so " + ui.set(
+				TrackingSettings.KINDS, "0") + " to find them; or " + denser;
+			default -> denser;
 		};
-		return "fits or profile rounds that did not settle; " + kinds + "or the field is denser than the fit can " +
-			"hold: try a smaller " + ui.name(TrackingSettings.R_OUT);
 	}
 
 	/** @return the advice to check a given diameter, which sets the scale of the detection by the image */
 	private static String checkDiameter(final TrackerParameters used, final FrontEnd ui) {
-		return "check " + ui.name(TrackingSettings.DIAMETER) + " (" + Numbers.fmt(used.diameter(), 2) + " px) against " +
-			"the particles' size " + profile(ui);
+		return "check " + ui.name(TrackingSettings.DIAMETER) + ", now " + Numbers.fmt(used.diameter(), 2) + " px," +
+			againstTheSize(ui);
 	}
 
 	/** @return what to try for particles the threshold merges: detection by the image, and what it needs */
 	private static String byImage(final TrackerParameters used, final FrontEnd ui) {
 		final boolean methodFinds = used.method().needsProfile() || used.method() == Method.ITERATIVE;
-		final String and = ui == FrontEnd.COMMAND_LINE ? " " : " and ";
-		return "use the detection by the image (" + (methodFinds ? "" : ui.name(TrackingSettings.METHOD, Method.FIT
-			.key()) + and) + ui.name(TrackingSettings.DETECTION, TrackingSettings.IMAGE) + (used.diameter() > 0 ? ""
-				: " with the particles' " + ui.name(TrackingSettings.DIAMETER)) + ")";
+		final String image = TrackingSettings.IMAGE;
+		return "to find the particles by their image instead, " + (methodFinds ? ui.set(TrackingSettings.DETECTION,
+			image) : ui.set(TrackingSettings.METHOD, Method.FIT.key(), TrackingSettings.DETECTION, image)) + (used
+				.diameter() > 0 ? "" : " and give " + ui.name(TrackingSettings.DIAMETER));
 	}
 }

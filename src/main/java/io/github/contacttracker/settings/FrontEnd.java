@@ -21,18 +21,22 @@
  */
 package io.github.contacttracker.settings;
 
+import java.util.ArrayList;
+import java.util.List;
+
 /**
  * Where a user changes the settings, and so how a message names one: an option on the command line, a field of
  * Fiji's dialog (and its key in a macro call), a field of TrackMate's panel. Advice such as "use --method fit" helps
- * only the user who types options; one who fills in a dialog must be pointed to the dialog's field.
+ * only the user who types options; one who fills in a dialog must be pointed to the dialog's field. The phrases read
+ * inside a sentence as they are: a field's name is followed by at most one bracket, its macro key.
  */
 public enum FrontEnd {
 
-	/** The command line: {@code --method fit}. */
-	COMMAND_LINE("contact-tracker profile MOVIE"),
-	/** Fiji's dialog and macros: {@code 'Method: fit' (macro method=fit)}. */
-	FIJI("Plugins > Tracking > Contact Tracker Profile, or the dialog's 'Measure from the image'"),
-	/** TrackMate's detector panel: {@code 'Method: fit'}. */
+	/** The command line: {@code use --method fit}. */
+	COMMAND_LINE("'contact-tracker profile MOVIE'"),
+	/** Fiji's dialog and macros: {@code set 'Method' to fit (macro method=fit)}. */
+	FIJI("the dialog's 'Measure from the image' or Plugins > Tracking > Contact Tracker Profile"),
+	/** TrackMate's detector panel: {@code set 'Method' to fit}. */
 	TRACKMATE("the panel's 'Measure from the image'");
 
 	private final String measuresSize;
@@ -56,18 +60,43 @@ public enum FrontEnd {
 	/**
 	 * @param setting a tracking setting
 	 * @param value a value of it, as typed
-	 * @return how a user of this front end gives the setting that value: {@code --method fit},
-	 *         {@code 'Method: fit' (macro method=fit)}
+	 * @return what a user of this front end does to give the setting that value, as an imperative:
+	 *         {@code use --method fit}, {@code set 'Method' to fit (macro method=fit)}
 	 */
-	public String name(final Setting<?> setting, final String value) {
+	public String set(final Setting<?> setting, final String value) {
+		return set(List.of(setting), List.of(value));
+	}
+
+	/**
+	 * @return what a user of this front end does to give two settings their values at once:
+	 *         {@code use --method fit --detection image},
+	 *         {@code set 'Method' to fit and 'Detection' to image (macro method=fit detection=image)}
+	 */
+	public String set(final Setting<?> first, final String firstValue, final Setting<?> second,
+		final String secondValue)
+	{
+		return set(List.of(first, second), List.of(firstValue, secondValue));
+	}
+
+	private String set(final List<Setting<?>> settings, final List<String> values) {
+		final List<String> fields = new ArrayList<>(), options = new ArrayList<>(), keys = new ArrayList<>();
+		for (int i = 0; i < settings.size(); i++) {
+			final Setting<?> s = settings.get(i);
+			fields.add("'" + s.label() + "' to " + values.get(i));
+			options.add(s.cliOption() + " " + values.get(i));
+			keys.add(s.name() + "=" + values.get(i));
+		}
 		return switch (this) {
-			case COMMAND_LINE -> setting.cliOption() + " " + value;
-			case FIJI -> "'" + setting.label() + ": " + value + "' (macro " + setting.name() + "=" + value + ")";
-			case TRACKMATE -> "'" + setting.label() + ": " + value + "'";
+			case COMMAND_LINE -> "use " + String.join(" ", options);
+			case FIJI -> "set " + String.join(" and ", fields) + " (macro " + String.join(" ", keys) + ")";
+			case TRACKMATE -> "set " + String.join(" and ", fields);
 		};
 	}
 
-	/** @return what in this front end measures the particles' size and profile on a movie */
+	/**
+	 * @return what in this front end measures the particles' size and profile on a movie, as the subject of a
+	 *         clause ("which ... measures")
+	 */
 	public String measuresSize() {
 		return measuresSize;
 	}

@@ -84,8 +84,8 @@ public class ContactTrackerSpotFeatures<T extends RealType<T> & NativeType<T>> i
 			if (c == SpotColumn.SIGMA_Y) for (final String px : List.of(SIGMA_X_MPX, SIGMA_Y_MPX)) {
 				features.add(px);
 				final String axis = px.equals(SIGMA_X_MPX) ? "X" : "Y";
-				NAMES.put(px, "Std. error " + axis + " (1/1000 px)");
-				SHORT_NAMES.put(px, "SE " + axis + " (px/1000)");
+				NAMES.put(px, "Standard error of " + axis + " (1/1000 px)");
+				SHORT_NAMES.put(px, "SE " + axis + " (1/1000 px)");
 				DIMENSIONS.put(px, Dimension.NONE);
 				IS_INT.put(px, false);
 			}

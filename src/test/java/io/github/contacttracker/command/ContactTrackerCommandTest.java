@@ -943,7 +943,7 @@ class ContactTrackerCommandTest extends WithContext {
 			Simulated.TYPE.diameterPx(), "diameter", Simulated.TYPE.diameterPx(), "overlay", false).replaceAll("\\s+",
 				" ");
 		assertTrue(log.contains("are flagged, most FELL_BACK"), log);
-		assertTrue(log.contains("'Method: fit' (macro method=fit)"), log);
+		assertTrue(log.contains("set 'Method' to fit (macro method=fit)"), log);
 		assertFalse(log.contains("--method") || log.contains("--r-out"), log);
 	}
 

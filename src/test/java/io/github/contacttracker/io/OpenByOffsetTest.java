@@ -44,8 +44,9 @@ import net.imglib2.type.numeric.RealType;
 
 /**
  * Reading a TIFF by offset (what the Spark job does through Hadoop) gives the very frames and calibration that
- * {@link ImageFiles#open} gives the command line, for every kind of TIFF the command line reads uncompressed;
- * compressed TIFF and other formats are refused in one line that says how to convert them.
+ * {@link ImageFiles#open} gives the command line, for every kind of TIFF the command line reads, uncompressed or
+ * compressed; what the command line refuses is refused in its line, and other formats in one line that says how to
+ * convert them.
  */
 class OpenByOffsetTest {
 
@@ -100,7 +101,7 @@ class OpenByOffsetTest {
 	}
 
 	@Test
-	void compressedTiffAndOtherFormatsAreRefusedInOneLineSayingHowToConvert() throws IOException {
+	void otherFormatsAreRefusedInOneLineSayingHowToConvert() throws IOException {
 		final Path png = dir.resolve("frame.png");
 		Files.write(png, new byte[] { (byte) 0x89, 'P', 'N', 'G', 13, 10, 26, 10, 0, 0, 0, 13, 'I', 'H', 'D', 'R' });
 		final IOException notTiff = assertThrows(IOException.class, () -> ImageFiles.openByOffset(SeekableBytes.of(
@@ -108,23 +109,36 @@ class OpenByOffsetTest {
 		assertTrue(notTiff.getMessage().contains("not a TIFF") && notTiff.getMessage().contains("Save As > Tiff"),
 			notTiff.getMessage());
 		assertEquals(1, notTiff.getMessage().lines().count());
-		// a compressed TIFF (PackBits), which the command line reads through ImageJ
-		final Path packed = dir.resolve("packed.tif");
-		TestMovies.writeTiff(packed, false, 8, 1, TestMovies.frames(3, 20, 220), null, 0);
-		final byte[] bytes = Files.readAllBytes(packed);
-		// each directory (8-byte header, then 2 + 9 x 12 + 4 bytes apiece): its 4th entry is the compression (259),
-		// set from 1 (none) to 32773 (PackBits)
-		for (int p = 0; p < 3; p++) {
-			final int value = 8 + p * 114 + 2 + 3 * 12 + 8;
-			assertEquals(1, bytes[value]);
-			bytes[value] = (byte) 0x05;
-			bytes[value + 1] = (byte) 0x80;
-		}
-		Files.write(packed, bytes);
-		final IOException compressed = assertThrows(IOException.class, () -> ImageFiles.openByOffset(SeekableBytes
-			.of(packed)));
-		assertTrue(compressed.getMessage().contains("compressed TIFF (compression 32773)") && compressed.getMessage()
-			.contains("save it uncompressed"), compressed.getMessage());
+	}
+
+	/**
+	 * A grey movie compressed as TIFF writers do (LZW, Deflate under both its codes, PackBits; with and without the
+	 * horizontal predictor; in strips) gives by offset the command line's frames; JPEG, which the command line
+	 * refuses, is refused by offset in the very same line.
+	 */
+	@Test
+	void compressedTiffGivesTheCommandLinesFramesOrItsRefusal() throws IOException {
+		for (final int compression : new int[] { 5, 8, 32946, 32773 })
+			for (final int predictor : new int[] { 1, 2 }) {
+				final Path file = TiffLayoutsTest.write(dir.resolve("c" + compression + "-" + predictor + ".tif"),
+					new TiffLayoutsTest.Page(TestMovies.W, TestMovies.H, 16, 1, 1, 1, 1, compression, predictor, 0, 7),
+					FRAMES, java.nio.ByteOrder.LITTLE_ENDIAN);
+				final ImagePlusFrames cli = ImagePlusFrames.of(ImageFiles.open(file), 0);
+				final ImagePlusFrames byOffset = ImagePlusFrames.of(ImageFiles.openByOffset(SeekableBytes.of(file)), 0);
+				assertEquals(FRAMES, cli.frameCount(), file.toString());
+				assertEquals(FRAMES, byOffset.frameCount(), file.toString());
+				assertEquals(cli.calibration(), byOffset.calibration(), file.toString());
+				for (int t = 0; t < FRAMES; t++)
+					assertArrayEquals(values(cli.frame(t)), values(byOffset.frame(t)), file + " frame " + (t + 1));
+			}
+		final Path jpeg = TiffLayoutsTest.write(dir.resolve("jpeg.tif"), new TiffLayoutsTest.Page(TestMovies.W,
+			TestMovies.H, 8, 1, 1, 1, 1, 7, 1, 0, TestMovies.H), FRAMES, java.nio.ByteOrder.LITTLE_ENDIAN);
+		final IOException byFile = assertThrows(IOException.class, () -> ImageFiles.open(jpeg));
+		final IOException byOffset = assertThrows(IOException.class, () -> ImageFiles.openByOffset(SeekableBytes.of(
+			jpeg)));
+		assertEquals(byFile.getMessage(), byOffset.getMessage());
+		assertTrue(byOffset.getMessage().contains("JPEG-compressed TIFF is not supported"), byOffset.getMessage());
+		assertEquals(1, byOffset.getMessage().lines().count());
 	}
 
 	private static double[] values(final RandomAccessibleInterval<? extends RealType<?>> frame) {

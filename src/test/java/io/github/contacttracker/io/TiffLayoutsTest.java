@@ -80,7 +80,7 @@ public class TiffLayoutsTest {
 	{
 		/** @return the uncompressed bytes of one strip or tile of pixels x0.., y0.. of {@code sampleOf} (-1: all) */
 		byte[] piece(final int t, final int x0, final int y0, final int pw, final int ph, final int sampleOf,
-			final ByteOrder order)
+			final ByteOrder order, final Pixels pixels)
 		{
 			final int spp = sampleOf < 0 ? samples : 1, bytes = bits / 8;
 			final ByteBuffer b = ByteBuffer.allocate(pw * ph * spp * bytes).order(order);
@@ -89,7 +89,7 @@ public class TiffLayoutsTest {
 					for (int k = 0; k < spp; k++) {
 						final int s = sampleOf < 0 ? k : sampleOf;
 						// past the image's edge (a tile's padding) a value nobody reads
-						final double v = x < width && y < height ? value(t, s, x, y, bits, format) : 99;
+						final double v = x < width && y < height ? pixels.at(t, s, x, y) : 99;
 						if (format == 3) b.putFloat((float) v);
 						else if (bits == 8) b.put((byte) v);
 						else if (bits == 16) b.putShort((short) v);
@@ -102,8 +102,24 @@ public class TiffLayoutsTest {
 		}
 	}
 
+	/** The value of sample {@code s} of page {@code t} at {@code (x, y)}. */
+	@FunctionalInterface
+	public interface Pixels {
+		double at(int t, int s, int x, int y);
+	}
+
 	/** Writes {@code pages} pages of {@code p}'s layout, each piece compressed, and returns the file. */
 	public static Path write(final Path file, final Page p, final int pages, final ByteOrder order) throws IOException {
+		return write(file, p, pages, order, (t, s, x, y) -> value(t, s, x, y, p.bits, p.format));
+	}
+
+	/**
+	 * Writes {@code pages} pages of {@code p}'s layout holding {@code pixels} (in the range of {@code p}'s samples),
+	 * each piece compressed, and returns the file.
+	 */
+	public static Path write(final Path file, final Page p, final int pages, final ByteOrder order,
+		final Pixels pixels) throws IOException
+	{
 		final ByteArrayOutputStream data = new ByteArrayOutputStream();
 		data.write(new byte[8]);
 		final List<long[]> offsets = new ArrayList<>(), counts = new ArrayList<>();
@@ -115,7 +131,7 @@ public class TiffLayoutsTest {
 					for (int x0 = 0; x0 < p.width; x0 += pw) {
 						// a tile is stored whole; a strip only as far as the image goes
 						final byte[] raw = p.piece(t, x0, y0, pw, p.tile > 0 ? ph : Math.min(ph, p.height - y0), p.planar == 2 ?
-							s : -1, order);
+							s : -1, order, pixels);
 						final byte[] packed = compress(p.compression, raw);
 						at.add((long) data.size());
 						n.add((long) packed.length);
@@ -407,7 +423,9 @@ public class TiffLayoutsTest {
 			for (final ByteOrder order : new ByteOrder[] { ByteOrder.LITTLE_ENDIAN, ByteOrder.BIG_ENDIAN })
 				for (final int pages : new int[] { 1, 3 }) {
 					final Path file = write(dir.resolve("predictor3-" + p.tile + order + pages + ".tif"), p, pages, order);
-					for (final ImagePlus imp : new ImagePlus[] { ImageFiles.open(file) }) {
+					for (final ImagePlus imp : new ImagePlus[] { ImageFiles.open(file), ImageFiles.openByOffset(SeekableBytes
+						.of(file)) })
+					{
 						assertEquals(pages, imp.getStackSize());
 						for (int t = 0; t < pages; t++)
 							for (int y = 0; y < p.height; y++)
@@ -449,6 +467,39 @@ public class TiffLayoutsTest {
 	void longLzwDataFillsAndClearsTheTable() throws IOException {
 		final Page p = new Page(300, 200, 16, 1, 3, 2, 2, 5, 1, 0, 200);
 		assertChannels(write(dir.resolve("long-lzw.tif"), p, 1, ByteOrder.LITTLE_ENDIAN), p, 1);
+	}
+
+	/**
+	 * Pages of one sample, the layout of a grey movie, in every compression we decode, with and without the
+	 * horizontal predictor, in strips (of 5 rows: 8-bit ones then lie a byte apart, as TIFF's even offsets have
+	 * them) or tiles, in either byte order: every value of every page is read by file (the command line's reader) and
+	 * by offset (the Spark job's). ImageJ 1 alone gave wrong pixels without a word for two of them: PackBits with the
+	 * predictor (it undoes the predictor only for LZW and Deflate) and uncompressed strips with a gap between them
+	 * (it reads them as one run of bytes).
+	 */
+	@Test
+	void oneSamplePagesOfEveryCompressionAreReadByFileAndByOffset() throws IOException {
+		int files = 0;
+		for (final int compression : new int[] { 1, 5, 8, 32946, 32773 })
+			for (final int predictor : new int[] { 1, 2 })
+				for (final int bits : new int[] { 8, 16 })
+					for (final int tile : new int[] { 0, 16 }) {
+						final Page p = new Page(37, 13, bits, 1, 1, 1, 1, compression, predictor, tile, tile > 0 ? 0 : 5);
+						final ByteOrder order = files++ % 2 == 0 ? ByteOrder.LITTLE_ENDIAN : ByteOrder.BIG_ENDIAN;
+						final Path file = write(dir.resolve("one-" + compression + "-" + predictor + "-" + bits + "-" + tile +
+							".tif"), p, 3, order);
+						for (final boolean byOffset : new boolean[] { false, true }) {
+							final ImagePlus imp = byOffset ? ImageFiles.openByOffset(SeekableBytes.of(file)) : ImageFiles.open(file);
+							final String what = file.getFileName() + (byOffset ? " by offset" : " by file");
+							assertEquals(3, imp.getStackSize(), what);
+							assertEquals(bits, imp.getBitDepth(), what);
+							for (int t = 0; t < 3; t++)
+								for (int y = 0; y < p.height; y++)
+									for (int x = 0; x < p.width; x++)
+										assertEquals(value(t, 0, x, y, bits, 1), imp.getStack().getProcessor(t + 1).getf(x, y), 0, what +
+											": page " + t + " at " + x + "," + y);
+						}
+					}
 	}
 
 	/** What we do not decode, or damaged pieces: one line naming the file and what is wrong, nothing else thrown. */

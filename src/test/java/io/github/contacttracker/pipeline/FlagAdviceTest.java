@@ -26,6 +26,7 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
+import java.util.regex.Pattern;
 
 import org.junit.jupiter.api.Test;
 
@@ -97,7 +98,8 @@ class FlagAdviceTest {
 	void fellBackIsExplainedByTheMethodUsed() {
 		for (final Method m : List.of(Method.PAPER, Method.ITERATIVE)) {
 			final String a = cli(Flag.FELL_BACK, used(m, Detection.THRESHOLD, 34.06, 0));
-			assertTrue(a.contains("r_out, 43 px") && a.contains("--min-second-area (10)"), a);
+			assertTrue(a.contains("r_out = 43 px") && a.contains("fewer than 10 pixels") && a.contains(
+				"--min-second-area"), a);
 			assertTrue(a.contains("r_out is at least the diameter, 34.06 px"), a);
 			assertTrue(a.contains("--method fit"), a);
 			assertFalse(a.contains("--method iterative"), a);
@@ -112,7 +114,7 @@ class FlagAdviceTest {
 		assertTrue(cli(Flag.MERGED, used(Method.PAPER, Detection.THRESHOLD, 34.06, 0)).contains(
 			"--method fit --detection image"));
 		assertTrue(cli(Flag.MERGED, used(Method.FIT, Detection.THRESHOLD, 0, 0)).contains(
-			"--detection image with the particles' --diameter"));
+			"use --detection image and give --diameter"));
 	}
 
 	/**
@@ -143,14 +145,16 @@ class FlagAdviceTest {
 		final List<String> fiji = new TrackingPipeline(settings, FrontEnd.FIJI).run(source, false).warnings();
 		final String inFiji = fiji.get(fiji.size() - 1);
 		assertTrue(inFiji.startsWith("4 of 4 spots (100%) are flagged, most FELL_BACK (4): "), inFiji);
-		assertTrue(inFiji.contains("'Method: fit' (macro method=fit)"), inFiji);
+		assertTrue(inFiji.contains("set 'Method' to fit (macro method=fit)"), inFiji);
 		assertTrue(inFiji.contains("'Min second area' (macro min_second_area)"), inFiji);
 		assertTrue(inFiji.contains("Contact Tracker Profile"), inFiji);
 		assertFalse(inFiji.contains("--"), inFiji);
 		final List<String> panel = new TrackingPipeline(settings, FrontEnd.TRACKMATE).run(source, false).warnings();
 		final String inPanel = panel.get(panel.size() - 1);
-		assertTrue(inPanel.contains("'Method: fit'"), inPanel);
+		assertTrue(inPanel.contains("set 'Method' to fit"), inPanel);
 		assertFalse(inPanel.contains("--") || inPanel.contains("macro"), inPanel);
+		for (final String line : List.of(warning, inFiji, inPanel))
+			assertPlain(line, "the run's warning");
 	}
 
 	/**
@@ -166,13 +170,38 @@ class FlagAdviceTest {
 			for (final String a : List.of(fiji, panel))
 				assertFalse(a.contains("--") || a.contains("contact-tracker "), flag + ": " + a);
 			for (final Setting<?> s : TrackingSettings.ALL)
-				if (cli.contains(s.cliOption() + " ") || cli.endsWith(s.cliOption()) || cli.contains(s.cliOption() +
-					")"))
-				{
-					assertTrue(fiji.contains("'" + s.label()) && fiji.contains("macro " + s.name()), () -> s.name() +
-						" in " + fiji);
+				if (Pattern.compile(Pattern.quote(s.cliOption()) + "(?![\\w-])").matcher(cli).find()) {
+					assertTrue(fiji.contains("'" + s.label() + "'") && Pattern.compile("\\(macro [^)]*\\b" + s.name() +
+						"\\b").matcher(fiji).find(), () -> s.name() + " in " + fiji);
 					assertTrue(panel.contains("'" + s.label()), () -> s.name() + " in " + panel);
 				}
 		});
+	}
+
+	/**
+	 * Every advice, in every front end, reads once as a sentence: a setting's name is followed by at most one bracket
+	 * (its macro key), never by a second with its value, and no bracket is empty or holds another.
+	 */
+	@Test
+	void everyAdviceIsPlainText() {
+		forEveryWarning((flag, used) -> {
+			for (final FrontEnd ui : FrontEnd.values())
+				assertPlain(FlagAdvice.advice(flag, used, ui), flag + " under " + used + " in " + ui);
+		});
+	}
+
+	/** Two bracket groups in a row, an empty one, or one inside another fail; so do unbalanced brackets. */
+	private static void assertPlain(final String line, final String where) {
+		assertFalse(Pattern.compile("\\)\\s*\\(").matcher(line).find(), () -> where + ", two brackets in a row: " +
+			line);
+		assertFalse(Pattern.compile("\\(\\s*\\)").matcher(line).find(), () -> where + ", empty brackets: " + line);
+		int depth = 0;
+		for (int i = 0; i < line.length(); i++) {
+			if (line.charAt(i) == '(') depth++;
+			else if (line.charAt(i) == ')') depth--;
+			final int d = depth;
+			assertTrue(d == 0 || d == 1, () -> where + ", brackets nested or unbalanced at " + d + ": " + line);
+		}
+		assertEquals(0, depth, () -> where + ", an unclosed bracket: " + line);
 	}
 }
