@@ -176,7 +176,8 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 		description = DialogHelp.TIP + TrackingSettings.HELP_PARTICLES)
 	private String particles = TrackingSettings.PARTICLES.defaultValue();
 
-	@Parameter(validater = "validateInputs", label = "Detection", choices = { "threshold", TrackingSettings.IMAGE },
+	@Parameter(validater = "validateInputs", label = "Detection", choices = { TrackingSettings.AUTO, TrackingSettings.BY_THRESHOLD,
+		TrackingSettings.IMAGE },
 		description = DialogHelp.TIP + TrackingSettings.HELP_DETECTION)
 	private String detection = TrackingSettings.DETECTION.defaultValue();
 

@@ -32,17 +32,24 @@ public enum Detection {
 	 */
 	IMAGE,
 	/** By the threshold: each connected component of the pixels at or above it is one particle (the paper's step 1). */
-	THRESHOLD;
+	THRESHOLD,
+	/**
+	 * Chosen per movie from its sample frames ({@code core.detect.DetectionChoice}): by the image where the
+	 * threshold joins touching particles into one component, by the threshold where each of its components is one
+	 * particle (the same particles, at a fraction of the cost). Only the profile methods choose; the others, and a
+	 * frame analysed on its own, use the threshold.
+	 */
+	AUTO;
 
 	/**
-	 * The default: by the threshold. Detection by the image finds touching particles that the threshold merges, dim
+	 * The default: {@link #AUTO}. Detection by the image finds touching particles that the threshold merges, dim
 	 * particles it misses and particles on ramps and clipped backgrounds (the documentation's Methods, Detection by
-	 * the image), but it costs several fits per frame, and on a background mottled with hundreds of seeds a fit of
-	 * them all in turn: it is chosen with {@code --detection image}.
+	 * the image), but it costs several fits per frame; where the threshold's components are single particles it
+	 * finds the same ones, and the threshold is kept.
 	 */
-	public static final Detection DEFAULT = THRESHOLD;
+	public static final Detection DEFAULT = AUTO;
 
-	/** @return the name used in settings ({@code image}, {@code threshold}) */
+	/** @return the name used in settings ({@code image}, {@code threshold}, {@code auto}) */
 	public String key() {
 		return name().toLowerCase(Locale.ROOT);
 	}
@@ -51,6 +58,6 @@ public enum Detection {
 	public static Detection of(final String key) {
 		for (final Detection d : values())
 			if (d.key().equalsIgnoreCase(key.trim())) return d;
-		throw new InvalidInputException("detection must be image or threshold, not '" + key + "'");
+		throw new InvalidInputException("detection must be auto, image or threshold, not '" + key + "'");
 	}
 }

@@ -40,7 +40,8 @@ package io.github.contacttracker.core;
  * @param kinds kinds of particle the profile methods tell apart, each with its own measured profile: 0 found
  *        automatically (by size and brightness, {@code core.kind.Kinds}), 1 all alike, or that many
  * @param detection how the profile methods find the particles: by their image ({@link Detection#IMAGE}, given a
- *        diameter) or by the threshold's components; the paper's method and the first pass always use the threshold
+ *        diameter), by the threshold's components, or either, chosen per movie ({@link Detection#AUTO}); the paper's
+ *        method and the first pass always use the threshold
  */
 public record TrackerParameters(double threshold, double rOut, int minArea, Connectivity connectivity,
 	int minSecondArea, Method method, double diameter, int kinds, Detection detection)
@@ -110,7 +111,7 @@ public record TrackerParameters(double threshold, double rOut, int minArea, Conn
 			throw new InvalidInputException("diameter must be >= 0 pixels (0 = not given), not " + diameter);
 		if (kinds < 0 || kinds > KINDS_AT_MOST) throw new InvalidInputException("kinds must be " + KINDS_ALLOWED +
 			", not " + kinds);
-		if (detection == null) throw new InvalidInputException("detection must be given (image or threshold)");
+		if (detection == null) throw new InvalidInputException("detection must be given (auto, image or threshold)");
 	}
 
 	/** Parameters with the {@link Detection#DEFAULT default detection}. */
@@ -127,6 +128,14 @@ public record TrackerParameters(double threshold, double rOut, int minArea, Conn
 	 */
 	public boolean detectsByImage() {
 		return detection == Detection.IMAGE && diameter > 0 && (method.needsProfile() || method == Method.ITERATIVE);
+	}
+
+	/**
+	 * @return whether a movie's detection is still to be chosen from its sample frames ({@link Detection#AUTO}, a
+	 *         profile method and a diameter; see {@code core.detect.DetectionChoice})
+	 */
+	public boolean choosesDetection() {
+		return detection == Detection.AUTO && diameter > 0 && method.needsProfile();
 	}
 
 	/**

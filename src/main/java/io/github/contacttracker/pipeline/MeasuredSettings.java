@@ -27,6 +27,7 @@ import java.util.Set;
 import io.github.contacttracker.advisor.ProfileAnalysis;
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.core.Method;
+import io.github.contacttracker.core.detect.DetectionChoice;
 import io.github.contacttracker.core.detect.ImageDetection;
 import io.github.contacttracker.core.detect.ParticleScale;
 import io.github.contacttracker.core.image.NoiseEstimate;
@@ -88,12 +89,15 @@ public final class MeasuredSettings {
 			r = ProfileAnalysis.analyse(seen, v.diameter(), 0);
 		}
 		catch (final InvalidInputException e) {
-			if (imageCanTake(v)) return byImage(name, seen, v, thresholdGiven, rOutGiven, said, e);
+			final boolean otherContrast = autoSeesOtherContrast(v, seen);
+			if (imageCanTake(v) && !(auto(v) && (thresholdGiven && rOutGiven || otherContrast))) return byImage(name,
+				seen, v, thresholdGiven, rOutGiven, said, e);
 			if (thresholdGiven && rOutGiven) return new Result(settings, "contact-tracker: " + name + ": the diameter " +
 				"could not be measured (" + InvalidInputException.oneLine(e.getMessage()) + "); tracked without it (give --diameter)");
 			throw new InvalidInputException("cannot measure " + (thresholdGiven ? "" : "--threshold ") + (thresholdGiven ||
 				rOutGiven ? "" : "and ") + (rOutGiven ? "" : "--r-out ") + "on the first frame of " + name + ": " + e
-					.getMessage() + byImageHint(seen, v) + "; or give them (contact-tracker profile MOVIE --at X,Y measures " +
+					.getMessage() + (otherContrast && !v.dark() ? "; the inverted frame shows stronger blobs: if the particles " +
+						"are darker than the background, give --particles dark" : "") + byImageHint(seen, v) + "; or give them (contact-tracker profile MOVIE --at X,Y measures " +
 					"one particle)", e);
 		}
 		if (!thresholdGiven) {
@@ -107,7 +111,7 @@ public final class MeasuredSettings {
 			final boolean above = t > range[1];
 			if (above || t < range[0]) {
 				final String side = above ? "above" : "below";
-				if (imageCanTake(settings)) return byImage(name, seen, settings.withText(TrackingSettings.PARTICLES, v.get(
+				if (imageCanTake(settings) && !(above && autoSeesOtherContrast(settings, seen))) return byImage(name, seen, settings.withText(TrackingSettings.PARTICLES, v.get(
 					TrackingSettings.PARTICLES)), false, rOutGiven, new StringBuilder(particlesGiven || !v.dark() ? ""
 						: " --particles dark"), new InvalidInputException("its threshold " + optionValue(t) + " lies " + side +
 							" every pixel"));
@@ -154,9 +158,34 @@ public final class MeasuredSettings {
 		return Math.round(10 * Math.max(3, Math.min(1e6, SPACED * spacing))) / 10.0;
 	}
 
-	/** @return whether detection by the image was asked for: it needs the diameter, not the threshold */
+	/**
+	 * @return whether detection by the image was asked for, or may be chosen (auto, a profile method): it needs the
+	 *         diameter, not the threshold
+	 */
 	private static boolean imageCanTake(final SettingValues v) {
-		return v.get(TrackingSettings.DETECTION).equals(TrackingSettings.IMAGE);
+		return v.get(TrackingSettings.DETECTION).equals(TrackingSettings.IMAGE) || auto(v) && Method.parse(v.get(
+			TrackingSettings.METHOD)).needsProfile();
+	}
+
+	/**
+	 * @return whether the detection is to be chosen (auto): by the image only where the threshold cannot be had, so
+	 *         a threshold and r_out given keep it
+	 */
+	private static boolean auto(final SettingValues v) {
+		return v.get(TrackingSettings.DETECTION).equals(TrackingSettings.AUTO);
+	}
+
+	/**
+	 * @return whether the detection is auto and the frame looks like dark cores in bright rings rather than bright
+	 *         particles packed edge to edge ({@link DetectionChoice#otherContrastStronger}): auto then refuses, with
+	 *         what to try, as the threshold does, instead of tracking the rings by their image
+	 */
+	@SuppressWarnings({ "rawtypes", "unchecked" })
+	private static boolean autoSeesOtherContrast(final SettingValues v, final RandomAccessibleInterval seen) {
+		if (!auto(v)) return false;
+		final Plane plane = Plane.of(seen);
+		final double d = v.diameter() > 0 ? v.diameter() : ParticleScale.diameter(plane);
+		return d > 0 && DetectionChoice.otherContrastStronger(plane, Plane.of(Inversion.of(seen)), d);
 	}
 
 	/**
@@ -189,6 +218,10 @@ public final class MeasuredSettings {
 		final boolean thresholdGiven, final boolean rOutGiven, final StringBuilder said, final InvalidInputException why)
 	{
 		SettingValues v = given;
+		if (!v.get(TrackingSettings.DETECTION).equals(TrackingSettings.IMAGE)) { // auto: no threshold to choose by
+			v = v.withText(TrackingSettings.DETECTION, TrackingSettings.IMAGE);
+			said.append(" --detection image");
+		}
 		final Plane plane = Plane.of(seen);
 		if (!(v.diameter() > 0)) {
 			final double d = ParticleScale.diameter(plane);

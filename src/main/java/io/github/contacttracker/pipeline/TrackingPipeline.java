@@ -28,15 +28,18 @@ import java.util.Locale;
 import java.util.function.BooleanSupplier;
 import java.util.function.IntFunction;
 
+import io.github.contacttracker.core.Detection;
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.core.Localization;
 import io.github.contacttracker.core.Numbers;
 import io.github.contacttracker.core.TrackerParameters;
+import io.github.contacttracker.core.detect.DetectionChoice;
 import io.github.contacttracker.core.track.FrameResult;
 import io.github.contacttracker.core.track.StackTracker;
 import io.github.contacttracker.io.Calibration;
 import io.github.contacttracker.settings.FrontEnd;
 import io.github.contacttracker.settings.SettingValues;
+import io.github.contacttracker.settings.TrackingSettings;
 import net.imglib2.RandomAccessibleInterval;
 
 /**
@@ -159,7 +162,19 @@ public final class TrackingPipeline {
 		final String most = FlagAdvice.of(spots, params, ui);
 		if (most != null) warnings.add(most);
 		return new TrackingResult(frames, spots, flagged, discarded, (System.nanoTime() - startNanos) * 1e-9, List
-			.copyOf(warnings));
+			.copyOf(warnings), detection(frames));
+	}
+
+	/**
+	 * @return what the detection {@code auto} chose for the movie and why, with the setting that overrides it in
+	 *         this front end's terms; empty where it was given, or the threshold was kept because its components are
+	 *         single particles (the run is then as it always was)
+	 */
+	private String detection(final List<FrameResult> frames) {
+		final DetectionChoice choice = frames.isEmpty() ? null : frames.get(0).detection();
+		if (choice == null || choice.said().isEmpty()) return "";
+		final String other = choice.detection() == Detection.IMAGE ? TrackingSettings.BY_THRESHOLD : TrackingSettings.IMAGE;
+		return choice.said() + " (" + ui.name(TrackingSettings.DETECTION, other) + " overrides)";
 	}
 
 	/**

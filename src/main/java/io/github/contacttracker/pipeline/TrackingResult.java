@@ -39,7 +39,7 @@ import io.github.contacttracker.core.track.FrameResult;
  * @param warnings what the user must know about how the result was obtained (a fallback), one line each
  */
 public record TrackingResult(List<FrameResult> frames, List<Localization> spots, int flagged, int discarded,
-	double seconds, List<String> warnings)
+	double seconds, List<String> warnings, String detection)
 {
 	/**
 	 * The summary in short lines, for windows that cut long ones (ImageJ's Log): the spots and flags, then the
@@ -52,6 +52,7 @@ public record TrackingResult(List<FrameResult> frames, List<Localization> spots,
 			"" : "s", name, flagged));
 		lines.add(String.format(Locale.ROOT, "  %d components discarded, %.2f s (%.1f frames/s)", discarded, seconds,
 			n / Math.max(seconds, 1e-9)));
+		if (!detection.isEmpty()) lines.add("  " + detection);
 		for (final String w : warnings)
 			lines.add("  warning: " + w);
 		return lines;
@@ -66,6 +67,7 @@ public record TrackingResult(List<FrameResult> frames, List<Localization> spots,
 		final StringBuilder sb = new StringBuilder(String.format(Locale.ROOT, "%d spots in %d frame%s of '%s', %d " +
 			"flagged, %d components discarded, %.2f s (%.1f frames/s)", spots.size(), n, n == 1 ? "" : "s", name,
 			flagged, discarded, seconds, n / Math.max(seconds, 1e-9)));
+		if (!detection.isEmpty()) sb.append("; ").append(detection);
 		for (final String w : warnings)
 			sb.append("; warning: ").append(w);
 		return sb.toString();

@@ -72,6 +72,7 @@ public final class Setting<V> {
 	private String trackMateKey;
 	private boolean imageSpecific;
 	private boolean optionalInMaps;
+	private V absentInMaps;
 
 	private Setting(final String name, final String label, final String help, final Class<V> type,
 		final V defaultValue, final List<V> choices, final Predicate<V> allowed, final String allowedText,
@@ -145,7 +146,16 @@ public final class Setting<V> {
 	 * lacks its key means its default.
 	 */
 	Setting<V> optionalInMaps() {
+		return optionalInMaps(defaultValue);
+	}
+
+	/**
+	 * Lets a TrackMate settings map lack the setting, which then means {@code absent}: the value maps written before
+	 * the setting existed were tracked with, where the default has changed since (used while the descriptor is built).
+	 */
+	Setting<V> optionalInMaps(final V absent) {
 		optionalInMaps = true;
+		absentInMaps = absent;
 		return this;
 	}
 
@@ -164,11 +174,19 @@ public final class Setting<V> {
 	}
 
 	/**
-	 * @return whether a TrackMate settings map may lack the setting's key, which then means its default (a setting
-	 *         added after maps without it were written)
+	 * @return whether a TrackMate settings map may lack the setting's key, which then means {@link #absentInMaps()} (a
+	 *         setting added after maps without it were written)
 	 */
 	public boolean isOptionalInMaps() {
 		return optionalInMaps;
+	}
+
+	/**
+	 * @return what a TrackMate settings map that lacks the setting means: the value maps were tracked with before it
+	 *         existed (its default, unless that changed since); null for a setting every map holds
+	 */
+	public V absentInMaps() {
+		return absentInMaps;
 	}
 
 	/** @return the name: the key in macros ({@code r_out=20}) and settings maps */

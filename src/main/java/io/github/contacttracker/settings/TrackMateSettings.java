@@ -104,7 +104,7 @@ public final class TrackMateSettings {
 
 	/**
 	 * Checks a settings map: every key present (but those of settings added after maps without them were written,
-	 * {@link Setting#isOptionalInMaps()}: absent, they mean their default), no unknown key, every value non-null, of
+	 * {@link Setting#isOptionalInMaps()}: absent, they mean {@link Setting#absentInMaps()}), no unknown key, every value non-null, of
 	 * the right type and allowed.
 	 *
 	 * @return {@code null} when the map is fine, else a message naming each problem (one per line)
@@ -139,7 +139,7 @@ public final class TrackMateSettings {
 
 	/**
 	 * @return the checked values of a settings map; a setting that may be absent ({@link Setting#isOptionalInMaps()})
-	 *         and is absent has its default
+	 *         and is absent has the value it meant ({@link Setting#absentInMaps()})
 	 * @throws InvalidInputException with every problem when the map is incomplete, mistyped or invalid
 	 */
 	@SuppressWarnings({ "unchecked", "rawtypes" })
@@ -149,12 +149,13 @@ public final class TrackMateSettings {
 		SettingValues v = SettingValues.defaults();
 		for (final Setting s : TrackingSettings.ALL)
 			if (settings.containsKey(s.trackMateKey())) v = v.with(s, settings.get(s.trackMateKey()));
+			else if (s.isOptionalInMaps()) v = v.with(s, s.absentInMaps());
 		return v;
 	}
 
 	/**
 	 * @return a new, modifiable settings map with every key, in {@link #keys()} order: {@code settings} with the
-	 *         defaults of the settings it may lack ({@link Setting#isOptionalInMaps()})
+	 *         values the settings it may lack mean when absent ({@link Setting#absentInMaps()})
 	 * @throws InvalidInputException when the map is incomplete, mistyped or invalid
 	 */
 	public static Map<String, Object> complete(final Map<String, Object> settings) {

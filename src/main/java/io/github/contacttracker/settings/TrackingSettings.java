@@ -86,7 +86,15 @@ public final class TrackingSettings {
 	public static final String HELP_DETECTION = "How the profile methods (fit, deblend) find the particles: threshold, " +
 		"each connected area at or above the threshold is one particle; image, the peaks of the image filtered at the " +
 		"particles' diameter, split, added and removed by the fit, which finds touching particles that every " +
-		"threshold merges, dim particles and particles on uneven or clipped backgrounds (needs the diameter).";
+		"threshold merges, dim particles and particles on uneven or clipped backgrounds (needs the diameter); auto, " +
+		"the image where the threshold joins touching particles on the movie's sample frames, else the threshold " +
+		"(the run says which).";
+
+	/** The value of {@link #DETECTION} that finds particles by the threshold's components. */
+	public static final String BY_THRESHOLD = "threshold";
+
+	/** The value of {@link #DETECTION} that chooses per movie between the threshold and the image. */
+	public static final String AUTO = "auto";
 
 	/** The value of {@link #DETECTION} that finds particles by their image. */
 	public static final String IMAGE = "image";
@@ -163,11 +171,12 @@ public final class TrackingSettings {
 
 	/**
 	 * How the profile methods find the particles ({@link io.github.contacttracker.core.Detection}). Added after
-	 * settings maps without it were written: a TrackMate map that lacks {@code DETECTION} means the threshold.
+	 * settings maps without it were written: a TrackMate map that lacks {@code DETECTION} means the threshold, which
+	 * such maps were tracked with (the default has since become auto).
 	 */
 	public static final Setting<String> DETECTION = Setting.choice("detection", "Detection", HELP_DETECTION,
-		String.class, io.github.contacttracker.core.Detection.DEFAULT.key(), List.of("threshold", IMAGE))
-		.optionalInMaps();
+		String.class, io.github.contacttracker.core.Detection.DEFAULT.key(), List.of(AUTO, BY_THRESHOLD,
+		IMAGE)).optionalInMaps(BY_THRESHOLD);
 
 	/** Every setting, in the order front ends list them. */
 	public static final List<Setting<?>> ALL = List.of(THRESHOLD, R_OUT, MIN_AREA, MIN_SECOND_AREA, CONNECTIVITY,

@@ -407,7 +407,7 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 			final String key = f.setting.trackMateKey();
 			Object v = settings == null ? null : settings.get(key);
 			if (settings != null && f.setting.isOptionalInMaps() && !settings.containsKey(key)) v = f.setting
-				.defaultValue();
+				.absentInMaps();
 			if (!f.setting.type().isInstance(v) || !allowed(f.setting, v)) v = d.get(key);
 			if (f.setting == TrackingSettings.CHANNEL) {
 				final SpinnerNumberModel cm = (SpinnerNumberModel) ((JSpinner) f.control).getModel();

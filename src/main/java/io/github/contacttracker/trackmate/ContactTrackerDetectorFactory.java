@@ -21,7 +21,9 @@
  */
 package io.github.contacttracker.trackmate;
 
+import io.github.contacttracker.settings.Setting;
 import io.github.contacttracker.settings.TrackMateSettings;
+import io.github.contacttracker.settings.TrackingSettings;
 import java.util.Map;
 
 import javax.swing.ImageIcon;
@@ -139,7 +141,8 @@ public class ContactTrackerDetectorFactory<T extends RealType<T> & NativeType<T>
 
 	/**
 	 * Reads settings written by {@link #marshal}. {@code settings} is cleared and filled with the defaults first,
-	 * so a file from an older version that lacks a newer key still loads, and its {@code THRESHOLD} is read as
+	 * so a file from an older version that lacks a newer key still loads (a setting added since means what that
+	 * version tracked with, {@link Setting#absentInMaps()}), and its {@code THRESHOLD} is read as
 	 * {@code GREY_THRESHOLD}; unknown attributes and unreadable values are errors.
 	 */
 	@Override
@@ -163,6 +166,10 @@ public class ContactTrackerDetectorFactory<T extends RealType<T> & NativeType<T>
 				return "When unmarshalling " + NAME + " settings: " + e.getMessage() + ".";
 			}
 		}
+		// a setting added since the file was written means what that version tracked with
+		for (final Setting<?> s : TrackingSettings.ALL)
+			if (s.isOptionalInMaps() && element.getAttribute(s.trackMateKey()) == null) settings.put(s.trackMateKey(), s
+				.absentInMaps());
 		return checkSettings(settings);
 	}
 

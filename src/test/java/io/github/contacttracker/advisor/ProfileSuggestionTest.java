@@ -171,8 +171,9 @@ class ProfileSuggestionTest {
 		final ProfileAnalysis.Result r = ProfileAnalysis.analyse(field.frames().get(0), 0, 0);
 		final double threshold = r.suggestedThreshold(true);
 		final int minArea = r.suggestedMinArea(threshold);
+		// the threshold's min_area is what is tested: by the threshold (auto would find the pairs by the image)
 		final TrackerParameters params = TrackerParameters.of(threshold, r.suggestedROut()).withDiameter(r
-			.suggestedDiameter());
+			.suggestedDiameter()).withDetection(io.github.contacttracker.core.Detection.THRESHOLD);
 		assertTrue(minArea < TrackerParameters.DEFAULT_MIN_AREA && minArea >= 5, "half of an active area of about 20 px: " +
 			minArea);
 		// measured: the default finds 57 of the 126 particles; the suggestion (10 px) 122 (the 3 pairs: 4 of 6), the

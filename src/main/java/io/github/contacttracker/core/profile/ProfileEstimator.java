@@ -116,8 +116,8 @@ public final class ProfileEstimator {
 	}
 
 	/**
-	 * Adds a frame with its spots (positions in the frame's coordinates). Spots flagged merged, degenerate or at
-	 * the border are masked out. Each spot's fitted amplitude and radial scale are used where known (divided by
+	 * Adds a frame with its spots (positions in the frame's coordinates). Spots flagged merged, degenerate, at the
+	 * border or not converged are masked out. Each spot's fitted amplitude and radial scale are used where known (divided by
 	 * their means {@code amplitudeNorm} and {@code scaleNorm}, which fix the profile's own height and size).
 	 */
 	public <T extends RealType<T>> void add(final RandomAccessibleInterval<T> frame, final List<Localization> spots,
@@ -182,10 +182,13 @@ public final class ProfileEstimator {
 	/**
 	 * @return whether the pixels within reach of a spot enter the profile: not a suspected merge nor a degenerate
 	 *         first pass (its centre does not describe them), nor a particle cut by the border (its amplitude, scale
-	 *         and centre are loose)
+	 *         and centre are loose), nor a fit that did not converge (its centre, amplitude and scale may be anywhere:
+	 *         two members on one particle, say; taken in, a single such fit can swing the profile, and with it every
+	 *         centre, from one round to the next)
 	 */
 	public static boolean usable(final Localization spot) {
-		return !spot.has(Flag.MERGED) && !spot.has(Flag.DEGENERATE) && !spot.has(Flag.AT_BORDER);
+		return !spot.has(Flag.MERGED) && !spot.has(Flag.DEGENERATE) && !spot.has(Flag.AT_BORDER) && !spot.has(
+			Flag.NOT_CONVERGED);
 	}
 
 	/**

@@ -25,6 +25,7 @@ import java.io.Serializable;
 import java.util.List;
 
 import io.github.contacttracker.core.Localization;
+import io.github.contacttracker.core.detect.DetectionChoice;
 import io.github.contacttracker.core.image.Region;
 
 /**
@@ -39,9 +40,10 @@ import io.github.contacttracker.core.image.Region;
  * @param ownProfile whether a profile method ({@code deblend}, {@code fit}) measured the particles' profile on
  *        this frame alone: on a single frame, or when no profile could be measured over the stack (a fallback the
  *        front ends report)
+ * @param detection the detection {@code auto} chose for the movie, with its reason, or null where it was given
  */
 public record FrameResult(List<Localization> spots, List<Region> activeAreas, List<Region> secondAreas,
-	double noiseSigma, int discarded, boolean ownProfile) implements Serializable
+	double noiseSigma, int discarded, boolean ownProfile, DetectionChoice detection) implements Serializable
 {
 	// serializable without regions (a distributed front end ships results without them)
 	private static final long serialVersionUID = 1L;
@@ -53,8 +55,20 @@ public record FrameResult(List<Localization> spots, List<Region> activeAreas, Li
 		secondAreas = List.copyOf(secondAreas);
 	}
 
+	/** A result whose detection was not chosen by {@code auto}. */
+	public FrameResult(final List<Localization> spots, final List<Region> activeAreas,
+		final List<Region> secondAreas, final double noiseSigma, final int discarded, final boolean ownProfile)
+	{
+		this(spots, activeAreas, secondAreas, noiseSigma, discarded, ownProfile, null);
+	}
+
 	/** @return this result with other spots (the same particles, e.g. flagged) */
 	public FrameResult withSpots(final List<Localization> newSpots) {
-		return new FrameResult(newSpots, activeAreas, secondAreas, noiseSigma, discarded, ownProfile);
+		return new FrameResult(newSpots, activeAreas, secondAreas, noiseSigma, discarded, ownProfile, detection);
+	}
+
+	/** @return this result with the detection {@code auto} chose for its movie */
+	public FrameResult withDetection(final DetectionChoice choice) {
+		return new FrameResult(spots, activeAreas, secondAreas, noiseSigma, discarded, ownProfile, choice);
 	}
 }

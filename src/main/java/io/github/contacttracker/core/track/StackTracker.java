@@ -30,11 +30,13 @@ import java.util.function.BooleanSupplier;
 import java.util.function.IntFunction;
 import java.util.function.Supplier;
 
+import io.github.contacttracker.core.Detection;
 import io.github.contacttracker.core.Flag;
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.core.Localization;
 import io.github.contacttracker.core.Method;
 import io.github.contacttracker.core.TrackerParameters;
+import io.github.contacttracker.core.detect.DetectionChoice;
 import io.github.contacttracker.core.fit.GroupFit;
 import io.github.contacttracker.core.fit.ProfileRefinement;
 import io.github.contacttracker.core.fit.Rounds;
@@ -134,18 +136,27 @@ public final class StackTracker {
 		// the sample frames are done by then (see below)
 		final Progress progress = new Progress(listener, 2 * sample.length + count - (keepRegions ? 0 : sample.length));
 		final ProfileStage stage = profileStage(sample, frame, progress, cancelled);
-		if (keepRegions) return flagged(pass(tracker, stage.profile, all, frame, true, progress, cancelled),
-			stage.settled);
+		if (keepRegions) return chosen(flagged(pass(stage.tracker(tracker), stage.profile, all, frame, true, progress,
+			cancelled), stage.settled), stage.choice);
 		progress.total += sample.length - stage.sample.length; // frames left to the last pass
 		final boolean[] done = new boolean[count];
 		for (final int t : stage.sample)
 			done[t] = true;
-		final List<FrameResult> others = pass(tracker, stage.profile, stage.others(count), frame, false, progress,
-			cancelled);
+		final List<FrameResult> others = pass(stage.tracker(tracker), stage.profile, stage.others(count), frame, false,
+			progress, cancelled);
 		final List<FrameResult> results = new ArrayList<>(count);
 		for (int t = 0, s = 0, o = 0; t < count; t++)
 			results.add(done[t] ? stage.round.get(s++) : others.get(o++));
-		return flagged(results, stage.settled);
+		return chosen(flagged(results, stage.settled), stage.choice);
+	}
+
+	/** @return the results, each with the detection chosen for the movie (as they are where none was chosen) */
+	private static List<FrameResult> chosen(final List<FrameResult> results, final DetectionChoice choice) {
+		if (choice == null) return results;
+		final List<FrameResult> out = new ArrayList<>(results.size());
+		for (final FrameResult r : results)
+			out.add(r.withDetection(choice));
+		return out;
 	}
 
 	/**
@@ -164,15 +175,30 @@ public final class StackTracker {
 		private final boolean settled;
 		private final transient List<FrameResult> round;
 		private final List<FrameResult> sampleResults;
+		private final DetectionChoice choice;
 
 		ProfileStage(final int[] sample, final KindProfiles profile, final boolean settled,
-			final List<FrameResult> round)
+			final List<FrameResult> round, final DetectionChoice choice)
 		{
 			this.sample = sample;
 			this.profile = profile;
 			this.settled = settled;
 			this.round = round;
-			this.sampleResults = new ArrayList<>(flagged(round, settled));
+			this.choice = choice;
+			this.sampleResults = new ArrayList<>(chosen(flagged(round, settled), choice));
+		}
+
+		/**
+		 * @return the detection {@link Detection#AUTO} chose for the movie, or null where it was given (or the method
+		 *         does not choose)
+		 */
+		public DetectionChoice choice() {
+			return choice;
+		}
+
+		/** @return the tracker the movie's frames are refined with: {@code tracker}, with the chosen detection */
+		ContactTracker tracker(final ContactTracker tracker) {
+			return choice == null ? tracker : new ContactTracker(tracker.parameters().withDetection(choice.detection()));
 		}
 
 		/**
@@ -231,7 +257,8 @@ public final class StackTracker {
 	{
 		final Progress none = new Progress(null, 0);
 		if (stage == null) return pass(tracker, null, indices, frame, false, none, cancelled);
-		return flagged(pass(tracker, stage.profile, indices, frame, false, none, cancelled), stage.settled);
+		return chosen(flagged(pass(stage.tracker(tracker), stage.profile, indices, frame, false, none, cancelled),
+			stage.settled), stage.choice);
 	}
 
 	private <T extends RealType<T>> ProfileStage profileStage(int[] sample,
@@ -264,6 +291,11 @@ public final class StackTracker {
 		progress.total -= sample.length - probe.length - rest.length; // iterative frames not run
 		progress.total -= sample.length - keep.length; // the first round's frames
 		sample = at(sample, keep);
+		// the detection, where it is to be chosen: from the threshold's components on these frames
+		final DetectionChoice choice = params.choosesDetection() ? choose(iterative, frame.apply(sample[0]), params)
+			: null;
+		final ContactTracker tracker = choice == null ? this.tracker : new ContactTracker(params.withDetection(choice
+			.detection()));
 		// the kinds of particle, told apart on the same frames; the profile of each is measured on its particles
 		Kinds kinds = null;
 		if (params.kinds() != 1) {
@@ -327,7 +359,17 @@ public final class StackTracker {
 		// is the profile, but a few centres of the sample frames went back and forth between two fits; they are flagged.
 		if (verdict == Rounds.Verdict.CYCLING) round = stillMovingFlagged(round, rounds);
 		final boolean settled = verdict == Rounds.Verdict.SETTLED || verdict == Rounds.Verdict.CYCLING;
-		return new ProfileStage(sample, profiles(used), settled, round);
+		return new ProfileStage(sample, profiles(used), settled, round, choice);
+	}
+
+	/** @return the detection {@link Detection#AUTO} chooses from the threshold's first pass on the sample frames */
+	private static <T extends RealType<T>> DetectionChoice choose(final List<FrameResult> firstPass,
+		final RandomAccessibleInterval<T> first, final TrackerParameters params)
+	{
+		final List<List<Localization>> spots = new ArrayList<>(firstPass.size());
+		for (final FrameResult r : firstPass)
+			spots.add(r.spots());
+		return DetectionChoice.choose(spots, Plane.of(first), params.diameter());
 	}
 
 	/** @return the elements of {@code array} at {@code positions}, in that order */

@@ -81,9 +81,13 @@ class ImageDetectionTest {
 		}
 	}
 
-	/** A tweezer-like movie: the pair pushed from two diameters apart to 0.96 diameters, on a ramp. */
-	@Test
-	void aPairPushedTogetherStaysTwoSpotsInEveryFrame() {
+	/**
+	 * A tweezer-like movie: the pair pushed from two diameters apart to 0.96 diameters, on a ramp. By the image, and
+	 * by the default, auto, which finds the threshold's areas merged on its sample frames and so detects by the image.
+	 */
+	@ParameterizedTest
+	@org.junit.jupiter.params.provider.EnumSource(value = Detection.class, names = { "IMAGE", "AUTO" })
+	void aPairPushedTogetherStaysTwoSpotsInEveryFrame(final Detection detection) {
 		final int frames = 24;
 		final List<Scenes.Frame> fs = new ArrayList<>();
 		final List<ArrayImg<UnsignedByteType, ByteArray>> imgs = new ArrayList<>();
@@ -92,8 +96,19 @@ class ImageDetectionTest {
 			fs.add(f);
 			imgs.add(TestImages.bytes(f.pixels(), f.width(), f.height()));
 		}
-		final TrackerParameters p = TrackerParameters.of(90, 11.5).withDiameter(10).withDetection(Detection.IMAGE);
+		final TrackerParameters p = TrackerParameters.of(90, 11.5).withDiameter(10).withDetection(detection);
 		final List<FrameResult> res = new StackTracker(p).track(imgs, false);
+		if (detection == Detection.AUTO) {
+			final DetectionChoice choice = res.get(0).detection();
+			assertEquals(Detection.IMAGE, choice.detection(), choice.toString());
+			assertTrue(choice.merged() > 0 && choice.said().startsWith("found by their image (auto)"), choice.said());
+			final List<FrameResult> byThreshold = new StackTracker(p.withDetection(Detection.THRESHOLD)).track(imgs,
+				false);
+			int merged = 0;
+			for (int t = 0; t < frames; t++)
+				if (Scenes.score(fs.get(t), byThreshold.get(t).spots(), 5, 0).found() < 2) merged++;
+			assertTrue(merged > 0, "the threshold alone merges the pair in some frames");
+		}
 		for (int t = 0; t < frames; t++) {
 			final Scenes.Score s = Scenes.score(fs.get(t), res.get(t).spots(), 5, 0);
 			assertEquals(2, s.found(), "frame " + t + ": " + s);

@@ -1,0 +1,136 @@
+/*-
+ * #%L
+ * Contact Tracker: sub-pixel localization of colloidal particles, also when they touch.
+ * %%
+ * Copyright (C) 2026 Contact Tracker developers
+ * %%
+ * This program is free software: you can redistribute it and/or modify
+ * it under the terms of the GNU General Public License as
+ * published by the Free Software Foundation, either version 3 of the
+ * License, or (at your option) any later version.
+ * 
+ * This program is distributed in the hope that it will be useful,
+ * but WITHOUT ANY WARRANTY; without even the implied warranty of
+ * MERCHANTABILITY or FITNESS FOR A PARTICULAR PURPOSE.  See the
+ * GNU General Public License for more details.
+ * 
+ * You should have received a copy of the GNU General Public
+ * License along with this program.  If not, see
+ * <http://www.gnu.org/licenses/gpl-3.0.html>.
+ * #L%
+ */
+package io.github.contacttracker.core.detect;
+
+import java.io.Serializable;
+import java.util.List;
+import java.util.Locale;
+
+import io.github.contacttracker.core.Detection;
+import io.github.contacttracker.core.Flag;
+import io.github.contacttracker.core.Localization;
+import io.github.contacttracker.core.image.NoiseEstimate;
+import io.github.contacttracker.core.image.Plane;
+
+/**
+ * The detection {@link Detection#AUTO} chooses for a movie, from the threshold's first pass on its sample frames
+ * (the iterative centres the profile methods start from anyway) and the image's seeds on the first of them.
+ * <p>
+ * By the image where the threshold joins particles: a component {@link Flag#MERGED} (too large for one particle of
+ * the diameter) on any sample frame. A single one is enough: a tweezer pair pushed into contact, or a few touching
+ * doublets among isolated beads, are exactly where a threshold's centre lies between two particles. By the threshold
+ * otherwise: each component is one particle, and the image would find the same ones at several times the cost.
+ * <p>
+ * Also by the threshold where the image's seeds outnumber the threshold's particles more than
+ * {@value #SEEDS_PER_PARTICLE} times: seeds on that scale are the texture of the background (a mottled or compressed
+ * bright field, particles whose diameter was measured on their core or ring), not particles, and fitting hundreds of
+ * them costs minutes a frame for nothing the threshold does not find. Bright-field particles with rings give a few
+ * seeds each, dense fields of touching particles a few per component; a texture gives hundreds per particle.
+ *
+ * @param detection the detection chosen ({@link Detection#IMAGE} or {@link Detection#THRESHOLD})
+ * @param merged the threshold's components flagged {@code MERGED} on the sample frames
+ * @param spots the threshold's spots on the sample frames
+ * @param frames the sample frames
+ * @param seeds the image's seeds on the first sample frame
+ * @param firstSpots the threshold's spots on the first sample frame
+ */
+public record DetectionChoice(Detection detection, int merged, int spots, int frames, int seeds, int firstSpots)
+	implements Serializable
+{
+
+	private static final long serialVersionUID = 1L;
+
+	/** How many times higher the other contrast's peaks must stand to be taken for the particles' (see below). */
+	public static final double OTHER_CONTRAST = 1.5;
+
+	/** Seeds per threshold particle beyond which the seeds are taken for texture (see the class comment). */
+	public static final int SEEDS_PER_PARTICLE = 50;
+
+	/**
+	 * @param firstPass the threshold's first-pass (iterative) results of the sample frames, the first one's first
+	 * @param first the first sample frame, as the tracker sees it
+	 * @param diameter the particles' diameter (px, {@code > 0}), the image's filter scale
+	 * @return the choice
+	 */
+	public static DetectionChoice choose(final List<List<Localization>> firstPass, final Plane first,
+		final double diameter)
+	{
+		int merged = 0, spots = 0;
+		for (final List<Localization> frame : firstPass) {
+			spots += frame.size();
+			for (final Localization l : frame)
+				if (l.has(Flag.MERGED)) merged++;
+		}
+		final int firstSpots = firstPass.isEmpty() ? 0 : firstPass.get(0).size();
+		if (merged == 0 || !fits(first, diameter)) return new DetectionChoice(Detection.THRESHOLD, 0, spots, firstPass
+			.size(), -1, firstSpots);
+		final int seeds = ImageDetection.seeds(first, diameter, NoiseEstimate.sigma(first)).count();
+		final boolean texture = seeds > SEEDS_PER_PARTICLE * Math.max(1, firstSpots);
+		return new DetectionChoice(texture ? Detection.THRESHOLD : Detection.IMAGE, merged, spots, firstPass.size(),
+			seeds, firstSpots);
+	}
+
+	/**
+	 * Whether a frame's particles look like the other contrast: the strong peaks of the inverted frame, band-passed at
+	 * the particles' scale, stand more than {@value #OTHER_CONTRAST} times as high as the frame's own. Where the
+	 * threshold cannot be measured because it lies above every pixel, that tells two fields apart: bright particles packed without a dark gap (the image
+	 * finds them), and dark cores in bright rings taken for bright particles, whose rings the image would track (the
+	 * bright-field movie inverted, or dark particles not said to be dark). The margin is for dense packings, whose
+	 * gaps are blobs of the other contrast too: measured, the inverted frame's peaks stand 0.6 times as high as the
+	 * frame's on a monolayer of bright spheres (softmatterlab's JT008) and 1.3 times on a dense confocal packing
+	 * (colloidoscope's abraham), against 2.0 to 3.0 on dark cores in bright rings (the paper authors' 1.avi and 6.avi
+	 * inverted, DeepTrack's dim trapped particle).
+	 *
+	 * @param frame the frame as the tracker would see it
+	 * @param inverted the frame inverted
+	 * @param diameter the particles' diameter (px, {@code > 0})
+	 */
+	public static boolean otherContrastStronger(final Plane frame, final Plane inverted, final double diameter) {
+		if (!fits(frame, diameter)) return false;
+		final double own = ImageDetection.seeds(frame, diameter, NoiseEstimate.sigma(frame)).typicalHeight();
+		final double other = ImageDetection.seeds(inverted, diameter, NoiseEstimate.sigma(inverted)).typicalHeight();
+		return other > OTHER_CONTRAST * own;
+	}
+
+	/**
+	 * @return whether particles of that diameter fit in the frame (its diagonal): a wider one is refused by the tracker
+	 *         itself, and no seeds are sought with a filter wider than the frame
+	 */
+	private static boolean fits(final Plane frame, final double diameter) {
+		return diameter > 0 && diameter <= Math.hypot(frame.width(), frame.height());
+	}
+
+	/**
+	 * @return what was chosen and why, for a run's summary: empty where the threshold was kept because none of its
+	 *         components held several particles (the run is then the threshold's, as asked before the choice)
+	 */
+	public String said() {
+		final String on = String.format(Locale.ROOT, "%d of %d spots of the threshold on %d sample frame%s", merged,
+			spots, frames, frames == 1 ? "" : "s");
+		if (detection == Detection.IMAGE) return "found by their image (auto): the threshold joined touching " +
+			"particles into one area (" + on + " merged)";
+		if (merged > 0) return String.format(Locale.ROOT, "found by the threshold (auto), though it joined touching " +
+			"particles (%s merged): the image's %d seeds on the first frame, against the threshold's %d particle%s, " +
+			"are the background's texture", on, seeds, firstSpots, firstSpots == 1 ? "" : "s");
+		return "";
+	}
+}
