@@ -159,7 +159,9 @@ public final class TrackingPipeline {
 		if (ownProfile > 0 && frames.size() > 1) warnings.add("the particles' profile could not be measured over the " +
 			"movie (too few isolated, unflagged particles); " + ownProfile + " frames measured their own, which is " +
 			"less precise");
-		final String most = FlagAdvice.of(spots, params, ui);
+		final DetectionChoice choice = frames.isEmpty() ? null : frames.get(0).detection();
+		final String most = FlagAdvice.of(spots, choice == null ? params : params.withDetection(choice.detection()),
+			ui);
 		if (most != null) warnings.add(most);
 		return new TrackingResult(frames, spots, flagged, discarded, (System.nanoTime() - startNanos) * 1e-9, List
 			.copyOf(warnings), detection(frames));
@@ -173,8 +175,9 @@ public final class TrackingPipeline {
 	private String detection(final List<FrameResult> frames) {
 		final DetectionChoice choice = frames.isEmpty() ? null : frames.get(0).detection();
 		if (choice == null || choice.said().isEmpty()) return "";
-		final String other = choice.detection() == Detection.IMAGE ? TrackingSettings.BY_THRESHOLD : TrackingSettings.IMAGE;
-		return choice.said() + " (" + ui.name(TrackingSettings.DETECTION, other) + " overrides)";
+		final String other = choice.detection() == Detection.IMAGE ? TrackingSettings.BY_THRESHOLD
+			: TrackingSettings.IMAGE;
+		return choice.said() + " (to override, " + ui.set(TrackingSettings.DETECTION, other) + ")";
 	}
 
 	/**

@@ -37,8 +37,10 @@ import io.github.contacttracker.core.image.Plane;
  * <p>
  * By the image where the threshold joins particles: a component {@link Flag#MERGED} (too large for one particle of
  * the diameter) on any sample frame. A single one is enough: a tweezer pair pushed into contact, or a few touching
- * doublets among isolated beads, are exactly where a threshold's centre lies between two particles. By the threshold
- * otherwise: each component is one particle, and the image would find the same ones at several times the cost.
+ * doublets among isolated beads, are exactly where a threshold's centre lies between two particles. Also where the
+ * threshold discards more components than it keeps (smaller than {@code min_area}, or without a gradient): a level
+ * that cuts the particles into crumbs loses them, and nothing in its spots says so. By the threshold otherwise: each
+ * component is one particle, and the image would find the same ones at several times the cost.
  * <p>
  * Also by the threshold where the image's seeds outnumber the threshold's particles more than
  * {@value #SEEDS_PER_PARTICLE} times: seeds on that scale are the texture of the background (a mottled or compressed
@@ -49,11 +51,13 @@ import io.github.contacttracker.core.image.Plane;
  * @param detection the detection chosen ({@link Detection#IMAGE} or {@link Detection#THRESHOLD})
  * @param merged the threshold's components flagged {@code MERGED} on the sample frames
  * @param spots the threshold's spots on the sample frames
+ * @param discarded the threshold's components discarded on the sample frames
  * @param frames the sample frames
  * @param seeds the image's seeds on the first sample frame
  * @param firstSpots the threshold's spots on the first sample frame
  */
-public record DetectionChoice(Detection detection, int merged, int spots, int frames, int seeds, int firstSpots)
+public record DetectionChoice(Detection detection, int merged, int spots, int discarded, int frames, int seeds,
+	int firstSpots)
 	implements Serializable
 {
 
@@ -67,12 +71,13 @@ public record DetectionChoice(Detection detection, int merged, int spots, int fr
 
 	/**
 	 * @param firstPass the threshold's first-pass (iterative) results of the sample frames, the first one's first
+	 * @param discarded the components the threshold discarded on those frames
 	 * @param first the first sample frame, as the tracker sees it
 	 * @param diameter the particles' diameter (px, {@code > 0}), the image's filter scale
 	 * @return the choice
 	 */
-	public static DetectionChoice choose(final List<List<Localization>> firstPass, final Plane first,
-		final double diameter)
+	public static DetectionChoice choose(final List<List<Localization>> firstPass, final int discarded,
+		final Plane first, final double diameter)
 	{
 		int merged = 0, spots = 0;
 		for (final List<Localization> frame : firstPass) {
@@ -81,11 +86,12 @@ public record DetectionChoice(Detection detection, int merged, int spots, int fr
 				if (l.has(Flag.MERGED)) merged++;
 		}
 		final int firstSpots = firstPass.isEmpty() ? 0 : firstPass.get(0).size();
-		if (merged == 0 || !fits(first, diameter)) return new DetectionChoice(Detection.THRESHOLD, 0, spots, firstPass
-			.size(), -1, firstSpots);
+		final int frames = firstPass.size();
+		if (merged == 0 && discarded <= spots || !fits(first, diameter)) return new DetectionChoice(
+			Detection.THRESHOLD, 0, spots, 0, frames, -1, firstSpots);
 		final int seeds = ImageDetection.seeds(first, diameter, NoiseEstimate.sigma(first)).count();
 		final boolean texture = seeds > SEEDS_PER_PARTICLE * Math.max(1, firstSpots);
-		return new DetectionChoice(texture ? Detection.THRESHOLD : Detection.IMAGE, merged, spots, firstPass.size(),
+		return new DetectionChoice(texture ? Detection.THRESHOLD : Detection.IMAGE, merged, spots, discarded, frames,
 			seeds, firstSpots);
 	}
 
@@ -120,17 +126,18 @@ public record DetectionChoice(Detection detection, int merged, int spots, int fr
 	}
 
 	/**
-	 * @return what was chosen and why, for a run's summary: empty where the threshold was kept because none of its
-	 *         components held several particles (the run is then the threshold's, as asked before the choice)
+	 * @return what was chosen and why, for a run's summary: empty where the threshold was kept because its components
+	 *         are single particles (the run is then the threshold's, as before the choice)
 	 */
 	public String said() {
-		final String on = String.format(Locale.ROOT, "%d of %d spots of the threshold on %d sample frame%s", merged,
-			spots, frames, frames == 1 ? "" : "s");
-		if (detection == Detection.IMAGE) return "found by their image (auto): the threshold joined touching " +
-			"particles into one area (" + on + " merged)";
-		if (merged > 0) return String.format(Locale.ROOT, "found by the threshold (auto), though it joined touching " +
-			"particles (%s merged): the image's %d seeds on the first frame, against the threshold's %d particle%s, " +
-			"are the background's texture", on, seeds, firstSpots, firstSpots == 1 ? "" : "s");
-		return "";
+		if (merged == 0 && discarded == 0) return "";
+		final String on = String.format(Locale.ROOT, "%d sample frame%s", frames, frames == 1 ? "" : "s");
+		final String why = merged > 0 ? String.format(Locale.ROOT, "the threshold joined touching particles into one " +
+			"area (%d of its %d spots on %s merged)", merged, spots, on) : String.format(Locale.ROOT, "the threshold " +
+				"discarded more areas than it kept (%d against %d spots on %s)", discarded, spots, on);
+		if (detection == Detection.IMAGE) return "found by their image (auto): " + why;
+		return String.format(Locale.ROOT, "found by the threshold (auto), though %s: the image's %d seeds on the " +
+			"first frame, against the threshold's %d particle%s, are the background's texture", why, seeds, firstSpots,
+			firstSpots == 1 ? "" : "s");
 	}
 }

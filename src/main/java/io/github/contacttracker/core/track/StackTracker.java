@@ -136,8 +136,8 @@ public final class StackTracker {
 		// the sample frames are done by then (see below)
 		final Progress progress = new Progress(listener, 2 * sample.length + count - (keepRegions ? 0 : sample.length));
 		final ProfileStage stage = profileStage(sample, frame, progress, cancelled);
-		if (keepRegions) return chosen(flagged(pass(stage.tracker(tracker), stage.profile, all, frame, true, progress,
-			cancelled), stage.settled), stage.choice);
+		if (keepRegions) return stage.finish(pass(stage.tracker(tracker), stage.profile, all, frame, true, progress,
+			cancelled));
 		progress.total += sample.length - stage.sample.length; // frames left to the last pass
 		final boolean[] done = new boolean[count];
 		for (final int t : stage.sample)
@@ -147,7 +147,7 @@ public final class StackTracker {
 		final List<FrameResult> results = new ArrayList<>(count);
 		for (int t = 0, s = 0, o = 0; t < count; t++)
 			results.add(done[t] ? stage.round.get(s++) : others.get(o++));
-		return chosen(flagged(results, stage.settled), stage.choice);
+		return stage.finish(results);
 	}
 
 	/** @return the results, each with the detection chosen for the movie (as they are where none was chosen) */
@@ -176,16 +176,19 @@ public final class StackTracker {
 		private final transient List<FrameResult> round;
 		private final List<FrameResult> sampleResults;
 		private final DetectionChoice choice;
+		/** the typical fit of the sample frames' spots, where the particles were found by their image, else null */
+		private final Misfit misfit;
 
 		ProfileStage(final int[] sample, final KindProfiles profile, final boolean settled,
-			final List<FrameResult> round, final DetectionChoice choice)
+			final List<FrameResult> round, final DetectionChoice choice, final Misfit misfit)
 		{
 			this.sample = sample;
 			this.profile = profile;
 			this.settled = settled;
 			this.round = round;
 			this.choice = choice;
-			this.sampleResults = new ArrayList<>(chosen(flagged(round, settled), choice));
+			this.misfit = misfit;
+			this.sampleResults = new ArrayList<>(finish(round));
 		}
 
 		/**
@@ -194,6 +197,16 @@ public final class StackTracker {
 		 */
 		public DetectionChoice choice() {
 			return choice;
+		}
+
+		/**
+		 * @return a movie's results as they end: every spot flagged {@code NOT_CONVERGED} unless the rounds settled,
+		 *         those found by the image whose light the profile does not describe flagged {@code MERGED}
+		 *         ({@link Misfit}), each with the detection chosen
+		 */
+		List<FrameResult> finish(final List<FrameResult> results) {
+			final List<FrameResult> flagged = flagged(results, settled);
+			return chosen(misfit == null ? flagged : misfit.flagged(flagged), choice);
 		}
 
 		/** @return the tracker the movie's frames are refined with: {@code tracker}, with the chosen detection */
@@ -257,8 +270,7 @@ public final class StackTracker {
 	{
 		final Progress none = new Progress(null, 0);
 		if (stage == null) return pass(tracker, null, indices, frame, false, none, cancelled);
-		return chosen(flagged(pass(stage.tracker(tracker), stage.profile, indices, frame, false, none, cancelled),
-			stage.settled), stage.choice);
+		return stage.finish(pass(stage.tracker(tracker), stage.profile, indices, frame, false, none, cancelled));
 	}
 
 	private <T extends RealType<T>> ProfileStage profileStage(int[] sample,
@@ -359,7 +371,8 @@ public final class StackTracker {
 		// is the profile, but a few centres of the sample frames went back and forth between two fits; they are flagged.
 		if (verdict == Rounds.Verdict.CYCLING) round = stillMovingFlagged(round, rounds);
 		final boolean settled = verdict == Rounds.Verdict.SETTLED || verdict == Rounds.Verdict.CYCLING;
-		return new ProfileStage(sample, profiles(used), settled, round, choice);
+		return new ProfileStage(sample, profiles(used), settled, round, choice, tracker.parameters().detectsByImage()
+			? Misfit.of(round) : null);
 	}
 
 	/** @return the detection {@link Detection#AUTO} chooses from the threshold's first pass on the sample frames */
@@ -367,9 +380,12 @@ public final class StackTracker {
 		final RandomAccessibleInterval<T> first, final TrackerParameters params)
 	{
 		final List<List<Localization>> spots = new ArrayList<>(firstPass.size());
-		for (final FrameResult r : firstPass)
+		int discarded = 0;
+		for (final FrameResult r : firstPass) {
 			spots.add(r.spots());
-		return DetectionChoice.choose(spots, Plane.of(first), params.diameter());
+			discarded += r.discarded();
+		}
+		return DetectionChoice.choose(spots, discarded, Plane.of(first), params.diameter());
 	}
 
 	/** @return the elements of {@code array} at {@code positions}, in that order */

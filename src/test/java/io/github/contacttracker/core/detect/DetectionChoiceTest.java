@@ -88,7 +88,7 @@ class DetectionChoiceTest {
 		final Plane texture = Plane.of(TestImages.bytes(Scenes.noisy(Scenes.render(w, h, (x, y) -> 60, specks, Scenes
 			.blurredDisc(1, 0.5), 2), 1, 0, 255, 5), w, h));
 		final List<List<Localization>> one = List.of(List.of(spot(Flag.MERGED.bit())));
-		final DetectionChoice onTexture = DetectionChoice.choose(one, texture, 6);
+		final DetectionChoice onTexture = DetectionChoice.choose(one, 0, texture, 6);
 		assertTrue(onTexture.seeds() > DetectionChoice.SEEDS_PER_PARTICLE, "seeds: " + onTexture.seeds());
 		assertEquals(Detection.THRESHOLD, onTexture.detection());
 		assertTrue(onTexture.said().contains("the background's texture"), onTexture.said());
@@ -99,9 +99,12 @@ class DetectionChoiceTest {
 		for (int k = 0; k < 16; k++)
 			spots.add(spot(k == 0 ? Flag.MERGED.bit() : 0));
 		sixteen.add(spots);
-		assertEquals(Detection.IMAGE, DetectionChoice.choose(sixteen, particles, 10).detection());
-		assertEquals(Detection.THRESHOLD, DetectionChoice.choose(List.of(spots.subList(1, 16)), particles, 10)
-			.detection(), "no merged area: the threshold");
+		assertEquals(Detection.IMAGE, DetectionChoice.choose(sixteen, 0, particles, 10).detection());
+		assertEquals(Detection.THRESHOLD, DetectionChoice.choose(List.of(spots.subList(1, 16)), 15, particles, 10)
+			.detection(), "no merged area, no more areas discarded than kept: the threshold");
+		final DetectionChoice crumbs = DetectionChoice.choose(List.of(spots.subList(1, 16)), 16, particles, 10);
+		assertEquals(Detection.IMAGE, crumbs.detection(), "more areas discarded than kept: the image");
+		assertTrue(crumbs.said().contains("discarded more areas than it kept (16 against 15 spots"), crumbs.said());
 	}
 
 	/** Bright particles: their own contrast is the stronger; the same frame inverted (dark particles): the other. */
