@@ -54,7 +54,7 @@ def test_nan_pixel_named():
 def test_nothing_to_measure_is_a_value_error():
     with pytest.raises(ValueError) as e:
         ct.locate(np.full((60, 60), 7, np.uint8))
-    assert "cannot measure --threshold" in one_line(e)
+    assert "cannot measure the particles" in one_line(e) and "no blob" in one_line(e)
 
 
 def test_locate_refuses_a_stack(movie):
