@@ -35,6 +35,7 @@ import java.util.function.DoubleToIntFunction;
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.core.Method;
 import io.github.contacttracker.core.TrackerParameters;
+import io.github.contacttracker.core.image.NoiseEstimate;
 import io.github.contacttracker.core.image.Plane;
 import io.github.contacttracker.core.kind.KindFeatures;
 import io.github.contacttracker.core.kind.Kinds;
@@ -485,5 +486,22 @@ public final class ProfileAnalysis {
 		final double[] v = FrameSpots.sample(Plane.of((RandomAccessibleInterval) frame));
 		final double median = Statistics.quantile(v, 0.5); // sorted by it
 		return median - v[0] > DARK_RATIO * (v[v.length - 1] - median);
+	}
+
+	/**
+	 * @return whether the frame holds nothing brighter or darker than its noise, as the helper judges it
+	 *         ({@link FrameSpots#find}: its brightest pixels stand no more than {@link Margins#THRESHOLD_MARGIN_SIGMAS}
+	 *         noise sigmas above its median, and its darkest no more below): a blank frame, such as one before the
+	 *         shutter opened or a confocal slice below the coverslip
+	 */
+	@SuppressWarnings({ "rawtypes", "unchecked" })
+	public static boolean blank(final RandomAccessibleInterval<? extends RealType<?>> frame) {
+		final Plane plane = Plane.of((RandomAccessibleInterval) frame);
+		final double[] v = FrameSpots.sample(plane);
+		final double median = Statistics.quantile(v, 0.5), margin = Margins.THRESHOLD_MARGIN_SIGMAS * Math.max(
+			NoiseEstimate.sigma(plane), 1e-6);
+		final double top = Statistics.quantile(v, 1 - Math.max(1e-4, 20.0 / v.length));
+		final double bottom = Statistics.quantile(v, Math.max(1e-4, 20.0 / v.length));
+		return !(top - median > margin) && !(median - bottom > margin);
 	}
 }

@@ -198,8 +198,8 @@ final class TrackCommand extends ContactTrackerCli.Subcommand {
 	private SettingValues measured(final Path input, final ImagePlus imp, final ImagePlusFrames frames,
 		final SettingValues settings, final StringBuilder notice)
 	{
-		final MeasuredSettings.Result r = MeasuredSettings.of(input.getFileName().toString(), frames.frames().get(0),
-			imp.getBitDepth() != 32, settings, settingOptions.given());
+		final MeasuredSettings.Result r = MeasuredSettings.of(input.getFileName().toString(), frames::frame, frames
+			.frameCount(), imp.getBitDepth() != 32, settings, settingOptions.given());
 		if (notice.length() > 0 && !r.notice().isEmpty()) notice.append('\n');
 		notice.append(r.notice());
 		return r.settings();

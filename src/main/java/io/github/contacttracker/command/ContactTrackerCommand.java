@@ -493,7 +493,8 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 		final SettingValues before = settings();
 		final MeasuredSettings.Result r;
 		try {
-			r = MeasuredSettings.of(imp.getTitle(), frames.frame(0), imp.getBitDepth() != 32, before, given);
+			r = MeasuredSettings.of(imp.getTitle(), frames::frame, frames.frameCount(), imp.getBitDepth() != 32, before,
+				given);
 		}
 		catch (final InvalidInputException e) {
 			throw new InvalidInputException("the macro gives no threshold and r_out, and they cannot be measured: " + e

@@ -93,8 +93,8 @@ public final class ColumnTracking {
 			settings = settings.withText(s, e.getValue());
 			named.add(s);
 		}
-		final MeasuredSettings.Result measured = MeasuredSettings.of(name, frames.frame(0), frames.integerData(),
-			settings, named);
+		final MeasuredSettings.Result measured = MeasuredSettings.of(name, frames::frame, frames.frameCount(), frames
+			.integerData(), settings, named);
 		final TrackingPipeline pipeline = new TrackingPipeline(measured.settings());
 		final FrameSource source = frames.source(name);
 		final TrackingResult result;

@@ -23,6 +23,7 @@ package io.github.contacttracker.pipeline;
 
 import java.math.BigDecimal;
 import java.util.Set;
+import java.util.function.IntFunction;
 
 import io.github.contacttracker.advisor.ProfileAnalysis;
 import io.github.contacttracker.core.InvalidInputException;
@@ -67,9 +68,47 @@ public final class MeasuredSettings {
 	 *        it is lowered for small particles ({@link ProfileAnalysis.Result#suggestedMinArea}); the notice says so
 	 * @throws InvalidInputException when the threshold or r_out is missing and cannot be measured
 	 */
-	@SuppressWarnings({ "unchecked", "rawtypes" })
 	public static Result of(final String name, final RandomAccessibleInterval<?> first, final boolean integerData,
 		final SettingValues settings, final Set<Setting<?>> given)
+	{
+		return of(name, first, 1, true, integerData, settings, given);
+	}
+
+	/**
+	 * As {@link #of(String, RandomAccessibleInterval, boolean, SettingValues, Set)}, on a movie of {@code count}
+	 * frames: where the first frame is blank ({@link ProfileAnalysis#blank}: a frame before the shutter opened, the
+	 * slices of a stack below the coverslip), the helper measures on the middle one, then the last, and the notice
+	 * names the frame. Only where it measures on none do the first frame's fallbacks apply (detection by the image, or
+	 * the refusal, naming the first frame). A first frame that holds particles the helper cannot measure (a dense
+	 * field) keeps its own fallbacks: another frame of the same field gives no better values, and the helper's values
+	 * on a dense frame (an r_out reaching the neighbours) are worse than detection by the image's.
+	 *
+	 * @param frame supplies frame {@code t} (0-based) of the movie
+	 */
+	@SuppressWarnings({ "unchecked", "rawtypes" })
+	public static Result of(final String name, final IntFunction<? extends RandomAccessibleInterval<?>> frame,
+		final int count, final boolean integerData, final SettingValues settings, final Set<Setting<?>> given)
+	{
+		final RandomAccessibleInterval<?> first = frame.apply(0);
+		if (count >= 3 && ProfileAnalysis.blank((RandomAccessibleInterval) first))
+			for (final int t : new int[] { count / 2, count - 1 })
+				try {
+					return of(name, frame.apply(t), t + 1, false, integerData, settings, given);
+				}
+				catch (final InvalidInputException e) {
+					// the next frame, then the first frame's fallbacks
+				}
+		return of(name, first, 1, true, integerData, settings, given);
+	}
+
+	/**
+	 * @param number the frame's number in the movie, counted from 1, for the notice
+	 * @param fallBack whether a frame the helper cannot measure on falls back to detection by the image (where that
+	 *        may be chosen); without, it is refused
+	 */
+	@SuppressWarnings({ "unchecked", "rawtypes" })
+	private static Result of(final String name, final RandomAccessibleInterval<?> first, final int number,
+		final boolean fallBack, final boolean integerData, final SettingValues settings, final Set<Setting<?>> given)
 	{
 		final boolean thresholdGiven = given.contains(TrackingSettings.THRESHOLD), rOutGiven = given.contains(
 			TrackingSettings.R_OUT), particlesGiven = given.contains(TrackingSettings.PARTICLES);
@@ -89,6 +128,7 @@ public final class MeasuredSettings {
 			r = ProfileAnalysis.analyse(seen, v.diameter(), 0);
 		}
 		catch (final InvalidInputException e) {
+			if (!fallBack) throw e;
 			final boolean otherContrast = autoSeesOtherContrast(v, seen);
 			if (imageCanTake(v) && !(auto(v) && (thresholdGiven && rOutGiven || otherContrast))) return byImage(name,
 				seen, v, thresholdGiven, rOutGiven, said, e);
@@ -111,7 +151,7 @@ public final class MeasuredSettings {
 			final boolean above = t > range[1];
 			if (above || t < range[0]) {
 				final String side = above ? "above" : "below";
-				if (imageCanTake(settings) && !(above && autoSeesOtherContrast(settings, seen))) return byImage(name, seen, settings.withText(TrackingSettings.PARTICLES, v.get(
+				if (fallBack && imageCanTake(settings) && !(above && autoSeesOtherContrast(settings, seen))) return byImage(name, seen, settings.withText(TrackingSettings.PARTICLES, v.get(
 					TrackingSettings.PARTICLES)), false, rOutGiven, new StringBuilder(particlesGiven || !v.dark() ? ""
 						: " --particles dark"), new InvalidInputException("its threshold " + optionValue(t) + " lies " + side +
 							" every pixel"));
@@ -135,7 +175,7 @@ public final class MeasuredSettings {
 			v = v.with(TrackingSettings.MIN_AREA, minArea);
 			said.append(" --min-area ").append(minArea);
 		}
-		return new Result(v, "contact-tracker: " + name + ": measured on frame 1 by the profile helper:" + said +
+		return new Result(v, "contact-tracker: " + name + ": measured on frame " + number + " by the profile helper:" + said +
 			" (given values win; 'contact-tracker profile " + name + "' shows how)");
 	}
 

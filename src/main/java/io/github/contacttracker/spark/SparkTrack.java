@@ -294,9 +294,9 @@ public final class SparkTrack {
 			final Movies.Open open = Movies.open(uri, movie, channelGiven ? settings.channel() : 0);
 			final ImagePlusFrames frames = open.frames();
 			final String path = movie.replaceAll("/+$", "");
-			final MeasuredSettings.Result measured = MeasuredSettings.of(path.substring(path.lastIndexOf('/') + 1), frames
-				.frames().get(0), !open.floats(), settings, givenNames.stream().map(TrackingSettings::named).collect(
-					Collectors.toSet()));
+			final MeasuredSettings.Result measured = MeasuredSettings.of(path.substring(path.lastIndexOf('/') + 1),
+				frames::frame, frames.frameCount(), !open.floats(), settings, givenNames.stream().map(
+					TrackingSettings::named).collect(Collectors.toSet()));
 			final TrackingPipeline pipeline = new TrackingPipeline(measured.settings());
 			final FrameSource source = pipeline.frames(FrameSource.of(frames, movie));
 			pipeline.checkThreshold(source);

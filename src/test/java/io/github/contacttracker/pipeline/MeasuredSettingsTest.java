@@ -173,4 +173,31 @@ class MeasuredSettingsTest {
 			}
 		});
 	}
+
+	/**
+	 * A movie whose first frame is blank (the shutter not yet open, the slices below the coverslip): the helper
+	 * measures on the middle frame, says which, and gives the values it gives on that frame alone; it does not track
+	 * the blank frame's noise by its image.
+	 */
+	@Test
+	void aBlankFirstFrameIsMeasuredOnTheMiddleOne() {
+		final RandomAccessibleInterval<UnsignedByteType> particles = brightField();
+		final RandomAccessibleInterval<UnsignedByteType> blank = net.imglib2.img.array.ArrayImgs.unsignedBytes(320, 320);
+		for (final UnsignedByteType t : net.imglib2.view.Views.flatIterable(blank))
+			t.set(136);
+		final List<RandomAccessibleInterval<UnsignedByteType>> movie = List.of(blank, particles, particles, particles);
+		final SettingValues defaults = SettingValues.defaults();
+		final MeasuredSettings.Result onMovie = MeasuredSettings.of("movie.tif", movie::get, movie.size(), true,
+			defaults, Set.of());
+		final MeasuredSettings.Result onFrame = MeasuredSettings.of("movie.tif", particles, true, defaults, Set.of());
+		assertTrue(onMovie.notice().contains("measured on frame 3 by the profile helper"), onMovie.notice());
+		assertEquals(onFrame.notice().replace("frame 1", "frame 3"), onMovie.notice());
+		assertEquals(onFrame.settings(), onMovie.settings());
+		assertEquals(TrackingSettings.AUTO, onMovie.settings().get(TrackingSettings.DETECTION), "not sent to the image");
+		// one frame, blank: nothing to measure on, said (a constant frame holds no blob either)
+		final InvalidInputException e = assertThrows(InvalidInputException.class, () -> MeasuredSettings.of("blank.tif",
+			List.of(blank)::get, 1, true, defaults, Set.of()));
+		assertTrue(e.getMessage().startsWith("cannot measure the particles on the first frame of blank.tif"), e
+			.getMessage());
+	}
 }

@@ -48,6 +48,8 @@ import io.github.contacttracker.core.math.Statistics;
  */
 record Misfit(double typical) implements Serializable {
 
+	private static final long serialVersionUID = 1L;
+
 	/** How many times the typical product a spot's must exceed to be flagged. */
 	static final double TIMES = 5;
 
