@@ -47,14 +47,15 @@ import net.imglib2.parallel.Parallelization;
  * Cramer-Rao bound assumes. Unreliable particles (suspected merges, degenerate) are left as they are and are
  * not modelled.
  * <p>
- * This class holds the groups and the iterations; a group's pixels are {@link FitPixels}, the passes over them
- * {@link NormalEquations}.
+ * This class holds the groups and the iterations of a fit; a group's pixels are {@link FitPixels}, the passes over
+ * them {@link NormalEquations}, and a group too large to fit jointly is fitted member by member by
+ * {@link MemberSweeps}, each member's fit one of this class's.
  */
 public final class GroupFit {
 
 	static final int MAX_ITERATIONS = 50;
 	/**
-	 * Groups of up to this many particles are fitted jointly; larger ones member by member ({@code fitInTurn}). A
+	 * Groups of up to this many particles are fitted jointly; larger ones member by member ({@link MemberSweeps}). A
 	 * compact cluster at contact couples every member to its neighbours so strongly (each image reaching over theirs)
 	 * that member by member its centres creep towards the joint solution by a little each sweep; a joint fit solves
 	 * the coupling at once, at a cost that grows with the cube of its 4 parameters per member. So clusters of a few
@@ -62,17 +63,6 @@ public final class GroupFit {
 	 * whose cost is linear. The figures: accuracy.md ({@code hex19}, {@code hex37}).
 	 */
 	static final int MAX_JOINT = 24;
-	/**
-	 * A member fitted in turn whose centre ends further than this many equivalent radii of its active area from
-	 * where the sweeps started is no fit.
-	 */
-	static final double MAX_SLIDE = 1;
-	/** At most this many sweeps over a large group. */
-	static final int MAX_SWEEPS = 10;
-	/** A member fitted in turn takes at most this many iterations a sweep (the next sweep goes on from there). */
-	static final int ITERATIONS_PER_SWEEP = 25;
-	/** A member fitted in turn uses the pixels that hold this fraction of the information on its centre. */
-	static final double INFORMATION = 0.95;
 	/**
 	 * Converged when no centre moves more than this in an iteration (px); that step is taken, unevaluated. The
 	 * iterations converge at least tenfold per step near the solution (on the bench stack: steps of about 5e-2,
@@ -108,7 +98,8 @@ public final class GroupFit {
 			// this group's own copy of the estimates: its members move in it, every other particle stays at its start
 			final Estimate[] own = start.clone();
 			final int it = group.length <= MAX_JOINT ? fitJointly(plane, particles, own, group, profile, window,
-				censoring) : fitInTurn(plane, particles, own, group, profile, window, censoring, MAX_SWEEPS);
+				censoring) : MemberSweeps.fitInTurn(plane, particles, own, group, profile, window, censoring,
+				MemberSweeps.MAX_SWEEPS);
 			final Estimate[] members = new Estimate[group.length];
 			for (int q = 0; q < group.length; q++)
 				members[q] = own[group[q]];
@@ -173,99 +164,6 @@ public final class GroupFit {
 	}
 
 	/**
-	 * A group too large to fit jointly (at the profile helper's r_out a dense field is one group of a hundred
-	 * particles or more: a joint fit of 400 parameters costs minutes per frame, and one member that cannot settle
-	 * holds all of them): each member fitted alone, its neighbours' light held at their latest estimates, in
-	 * sweeps over the group (block coordinate descent on the same least squares, each member with its own local
-	 * background plane). A member is fitted on the pixels holding {@value #INFORMATION} of the information on its
-	 * centre ({@link EmpiricalProfile#informationRadius}), which in a dense field lie well within r_out, chosen in
-	 * the first sweep and kept ({@link Kept}), to its own tolerance (in the first sweep, whose neighbours all move
-	 * after it, that of its first J^T J: the centre's own error is not known before) and for at most
-	 * {@value #ITERATIONS_PER_SWEEP} iterations a sweep; it is fitted again only when a neighbour whose window overlaps
-	 * its own moved by more than {@link #settled that neighbour's tolerance} after the member's latest fit, or when its
-	 * own iterations ran out. The sweeps stop when no member is to be fitted again, at most {@code maxSweeps}
-	 * ({@value #MAX_SWEEPS}); a member that would be fitted again then, or that the last sweep's fit still moved, is
-	 * flagged {@code NOT_CONVERGED}, one that cannot be fitted or slides off its particle {@code FELL_BACK}. The cost
-	 * is linear in the group's size and bounded. A member's standard errors are those of its own fit, without its
-	 * covariance with the neighbours. Members, not blocks of them, are the unit: a member that cannot settle (its
-	 * model wrong for it, its particle cut by the edge) holds up a joint fit of its block, not its neighbours' own.
-	 *
-	 * @return the largest iteration count of a member's fit in the last sweep
-	 */
-	static int fitInTurn(final Plane plane, final Particle[] particles, final Estimate[] e, final int[] group,
-		final EmpiricalProfile[] profile, final double window, final Censoring censoring, final int maxSweeps)
-	{
-		final int n = group.length;
-		final boolean[] failed = new boolean[n], active = new boolean[n], unfinished = new boolean[n];
-		java.util.Arrays.fill(active, true);
-		// when each member was last fitted and last moved (by more than its tolerance, or its iterations ran out),
-		// counted in fits: a member is fitted again only when a neighbour moved after its own latest fit (block
-		// Gauss-Seidel: a move before it, it has seen)
-		final long[] fittedAt = new long[n], movedAt = new long[n];
-		long clock = 0;
-		final Estimate[] start = new Estimate[n];
-		for (int q = 0; q < n; q++)
-			start[q] = e[group[q]];
-		// each member's window: where its kind's profile holds the information on its centre
-		final java.util.Map<EmpiricalProfile, Double> information = new java.util.IdentityHashMap<>();
-		final double[] memberWindow = new double[n];
-		for (int q = 0; q < n; q++)
-			memberWindow[q] = Math.min(window, information.computeIfAbsent(profile[group[q]], pk -> pk
-				.informationRadius(INFORMATION)));
-		final Kept[] kept = new Kept[n];
-		for (int q = 0; q < n; q++)
-			kept[q] = new Kept();
-		final NormalEquations passes = new NormalEquations(); // (its work array serves every member's fits)
-		int most = 0;
-		boolean any = true;
-		long sweepStart = 0;
-		for (int sweep = 1; sweep <= maxSweeps && any; sweep++) {
-			most = 0;
-			sweepStart = clock;
-			for (int q = 0; q < n; q++) {
-				if (!active[q]) continue;
-				final int k = group[q];
-				final Estimate before = e[k];
-				// the first sweep chooses the member's pixels (as a joint fit does), the later ones keep them and its
-				// window, with the neighbours' light at their latest estimates
-				final int it = fitGroup(plane, particles, e, new int[] { k }, profile, memberWindow[q], censoring,
-					new Budget(ITERATIONS_PER_SWEEP, sweep == 1 ? OWN_ERROR : settled(before), MAX_SELECTIONS), kept[q],
-					passes);
-				// a centre that slid away from its particle (onto a neighbour, or off into the background): no fit
-				failed[q] = it == 0 || e[k].distanceTo(start[q]) > MAX_SLIDE * Math.sqrt(particles[k].region().area() /
-					Math.PI);
-				if (failed[q]) e[k] = start[q].withFlags(e[k].flags());
-				// a member that failed is back at its start: it moved if that is not where its neighbours last saw it
-				// (counted as unfinished, one sliding off every sweep would hold its group for all of them)
-				unfinished[q] = it < 0 && !failed[q];
-				fittedAt[q] = ++clock;
-				if (unfinished[q] || e[k].distanceTo(before) > settled(e[k])) movedAt[q] = clock;
-				most = Math.max(most, Math.abs(it));
-			}
-			// fitted again: a member whose iterations ran out, and one that a neighbour's move after its own fit reaches:
-			// the pixels of a member's fit lie within its window, and a neighbour's move changes its light where the
-			// profile's slope lies, within the neighbour's own window. Beyond that window the neighbour's move changes
-			// its light by far less than the noise, so refitting there would cost fits without moving a centre.
-			any = false;
-			for (int q = 0; q < n; q++) {
-				active[q] = unfinished[q];
-				for (int j = 0; j < n && !active[q]; j++)
-					active[q] = j != q && movedAt[j] > fittedAt[q] && e[group[j]].distanceTo(e[group[q]]) < memberWindow[q] *
-						scaleOf(e[group[q]]) + memberWindow[j] * scaleOf(e[group[j]]);
-				any |= active[q];
-			}
-		}
-		for (int q = 0; q < n; q++) {
-			final int k = group[q];
-			if (failed[q]) e[k] = e[k].withFlags(e[k].flags() | Flag.FELL_BACK.bit());
-			// out of sweeps: one that would be fitted again, or that the last sweep's fit still moved
-			else if (any && (active[q] || movedAt[q] > sweepStart)) e[k] = e[k].withFlags(e[k].flags() | Flag.NOT_CONVERGED
-				.bit());
-		}
-		return most;
-	}
-
-	/**
 	 * @return the move (px) below which a centre counts as settled: {@link #TOLERANCE}, or a tenth of its standard
 	 *         error where that is larger. On real footage the imperfect model leaves the iterations circling within a
 	 *         few thousandths of a pixel (pixels enter and leave a window, a censoring choice flips), far below the
@@ -274,10 +172,6 @@ public final class GroupFit {
 	public static double settled(final double sigmaX, final double sigmaY) {
 		final double s = Math.max(sigmaX, sigmaY);
 		return Double.isFinite(s) ? Math.max(TOLERANCE, SETTLED_SIGMA * s) : TOLERANCE;
-	}
-
-	private static double settled(final Estimate e) {
-		return settled(e.sigmaX(), e.sigmaY());
 	}
 
 	/** The fraction of a centre's standard error below which a move counts as settled. */
@@ -337,7 +231,7 @@ public final class GroupFit {
 	 * pixel type clips, the pixels used are those the {@code censoring} rule keeps at the model's current
 	 * parameters: chosen again when the fit has settled, and the fit continued, until the choice stays put.
 	 */
-	private static int fitGroup(final Plane plane, final Particle[] ps, final Estimate[] e, final int[] group,
+	static int fitGroup(final Plane plane, final Particle[] ps, final Estimate[] e, final int[] group,
 		final EmpiricalProfile[] profile, final double window, final Censoring censoring, final Budget budget,
 		final Kept kept, final NormalEquations passes)
 	{
@@ -628,7 +522,7 @@ public final class GroupFit {
 	 * afresh every sweep, a few pixels at the margin of the clip levels would flip in and out as the neighbours move,
 	 * each flip a small jump of the least squares, and the sweeps would circle instead of settling.
 	 */
-	private static final class Kept {
+	static final class Kept {
 		FitPixels candidates;
 		boolean[] use;
 		/** the estimates the candidates' light of other particles was drawn at ({@link FitPixels#relit}) */
@@ -656,10 +550,10 @@ public final class GroupFit {
 	static final double OWN_ERROR = Double.NaN;
 
 	/**
-	 * A joint fit's budget. A member fitted in turn gets {@value #ITERATIONS_PER_SWEEP} iterations a sweep (the
-	 * sweeps are its outer iterations), in the first sweep the tolerance of its own error ({@link #OWN_ERROR}) and up
-	 * to {@value #MAX_SELECTIONS} choices of pixels, which it then keeps ({@link Kept}); in the later sweeps the
-	 * tolerance of its latest error ({@link #settled}).
+	 * A joint fit's budget. A member fitted in turn gets {@value MemberSweeps#ITERATIONS_PER_SWEEP} iterations a
+	 * sweep (the sweeps are its outer iterations), in the first sweep the tolerance of its own error
+	 * ({@link #OWN_ERROR}) and up to {@value #MAX_SELECTIONS} choices of pixels, which it then keeps ({@link Kept}); in
+	 * the later sweeps the tolerance of its latest error ({@link #settled}).
 	 */
 	static final Budget JOINT = new Budget(MAX_ITERATIONS, TOLERANCE, MAX_SELECTIONS);
 }

@@ -33,7 +33,7 @@ import io.github.contacttracker.core.radial.Particle;
 public final class FitAccess {
 
 	public static final int MAX_JOINT = GroupFit.MAX_JOINT;
-	public static final int MAX_SWEEPS = GroupFit.MAX_SWEEPS;
+	public static final int MAX_SWEEPS = MemberSweeps.MAX_SWEEPS;
 
 	private FitAccess() {}
 
@@ -51,7 +51,7 @@ public final class FitAccess {
 		final Estimate[] e = start.clone();
 		final EmpiricalProfile[] of = new EmpiricalProfile[ps.length];
 		java.util.Arrays.fill(of, profile);
-		GroupFit.fitInTurn(plane, ps, e, group, of, window, censoring, sweeps);
+		MemberSweeps.fitInTurn(plane, ps, e, group, of, window, censoring, sweeps);
 		return e;
 	}
 }
