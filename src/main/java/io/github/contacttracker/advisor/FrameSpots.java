@@ -51,6 +51,38 @@ import io.github.contacttracker.core.track.ContactTracker;
 record FrameSpots(List<Localization> spots, double[][] xy, double[] nn, double near, double level) {
 
 	/**
+	 * A frame's grey levels as the helper reads them.
+	 *
+	 * @param median the median of its sampled pixels ({@link #sample})
+	 * @param noise its pixel noise (at least 1e-6)
+	 * @param top the level of its brightest pixels: the 20th highest sampled (at most a 10,000th of them from the top)
+	 * @param bottom the level of its darkest pixels, counted the same way from the bottom
+	 */
+	record Levels(double median, double noise, double top, double bottom) {
+
+		static Levels of(final Plane plane) {
+			final double[] sample = sample(plane);
+			final double median = Statistics.quantile(sample, 0.5);
+			final double noise = Math.max(NoiseEstimate.sigma(plane), 1e-6);
+			final double tail = Math.max(1e-4, 20.0 / sample.length);
+			return new Levels(median, noise, Statistics.quantile(sample, 1 - tail), Statistics.quantile(sample, tail));
+		}
+
+		/**
+		 * @return whether its brightest pixels stand more than {@link Margins#THRESHOLD_MARGIN_SIGMAS} noise sigmas
+		 *         above its median
+		 */
+		boolean brighterThanNoise() {
+			return top - median > Margins.THRESHOLD_MARGIN_SIGMAS * noise;
+		}
+
+		/** @return whether its darkest pixels lie more than that below it */
+		boolean darkerThanNoise() {
+			return median - bottom > Margins.THRESHOLD_MARGIN_SIGMAS * noise;
+		}
+	}
+
+	/**
 	 * Step 1: the spots at half height between the frame's median and its brightest pixels, by one radial-symmetry
 	 * pass: the same spots with a point as without, so that the frame's values (its diameter, its most isolated
 	 * particles) do not depend on where the point was given. A particle at the point fainter than that half height
@@ -65,11 +97,9 @@ record FrameSpots(List<Localization> spots, double[][] xy, double[] nn, double n
 	static FrameSpots find(final Plane plane, final double[] point, final double[] at,
 		final double diameterGiven)
 	{
-		final double[] sample = sample(plane);
-		final double median0 = Statistics.quantile(sample, 0.5);
-		final double noise0 = Math.max(NoiseEstimate.sigma(plane), 1e-6);
+		final Levels levels = Levels.of(plane);
+		final double median0 = levels.median(), noise0 = levels.noise(), frameTop = levels.top();
 		final double near = diameterGiven > 0 ? Math.max(2, diameterGiven / 4) : 5;
-		final double frameTop = Statistics.quantile(sample, 1 - Math.max(1e-4, 20.0 / sample.length));
 		final double own = point != null ? peak(plane, at[0], at[1], near) : frameTop;
 		if (point != null && !(own - median0 > Margins.THRESHOLD_MARGIN_SIGMAS * noise0))
 			throw new InvalidInputException(String.format(Locale.ROOT, "no bright particle at (%s, %s): the brightest " +
@@ -77,7 +107,7 @@ record FrameSpots(List<Localization> spots, double[][] xy, double[] nn, double n
 					point[0]), HelperFormat.fmt(point[1]), HelperFormat.fmt(near), HelperFormat.fmt(own),
 				HelperFormat.fmt(Margins.THRESHOLD_MARGIN_SIGMAS), HelperFormat.fmt(noise0), HelperFormat.fmt(
 					median0)));
-		if (!(frameTop - median0 > Margins.THRESHOLD_MARGIN_SIGMAS * noise0))
+		if (!levels.brighterThanNoise())
 			throw new InvalidInputException("no particle brighter than the noise in the frame");
 		final double level = median0 + 0.5 * (frameTop - median0);
 		final List<Localization> spots = new ArrayList<>(spotsAt(plane, level));

@@ -35,7 +35,6 @@ import java.util.function.DoubleToIntFunction;
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.core.Method;
 import io.github.contacttracker.core.TrackerParameters;
-import io.github.contacttracker.core.image.NoiseEstimate;
 import io.github.contacttracker.core.image.Plane;
 import io.github.contacttracker.core.kind.KindFeatures;
 import io.github.contacttracker.core.kind.Kinds;
@@ -496,12 +495,7 @@ public final class ProfileAnalysis {
 	 */
 	@SuppressWarnings({ "rawtypes", "unchecked" })
 	public static boolean blank(final RandomAccessibleInterval<? extends RealType<?>> frame) {
-		final Plane plane = Plane.of((RandomAccessibleInterval) frame);
-		final double[] v = FrameSpots.sample(plane);
-		final double median = Statistics.quantile(v, 0.5), margin = Margins.THRESHOLD_MARGIN_SIGMAS * Math.max(
-			NoiseEstimate.sigma(plane), 1e-6);
-		final double top = Statistics.quantile(v, 1 - Math.max(1e-4, 20.0 / v.length));
-		final double bottom = Statistics.quantile(v, Math.max(1e-4, 20.0 / v.length));
-		return !(top - median > margin) && !(median - bottom > margin);
+		final FrameSpots.Levels levels = FrameSpots.Levels.of(Plane.of((RandomAccessibleInterval) frame));
+		return !levels.brighterThanNoise() && !levels.darkerThanNoise();
 	}
 }

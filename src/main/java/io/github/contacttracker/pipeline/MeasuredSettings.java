@@ -129,16 +129,17 @@ public final class MeasuredSettings {
 		}
 		catch (final InvalidInputException e) {
 			if (!fallBack) throw e;
-			final boolean otherContrast = autoSeesOtherContrast(v, seen);
+			final Seen frame = new Seen(seen);
+			final boolean otherContrast = autoSeesOtherContrast(v, frame);
 			if (imageCanTake(v) && !(auto(v) && (thresholdGiven && rOutGiven || otherContrast))) return byImage(name,
-				seen, v, thresholdGiven, rOutGiven, said, e);
+				frame, v, thresholdGiven, rOutGiven, said, e);
 			if (thresholdGiven && rOutGiven) return new Result(settings, "contact-tracker: " + name + ": the diameter " +
 				"could not be measured (" + InvalidInputException.oneLine(e.getMessage()) + "); tracked without it (give --diameter)");
 			throw new InvalidInputException("cannot measure " + (thresholdGiven ? "" : "--threshold ") + (thresholdGiven ||
 				rOutGiven ? "" : "and ") + (rOutGiven ? "" : "--r-out ") + "on the first frame of " + name + ": " + e
 					.getMessage() + (otherContrast && !v.dark() ? "; the inverted frame shows stronger blobs: if the particles " +
-						"are darker than the background, give --particles dark" : "") + byImageHint(seen, v) + "; or give them (contact-tracker profile MOVIE --at X,Y measures " +
-					"one particle)", e);
+						"are darker than the background, give --particles dark" : "") + byImageHint(frame, v) + "; or give " +
+				"them (contact-tracker profile MOVIE --at X,Y measures one particle)", e);
 		}
 		if (!thresholdGiven) {
 			v = v.with(TrackingSettings.THRESHOLD, r.suggestedThreshold(integerData));
@@ -151,14 +152,15 @@ public final class MeasuredSettings {
 			final boolean above = t > range[1];
 			if (above || t < range[0]) {
 				final String side = above ? "above" : "below";
-				if (fallBack && imageCanTake(settings) && !(above && autoSeesOtherContrast(settings, seen))) return byImage(name, seen, settings.withText(TrackingSettings.PARTICLES, v.get(
-					TrackingSettings.PARTICLES)), false, rOutGiven, new StringBuilder(particlesGiven || !v.dark() ? ""
-						: " --particles dark"), new InvalidInputException("its threshold " + optionValue(t) + " lies " + side +
-							" every pixel"));
+				final Seen frame = new Seen(seen);
+				if (fallBack && imageCanTake(settings) && !(above && autoSeesOtherContrast(settings, frame))) return byImage(
+					name, frame, settings.withText(TrackingSettings.PARTICLES, v.get(TrackingSettings.PARTICLES)), false,
+					rOutGiven, new StringBuilder(particlesGiven || !v.dark() ? "" : " --particles dark"),
+					new InvalidInputException("its threshold " + optionValue(t) + " lies " + side + " every pixel"));
 				throw new InvalidInputException("cannot measure --threshold on the first frame of " + name + ": the " +
 					"helper's " + optionValue(t) + " lies " + side + " its every pixel (" + optionValue(above ? range[1]
 						: range[0]) + ")" + (above && !v.dark() ? "; if the particles are darker than the background, give " +
-							"--particles dark" : "") + byImageHint(seen, v) + "; or give the values (contact-tracker profile " +
+							"--particles dark" : "") + byImageHint(frame, v) + "; or give the values (contact-tracker profile " +
 					"MOVIE --at X,Y measures one particle)");
 			}
 		}
@@ -221,11 +223,10 @@ public final class MeasuredSettings {
 	 *         what to try, as the threshold does, instead of tracking the rings by their image
 	 */
 	@SuppressWarnings({ "rawtypes", "unchecked" })
-	private static boolean autoSeesOtherContrast(final SettingValues v, final RandomAccessibleInterval seen) {
+	private static boolean autoSeesOtherContrast(final SettingValues v, final Seen seen) {
 		if (!auto(v)) return false;
-		final Plane plane = Plane.of(seen);
-		final double d = v.diameter() > 0 ? v.diameter() : ParticleScale.diameter(plane);
-		return d > 0 && DetectionChoice.otherContrastStronger(plane, Plane.of(Inversion.of(seen)), d);
+		final double d = v.diameter() > 0 ? v.diameter() : seen.blobs();
+		return d > 0 && DetectionChoice.otherContrastStronger(seen.plane(), Plane.of(Inversion.of(seen.frame)), d);
 	}
 
 	/**
@@ -234,9 +235,9 @@ public final class MeasuredSettings {
 	 *         the method is the paper's (which keeps its threshold)
 	 */
 	@SuppressWarnings({ "rawtypes", "unchecked" })
-	private static String byImageHint(final RandomAccessibleInterval seen, final SettingValues v) {
+	private static String byImageHint(final Seen seen, final SettingValues v) {
 		if (v.get(TrackingSettings.METHOD).equals(Method.PAPER.key())) return "";
-		final double d = ParticleScale.diameter(Plane.of(seen));
+		final double d = seen.blobs();
 		if (!(d > 0)) return "";
 		final String dd = optionValue(Math.round(d * 10) / 10.0);
 		return "; its blobs are about " + dd + " px across: --detection image" + (v.diameter() > 0 ? "" : " --diameter " +
@@ -254,7 +255,7 @@ public final class MeasuredSettings {
 	 * @throws InvalidInputException where the frame holds no blob to measure the diameter on
 	 */
 	@SuppressWarnings({ "rawtypes", "unchecked" })
-	private static Result byImage(final String name, final RandomAccessibleInterval seen, final SettingValues given,
+	private static Result byImage(final String name, final Seen seen, final SettingValues given,
 		final boolean thresholdGiven, final boolean rOutGiven, final StringBuilder said, final InvalidInputException why)
 	{
 		SettingValues v = given;
@@ -262,9 +263,8 @@ public final class MeasuredSettings {
 			v = v.withText(TrackingSettings.DETECTION, TrackingSettings.IMAGE);
 			said.append(" --detection image");
 		}
-		final Plane plane = Plane.of(seen);
 		if (!(v.diameter() > 0)) {
-			final double d = ParticleScale.diameter(plane);
+			final double d = seen.blobs();
 			if (!(d > 0)) throw new InvalidInputException("cannot measure the particles on the first frame of " + name +
 				": " + InvalidInputException.oneLine(why.getMessage()) + ", and the frame holds no blob to measure " +
 				"their diameter on; give --diameter (contact-tracker profile MOVIE --at X,Y measures one particle)", why);
@@ -272,19 +272,52 @@ public final class MeasuredSettings {
 			said.append(" --diameter ").append(optionValue(v.diameter()));
 		}
 		if (!thresholdGiven) {
-			final double[] range = ImagePlusFrames.range(seen, 0);
+			final double[] range = ImagePlusFrames.range(seen.frame, 0);
 			v = v.with(TrackingSettings.THRESHOLD, 0.5 * (range[0] + range[1]));
 			said.append(" --threshold ").append(optionValue(v.get(TrackingSettings.THRESHOLD)));
 		}
 		if (!rOutGiven) {
-			final long w = seen.dimension(0), h = seen.dimension(1);
-			v = v.with(TrackingSettings.R_OUT, Math.min(Math.min(v.diameter(), Math.hypot(w, h)), spacedROut(plane, v
-				.diameter())));
+			final long w = seen.frame.dimension(0), h = seen.frame.dimension(1);
+			v = v.with(TrackingSettings.R_OUT, Math.min(Math.min(v.diameter(), Math.hypot(w, h)), spacedROut(seen.plane(),
+				v.diameter())));
 			said.append(" --r-out ").append(optionValue(v.get(TrackingSettings.R_OUT)));
 		}
 		return new Result(v, "contact-tracker: " + name + ": the profile helper could not measure (" +
 			InvalidInputException.oneLine(why.getMessage()) + "); tracked by the particles' image:" + said +
 			" (given values win)");
+	}
+
+	/**
+	 * A frame the helper could not measure on, as the tracker sees it, with what the fallbacks read from it made once
+	 * and kept: its plane, and the diameter of its blobs ({@link ParticleScale}), which the contrast check, detection by
+	 * the image and the refusal's hint all use.
+	 */
+	private static final class Seen {
+		@SuppressWarnings("rawtypes")
+		final RandomAccessibleInterval frame;
+		private Plane plane;
+		private double blobs;
+		private boolean measured;
+
+		@SuppressWarnings("rawtypes")
+		Seen(final RandomAccessibleInterval frame) {
+			this.frame = frame;
+		}
+
+		@SuppressWarnings("unchecked")
+		Plane plane() {
+			if (plane == null) plane = Plane.of(frame);
+			return plane;
+		}
+
+		/** @return the diameter of the frame's blobs (not above 0 where it holds none) */
+		double blobs() {
+			if (!measured) {
+				blobs = ParticleScale.diameter(plane());
+				measured = true;
+			}
+			return blobs;
+		}
 	}
 
 	/** @return a number as an option's value: exact, shortest, no exponent ({@code 174}, {@code 31.65}) */
