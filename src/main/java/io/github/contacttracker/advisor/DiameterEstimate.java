@@ -30,8 +30,9 @@ import io.github.contacttracker.core.math.Statistics;
 /**
  * The particle diameter the profile is measured with, and that profile: the diameter given, or estimated from the
  * frame. Colloids at contact sit one diameter apart, so the spots' spacing bounds it; where the particles' own image
- * ends (the outer edge of a dark ring, else the reach) gives it for particles that sit further apart. The smaller of
- * the two is taken, and the finding says which.
+ * ends (the outer edge of a dark ring, else the reach) bounds it too. The smaller of the two is taken. Where no two
+ * spots sit within the particles' image, none touch, and the image's rim gives it: the dark ring's outer edge, or,
+ * for a profile with a plateau, its half height ({@link PooledProfile#rim}). The finding says which.
  *
  * @param diameter the diameter (px) the profile was measured with
  * @param estimated whether it was estimated
@@ -92,11 +93,15 @@ record DiameterEstimate(double diameter, boolean estimated, ProfiledParticles me
 		}
 		final double own = 2 * m.imageEdge();
 		final boolean fromImage = !(fromSpots < own);
-		final double diameter = fromImage ? own : fromSpots;
+		// no two spots within the particles' image: none touch, and the image shows the rim (a ring's edge, or the
+		// half height of a plateau); else the spots that touch show it
+		final double rim = fromImage ? PooledProfile.rim(m.pooled(), m.reach()) : Double.NaN;
+		final double diameter = fromImage ? 2 * rim : fromSpots;
 		if (Math.abs(diameter - provisional) > 0.01 * provisional) m = ProfiledParticles.measure(plane, s, at, diameter,
 			maxRadiusGiven, true);
-		findings.add(fromImage ? new Finding.DiameterFromImage(diameter, own / 2) : new Finding.DiameterFromSpacing(
-			diameter, DIAMETER_PERCENTILE, spacing.length, own));
+		findings.add(!fromImage ? new Finding.DiameterFromSpacing(diameter, DIAMETER_PERCENTILE, spacing.length, own)
+			: rim < own / 2 ? new Finding.DiameterFromHalfHeight(diameter, own / 2) : new Finding.DiameterFromImage(
+				diameter, own / 2));
 		findings.addAll(m.findings());
 		return new DiameterEstimate(diameter, true, m);
 	}

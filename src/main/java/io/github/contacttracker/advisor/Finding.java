@@ -36,6 +36,15 @@ public sealed interface Finding {
 	record DiameterFromImage(double diameter, double imageRadius) implements Finding {}
 
 	/**
+	 * The diameter was not given, no two spots sit within the particles' image, and the profile has a plateau: the
+	 * diameter is twice the radius at which it falls to half its height, where a blurred sphere's rim lies.
+	 *
+	 * @param diameter the estimate (px)
+	 * @param imageRadius where the particles' image returns to the background (px)
+	 */
+	record DiameterFromHalfHeight(double diameter, double imageRadius) implements Finding {}
+
+	/**
 	 * The diameter was not given: it is a percentile of the spots' nearest-neighbour distances, which is smaller
 	 * than the particles' own image.
 	 *

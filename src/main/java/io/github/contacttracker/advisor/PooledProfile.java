@@ -60,10 +60,16 @@ record PooledProfile(double[] radius, double[] height, int[] count, double backg
 	 * look touched (figures: fiji.md).
 	 */
 	static double imageEdge(final PooledProfile p, final double reach) {
+		final double ring = ringEdge(p, reach);
+		return Double.isNaN(ring) ? reach : ring;
+	}
+
+	/** @return the outer edge of the profile's dark ring ({@link #imageEdge}); NaN where it has none */
+	private static double ringEdge(final PooledProfile p, final double reach) {
 		int deepest = -1;
 		for (int k = 0; k < p.radius().length && p.radius()[k] < reach; k++)
 			if (p.count()[k] > 0 && (deepest < 0 || p.height()[k] < p.height()[deepest])) deepest = k;
-		if (deepest < 0 || !(p.height()[deepest] < -Margins.THRESHOLD_MARGIN_SIGMAS * p.noise())) return reach;
+		if (deepest < 0 || !(p.height()[deepest] < -Margins.THRESHOLD_MARGIN_SIGMAS * p.noise())) return Double.NaN;
 		int previous = deepest;
 		for (int k = deepest + 1; k < p.radius().length; k++) {
 			if (p.count()[k] == 0) continue;
@@ -74,6 +80,47 @@ record PooledProfile(double[] radius, double[] height, int[] count, double backg
 		return reach;
 	}
 
+
+	/**
+	 * The particle's rim, as far as its image shows it: the outer edge of its dark ring where it has one
+	 * ({@link #imageEdge}); else, if the profile has a plateau, the radius at which it falls, past its peak, to
+	 * half the peak's height. A sphere's image blurred by the optics falls from its plateau to the background across
+	 * its rim, the blur spreading the light evenly about the rim, so half the height lies on it whatever the blur. The
+	 * reach (where the light meets the noise) would instead grow with the signal-to-noise ratio: a blurred 12 px disc
+	 * at 40 noise sigmas reaches 8.6 px out, and two such particles 9 px apart would count as one.
+	 * A plateau: the profile falls from 90 to 10 per cent of its peak over less than its half-height radius (a
+	 * Gaussian's fall is 1.4 times its half-height radius; a disc of radius R blurred by sigma falls over 2.6 sigma,
+	 * less than R from R = 2.6 sigma up). A particle without one is no wider than its blur, and its light, out to the
+	 * reach, is the particle's image: the reach is returned (as it is where the profile does not fall to a tenth
+	 * within the reach).
+	 */
+	static double rim(final PooledProfile p, final double reach) {
+		final double ring = ringEdge(p, reach);
+		if (!Double.isNaN(ring)) return ring;
+		int peak = -1;
+		for (int k = 0; k < p.radius().length && p.radius()[k] < reach; k++)
+			if (p.count()[k] > 0 && (peak < 0 || p.height()[k] > p.height()[peak])) peak = k;
+		if (peak < 0 || !(p.height()[peak] > 0)) return reach;
+		final double top = p.height()[peak];
+		final double r90 = fallsTo(p, peak, 0.9 * top, reach), r50 = fallsTo(p, peak, 0.5 * top, reach), r10 = fallsTo(
+			p, peak, 0.1 * top, reach);
+		return r10 - r90 < r50 ? r50 : reach;
+	}
+
+	/**
+	 * @return the radius (interpolated between rings) at which the profile, past ring {@code peak}, first falls to
+	 *         {@code level}; infinite if it does not within the reach
+	 */
+	private static double fallsTo(final PooledProfile p, final int peak, final double level, final double reach) {
+		int previous = peak;
+		for (int k = peak + 1; k < p.radius().length && p.radius()[k] < reach; k++) {
+			if (p.count()[k] == 0) continue;
+			if (p.height()[k] <= level) return p.radius()[previous] + (p.radius()[k] - p.radius()[previous]) * (p
+				.height()[previous] - level) / (p.height()[previous] - p.height()[k]);
+			previous = k;
+		}
+		return Double.POSITIVE_INFINITY;
+	}
 
 	/**
 	 * {@link #pool}, the mask narrowed (by {@value #MASK_NARROWING} at a time, down to {@code narrowest}) while no

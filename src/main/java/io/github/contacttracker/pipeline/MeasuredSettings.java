@@ -25,6 +25,7 @@ import java.math.BigDecimal;
 import java.util.Set;
 import java.util.function.IntFunction;
 
+import io.github.contacttracker.advisor.Finding;
 import io.github.contacttracker.advisor.ProfileAnalysis;
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.core.Method;
@@ -153,10 +154,23 @@ public final class MeasuredSettings {
 			if (above || t < range[0]) {
 				final String side = above ? "above" : "below";
 				final Seen frame = new Seen(seen);
-				if (fallBack && imageCanTake(settings) && !(above && autoSeesOtherContrast(settings, frame))) return byImage(
-					name, frame, settings.withText(TrackingSettings.PARTICLES, v.get(TrackingSettings.PARTICLES)), false,
-					rOutGiven, new StringBuilder(particlesGiven || !v.dark() ? "" : " --particles dark"),
-					new InvalidInputException("its threshold " + optionValue(t) + " lies " + side + " every pixel"));
+				if (fallBack && imageCanTake(settings) && !(above && autoSeesOtherContrast(settings, frame))) {
+					// isolated blurred spheres whose rim the helper measured (only no threshold keeps two apart at
+					// contact): its diameter and r_out stand
+					final boolean rim = r.findings().stream().anyMatch(f -> f instanceof Finding.DiameterFromHalfHeight);
+					final StringBuilder kept = new StringBuilder(particlesGiven || !v.dark() ? "" : " --particles dark");
+					SettingValues fallen = settings.withText(TrackingSettings.PARTICLES, v.get(TrackingSettings.PARTICLES));
+					if (rim && !diameter) {
+						fallen = fallen.with(TrackingSettings.DIAMETER, r.suggestedDiameter());
+						kept.append(" --diameter ").append(optionValue(r.suggestedDiameter()));
+					}
+					if (rim && !rOutGiven) {
+						fallen = fallen.with(TrackingSettings.R_OUT, r.suggestedROut());
+						kept.append(" --r-out ").append(optionValue(r.suggestedROut()));
+					}
+					return byImage(name, frame, fallen, false, rOutGiven || rim, kept, new InvalidInputException(
+						"its threshold " + optionValue(t) + " lies " + side + " every pixel"));
+				}
 				throw new InvalidInputException("cannot measure --threshold on the first frame of " + name + ": the " +
 					"helper's " + optionValue(t) + " lies " + side + " its every pixel (" + optionValue(above ? range[1]
 						: range[0]) + ")" + (above && !v.dark() ? "; if the particles are darker than the background, give " +

@@ -157,6 +157,10 @@ public final class ProfileReport {
 		if (finding instanceof Finding.DiameterFromImage f)
 			return diameterEstimated(f.diameter(), "twice the radius where the particles' image returns to the " +
 				"background (" + fmt2(f.imageRadius()) + " px)");
+		if (finding instanceof Finding.DiameterFromHalfHeight f)
+			return diameterEstimated(f.diameter(), "twice the radius where the particles' profile falls to half its " +
+				"height, the rim of a blurred sphere (their image returns to the background " + fmt2(f.imageRadius()) +
+				" px out)");
 		if (finding instanceof Finding.DiameterFromSpacing f)
 			return diameterEstimated(f.diameter(), "the " + fmt(f.percentile()) + "-th percentile of the " + f.spots() +
 				" spots' nearest-neighbour distances, closer than the particles' image reaches (" + fmt2(f

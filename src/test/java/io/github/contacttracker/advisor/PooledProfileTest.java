@@ -21,7 +21,9 @@
  */
 package io.github.contacttracker.advisor;
 
+import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assertions.assertTimeoutPreemptively;
 
 import java.time.Duration;
@@ -33,7 +35,7 @@ import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.core.image.Plane;
 import net.imglib2.img.array.ArrayImgs;
 
-/** The pooling of the profile helper where no particle has background around it. */
+/** The pooling of the profile helper where no particle has background around it, and where the pooled image ends. */
 class PooledProfileTest {
 
 	/**
@@ -48,5 +50,40 @@ class PooledProfileTest {
 		final double[][] spots = { { 4, 4 } };
 		assertTimeoutPreemptively(Duration.ofSeconds(10), () -> assertThrows(InvalidInputException.class,
 			() -> PooledProfile.poolNarrowing(plane, centres, spots, 0, 20, 0, null)));
+	}
+
+	/** @return a profile sampled every 0.5 px out to 30 px, noise 1 */
+	private static PooledProfile sampled(final java.util.function.DoubleUnaryOperator height) {
+		final int n = 61;
+		final double[] r = new double[n], h = new double[n];
+		final int[] count = new int[n];
+		for (int k = 0; k < n; k++) {
+			r[k] = 0.5 * k;
+			h[k] = height.applyAsDouble(r[k]);
+			count[k] = 10;
+		}
+		return new PooledProfile(r, h, count, 0, 1, List.of());
+	}
+
+	/**
+	 * A blurred disc (radius 6, blur 1.5 px, 120 noise sigmas high) has its rim at half height, not where its light
+	 * meets the noise; a Gaussian spot, no wider than its blur, keeps its reach; a bright-field particle, the outer edge
+	 * of its dark ring.
+	 */
+	@Test
+	void theRimIsAPlateausHalfHeightElseWhereTheImageEnds() {
+		final PooledProfile disc = sampled(r -> 120 / (1 + Math.exp((r - 6) * 1.702 / 1.5)));
+		final double discReach = PooledProfile.reach(disc, 30, null);
+		assertEquals(6, PooledProfile.rim(disc, discReach), 0.05);
+		assertTrue(discReach > 8, "the light meets the noise more than 2 px beyond the rim: " + discReach);
+
+		final PooledProfile gaussian = sampled(r -> 120 * Math.exp(-r * r / (2 * 1.5 * 1.5)));
+		final double gaussianReach = PooledProfile.reach(gaussian, 30, null);
+		assertEquals(gaussianReach, PooledProfile.rim(gaussian, gaussianReach), 1e-12);
+
+		final PooledProfile ringed = sampled(r -> r < 4 ? 100 : r < 10 ? -40 : 0);
+		final double ringedReach = PooledProfile.reach(ringed, 30, null);
+		assertEquals(PooledProfile.imageEdge(ringed, ringedReach), PooledProfile.rim(ringed, ringedReach), 1e-12);
+		assertEquals(10, PooledProfile.rim(ringed, ringedReach), 0.5);
 	}
 }

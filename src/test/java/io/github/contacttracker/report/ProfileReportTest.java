@@ -61,6 +61,9 @@ class ProfileReportTest {
 		final Map<Finding, String> expected = new LinkedHashMap<>();
 		expected.put(new Finding.DiameterFromImage(30.0213, 15.0107), "the diameter (30.02 px) is estimated as twice " +
 			"the radius where the particles' image returns to the background (15.01 px): give it if you know it");
+		expected.put(new Finding.DiameterFromHalfHeight(11.9871, 8.6014), "the diameter (11.99 px) is estimated as " +
+			"twice the radius where the particles' profile falls to half its height, the rim of a blurred sphere (their " +
+			"image returns to the background 8.600 px out): give it if you know it");
 		expected.put(new Finding.DiameterFromSpacing(34.0589, 10, 85, 42.9791), "the diameter (34.06 px) is estimated " +
 			"as the 10-th percentile of the 85 spots' nearest-neighbour distances, closer than the particles' image " +
 			"reaches (42.98 px across): give it if you know it");

@@ -345,6 +345,12 @@ public final class StackTracker {
 			everyOther[i] = 2 * i;
 		final Frames start = new Frames(sample, previous).at(everyOther);
 		Measured used = profile(start.results(), null, start.indices(), frame, params.profileReach(), kinds);
+		// a kind none of whose particles can teach a profile (all merged where the threshold joined touching
+		// particles, as it does a pair pushed together): one profile for them all, not none
+		if (used == null && kinds != null) {
+			kinds = null;
+			used = profile(start.results(), null, start.indices(), frame, params.profileReach(), null);
+		}
 		List<FrameResult> round = pass(tracker, profiles(used), sample, frame, false, progress, cancelled);
 		final Rounds rounds = new Rounds();
 		Rounds.Verdict verdict = rounds.next(moves(previous, round));
