@@ -60,8 +60,7 @@ public final class BandPass {
 
 	/** The same on an image given as an array (row-major), e.g. a fit's residuals; {@code image} is not changed. */
 	public static float[] of(final float[] image, final int w, final int h, final double sigma, final int halfWidth) {
-		final float[] kernel = gaussian(sigma);
-		final float[] smooth = separable(image, w, h, kernel);
+		final float[] smooth = smooth(image, w, h, sigma);
 		final float[] mean = boxMean(image, w, h, halfWidth);
 		for (int i = 0; i < smooth.length; i++)
 			smooth[i] -= mean[i];
@@ -88,7 +87,48 @@ public final class BandPass {
 
 	/** @return the image blurred by a Gaussian of standard deviation {@code sigma} (px, edges continued) */
 	static float[] blur(final float[] image, final int w, final int h, final double sigma) {
-		return separable(image, w, h, gaussian(sigma));
+		return smooth(image, w, h, sigma);
+	}
+
+	/**
+	 * Beyond this standard deviation (px) the Gaussian is {@value #BOXES} successive box means of the same variance
+	 * ({@link #boxRadii}): a kernel 6 sigma wide costs that many operations a pixel, the boxes' running sums a few
+	 * whatever their width. Particles of a diameter above 8 times it (128 px) are filtered so: a diameter of 1,500 px
+	 * on a 2000 x 2000 frame took a minute of Gaussian passes. The boxes' kernel is within 6% of the Gaussian's peak
+	 * everywhere.
+	 */
+	static final double BOXES_FROM_SIGMA = 16;
+
+	/** How many boxes stand for the Gaussian: 3 leave 10% of its peak in the difference, 5 leave 5%. */
+	static final int BOXES = 5;
+
+	/** @return the image blurred by a Gaussian of standard deviation {@code sigma}, or beyond {@link #BOXES_FROM_SIGMA} its likeness in boxes */
+	private static float[] smooth(final float[] image, final int w, final int h, final double sigma) {
+		if (!(sigma > BOXES_FROM_SIGMA)) return separable(image, w, h, gaussian(sigma));
+		float[] out = image;
+		for (final int r : boxRadii(sigma))
+			out = boxMean(out, w, h, r);
+		return out;
+	}
+
+	/**
+	 * @return the radii of {@value #BOXES} boxes whose successive means have the variance {@code sigma^2} (a box of odd width
+	 *         {@code b} has the variance {@code (b^2 - 1) / 12}; the widths are the two odd ones about the ideal
+	 *         width, as many of each as brings the sum nearest, after W. M. Wells, IEEE PAMI 8(2), 1986, and P.
+	 *         Kovesi, Fast almost-Gaussian filtering, DICTA 2010)
+	 */
+	static int[] boxRadii(final double sigma) {
+		final int n = BOXES;
+		final double variance = sigma * sigma;
+		int lower = (int) Math.floor(Math.sqrt(12 * variance / n + 1));
+		if (lower % 2 == 0) lower--;
+		final int upper = lower + 2;
+		final int ofLower = (int) Math.round((12 * variance - n * (double) lower * lower - 4.0 * n * lower - 3.0 * n) /
+			(-4.0 * lower - 4));
+		final int[] r = new int[n];
+		for (int i = 0; i < n; i++)
+			r[i] = ((i < ofLower ? lower : upper) - 1) / 2;
+		return r;
 	}
 
 	/** @return a normalised Gaussian kernel of standard deviation {@code sigma}, out to 3 sigma (at least 1 px) */
