@@ -142,10 +142,51 @@ public final class ProfileCommand extends ContactTrackerCli.Subcommand {
 		}
 		for (final Path t : targets)
 			out.println("  wrote " + t);
+		final double[] range = ImagePlusFrames.range(frames.frame(frame - 1), frame - 1);
+		if (threshold > range[1] || threshold < range[0]) {
+			out.println(SUGGESTION + byImage(movie, plain.frame(frame - 1), threshold, range, integerData, given, said));
+			return 0;
+		}
 		out.println(SUGGESTION + " --threshold " + MeasuredSettings.optionValue(threshold) + " --r-out " + MeasuredSettings
 			.optionValue(rOut) + " --diameter " + MeasuredSettings.optionValue(r.suggestedDiameter()) + (r.smallParticles(
 				threshold) ? " --min-area " + r.suggestedMinArea(threshold) : "") + (dark ? " --particles dark" : ""));
 		return 0;
+	}
+
+	/**
+	 * Where the helper's threshold lies outside the frame's range, no threshold keeps two such particles apart (or
+	 * the helper's background lies under every pixel, in a field packed edge to edge): the values {@code track}
+	 * measures then, by the particles' image ({@link MeasuredSettings}), said in a warning first.
+	 *
+	 * @return the options to suggest, or where {@code track} would refuse the frame, why
+	 */
+	private String byImage(final Path movie, final RandomAccessibleInterval<?> frame, final double threshold,
+		final double[] range, final boolean integerData, final boolean particlesGiven, final boolean dark)
+	{
+		final boolean above = threshold > range[1];
+		out.println("  warning: the threshold " + MeasuredSettings.optionValue(threshold) + " lies " + (above ? "above"
+			: "below") + " every pixel of the frame (" + MeasuredSettings.optionValue(above ? range[1] : range[0]) +
+			"): no threshold cuts these particles apart, and 'track' finds them by their image with the values below");
+		SettingValues settings = SettingValues.defaults();
+		final java.util.Set<io.github.contacttracker.settings.Setting<?>> given = new java.util.HashSet<>();
+		if (options.value(diameterOption) > 0) {
+			settings = settings.with(TrackingSettings.DIAMETER, options.value(diameterOption));
+			given.add(TrackingSettings.DIAMETER);
+		}
+		if (particlesGiven) {
+			settings = settings.withText(TrackingSettings.PARTICLES, dark ? TrackingSettings.DARK : "bright");
+			given.add(TrackingSettings.PARTICLES);
+		}
+		try {
+			final SettingValues v = MeasuredSettings.of(movie.getFileName().toString(), frame, integerData, settings,
+				given).settings();
+			return " --detection " + v.get(TrackingSettings.DETECTION) + " --threshold " + MeasuredSettings.optionValue(v
+				.get(TrackingSettings.THRESHOLD)) + " --r-out " + MeasuredSettings.optionValue(v.get(TrackingSettings.R_OUT)) +
+				" --diameter " + MeasuredSettings.optionValue(v.diameter()) + (v.dark() ? " --particles dark" : "");
+		}
+		catch (final InvalidInputException e) {
+			return " none: " + InvalidInputException.oneLine(e.getMessage());
+		}
 	}
 
 	@SuppressWarnings({ "unchecked", "rawtypes" })

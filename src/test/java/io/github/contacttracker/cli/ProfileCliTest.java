@@ -42,8 +42,11 @@ import org.junit.jupiter.api.io.TempDir;
 import io.github.contacttracker.ij.TimeSeries;
 import io.github.contacttracker.io.Calibration;
 import io.github.contacttracker.io.ImageFiles;
+import io.github.contacttracker.lab.sim.ImageSimulator;
+import io.github.contacttracker.lab.sim.NoiseModel;
 import io.github.contacttracker.lab.sim.PaperParticles;
 import io.github.contacttracker.lab.sim.ParticleType;
+import io.github.contacttracker.lab.sim.Quantiser;
 import io.github.contacttracker.lab.sim.SimulatedStack;
 
 /** {@code contact-tracker profile}: the table, the PNG, the CSV and the line to copy; help and bad options. */
@@ -89,6 +92,33 @@ class ProfileCliTest {
 		assertEquals(0, at.status(), at.err());
 		assertTrue(at.out().contains("profile of 1 particle around"), at.out());
 		assertTrue(at.out().strip().endsWith("--diameter 65.3"), at.out());
+	}
+
+	/**
+	 * Two blurred spheres standing apart, whose light at contact would rise above their own peak: no threshold keeps
+	 * two of them apart, and the helper's threshold lies above every pixel. The line to copy is then what 'track'
+	 * measures (detection by the image, a threshold within the frame), never a value outside the frame.
+	 */
+	@Test
+	void aThresholdAboveEveryPixelIsNeverSuggested(@TempDir final Path dir) throws Exception {
+		final ImageSimulator sim = new ImageSimulator(r -> 120 / (1 + Math.exp((r - 6) * 1.702 / 1.5)), 3);
+		final var frame = Quantiser.toUnsignedBytes(sim.render(List.of(new double[] { 38.3, 40.2 }, new double[] { 62.3,
+			40.2 }), 100, 80, 37), NoiseModel.gaussian(3), new SplittableRandom(11)).image();
+		final Path tif = dir.resolve("pair.tif");
+		ImageFiles.saveTiff(TimeSeries.of("pair", List.of(frame), Calibration.PIXELS), tif);
+		double max = 0;
+		for (final var v : frame)
+			max = Math.max(max, v.getRealDouble());
+		final Run r = run("profile", tif.toString());
+		assertEquals(0, r.status(), r.err());
+		assertTrue(r.out().contains("warning: the threshold ") && r.out().contains(" lies above every pixel of the " +
+			"frame (" + (int) max + ")"), r.out());
+		final String last = r.out().strip().lines().reduce((a, b) -> b).orElseThrow();
+		assertTrue(last.matches("suggested: --detection image --threshold [0-9.]+ --r-out [0-9.]+ --diameter [0-9.]+"),
+			last);
+		final double threshold = Double.parseDouble(last.replaceAll(".*--threshold ([0-9.]+).*", "$1"));
+		assertTrue(threshold <= max, last);
+		assertEquals(12, Double.parseDouble(last.replaceAll(".*--diameter ", "")), 0.6, "the spheres' rim: " + last);
 	}
 
 	@Test
