@@ -82,10 +82,11 @@ public record Peaks(double[] x, double[] y, double[] height, double[] prominence
 	}
 
 	/**
-	 * @return the median distance from a peak to its nearest neighbour among the peaks (px): the particles' spacing
-	 *         where each peak is one; infinite with fewer than two peaks
+	 * @param quantile which of the distances (0.5: the median)
+	 * @return that quantile of the distances from a peak to its nearest neighbour among the peaks (px): the
+	 *         particles' spacing where each peak is one; infinite with fewer than two peaks
 	 */
-	public double medianSpacing() {
+	public double spacing(final double quantile) {
 		final int n = x.length;
 		if (n < 2) return Double.POSITIVE_INFINITY;
 		final double[] nearest = new double[n];
@@ -95,7 +96,7 @@ public record Peaks(double[] x, double[] y, double[] height, double[] prominence
 				if (j != i) best = Math.min(best, (x[i] - x[j]) * (x[i] - x[j]) + (y[i] - y[j]) * (y[i] - y[j]));
 			nearest[i] = Math.sqrt(best);
 		}
-		return Statistics.median(nearest);
+		return Statistics.quantile(nearest, quantile);
 	}
 
 	/** @return the number of peaks */
