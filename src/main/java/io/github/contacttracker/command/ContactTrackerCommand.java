@@ -641,6 +641,31 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 			if (status != null) status.showStatus(message);
 			return;
 		}
+		if (!p.thresholdInFrame()) {
+			// no threshold keeps two such particles apart: what 'track' measures on this frame, by their image
+			final MeasuredSettings.Result m;
+			try {
+				m = MeasuredSettings.of(imp.getTitle(), p.frameAsGiven(imp), p.integerData(), settings(), shownGiven());
+			}
+			catch (final InvalidInputException e) {
+				final String message = TITLE + ": cannot measure from the image: " + e.getMessage();
+				WindowsBeside.log(message, imp);
+				if (status != null) status.showStatus(message);
+				return;
+			}
+			particles = m.settings().get(TrackingSettings.PARTICLES);
+			detection = m.settings().get(TrackingSettings.DETECTION);
+			threshold = m.settings().get(TrackingSettings.THRESHOLD);
+			r_out = m.settings().get(TrackingSettings.R_OUT);
+			diameter = m.settings().diameter();
+			ValuesOrigin.measured(helperValues());
+			showOrigin();
+			WindowsBeside.log(p.logText(TITLE + ": measured") + "\n" + m.notice(), imp);
+			if (status != null) status.showStatus(TITLE + ": tracked by the particles' image: no threshold keeps them " +
+				"apart");
+			preview();
+			return;
+		}
 		if (p.darkFound()) particles = TrackingSettings.DARK;
 		threshold = p.threshold();
 		r_out = p.rOut();
@@ -651,6 +676,14 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 		WindowsBeside.log(p.logText(TITLE + ": measured"), imp);
 		if (status != null) status.showStatus(TITLE + ": measured " + p.status());
 		preview(); // the dialog previews its values as they change; these changed without an edit
+	}
+
+	/** @return the settings the user gave that the helper measured with: a diameter above 0, dark particles */
+	private java.util.Set<Setting<?>> shownGiven() {
+		final java.util.Set<Setting<?>> given = new java.util.HashSet<>();
+		if (diameter > 0) given.add(TrackingSettings.DIAMETER);
+		if (TrackingSettings.DARK.equals(particles)) given.add(TrackingSettings.PARTICLES);
+		return given;
 	}
 
 	/** Takes the preview off the image: the dialog was cancelled. */

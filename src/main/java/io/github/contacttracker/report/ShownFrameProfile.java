@@ -57,9 +57,12 @@ import net.imglib2.type.numeric.RealType;
  * @param dark whether the frame was measured inverted: dark particles
  * @param darkFound whether that was found ({@link #measure}: the particles were said bright, the frame looks dark)
  * @param region the part of the frame measured ({@link ShownImage#selection}), {@code null} for all of it
+ * @param range the darkest and brightest grey level of the frame measured, as the helper saw it (inverted for dark
+ *        particles)
  */
 public record ShownFrameProfile(ProfileAnalysis.Result result, String title, int frame, int frameCount, int channel,
-	boolean integerData, double rejectedDiameter, String rejection, boolean dark, boolean darkFound, Interval region)
+	boolean integerData, double rejectedDiameter, String rejection, boolean dark, boolean darkFound, Interval region,
+	double[] range)
 {
 
 	/** Longest line written to ImageJ's Log window: it does not wrap, and a default Log window is about this wide. */
@@ -106,7 +109,7 @@ public record ShownFrameProfile(ProfileAnalysis.Result result, String title, int
 				throw e;
 			}
 			return new ShownFrameProfile(estimated.result, estimated.title, estimated.frame, estimated.frameCount,
-				estimated.channel, estimated.integerData, diameter, e.getMessage(), dark, found, region);
+				estimated.channel, estimated.integerData, diameter, e.getMessage(), dark, found, region, estimated.range);
 		}
 	}
 
@@ -144,7 +147,22 @@ public record ShownFrameProfile(ProfileAnalysis.Result result, String title, int
 		final ProfileAnalysis.Result r = point == null ? ProfileAnalysis.analyse(frame, diameter, maxRadius,
 			kindFrames) : ProfileAnalysis.analyse(frame, point[0], point[1], diameter, maxRadius, kindFrames);
 		return new ShownFrameProfile(r, imp.getTitle(), t, frames.frameCount(), frames.channel(), imp
-			.getBitDepth() != 32, 0, null, dark, darkFound, region);
+			.getBitDepth() != 32, 0, null, dark, darkFound, region, ImagePlusFrames.range(frame, t));
+	}
+
+	/**
+	 * @return whether the suggested threshold lies within the grey levels of the frame measured: outside them no
+	 *         threshold keeps two such particles apart at contact (or the background lies under every pixel, in a
+	 *         field packed edge to edge), and {@code track} finds the particles by their image instead
+	 */
+	public boolean thresholdInFrame() {
+		final double t = threshold();
+		return t >= range[0] && t <= range[1];
+	}
+
+	/** @return the frame measured, as the image holds it (not inverted), within the region measured */
+	public RandomAccessibleInterval<? extends RealType<?>> frameAsGiven(final ImagePlus imp) {
+		return ImagePlusFrames.within(ImagePlusFrames.of(imp, channel).frame(frame), region);
 	}
 
 	/**

@@ -22,6 +22,7 @@
 package io.github.contacttracker.trackmate;
 
 import io.github.contacttracker.settings.Setting;
+import io.github.contacttracker.settings.SettingValues;
 import io.github.contacttracker.settings.TrackMateSettings;
 import io.github.contacttracker.settings.TrackingSettings;
 import java.awt.BasicStroke;
@@ -39,7 +40,9 @@ import java.text.DecimalFormat;
 import java.text.DecimalFormatSymbols;
 import java.util.Locale;
 import java.util.LinkedHashMap;
+import java.util.HashSet;
 import java.util.Map;
+import java.util.Set;
 import java.util.function.Supplier;
 
 import javax.swing.BorderFactory;
@@ -63,6 +66,7 @@ import fiji.plugin.trackmate.gui.components.ConfigurationPanel;
 import fiji.plugin.trackmate.util.DetectionPreview;
 import ij.ImagePlus;
 import io.github.contacttracker.core.InvalidInputException;
+import io.github.contacttracker.pipeline.MeasuredSettings;
 import io.github.contacttracker.report.ShownFrameProfile;
 import io.github.contacttracker.ui.WindowsBeside;
 
@@ -350,6 +354,7 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 				return showMessage("Not measured: " + e.getMessage());
 			};
 		}
+		if (!p.thresholdInFrame()) return byImage(p, dark, diameter);
 		return () -> {
 			if (p.darkFound()) fields.get(TrackingSettings.PARTICLES).show(TrackingSettings.DARK);
 			fields.get(TrackingSettings.THRESHOLD).show(p.threshold());
@@ -361,6 +366,46 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 			WindowsBeside.log(p.logText(ContactTrackerDetectorFactory.SHORT_NAME + ": measured"), imp, javax.swing
 				.SwingUtilities.getWindowAncestor(this));
 			return showMessage("Measured " + p.status());
+		};
+	}
+
+	/**
+	 * Where the helper's threshold lies outside the frame measured, no threshold keeps two such particles apart: the
+	 * fields get what {@code track} measures on that frame, by the particles' image ({@link MeasuredSettings}), so that
+	 * no threshold outside the image is filled in.
+	 */
+	private Supplier<String> byImage(final ShownFrameProfile p, final boolean dark, final double diameter) {
+		SettingValues given = SettingValues.defaults();
+		final Set<Setting<?>> said = new HashSet<>();
+		if (diameter > 0) {
+			given = given.with(TrackingSettings.DIAMETER, diameter);
+			said.add(TrackingSettings.DIAMETER);
+		}
+		if (dark) {
+			given = given.withText(TrackingSettings.PARTICLES, TrackingSettings.DARK);
+			said.add(TrackingSettings.PARTICLES);
+		}
+		final MeasuredSettings.Result m;
+		try {
+			m = MeasuredSettings.of(imp.getTitle(), p.frameAsGiven(imp), p.integerData(), given, said);
+		}
+		catch (final InvalidInputException e) {
+			return () -> {
+				WindowsBeside.log(ContactTrackerDetectorFactory.SHORT_NAME + ": cannot measure from the image: " + e
+					.getMessage(), imp, javax.swing.SwingUtilities.getWindowAncestor(this));
+				return showMessage("Not measured: " + e.getMessage());
+			};
+		}
+		final SettingValues v = m.settings();
+		return () -> {
+			fields.get(TrackingSettings.PARTICLES).show(v.get(TrackingSettings.PARTICLES));
+			fields.get(TrackingSettings.DETECTION).show(v.get(TrackingSettings.DETECTION));
+			fields.get(TrackingSettings.THRESHOLD).show(v.get(TrackingSettings.THRESHOLD));
+			fields.get(TrackingSettings.R_OUT).show(v.get(TrackingSettings.R_OUT));
+			fields.get(TrackingSettings.DIAMETER).show(v.diameter());
+			WindowsBeside.log(p.logText(ContactTrackerDetectorFactory.SHORT_NAME + ": measured") + "\n" + m.notice(),
+				imp, javax.swing.SwingUtilities.getWindowAncestor(this));
+			return showMessage("Measured: no threshold keeps these particles apart, so they are found by their image");
 		};
 	}
 

@@ -38,6 +38,7 @@ import org.scijava.module.Module;
 import org.scijava.module.ModuleItem;
 import org.scijava.module.ModuleService;
 import org.scijava.widget.Button;
+import java.util.SplittableRandom;
 
 import ij.ImagePlus;
 import io.github.contacttracker.advisor.ProfileAnalysis;
@@ -45,6 +46,10 @@ import io.github.contacttracker.ij.ShownImage;
 import io.github.contacttracker.io.Calibration;
 import io.github.contacttracker.io.ImagePlusFrames;
 import io.github.contacttracker.io.ProfileScenes;
+import io.github.contacttracker.ij.TimeSeries;
+import io.github.contacttracker.lab.sim.ImageSimulator;
+import io.github.contacttracker.lab.sim.NoiseModel;
+import io.github.contacttracker.lab.sim.Quantiser;
 import io.github.contacttracker.settings.TrackingSettings;
 import net.imglib2.RandomAccessibleInterval;
 
@@ -88,6 +93,28 @@ class MeasureFromImageTest extends WithContext {
 
 	private static double value(final Module m, final String name) {
 		return ((Number) m.getInput(name)).doubleValue();
+	}
+
+	/**
+	 * Two blurred spheres standing apart, whose light at contact rises above their own peak: the helper's threshold
+	 * lies above every pixel. The button then fills in what {@code track} measures on that frame (detection by the
+	 * image, a threshold within the frame, the spheres' rim as the diameter), never a threshold outside the image.
+	 */
+	@Test
+	void aThresholdAboveEveryPixelIsNeverFilledIn() throws Exception {
+		final ImageSimulator sim = new ImageSimulator(r -> 120 / (1 + Math.exp((r - 6) * 1.702 / 1.5)), 3);
+		final var frame = Quantiser.toUnsignedBytes(sim.render(java.util.List.of(new double[] { 38.3, 40.2 },
+			new double[] { 62.3, 40.2 }), 100, 80, 37), NoiseModel.gaussian(3), new SplittableRandom(11)).image();
+		final ImagePlus imp = TimeSeries.of("pair", java.util.List.of(frame), Calibration.PIXELS);
+		double max = 0;
+		for (final var v : frame)
+			max = Math.max(max, v.getRealDouble());
+		final Module m = dialog(imp);
+		final String log = press(m);
+		assertTrue(value(m, "threshold") <= max, "threshold " + value(m, "threshold") + ", brightest pixel " + max);
+		assertEquals(TrackingSettings.IMAGE, m.getInput("detection"), log);
+		assertEquals(12, value(m, "diameter"), 0.6, log);
+		assertTrue(log.contains("tracked by the particles' image"), log);
 	}
 
 	@Test

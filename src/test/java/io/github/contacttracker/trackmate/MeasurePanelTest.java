@@ -45,6 +45,10 @@ import io.github.contacttracker.advisor.ProfileAnalysis;
 import io.github.contacttracker.io.Calibration;
 import io.github.contacttracker.io.ImagePlusFrames;
 import io.github.contacttracker.io.ProfileScenes;
+import io.github.contacttracker.ij.TimeSeries;
+import io.github.contacttracker.lab.sim.ImageSimulator;
+import io.github.contacttracker.lab.sim.NoiseModel;
+import io.github.contacttracker.lab.sim.Quantiser;
 import io.github.contacttracker.settings.TrackingSettings;
 import net.imglib2.RandomAccessibleInterval;
 import net.imglib2.type.NativeType;
@@ -124,6 +128,28 @@ class MeasurePanelTest {
 		assertEquals(r.suggestedThreshold(true), number(panel.getSettings(), "GREY_THRESHOLD"), 0);
 		assertEquals(r.suggestedROut(), number(panel.getSettings(), "R_OUT"), 0);
 		assertTrue(message.startsWith("Measured 'particles': dark particles (the frame looks so), threshold "), message);
+	}
+
+	/**
+	 * Two blurred spheres standing apart, whose light at contact rises above their own peak: the helper's threshold
+	 * lies above every pixel, and the panel gets what {@code track} measures (detection by the image, a threshold
+	 * within the frame, the spheres' rim as the diameter), never a threshold outside the image.
+	 */
+	@Test
+	void aThresholdAboveEveryPixelIsNeverFilledIn() {
+		final ImageSimulator sim = new ImageSimulator(r -> 120 / (1 + Math.exp((r - 6) * 1.702 / 1.5)), 3);
+		final var frame = Quantiser.toUnsignedBytes(sim.render(List.of(new double[] { 38.3, 40.2 }, new double[] { 62.3,
+			40.2 }), 100, 80, 37), NoiseModel.gaussian(3), new java.util.SplittableRandom(11)).image();
+		double max = 0;
+		for (final var v : frame)
+			max = Math.max(max, v.getRealDouble());
+		final ContactTrackerConfigurationPanel panel = panel(TimeSeries.of("pair", List.of(frame), MICRONS));
+		final String message = panel.measureFromImage();
+		final Map<String, Object> after = panel.getSettings();
+		assertTrue(number(after, "GREY_THRESHOLD") <= max, after + ", brightest pixel " + max);
+		assertEquals(TrackingSettings.IMAGE, after.get("DETECTION"), message);
+		assertEquals(12, number(after, "DIAMETER"), 0.6, "in pixels: " + message);
+		assertTrue(message.contains("found by their image"), message);
 	}
 
 	/** Particles a few pixels across: the button lowers MIN_AREA to the helper's, and says so. */
