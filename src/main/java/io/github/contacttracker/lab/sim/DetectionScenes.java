@@ -1,0 +1,273 @@
+/*-
+ * #%L
+ * Contact Tracker: sub-pixel localization of colloidal particles, also when they touch.
+ * %%
+ * Copyright (C) 2026 Contact Tracker developers
+ * %%
+ * This program is free software: you can redistribute it and/or modify
+ * it under the terms of the GNU General Public License as
+ * published by the Free Software Foundation, either version 3 of the
+ * License, or (at your option) any later version.
+ * 
+ * This program is distributed in the hope that it will be useful,
+ * but WITHOUT ANY WARRANTY; without even the implied warranty of
+ * MERCHANTABILITY or FITNESS FOR A PARTICULAR PURPOSE.  See the
+ * GNU General Public License for more details.
+ * 
+ * You should have received a copy of the GNU General Public
+ * License along with this program.  If not, see
+ * <http://www.gnu.org/licenses/gpl-3.0.html>.
+ * #L%
+ */
+package io.github.contacttracker.lab.sim;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Locale;
+import java.util.SplittableRandom;
+
+import io.github.contacttracker.core.InvalidInputException;
+import net.imglib2.img.array.ArrayImg;
+
+/**
+ * The scenes of the detection study: movies a new user brings, each with its ground truth, that the threshold's
+ * detection finds hard. A tweezer pair of blurred beads pushed from two diameters apart into overlap; dim 16-bit
+ * spots a few pixels across on a camera offset; dark spheres on a bright background; fluorescent spheres whose
+ * background the camera clips at 0. Every frame shows its particles moved as a whole by a random sub-pixel offset,
+ * with fresh noise, at 84.7 nm per pixel.
+ */
+public final class DetectionScenes {
+
+	/** The scenes {@link #of} knows, in order. */
+	public static final List<String> KEYS = List.of("pair-sweep", "dim", "dark", "clipped");
+
+	/** Pixel size of every scene (nm). */
+	public static final double PIXEL_NM = 84.7;
+	/** Separations of the pair sweep, over the diameter: from this one down to {@link #CLOSEST}. */
+	public static final double FARTHEST = 2.0, CLOSEST = 0.5;
+	/** Frames of a pair sweep, one per separation, unless told otherwise. */
+	public static final int SWEEP_STEPS = 40;
+	/** Frames of the other scenes, unless told otherwise. */
+	public static final int FRAMES = 5;
+
+	/** The band of every frame of a scene without bands. */
+	public static final String ALL = "all";
+
+	private DetectionScenes() {}
+
+	/**
+	 * @param key one of {@link #KEYS}
+	 * @param frames frames of the movie (a pair sweep: separations, at least 2)
+	 * @param seed seed of the layout, offsets and noise: equal seeds give identical movies
+	 * @return the movie
+	 * @throws InvalidInputException for an unknown key
+	 */
+	public static DetectionScene of(final String key, final int frames, final long seed) {
+		return switch (key.trim().toLowerCase(Locale.ROOT)) {
+			case "pair-sweep" -> pairSweep(frames, seed);
+			case "dim" -> dim(frames, seed);
+			case "dark" -> dark(frames, seed);
+			case "clipped" -> clipped(frames, seed);
+			default -> throw new InvalidInputException("--detection-scenes must be among " + String.join(",", KEYS) +
+				" or all, not '" + key + "'");
+		};
+	}
+
+	/** @return the frames a scene has unless told otherwise */
+	public static int defaultFrames(final String key) {
+		return key.trim().equalsIgnoreCase("pair-sweep") ? SWEEP_STEPS : FRAMES;
+	}
+
+	/**
+	 * A pair of blurred discs (D 12 px, flat top, Gaussian blur sigma 1.5 px; background 37, peak 160, 8-bit,
+	 * Gaussian pixel noise 3) pushed from {@link #FARTHEST} diameters apart to {@link #CLOSEST}, one frame per
+	 * separation, along a line tilted by 10 degrees. Frame {@code i}'s label is its separation over the diameter; the
+	 * bands are apart or touching (at least 1 D), overlapping by up to a quarter (0.75-1 D) and by more (0.5-0.75 D).
+	 *
+	 * @param steps separations (frames), at least 2
+	 */
+	public static DetectionScene pairSweep(final int steps, final long seed) {
+		if (steps < 2) throw new InvalidInputException("a pair sweep needs at least 2 separations, not " + steps);
+		final double d = 12;
+		final ParticleType type = new ParticleType("blurred disc D 12 px", d * PIXEL_NM / 1000, PIXEL_NM,
+			new BlurredDisc(d / 2, 1.5, 123), 37, 37 + 123 / 2.0, d, NoiseModel.gaussian(3));
+		final Scene scene = new Scene("pair-sweep", type, List.of(new Scene.Particle(-d, 0, 1, 1), new Scene.Particle(
+			d, 0, 1, 1)), 0, 0, 0, 0, type.threshold());
+		final int w = 96, h = 64;
+		final SplittableRandom random = new SplittableRandom(seed);
+		final double cos = Math.cos(Math.toRadians(10)), sin = Math.sin(Math.toRadians(10));
+		final List<List<double[]>> centres = new ArrayList<>();
+		final double[] labels = new double[steps];
+		final List<String> bands = new ArrayList<>();
+		for (int i = 0; i < steps; i++) {
+			final double s = FARTHEST - (FARTHEST - CLOSEST) * i / (steps - 1);
+			final double cx = 0.5 * (w - 1) + random.nextDouble(-0.5, 0.5), cy = 0.5 * (h - 1) + random.nextDouble(-0.5,
+				0.5);
+			final double ux = 0.5 * s * d * cos, uy = 0.5 * s * d * sin;
+			centres.add(List.of(new double[] { cx - ux, cy - uy }, new double[] { cx + ux, cy + uy }));
+			labels[i] = s;
+			bands.add(pairBand(s));
+		}
+		return movie("pair-sweep", String.format(Locale.ROOT, "a pair of blurred discs (D 12 px, blur sigma 1.5 px, " +
+			"background 37, peak 160, 8-bit, noise sigma 3) from %.1f D apart to %.1f D, one frame per separation",
+			FARTHEST, CLOSEST), scene, w, h, 8, 0, centres, labels, bands, true, random);
+	}
+
+	/** @return the band of a pair {@code s} diameters apart */
+	public static String pairBand(final double s) {
+		return s >= 1 - 1e-9 ? ">= 1 D" : s >= 0.75 - 1e-9 ? "0.75-1 D" : "0.5-0.75 D";
+	}
+
+	/**
+	 * Dim 16-bit spots: Gaussian-like (sigma 1.2 px, D about 4.5 px, each 0.9 to 1.1 times that), 30 alone and 5
+	 * touching pairs (D apart) in 256 x 256 px, each at a peak signal to noise of 3 to 5 over a camera offset of 500
+	 * with photon noise (2 grey levels a photon, a background of 10 photons) and read noise 4.
+	 */
+	public static DetectionScene dim(final int frames, final long seed) {
+		final double sigma = 1.2, d = 4.5, peak = 30;
+		final double gain = 2, background = 20, read = 4, offset = 500;
+		final double noise = Math.sqrt(gain * background + read * read);
+		final RadialProfile gaussian = r -> peak * Math.exp(-r * r / (2 * sigma * sigma));
+		final ParticleType type = new ParticleType("Gaussian spot D 4.5 px", d * PIXEL_NM / 1000, PIXEL_NM, gaussian,
+			background, background + peak / 2, 5, NoiseModel.gaussian(noise));
+		final SplittableRandom random = new SplittableRandom(seed);
+		final List<double[]> layout = place(random, groups(30, 5, 0, d), 256, 256, 10, 3 * d);
+		final List<Scene.Particle> ps = new ArrayList<>();
+		for (final double[] c : layout)
+			ps.add(new Scene.Particle(c[0], c[1], random.nextDouble(0.9, 1.1), random.nextDouble(3, 5) * noise / peak));
+		final Scene scene = new Scene("dim", type, ps, 0, 0, gain, read, type.threshold());
+		return still("dim", "dim 16-bit Gaussian spots (sigma 1.2 px, D 4-5 px), 30 alone and 5 touching pairs in " +
+			"256 x 256 px, peak SNR 3-5 over an offset of 500, photon and read noise", scene, 256, 256, 16, offset, layout,
+			frames, false, random);
+	}
+
+	/**
+	 * Dark spheres on a bright background, the negative of a fluorescent field: blurred discs (D 10 px, blur sigma 1.2
+	 * px) 120 grey levels below a background of 200, 8-bit, Gaussian noise 3; 14 alone, 4 touching pairs and a
+	 * touching triangle in 160 x 160 px.
+	 */
+	public static DetectionScene dark(final int frames, final long seed) {
+		final double d = 10;
+		final ParticleType type = new ParticleType("dark disc D 10 px", d * PIXEL_NM / 1000, PIXEL_NM, new BlurredDisc(
+			d / 2, 1.2, -120), 200, 140, d, NoiseModel.gaussian(3));
+		final SplittableRandom random = new SplittableRandom(seed);
+		final List<double[]> layout = place(random, groups(14, 4, 1, d), 160, 160, 12, 2.2 * d);
+		final Scene scene = new Scene("dark", type, plain(layout), 0, 0, 0, 0, type.threshold());
+		return still("dark", "dark blurred discs (D 10 px, blur sigma 1.2 px) 120 below a background of 200, 8-bit, " +
+			"noise sigma 3; 14 alone, 4 touching pairs, a touching triangle in 160 x 160 px", scene, 160, 160, 8, 0,
+			layout, frames, true, random);
+	}
+
+	/**
+	 * Fluorescent spheres on a background the camera clips at 0: blurred discs (D 10 px, blur sigma 1.5 px, 100 grey
+	 * levels high) on a background of 2 with Gaussian noise 4, 8-bit, so that about a third of the background reads 0;
+	 * 12 alone, 3 touching pairs and 2 touching triangles in 160 x 160 px. The bound is not given: the noise clipped
+	 * at 0 is not the Gaussian it assumes.
+	 */
+	public static DetectionScene clipped(final int frames, final long seed) {
+		final double d = 10;
+		final ParticleType type = new ParticleType("bright disc D 10 px, clipped background", d * PIXEL_NM / 1000,
+			PIXEL_NM, new BlurredDisc(d / 2, 1.5, 100), 2, 52, d, NoiseModel.gaussian(4));
+		final SplittableRandom random = new SplittableRandom(seed);
+		final List<double[]> layout = place(random, groups(12, 3, 2, d), 160, 160, 12, 2.2 * d);
+		final Scene scene = new Scene("clipped", type, plain(layout), 0, 0, 0, 0, type.threshold());
+		return still("clipped", "bright blurred discs (D 10 px, blur sigma 1.5 px, 100 high) on a background of 2 " +
+			"clipped at 0 (noise sigma 4: a third of the background reads 0), 8-bit; 12 alone, 3 touching pairs, 2 " +
+			"touching triangles in 160 x 160 px", scene, 160, 160, 8, 0, layout, frames, false, random);
+	}
+
+	private static List<Scene.Particle> plain(final List<double[]> layout) {
+		final List<Scene.Particle> ps = new ArrayList<>();
+		for (final double[] c : layout)
+			ps.add(new Scene.Particle(c[0], c[1], 1, 1));
+		return ps;
+	}
+
+	/**
+	 * @return groups of particles, each as its members' offsets from the group's centre: {@code singles} alone,
+	 *         {@code pairs} touching pairs and {@code triples} touching triangles of particles {@code d} across
+	 */
+	private static List<double[][]> groups(final int singles, final int pairs, final int triples, final double d) {
+		final List<double[][]> g = new ArrayList<>();
+		for (int i = 0; i < singles; i++)
+			g.add(new double[][] { { 0, 0 } });
+		for (int i = 0; i < pairs; i++)
+			g.add(new double[][] { { -d / 2, 0 }, { d / 2, 0 } });
+		final double hgt = d * Math.sqrt(3) / 2;
+		for (int i = 0; i < triples; i++)
+			g.add(new double[][] { { -d / 2, hgt / 3 }, { d / 2, hgt / 3 }, { 0, -2 * hgt / 3 } });
+		return g;
+	}
+
+	/**
+	 * Places the groups at random, each turned by a random angle, its members at least {@code border} px inside the
+	 * frame and at least {@code clearance} px from every other group's members.
+	 *
+	 * @return every member's centre, group by group
+	 * @throws IllegalStateException when the groups do not fit
+	 */
+	private static List<double[]> place(final SplittableRandom random, final List<double[][]> groups, final int w,
+		final int h, final double border, final double clearance)
+	{
+		final List<double[]> placed = new ArrayList<>();
+		for (final double[][] g : groups) {
+			boolean done = false;
+			for (int attempt = 0; attempt < 10_000 && !done; attempt++) {
+				final double cx = random.nextDouble(border, w - 1 - border), cy = random.nextDouble(border, h - 1 - border);
+				final double a = random.nextDouble(0, 2 * Math.PI), cos = Math.cos(a), sin = Math.sin(a);
+				final double[][] m = new double[g.length][];
+				boolean fits = true;
+				for (int k = 0; k < g.length && fits; k++) {
+					m[k] = new double[] { cx + cos * g[k][0] - sin * g[k][1], cy + sin * g[k][0] + cos * g[k][1] };
+					fits = m[k][0] >= border && m[k][0] <= w - 1 - border && m[k][1] >= border && m[k][1] <= h - 1 - border;
+					for (final double[] p : placed)
+						fits &= Math.hypot(p[0] - m[k][0], p[1] - m[k][1]) >= clearance;
+				}
+				if (fits) {
+					placed.addAll(Arrays.asList(m));
+					done = true;
+				}
+			}
+			if (!done) throw new IllegalStateException(groups.size() + " groups do not fit in " + w + " x " + h + " px");
+		}
+		return placed;
+	}
+
+	/** A movie of one layout, moved as a whole by a random sub-pixel offset in each frame; one band. */
+	private static DetectionScene still(final String key, final String description, final Scene scene, final int w,
+		final int h, final int bitDepth, final double offset, final List<double[]> layout, final int frames,
+		final boolean boundKnown, final SplittableRandom random)
+	{
+		if (frames < 1) throw new InvalidInputException("a scene needs at least 1 frame, not " + frames);
+		final List<List<double[]>> centres = new ArrayList<>();
+		final List<String> bands = new ArrayList<>();
+		final double[] labels = new double[frames];
+		for (int f = 0; f < frames; f++) {
+			final double ox = random.nextDouble(-0.5, 0.5), oy = random.nextDouble(-0.5, 0.5);
+			final List<double[]> c = new ArrayList<>();
+			for (final double[] p : layout)
+				c.add(new double[] { p[0] + ox, p[1] + oy });
+			centres.add(c);
+			bands.add(ALL);
+			labels[f] = Double.NaN;
+		}
+		return movie(key, description, scene, w, h, bitDepth, offset, centres, labels, bands, boundKnown, random);
+	}
+
+	private static DetectionScene movie(final String key, final String description, final Scene scene, final int w,
+		final int h, final int bitDepth, final double offset, final List<List<double[]>> centres, final double[] labels,
+		final List<String> bands, final boolean boundKnown, final SplittableRandom random)
+	{
+		final List<ImageSimulator> sims = scene.simulators();
+		final List<ArrayImg<?, ?>> frames = new ArrayList<>();
+		long clipped = 0;
+		for (final List<double[]> c : centres) {
+			final QuantisedFrame<?> f = scene.camera(scene.render(sims, c, w, h), random, bitDepth, offset);
+			frames.add(f.image());
+			clipped += f.clippedPixels();
+		}
+		return new DetectionScene(key, description, scene, bitDepth, frames, centres, labels, bands, boundKnown,
+			clipped);
+	}
+}
