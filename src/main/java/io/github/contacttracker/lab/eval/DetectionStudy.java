@@ -22,10 +22,12 @@
 package io.github.contacttracker.lab.eval;
 
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
+import java.util.function.IntFunction;
 
 import io.github.contacttracker.core.Flag;
 import io.github.contacttracker.core.Localization;
@@ -115,6 +117,11 @@ public final class DetectionStudy {
 			return Math.max(Math.abs(biasX), Math.max(Math.abs(biasY), Math.abs(biasAway)));
 		}
 
+		/** @return the standard error of a bias: the spread over the root of the centres measured (px) */
+		public double biasError() {
+			return spread / Math.sqrt(measured);
+		}
+
 		/** @return the spread over the bound, NaN where either is unknown */
 		public double spreadOverBound() {
 			return spread / bound;
@@ -180,36 +187,48 @@ public final class DetectionStudy {
 			" given a movie of " + scene.key());
 		key = scene.key();
 		if (scene.scene().particles().isEmpty()) throw new IllegalArgumentException("a scene without particles");
+		SceneCramerRao bound = null;
 		for (int t = 0; t < scene.frames().size(); t++) {
-			final SceneCramerRao bound = scene.boundKnown() ? new SceneCramerRao(scene.scene(), scene.truth().get(t), scene
-				.width(), scene.height(), true) : null;
-			final Tally band = bands.computeIfAbsent(scene.bands().get(t), b -> new Tally());
 			final double label = scene.labels()[t];
+			// a layout moved as a whole keeps its bound (it barely depends on the sub-pixel offset): computed once
+			if (scene.boundKnown() && (bound == null || !Double.isNaN(label))) bound = new SceneCramerRao(scene.scene(),
+				scene.truth().get(t), scene.width(), scene.height(), true);
+			final int frame = t;
 			final Tally byLabel = Double.isNaN(label) ? null : labels.computeIfAbsent(Math.round(label * 1e6) / 1e6,
 				l -> new Tally());
 			final List<Localization> spots = t < tracked.spots().size() ? tracked.spots().get(t) : List.of();
-			frame(scene, t, spots, bound, band);
-			if (byLabel != null) frame(scene, t, spots, bound, byLabel);
+			frame(scene, t, spots, bound, k -> bands.computeIfAbsent(scene.band(frame, k), b -> new Tally()));
+			if (byLabel != null) frame(scene, t, spots, bound, k -> byLabel);
 		}
 	}
 
-	/** Adds frame {@code t}'s spots to a tally. */
+	/**
+	 * Adds frame {@code t}'s spots to the tallies: each particle to its own, each spot to its particle's (or, where it
+	 * found none, to that of the particle nearest to it).
+	 */
 	private static void frame(final DetectionScene scene, final int t, final List<Localization> spots,
-		final SceneCramerRao bound, final Tally tally)
+		final SceneCramerRao bound, final IntFunction<Tally> tallyOf)
 	{
 		final List<double[]> truth = scene.truth().get(t);
 		final int n = truth.size(), m = spots.size();
 		// every particle-spot pair within a quarter diameter, nearest first
 		final List<double[]> close = new ArrayList<>();
-		for (int k = 0; k < n; k++)
-			for (int s = 0; s < m; s++) {
+		final int[] nearest = new int[m];
+		for (int s = 0; s < m; s++) {
+			double best = Double.POSITIVE_INFINITY;
+			for (int k = 0; k < n; k++) {
 				final double dist = Math.hypot(spots.get(s).x() - truth.get(k)[0], spots.get(s).y() - truth.get(k)[1]);
 				if (dist <= scene.diameter(k) / 4) close.add(new double[] { dist, k, s });
+				if (dist < best) {
+					best = dist;
+					nearest[s] = k;
+				}
 			}
+		}
 		close.sort((a, b) -> Double.compare(a[0], b[0]));
 		final int[] spotOf = new int[n], particleOf = new int[m];
-		java.util.Arrays.fill(spotOf, -1);
-		java.util.Arrays.fill(particleOf, -1);
+		Arrays.fill(spotOf, -1);
+		Arrays.fill(particleOf, -1);
 		final boolean[] near = new boolean[m];
 		for (final double[] c : close) {
 			final int k = (int) c[1], s = (int) c[2];
@@ -219,17 +238,23 @@ public final class DetectionStudy {
 				particleOf[s] = k;
 			}
 		}
-		tally.particles += n;
-		tally.spots += m;
+		for (int k = 0; k < n; k++) {
+			final Tally tally = tallyOf.apply(k);
+			tally.particles++;
+			if (spotOf[k] >= 0) tally.found++;
+		}
 		final double typical = scene.scene().type().diameterPx();
 		final int w = scene.width(), h = scene.height();
 		for (int s = 0; s < m; s++) {
 			final Localization l = spots.get(s);
-			if (particleOf[s] < 0) {
+			final int k = particleOf[s];
+			final Tally tally = tallyOf.apply(k >= 0 ? k : nearest[s]);
+			tally.spots++;
+			if (k < 0) {
 				if (near[s]) tally.duplicates++;
 				else tally.falseSpots++;
 			}
-			final double r = (particleOf[s] < 0 ? typical : scene.diameter(particleOf[s])) / 2;
+			final double r = (k < 0 ? typical : scene.diameter(k)) / 2;
 			final boolean inside = l.x() - r >= -0.5 && l.x() + r <= w - 0.5 && l.y() - r >= -0.5 && l.y() + r <= h - 0.5;
 			if (!inside) continue;
 			tally.inside++;
@@ -239,7 +264,6 @@ public final class DetectionStudy {
 				continue;
 			}
 			tally.unflagged++;
-			final int k = particleOf[s];
 			if (k < 0) continue;
 			final double dx = l.x() - truth.get(k)[0], dy = l.y() - truth.get(k)[1];
 			tally.measured++;
@@ -256,8 +280,6 @@ public final class DetectionStudy {
 				}
 			}
 		}
-		for (int k = 0; k < n; k++)
-			if (spotOf[k] >= 0) tally.found++;
 	}
 
 	/** @return the error's part along the line from particle {@code k}'s nearest other particle to it */

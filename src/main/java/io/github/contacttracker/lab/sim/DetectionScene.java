@@ -39,12 +39,14 @@ import net.imglib2.img.array.ArrayImg;
  * @param truth per frame, every particle's true centre (px, {@link Scene#particles()}'s order)
  * @param labels per frame, a number that sorts it (a pair's separation over the diameter), NaN where none
  * @param bands per frame, the band it is summed in
- * @param boundKnown whether the scene's Cramer-Rao bound is meaningful (additive Gaussian noise on 8 bits, no
- *        background clipped by the camera)
+ * @param groups per particle, the band it is summed in instead (alone, touching), or empty: the frame's band
+ * @param boundKnown whether the scene's Cramer-Rao bound is meaningful (no background clipped by the camera; on
+ *        16 bits the scene's light is rendered without the camera's offset, which carries no information)
  * @param clipped pixels clipped at 0 or the bit depth's top, over every frame
  */
 public record DetectionScene(String key, String description, Scene scene, int bitDepth, List<ArrayImg<?, ?>> frames,
-	List<List<double[]>> truth, double[] labels, List<String> bands, boolean boundKnown, long clipped)
+	List<List<double[]>> truth, double[] labels, List<String> bands, List<String> groups, boolean boundKnown,
+	long clipped)
 {
 
 	/** Copies the lists; one truth, label and band per frame. */
@@ -52,6 +54,9 @@ public record DetectionScene(String key, String description, Scene scene, int bi
 		frames = List.copyOf(frames);
 		truth = List.copyOf(truth);
 		bands = List.copyOf(bands);
+		groups = List.copyOf(groups);
+		if (!groups.isEmpty() && groups.size() != scene.particles().size()) throw new IllegalArgumentException(
+			groups.size() + " groups for " + scene.particles().size() + " particles");
 		labels = labels.clone();
 		if (truth.size() != frames.size() || labels.length != frames.size() || bands.size() != frames.size())
 			throw new IllegalArgumentException("one truth, label and band per frame: " + frames.size() + " frames, " +
@@ -59,6 +64,11 @@ public record DetectionScene(String key, String description, Scene scene, int bi
 		for (final List<double[]> t : truth)
 			if (t.size() != scene.particles().size()) throw new IllegalArgumentException("a frame holds " + t.size() +
 				" particles, the scene " + scene.particles().size());
+	}
+
+	/** @return the band particle {@code k} of frame {@code t} is summed in: its group's, or else the frame's */
+	public String band(final int t, final int k) {
+		return groups.isEmpty() ? bands.get(t) : groups.get(k);
 	}
 
 	/** @return the frames' width (px) */

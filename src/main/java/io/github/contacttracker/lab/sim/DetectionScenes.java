@@ -111,7 +111,7 @@ public final class DetectionScenes {
 		}
 		return movie("pair-sweep", String.format(Locale.ROOT, "a pair of blurred discs (D 12 px, blur sigma 1.5 px, " +
 			"background 37, peak 160, 8-bit, noise sigma 3) from %.1f D apart to %.1f D, one frame per separation",
-			FARTHEST, CLOSEST), scene, w, h, 8, 0, centres, labels, bands, true, random);
+			FARTHEST, CLOSEST), scene, w, h, 8, 0, centres, labels, bands, List.of(), true, random);
 	}
 
 	/** @return the band of a pair {@code s} diameters apart */
@@ -132,14 +132,15 @@ public final class DetectionScenes {
 		final ParticleType type = new ParticleType("Gaussian spot D 4.5 px", d * PIXEL_NM / 1000, PIXEL_NM, gaussian,
 			background, background + peak / 2, 5, NoiseModel.gaussian(noise));
 		final SplittableRandom random = new SplittableRandom(seed);
-		final List<double[]> layout = place(random, groups(30, 5, 0, d), 256, 256, 10, 3 * d);
+		final List<double[][]> groups = groups(30, 5, 0, 0, d);
+		final List<double[]> layout = place(random, groups, 256, 256, 10, 3 * d);
 		final List<Scene.Particle> ps = new ArrayList<>();
 		for (final double[] c : layout)
 			ps.add(new Scene.Particle(c[0], c[1], random.nextDouble(0.9, 1.1), random.nextDouble(3, 5) * noise / peak));
 		final Scene scene = new Scene("dim", type, ps, 0, 0, gain, read, type.threshold());
 		return still("dim", "dim 16-bit Gaussian spots (sigma 1.2 px, D 4-5 px), 30 alone and 5 touching pairs in " +
 			"256 x 256 px, peak SNR 3-5 over an offset of 500, photon and read noise", scene, 256, 256, 16, offset, layout,
-			frames, false, random);
+			names(groups), frames, true, random);
 	}
 
 	/**
@@ -152,17 +153,18 @@ public final class DetectionScenes {
 		final ParticleType type = new ParticleType("dark disc D 10 px", d * PIXEL_NM / 1000, PIXEL_NM, new BlurredDisc(
 			d / 2, 1.2, -120), 200, 140, d, NoiseModel.gaussian(3));
 		final SplittableRandom random = new SplittableRandom(seed);
-		final List<double[]> layout = place(random, groups(14, 4, 1, d), 160, 160, 12, 2.2 * d);
+		final List<double[][]> groups = groups(14, 4, 1, 0, d);
+		final List<double[]> layout = place(random, groups, 160, 160, 12, 2.2 * d);
 		final Scene scene = new Scene("dark", type, plain(layout), 0, 0, 0, 0, type.threshold());
 		return still("dark", "dark blurred discs (D 10 px, blur sigma 1.2 px) 120 below a background of 200, 8-bit, " +
 			"noise sigma 3; 14 alone, 4 touching pairs, a touching triangle in 160 x 160 px", scene, 160, 160, 8, 0,
-			layout, frames, true, random);
+			layout, names(groups), frames, true, random);
 	}
 
 	/**
 	 * Fluorescent spheres on a background the camera clips at 0: blurred discs (D 10 px, blur sigma 1.5 px, 100 grey
 	 * levels high) on a background of 2 with Gaussian noise 4, 8-bit, so that about a third of the background reads 0;
-	 * 12 alone, 3 touching pairs and 2 touching triangles in 160 x 160 px. The bound is not given: the noise clipped
+	 * 12 alone, 3 touching pairs and 2 chains of 4 touching particles in 160 x 160 px. The bound is not given: the noise clipped
 	 * at 0 is not the Gaussian it assumes.
 	 */
 	public static DetectionScene clipped(final int frames, final long seed) {
@@ -170,11 +172,12 @@ public final class DetectionScenes {
 		final ParticleType type = new ParticleType("bright disc D 10 px, clipped background", d * PIXEL_NM / 1000,
 			PIXEL_NM, new BlurredDisc(d / 2, 1.5, 100), 2, 52, d, NoiseModel.gaussian(4));
 		final SplittableRandom random = new SplittableRandom(seed);
-		final List<double[]> layout = place(random, groups(12, 3, 2, d), 160, 160, 12, 2.2 * d);
+		final List<double[][]> groups = groups(12, 3, 0, 2, d);
+		final List<double[]> layout = place(random, groups, 160, 160, 12, 2.2 * d);
 		final Scene scene = new Scene("clipped", type, plain(layout), 0, 0, 0, 0, type.threshold());
 		return still("clipped", "bright blurred discs (D 10 px, blur sigma 1.5 px, 100 high) on a background of 2 " +
 			"clipped at 0 (noise sigma 4: a third of the background reads 0), 8-bit; 12 alone, 3 touching pairs, 2 " +
-			"touching triangles in 160 x 160 px", scene, 160, 160, 8, 0, layout, frames, false, random);
+			"chains of 4 in 160 x 160 px", scene, 160, 160, 8, 0, layout, names(groups), frames, false, random);
 	}
 
 	private static List<Scene.Particle> plain(final List<double[]> layout) {
@@ -184,11 +187,17 @@ public final class DetectionScenes {
 		return ps;
 	}
 
+	/** The group of a particle alone, and of one that touches another. */
+	public static final String ALONE = "alone", TOUCHING = "touching";
+
 	/**
 	 * @return groups of particles, each as its members' offsets from the group's centre: {@code singles} alone,
-	 *         {@code pairs} touching pairs and {@code triples} touching triangles of particles {@code d} across
+	 *         {@code pairs} touching pairs, {@code triples} touching triangles and {@code chains} straight chains of 4
+	 *         touching particles, {@code d} across
 	 */
-	private static List<double[][]> groups(final int singles, final int pairs, final int triples, final double d) {
+	private static List<double[][]> groups(final int singles, final int pairs, final int triples, final int chains,
+		final double d)
+	{
 		final List<double[][]> g = new ArrayList<>();
 		for (int i = 0; i < singles; i++)
 			g.add(new double[][] { { 0, 0 } });
@@ -197,7 +206,18 @@ public final class DetectionScenes {
 		final double hgt = d * Math.sqrt(3) / 2;
 		for (int i = 0; i < triples; i++)
 			g.add(new double[][] { { -d / 2, hgt / 3 }, { d / 2, hgt / 3 }, { 0, -2 * hgt / 3 } });
+		for (int i = 0; i < chains; i++)
+			g.add(new double[][] { { -1.5 * d, 0 }, { -0.5 * d, 0 }, { 0.5 * d, 0 }, { 1.5 * d, 0 } });
 		return g;
+	}
+
+	/** @return per particle, in {@link #place}'s order, {@link #ALONE} or {@link #TOUCHING} */
+	private static List<String> names(final List<double[][]> groups) {
+		final List<String> names = new ArrayList<>();
+		for (final double[][] g : groups)
+			for (int k = 0; k < g.length; k++)
+				names.add(g.length == 1 ? ALONE : TOUCHING);
+		return names;
 	}
 
 	/**
@@ -236,8 +256,8 @@ public final class DetectionScenes {
 
 	/** A movie of one layout, moved as a whole by a random sub-pixel offset in each frame; one band. */
 	private static DetectionScene still(final String key, final String description, final Scene scene, final int w,
-		final int h, final int bitDepth, final double offset, final List<double[]> layout, final int frames,
-		final boolean boundKnown, final SplittableRandom random)
+		final int h, final int bitDepth, final double offset, final List<double[]> layout, final List<String> groups,
+		final int frames, final boolean boundKnown, final SplittableRandom random)
 	{
 		if (frames < 1) throw new InvalidInputException("a scene needs at least 1 frame, not " + frames);
 		final List<List<double[]>> centres = new ArrayList<>();
@@ -252,12 +272,13 @@ public final class DetectionScenes {
 			bands.add(ALL);
 			labels[f] = Double.NaN;
 		}
-		return movie(key, description, scene, w, h, bitDepth, offset, centres, labels, bands, boundKnown, random);
+		return movie(key, description, scene, w, h, bitDepth, offset, centres, labels, bands, groups, boundKnown,
+			random);
 	}
 
 	private static DetectionScene movie(final String key, final String description, final Scene scene, final int w,
 		final int h, final int bitDepth, final double offset, final List<List<double[]>> centres, final double[] labels,
-		final List<String> bands, final boolean boundKnown, final SplittableRandom random)
+		final List<String> bands, final List<String> groups, final boolean boundKnown, final SplittableRandom random)
 	{
 		final List<ImageSimulator> sims = scene.simulators();
 		final List<ArrayImg<?, ?>> frames = new ArrayList<>();
@@ -267,7 +288,7 @@ public final class DetectionScenes {
 			frames.add(f.image());
 			clipped += f.clippedPixels();
 		}
-		return new DetectionScene(key, description, scene, bitDepth, frames, centres, labels, bands, boundKnown,
+		return new DetectionScene(key, description, scene, bitDepth, frames, centres, labels, bands, groups, boundKnown,
 			clipped);
 	}
 }
