@@ -79,6 +79,9 @@ final class AccuracyCommand extends ContactTrackerCli.Subcommand {
 	private final Option<Integer> framesOption = options.add(Option.integer("--frames", "N", "With " +
 		"--detection-scenes: frames per movie (a pair sweep's separations). Default: 40 for pair-sweep, 5 for the " +
 		"others."));
+	private final Option<Boolean> trueDiameterOption = options.add(Option.flag(List.of("--true-diameter"), "With " +
+		"--detection-scenes: give each scene's true diameter, as a control that tells the profile helper's diameter " +
+		"from the detection's own failures."));
 	private final Option<String> separationsOption = options.add(Option.text("--separations", "R,...", "Separations " +
 		"over the diameter (1 = contact). Default: 2 down to 1."));
 
@@ -187,11 +190,12 @@ final class AccuracyCommand extends ContactTrackerCli.Subcommand {
 		final Integer frames = options.value(framesOption);
 		if (frames != null && frames < 2) throw new InvalidInputException("--frames must be at least 2");
 		final long t0 = System.nanoTime();
+		final boolean trueDiameter = options.value(trueDiameterOption);
 		final List<DetectionScenesRun.SceneResult> results = DetectionScenesRun.run(out, DetectionScenesRun.keys(
-			scenes), movies, frames == null ? 0 : frames, threads);
+			scenes), movies, frames == null ? 0 : frames, threads, trueDiameter);
 		final double seconds = (System.nanoTime() - t0) * 1e-9;
 		out.printf(Locale.ROOT, "%nDetection study took %.0f s.%n", seconds);
-		if (report != null) DetectionScenesRun.report(results).write(report, arguments, seconds);
+		if (report != null) DetectionScenesRun.report(results, trueDiameter).write(report, arguments, seconds);
 		return 0;
 	}
 

@@ -86,9 +86,9 @@ final class DetectionScenesRun {
 	 * @param frames frames per movie, or 0 for each scene's own
 	 */
 	static List<SceneResult> run(final PrintStream out, final List<String> keys, final int movies, final int frames,
-		final int threads)
+		final int threads, final boolean trueDiameter)
 	{
-		final NewUserTracker tracker = new NewUserTracker(threads);
+		final NewUserTracker tracker = new NewUserTracker(threads, trueDiameter);
 		final List<SceneResult> results = new ArrayList<>();
 		for (int i = 0; i < keys.size(); i++) {
 			final String key = keys.get(i);
@@ -145,8 +145,9 @@ final class DetectionScenesRun {
 	}
 
 	/** @return the report's page: the goals per scene, then each scene's bands and separations */
-	static Report report(final List<SceneResult> results) {
-		final Report report = new Report("Accuracy: detection as a new user meets it").paragraph(
+	static Report report(final List<SceneResult> results, final boolean trueDiameter) {
+		final Report report = new Report("Accuracy: detection as a new user meets it" + (trueDiameter ? ", the true " +
+			"diameter given" : "")).paragraph(
 			"Each scene is rendered with its ground truth and tracked as `track MOVIE --csv out.csv` tracks a movie " +
 				"with no value given: the profile helper measures the threshold, r_out and the diameter (or falls back " +
 				"to detection by the image where it cannot), the detection is `auto`, the method the default. A spot " +
@@ -156,7 +157,8 @@ final class DetectionScenesRun {
 				"spread are over the found, unflagged spots wholly inside the frame: the mean error along x, y and " +
 				"along the line from the nearest other particle (positive: pushed away from it), and the root mean " +
 				"square error about the mean per axis, against the root mean square Cramér-Rao bound (CRB) per axis " +
-				"where the scene has one. Pixels are 84.7 nm: 0.012 px is 1 nm.");
+				"where the scene has one. Pixels are 84.7 nm: 0.012 px is 1 nm." + (trueDiameter ? " Here, as a control, " +
+					"the scene's true diameter is given (`--diameter`); the rest is measured as without it." : ""));
 		final List<List<String>> goals = new ArrayList<>();
 		for (final SceneResult r : results)
 			for (final DetectionStudy.Row row : r.bands())

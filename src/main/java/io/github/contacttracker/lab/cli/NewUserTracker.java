@@ -55,10 +55,21 @@ import net.imglib2.type.numeric.RealType;
 final class NewUserTracker implements DetectionStudy.Tracker {
 
 	private final int threads;
+	private final boolean trueDiameter;
 
 	/** @param threads worker threads (below 1: all) */
 	NewUserTracker(final int threads) {
+		this(threads, false);
+	}
+
+	/**
+	 * @param threads worker threads (below 1: all)
+	 * @param trueDiameter whether to give the scene's true diameter ({@code --diameter}), as a control that tells
+	 *        the helper's diameter from the detection's own failures; the rest is measured as without it
+	 */
+	NewUserTracker(final int threads, final boolean trueDiameter) {
 		this.threads = threads;
+		this.trueDiameter = trueDiameter;
 	}
 
 	@Override
@@ -68,8 +79,10 @@ final class NewUserTracker implements DetectionStudy.Tracker {
 		final int n = scene.frames().size();
 		final IntFunction<RandomAccessibleInterval<? extends RealType<?>>> frame = t -> cast(scene.frames().get(t));
 		try {
-			final MeasuredSettings.Result measured = MeasuredSettings.of(name, frame, n, true, SettingValues.defaults(),
-				Set.of());
+			final SettingValues given = trueDiameter ? SettingValues.defaults().with(TrackingSettings.DIAMETER, scene.scene()
+				.type().diameterPx()) : SettingValues.defaults();
+			final MeasuredSettings.Result measured = MeasuredSettings.of(name, frame, n, true, given, trueDiameter ? Set
+				.of(TrackingSettings.DIAMETER) : Set.of());
 			final SettingValues used = measured.settings();
 			final TrackingResult result = new TrackingPipeline(used).run(FrameSource.of(n, frame, Calibration.PIXELS,
 				name, t -> ImagePlusFrames.range(frame.apply(t), t)), Outputs.NONE, threads, false, null, () -> false);

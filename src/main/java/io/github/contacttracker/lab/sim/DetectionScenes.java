@@ -40,7 +40,7 @@ import net.imglib2.img.array.ArrayImg;
 public final class DetectionScenes {
 
 	/** The scenes {@link #of} knows, in order. */
-	public static final List<String> KEYS = List.of("pair-sweep", "dim", "dark", "clipped");
+	public static final List<String> KEYS = List.of("pair-sweep", "dim", "dark", "clipped", "dense-bidisperse");
 
 	/** Pixel size of every scene (nm). */
 	public static final double PIXEL_NM = 84.7;
@@ -69,6 +69,7 @@ public final class DetectionScenes {
 			case "dim" -> dim(frames, seed);
 			case "dark" -> dark(frames, seed);
 			case "clipped" -> clipped(frames, seed);
+			case "dense-bidisperse" -> denseBidisperse(frames, seed);
 			default -> throw new InvalidInputException("--detection-scenes must be among " + String.join(",", KEYS) +
 				" or all, not '" + key + "'");
 		};
@@ -76,8 +77,19 @@ public final class DetectionScenes {
 
 	/** @return the frames a scene has unless told otherwise */
 	public static int defaultFrames(final String key) {
-		return key.trim().equalsIgnoreCase("pair-sweep") ? SWEEP_STEPS : FRAMES;
+		return switch (key.trim().toLowerCase(Locale.ROOT)) {
+			case "pair-sweep" -> SWEEP_STEPS;
+			case "dense-bidisperse" -> DENSE_FRAMES;
+			default -> FRAMES;
+		};
 	}
+
+	/** Frames of the dense monolayer, unless told otherwise: each holds about 1,600 particles. */
+	public static final int DENSE_FRAMES = 2;
+	/** The dense monolayer's area fraction. */
+	public static final double DENSE_AREA_FRACTION = 0.7;
+	/** The group of the dense monolayer's small particles, and of its large ones. */
+	public static final String SMALL = "D 10", LARGE = "D 14";
 
 	/**
 	 * A pair of blurred discs (D 12 px, flat top, Gaussian blur sigma 1.5 px; background 37, peak 160, 8-bit,
@@ -178,6 +190,90 @@ public final class DetectionScenes {
 		return still("clipped", "bright blurred discs (D 10 px, blur sigma 1.5 px, 100 high) on a background of 2 " +
 			"clipped at 0 (noise sigma 4: a third of the background reads 0), 8-bit; 12 alone, 3 touching pairs, 2 " +
 			"chains of 4 in 160 x 160 px", scene, 160, 160, 8, 0, layout, names(groups), frames, false, random);
+	}
+
+	/**
+	 * A dense monolayer of two sizes with no particle alone: as many bright blurred discs of D 10 px as of D 14 px
+	 * (blur sigma 1.2 px and 1.7 px, 100 grey levels above a background of 30, 8-bit, Gaussian noise 3) at an area
+	 * fraction of {@value #DENSE_AREA_FRACTION} in 512 x 512 px, about 1,600 particles, their centres anywhere in the
+	 * frame (some cut by its edge). They are placed at random, overlapping, and pushed apart pair by pair until none
+	 * overlaps ({@link #unjam}): most end touching their neighbours. The bound is not given: a Fisher matrix over
+	 * every particle of the frame is too large to invert here.
+	 */
+	public static DetectionScene denseBidisperse(final int frames, final long seed) {
+		final double d = 10, large = 1.4;
+		final int w = 512, h = 512;
+		final ParticleType type = new ParticleType("bright disc D 10 and 14 px, dense", d * PIXEL_NM / 1000, PIXEL_NM,
+			new BlurredDisc(d / 2, 1.2, 100), 30, 80, d, NoiseModel.gaussian(3));
+		final SplittableRandom random = new SplittableRandom(seed);
+		final int n = 2 * (int) Math.round(DENSE_AREA_FRACTION * w * h / (Math.PI / 4 * d * d * (1 + large * large)));
+		final double[] x = new double[n], y = new double[n], r = new double[n];
+		for (int i = 0; i < n; i++) {
+			x[i] = random.nextDouble(0, w - 1);
+			y[i] = random.nextDouble(0, h - 1);
+			r[i] = d / 2 * (i % 2 == 0 ? 1 : large);
+		}
+		unjam(x, y, r, w, h);
+		final List<double[]> layout = new ArrayList<>();
+		final List<Scene.Particle> ps = new ArrayList<>();
+		final List<String> groups = new ArrayList<>();
+		for (int i = 0; i < n; i++) {
+			layout.add(new double[] { x[i], y[i] });
+			ps.add(new Scene.Particle(x[i], y[i], i % 2 == 0 ? 1 : large, 1));
+			groups.add(i % 2 == 0 ? SMALL : LARGE);
+		}
+		final Scene scene = new Scene("dense-bidisperse", type, ps, 0, 0, 0, 0, type.threshold());
+		return still("dense-bidisperse", String.format(Locale.ROOT, "a dense monolayer of bright blurred discs, as " +
+			"many of D 10 px as of D 14 px (blur sigma 1.2 and 1.7 px, 100 above a background of 30, 8-bit, noise sigma " +
+			"3), area fraction %.1f, %d particles in 512 x 512 px, none alone", DENSE_AREA_FRACTION, n), scene, w, h, 8,
+			0, layout, groups, frames, false, random);
+	}
+
+	/**
+	 * Pushes overlapping discs apart until none overlaps by more than 0.01 px: each sweep moves both discs of every
+	 * overlapping pair apart along their line by half the overlap, centres kept inside the frame; a grid of cells as
+	 * wide as the largest disc finds the pairs. At the dense monolayer's area fraction, well below random close
+	 * packing (about 0.84 for two sizes), a few hundred sweeps do.
+	 *
+	 * @throws IllegalStateException when the discs still overlap after 5,000 sweeps
+	 */
+	private static void unjam(final double[] x, final double[] y, final double[] r, final int w, final int h) {
+		final int n = x.length;
+		double rMax = 0;
+		for (final double v : r)
+			rMax = Math.max(rMax, v);
+		final double cell = 2 * rMax;
+		final int cw = (int) Math.ceil(w / cell) + 1, ch = (int) Math.ceil(h / cell) + 1;
+		final int[] head = new int[cw * ch], next = new int[n];
+		for (int sweep = 0; sweep < 5000; sweep++) {
+			Arrays.fill(head, -1);
+			for (int i = 0; i < n; i++) {
+				final int c = (int) (y[i] / cell) * cw + (int) (x[i] / cell);
+				next[i] = head[c];
+				head[c] = i;
+			}
+			double worst = 0;
+			for (int i = 0; i < n; i++) {
+				final int cx = (int) (x[i] / cell), cy = (int) (y[i] / cell);
+				for (int gy = Math.max(0, cy - 1); gy <= Math.min(ch - 1, cy + 1); gy++)
+					for (int gx = Math.max(0, cx - 1); gx <= Math.min(cw - 1, cx + 1); gx++)
+						for (int j = head[gy * cw + gx]; j >= 0; j = next[j]) {
+							if (j <= i) continue;
+							final double dx = x[j] - x[i], dy = y[j] - y[i], dist = Math.hypot(dx, dy);
+							final double overlap = r[i] + r[j] - dist;
+							if (overlap <= 0) continue;
+							worst = Math.max(worst, overlap);
+							// half the overlap each, a little more so that the pair ends just touching
+							final double push = 0.5 * overlap + 1e-4, ux = dist > 0 ? dx / dist : 1, uy = dist > 0 ? dy / dist : 0;
+							x[i] = Math.min(w - 1, Math.max(0, x[i] - push * ux));
+							y[i] = Math.min(h - 1, Math.max(0, y[i] - push * uy));
+							x[j] = Math.min(w - 1, Math.max(0, x[j] + push * ux));
+							y[j] = Math.min(h - 1, Math.max(0, y[j] + push * uy));
+						}
+			}
+			if (worst <= 0.01) return;
+		}
+		throw new IllegalStateException("the discs still overlap after 5000 sweeps");
 	}
 
 	private static List<Scene.Particle> plain(final List<double[]> layout) {
