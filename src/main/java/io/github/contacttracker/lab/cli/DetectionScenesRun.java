@@ -190,7 +190,10 @@ final class DetectionScenesRun {
 					sep.add(cells(row));
 				report.table(HEADER, sep);
 			}
-			report.paragraph("What the tracker said: " + String.join(" / ", r.notices()).replace("\n", " "));
+			final List<String> said = new ArrayList<>();
+			for (final String notice : r.notices())
+				said.add(notice.replace("\n", " "));
+			report.paragraph("What the tracker said (each different line once):").bullets(said);
 		}
 		return report;
 	}
