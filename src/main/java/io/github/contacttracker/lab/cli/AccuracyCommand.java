@@ -71,6 +71,17 @@ final class AccuracyCommand extends ContactTrackerCli.Subcommand {
 		"protocol, the harder scenes at contact (eval.SceneStudy): pair, chain4, triple, hex7, hex19, hex37, unlike, unlike13, " +
 		"ramp, saturated, photon, or all; and, for a movie of several kinds, mixed (its first and last kind at " +
 		"contact) and mixed7 (hex7 of its kinds in turn), each particle with its own kind's profile."));
+	private final Option<String> detectionScenesOption = options.add(Option.text("--detection-scenes", "S,...",
+		"Instead of the paper's protocol, the study of detection as a new user meets it: each scene tracked as " +
+			"'track MOVIE' tracks it with no value given, judged against its truth: pair-sweep (a blurred pair from 2 D " +
+			"apart to 0.5 D), dim (16-bit spots at SNR 3-5), dark (dark spheres on a bright background), clipped (a " +
+			"background clipped at 0), or all; --reps is then the movies per scene (default 3)."));
+	private final Option<Integer> framesOption = options.add(Option.integer("--frames", "N", "With " +
+		"--detection-scenes: frames per movie (a pair sweep's separations). Default: 40 for pair-sweep, 5 for the " +
+		"others."));
+	private final Option<Boolean> trueDiameterOption = options.add(Option.flag(List.of("--true-diameter"), "With " +
+		"--detection-scenes: give each scene's true diameter, as a control that tells the profile helper's diameter " +
+		"from the detection's own failures."));
 	private final Option<String> separationsOption = options.add(Option.text("--separations", "R,...", "Separations " +
 		"over the diameter (1 = contact). Default: 2 down to 1."));
 
@@ -84,9 +95,14 @@ final class AccuracyCommand extends ContactTrackerCli.Subcommand {
 		final int reps = options.value(repsOption), threads = options.value(threadsOption);
 		final String particles = options.value(particlesOption), scene = options.value(sceneOption), methodList =
 			options.value(methodsOption);
-		if (reps < 2) throw new InvalidInputException("--reps must be at least 2");
 		final Path csv = ContactTrackerCli.output("--csv", options.value(csvOption));
 		final Path report = ContactTrackerCli.output("--report", options.value(reportOption));
+		final String detectionScenes = options.value(detectionScenesOption);
+		if (detectionScenes != null) {
+			if (reps < 1) throw new InvalidInputException("--reps must be at least 1 with --detection-scenes");
+			return detectionScenes(detectionScenes, options.given(repsOption) ? reps : 3, threads, csv, report);
+		}
+		if (reps < 2) throw new InvalidInputException("--reps must be at least 2");
 		if (scene != null) { // the scenes of eval.SceneStudy (clusters, unlike particles, ramp, saturation)
 			final long t0 = System.nanoTime();
 			final SceneStudy study = new SceneStudy(Method.parse(methodList == null ? "fit" : methodList), threads);
@@ -163,6 +179,23 @@ final class AccuracyCommand extends ContactTrackerCli.Subcommand {
 			});
 			out.println("Table written to " + csv);
 		}
+		return 0;
+	}
+
+	/** The study of detection ({@link DetectionScenesRun}): the table, and the report where asked for. */
+	private int detectionScenes(final String scenes, final int movies, final int threads, final Path csv,
+		final Path report) throws IOException
+	{
+		if (csv != null) throw new InvalidInputException("--csv is not written with --detection-scenes: give --report");
+		final Integer frames = options.value(framesOption);
+		if (frames != null && frames < 2) throw new InvalidInputException("--frames must be at least 2");
+		final long t0 = System.nanoTime();
+		final boolean trueDiameter = options.value(trueDiameterOption);
+		final List<DetectionScenesRun.SceneResult> results = DetectionScenesRun.run(out, DetectionScenesRun.keys(
+			scenes), movies, frames == null ? 0 : frames, threads, trueDiameter);
+		final double seconds = (System.nanoTime() - t0) * 1e-9;
+		out.printf(Locale.ROOT, "%nDetection study took %.0f s.%n", seconds);
+		if (report != null) DetectionScenesRun.report(results, trueDiameter).write(report, arguments, seconds);
 		return 0;
 	}
 

@@ -354,20 +354,36 @@ public record Scene(String key, ParticleType type, List<Particle> particles, dou
 			final List<double[]> centres = new ArrayList<>();
 			for (final double[] c : layout)
 				centres.add(new double[] { c[0] + ox, c[1] + oy });
-			final NoiseFreeImage exact = render(simulator, centres, w, h);
-			final QuantisedFrame<?> frame;
-			if (photonNoise()) {
-				final double[] px = exact.pixels();
-				for (int i = 0; i < px.length; i++)
-					px[i] = photonGain * Poisson.sample(Math.max(px[i], 0) / photonGain, random);
-				frame = Quantiser.quantise(exact, NoiseModel.gaussian(readNoise), random, 8);
-			}
-			else frame = Quantiser.quantise(exact, type.noise(), random, 8);
+			final QuantisedFrame<?> frame = camera(render(simulator, centres, w, h), random, 8, 0);
 			frames.add(frame.image());
 			truth.add(List.copyOf(centres));
 			clipped += frame.clippedPixels();
 		}
 		return typed(frames, truth, w, h, clipped);
+	}
+
+	/**
+	 * The camera's frame of an exact image: the scene's noise (photon plus read noise, or the type's additive noise)
+	 * and the camera's offset, rounded and clipped to the bit depth's range.
+	 *
+	 * @param exact the exact image (the light, without the offset); overwritten with what the camera adds to it
+	 * @param random the noise source
+	 * @param bitDepth 8 or 16
+	 * @param offset grey levels the camera adds to every pixel, which carry no photon noise (0 for none)
+	 * @return the frame, with its clipped pixels counted
+	 */
+	public QuantisedFrame<?> camera(final NoiseFreeImage exact, final SplittableRandom random, final int bitDepth,
+		final double offset)
+	{
+		final double[] px = exact.pixels();
+		if (!photonNoise()) {
+			for (int i = 0; i < px.length; i++)
+				px[i] += offset;
+			return Quantiser.quantise(exact, type.noise(), random, bitDepth);
+		}
+		for (int i = 0; i < px.length; i++)
+			px[i] = photonGain * Poisson.sample(Math.max(px[i], 0) / photonGain, random) + offset;
+		return Quantiser.quantise(exact, NoiseModel.gaussian(readNoise), random, bitDepth);
 	}
 
 	/** @return the index pairs of touching particles (centre distance within 1% of the sum of their radii) */
