@@ -352,6 +352,15 @@ public final class StackTracker {
 			used = profile(start.results(), null, start.indices(), frame, params.profileReach(), null);
 		}
 		List<FrameResult> round = pass(tracker, profiles(used), sample, frame, false, progress, cancelled);
+		// where the threshold's areas taught no profile (dim spots below the threshold: it kept none of them), this
+		// round's spots, found by the image with each frame's own profile, teach it; the rounds go on from there (with
+		// no centre to compare, the first verdict would otherwise find nothing moving and call it settled)
+		if (used == null && tracker.parameters().detectsByImage() && !spots(round).isEmpty()) {
+			progress.total += sample.length;
+			previous = round;
+			used = profile(round, null, sample, frame, params.profileReach(), kinds);
+			round = pass(tracker, profiles(used), sample, frame, false, progress, cancelled);
+		}
 		final Rounds rounds = new Rounds();
 		Rounds.Verdict verdict = rounds.next(moves(previous, round));
 		double lastStep = Double.POSITIVE_INFINITY;

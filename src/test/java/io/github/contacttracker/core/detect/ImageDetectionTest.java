@@ -22,6 +22,7 @@
 package io.github.contacttracker.core.detect;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
@@ -41,7 +42,9 @@ import io.github.contacttracker.core.track.FrameResult;
 import io.github.contacttracker.core.track.StackTracker;
 import net.imglib2.img.array.ArrayImg;
 import net.imglib2.img.basictypeaccess.array.ByteArray;
+import net.imglib2.img.basictypeaccess.array.ShortArray;
 import net.imglib2.type.numeric.integer.UnsignedByteType;
+import net.imglib2.type.numeric.integer.UnsignedShortType;
 
 /**
  * Detection by the image against ground truth, on the footage a threshold cannot cut into one component per
@@ -127,15 +130,24 @@ class ImageDetectionTest {
 		}
 	}
 
+	/** @return {@code n} Gaussian spots of sigma 1 px, 50 grey levels high, placed at random in 200 x 200 px */
+	private static List<Scenes.Truth> dimSpots(final int n, final long seed) {
+		final List<Scenes.Truth> t = new ArrayList<>();
+		final Random r = new Random(seed);
+		for (int i = 0; i < n; i++)
+			t.add(new Scenes.Truth(5 + r.nextDouble() * 190, 5 + r.nextDouble() * 190, 50, 1));
+		return t;
+	}
+
+	/** @return the spots on 500 grey levels with noise 10 (a peak SNR of 5), 16-bit */
+	private static double[] dimFrame(final List<Scenes.Truth> t, final long seed) {
+		return Scenes.noisy(Scenes.render(200, 200, (x, y) -> 500, t, Scenes.blurredDisc(0, 1), 5), 10, 0, 65535, seed);
+	}
+
 	@Test
 	void dimSpotsAreFoundWhereTheThresholdFindsNone() {
-		final List<Scenes.Truth> t = new ArrayList<>();
-		final Random r = new Random(3);
-		for (int i = 0; i < 60; i++)
-			t.add(new Scenes.Truth(5 + r.nextDouble() * 190, 5 + r.nextDouble() * 190, 50, 1));
-		// Gaussian spots of sigma 1 px, 50 grey levels on 500 with noise 10: a peak SNR of 5
-		final double[] img = Scenes.noisy(Scenes.render(200, 200, (x, y) -> 500, t, Scenes.blurredDisc(0, 1), 5), 10, 0,
-			65535, 9);
+		final List<Scenes.Truth> t = dimSpots(60, 3);
+		final double[] img = dimFrame(t, 9);
 		final Scenes.Frame f = new Scenes.Frame(img, 200, 200, t, 4);
 		final TrackerParameters p = TrackerParameters.of(525, 6).withDiameter(4);
 		final Scenes.Score image = Scenes.score(f, new ContactTracker(p.withDetection(Detection.IMAGE)).track(TestImages
@@ -145,6 +157,30 @@ class ImageDetectionTest {
 		assertTrue(image.recall() >= 0.95, "recall: " + image);
 		assertEquals(0, image.spurious(), image.toString());
 		assertTrue(threshold.recall() < 0.1, "the threshold: " + threshold);
+	}
+
+	/**
+	 * A movie of dim spots whose threshold keeps none of its areas: the threshold's first pass teaches no profile, so
+	 * the spots the image finds teach the movie's, and no frame is left to measure its own (less precise).
+	 */
+	@Test
+	void dimSpotsTeachTheMoviesProfileWhereTheThresholdKeepsNone() {
+		final List<Scenes.Truth> t = dimSpots(40, 5);
+		final List<Scenes.Frame> fs = new ArrayList<>();
+		final List<ArrayImg<UnsignedShortType, ShortArray>> imgs = new ArrayList<>();
+		for (int k = 0; k < 3; k++) {
+			final double[] img = dimFrame(t, 20 + k);
+			fs.add(new Scenes.Frame(img, 200, 200, t, 4));
+			imgs.add(TestImages.shorts(img, 200, 200));
+		}
+		final TrackerParameters p = TrackerParameters.of(525, 6).withDiameter(4).withDetection(Detection.IMAGE);
+		final List<FrameResult> res = new StackTracker(p).track(imgs, false);
+		for (int k = 0; k < fs.size(); k++) {
+			assertFalse(res.get(k).ownProfile(), "frame " + k + " measured its own profile");
+			final Scenes.Score s = Scenes.score(fs.get(k), res.get(k).spots(), 2, 0);
+			assertTrue(s.recall() >= 0.85, "frame " + k + ": " + s);
+			assertEquals(0, s.spurious(), "frame " + k + ": " + s);
+		}
 	}
 
 	@Test
