@@ -46,7 +46,10 @@ import io.github.contacttracker.core.image.Plane;
  * {@value #SEEDS_PER_PARTICLE} times: seeds on that scale are the texture of the background (a mottled or compressed
  * bright field, particles whose diameter was measured on their core or ring), not particles, and fitting hundreds of
  * them costs minutes a frame for nothing the threshold does not find. Bright-field particles with rings give a few
- * seeds each, dense fields of touching particles a few per component; a texture gives hundreds per particle.
+ * seeds each, dense fields of touching particles a few per component; a texture gives hundreds per particle. Not
+ * where the threshold keeps no particle on the first frame: nothing then tells a texture from particles below the
+ * threshold (160 dim spots, none above it, were taken for texture and no spot was found), and only the image can
+ * find any.
  *
  * @param detection the detection chosen ({@link Detection#IMAGE} or {@link Detection#THRESHOLD})
  * @param merged the threshold's components flagged {@code MERGED} on the sample frames
@@ -90,7 +93,7 @@ public record DetectionChoice(Detection detection, int merged, int spots, int di
 		if (merged == 0 && discarded <= spots || !fits(first, diameter)) return new DetectionChoice(
 			Detection.THRESHOLD, 0, spots, 0, frames, -1, firstSpots);
 		final int seeds = ImageDetection.seeds(first, diameter, NoiseEstimate.sigma(first)).count();
-		final boolean texture = seeds > SEEDS_PER_PARTICLE * Math.max(1, firstSpots);
+		final boolean texture = firstSpots > 0 && seeds > SEEDS_PER_PARTICLE * firstSpots;
 		return new DetectionChoice(texture ? Detection.THRESHOLD : Detection.IMAGE, merged, spots, discarded, frames,
 			seeds, firstSpots);
 	}

@@ -92,6 +92,10 @@ class DetectionChoiceTest {
 		assertTrue(onTexture.seeds() > DetectionChoice.SEEDS_PER_PARTICLE, "seeds: " + onTexture.seeds());
 		assertEquals(Detection.THRESHOLD, onTexture.detection());
 		assertTrue(onTexture.said().contains("the background's texture"), onTexture.said());
+		// the same seeds where the threshold kept no particle at all (many dim spots below it): nothing to weigh them
+		// against, and only the image can find any
+		final DetectionChoice noneKept = DetectionChoice.choose(List.of(List.of()), 40, texture, 6);
+		assertEquals(Detection.IMAGE, noneKept.detection(), noneKept.said());
 		final Scenes.Frame f = apart(7);
 		final Plane particles = Plane.of(TestImages.bytes(f.pixels(), f.width(), f.height()));
 		final List<List<Localization>> sixteen = new ArrayList<>();
