@@ -45,8 +45,6 @@ import java.util.stream.Stream;
 
 import org.jdom2.Document;
 import org.jdom2.input.SAXBuilder;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -96,16 +94,6 @@ class ContactTrackerCommandTest extends WithContext {
 
 	private static final double THRESHOLD = Simulated.TYPE.threshold();
 	private static final double R_OUT = Simulated.TYPE.rOut();
-
-	/**
-	 * The dialog remembers values, on disk: every test starts from the documented defaults and leaves nothing
-	 * remembered for the next test class.
-	 */
-	@BeforeEach
-	@AfterEach
-	void forgetRememberedValues() {
-		context.service(PrefService.class).clearAll();
-	}
 
 	/** Runs the command from the documented defaults (nothing remembered from an earlier run) */
 	private static Module run(final ImagePlus imp, final Object... more) throws Exception {

@@ -22,10 +22,17 @@
 package io.github.contacttracker.command;
 
 import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.BeforeEach;
 import org.scijava.Context;
+import org.scijava.prefs.PrefService;
 
-/** A test class that runs our commands in one SciJava context, made before its tests and disposed after them. */
+/**
+ * A test class that runs our commands in one SciJava context, made before its tests and disposed after them. The
+ * values a command remembers (SciJava's preferences, on disk) are forgotten before and after each test, so that every
+ * test starts from the documented defaults and leaves nothing for the next one.
+ */
 public abstract class WithContext {
 
 	protected static Context context;
@@ -33,6 +40,12 @@ public abstract class WithContext {
 	@BeforeAll
 	public static void start() {
 		context = new Context();
+	}
+
+	@BeforeEach
+	@AfterEach
+	public void forgetRememberedValues() {
+		context.service(PrefService.class).clearAll();
 	}
 
 	@AfterAll

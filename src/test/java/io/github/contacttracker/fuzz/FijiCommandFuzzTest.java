@@ -37,7 +37,6 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.SplittableRandom;
 
-import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.scijava.Cancelable;
@@ -79,11 +78,6 @@ class FijiCommandFuzzTest extends WithContext {
 	@TempDir
 	Path dir;
 
-	/** The command remembers its inputs: the fuzz's odd ones must not open another test's dialog. */
-	@AfterEach
-	void forgetRememberedValues() {
-		context.service(PrefService.class).clearAll();
-	}
 
 	@Test
 	void noInputEndsInAnException() throws Exception {

@@ -30,7 +30,6 @@ import java.util.List;
 import java.util.Map;
 import java.util.SplittableRandom;
 
-import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.scijava.module.Module;
@@ -59,11 +58,6 @@ class PotentialCommandFuzzTest extends WithContext {
 	@TempDir
 	Path dir;
 
-	/** The command remembers its inputs: the fuzz's odd ones must not reach another test. */
-	@AfterEach
-	void forgetRememberedValues() {
-		context.service(PrefService.class).clearAll();
-	}
 
 	@Test
 	void noSpotsTableEndsInAnException() throws Exception {

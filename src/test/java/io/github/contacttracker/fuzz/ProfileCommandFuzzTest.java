@@ -28,7 +28,6 @@ import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.SplittableRandom;
 
-import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.scijava.module.Module;
 import org.scijava.prefs.PrefService;
@@ -59,11 +58,6 @@ class ProfileCommandFuzzTest extends WithContext {
 	/** Cases in the suite's run. */
 	static final int SHORT_RUN = 60;
 
-	/** The command remembers its inputs: the fuzz's odd ones must not reach another test. */
-	@AfterEach
-	void forgetRememberedValues() {
-		context.service(PrefService.class).clearAll();
-	}
 
 	@Test
 	void noImageOrSelectionEndsInAnException() throws Exception {
