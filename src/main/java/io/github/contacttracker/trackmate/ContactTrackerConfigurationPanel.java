@@ -295,10 +295,11 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 		final int channel = (Integer) fields.get(TrackingSettings.CHANNEL).value();
 		final boolean dark = dark();
 		final double diameter = (Double) fields.get(TrackingSettings.DIAMETER).value();
+		final SettingValues chosen = chosen();
 		final Thread worker = new Thread(() -> {
 			Supplier<String> outcome;
 			try {
-				outcome = measure(channel, dark, diameter);
+				outcome = measure(channel, dark, diameter, chosen);
 			}
 			catch (final RuntimeException e) {
 				// a bug, not a frame without particles: in full to ImageJ, and the button stays usable
@@ -329,7 +330,14 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 	 */
 	String measureFromImage() {
 		return measure((Integer) fields.get(TrackingSettings.CHANNEL).value(), dark(), (Double) fields.get(
-			TrackingSettings.DIAMETER).value()).get();
+			TrackingSettings.DIAMETER).value(), chosen()).get();
+	}
+
+	/** @return the method and detection the fields say (read on the event thread, for the helper's fall-back) */
+	private SettingValues chosen() {
+		return SettingValues.defaults().withText(TrackingSettings.METHOD, String.valueOf(fields.get(
+			TrackingSettings.METHOD).value())).withText(TrackingSettings.DETECTION, String.valueOf(fields.get(
+				TrackingSettings.DETECTION).value()));
 	}
 
 	/** @return whether the fields say the particles are dark */
@@ -342,7 +350,9 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 	 *
 	 * @return what shows its outcome (on the event thread): fills the fields, or not, and returns the message
 	 */
-	private Supplier<String> measure(final int channel, final boolean dark, final double diameter) {
+	private Supplier<String> measure(final int channel, final boolean dark, final double diameter,
+		final SettingValues chosen)
+	{
 		final ShownFrameProfile p;
 		try {
 			p = ShownFrameProfile.measure(imp, channel, dark, diameter);
@@ -354,7 +364,7 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 				return showMessage("Not measured: " + e.getMessage());
 			};
 		}
-		if (!p.thresholdInFrame()) return byImage(p, dark, diameter);
+		if (!p.thresholdInFrame()) return byImage(p, dark, diameter, chosen);
 		return () -> {
 			if (p.darkFound()) fields.get(TrackingSettings.PARTICLES).show(TrackingSettings.DARK);
 			fields.get(TrackingSettings.THRESHOLD).show(p.threshold());
@@ -374,8 +384,10 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 	 * fields get what {@code track} measures on that frame, by the particles' image ({@link MeasuredSettings}), so that
 	 * no threshold outside the image is filled in.
 	 */
-	private Supplier<String> byImage(final ShownFrameProfile p, final boolean dark, final double diameter) {
-		SettingValues given = SettingValues.defaults();
+	private Supplier<String> byImage(final ShownFrameProfile p, final boolean dark, final double diameter,
+		final SettingValues chosen)
+	{
+		SettingValues given = chosen;
 		final Set<Setting<?>> said = new HashSet<>();
 		if (diameter > 0) {
 			given = given.with(TrackingSettings.DIAMETER, diameter);

@@ -150,6 +150,15 @@ class MeasurePanelTest {
 		assertEquals(TrackingSettings.IMAGE, after.get("DETECTION"), message);
 		assertEquals(12, number(after, "DIAMETER"), 0.6, "in pixels: " + message);
 		assertTrue(message.contains("found by their image"), message);
+
+		// detection by the threshold chosen: nothing to fall back to, and the fields stay as they were
+		final ContactTrackerConfigurationPanel chosen = panel(TimeSeries.of("pair", List.of(frame), MICRONS));
+		final Map<String, Object> byThreshold = new java.util.LinkedHashMap<>(chosen.getSettings());
+		byThreshold.put("DETECTION", TrackingSettings.BY_THRESHOLD);
+		chosen.setSettings(byThreshold);
+		final String refused = chosen.measureFromImage();
+		assertTrue(refused.startsWith("Not measured: ") && refused.contains(" lies above its every pixel"), refused);
+		assertEquals(byThreshold, chosen.getSettings());
 	}
 
 	/** Particles a few pixels across: the button lowers MIN_AREA to the helper's, and says so. */
