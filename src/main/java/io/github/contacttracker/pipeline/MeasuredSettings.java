@@ -206,8 +206,9 @@ public final class MeasuredSettings {
 	/**
 	 * The particles' spacing is this quantile of the distances from a seed to its nearest one: the distance at contact
 	 * where particles touch, as the helper's diameter is. Not the median: a seed missed in a packed field leaves its
-	 * neighbours' nearest distance at the next one out (on that monolayer the seeds' median was 21.2 px against 19.7
-	 * between the spheres, r_out 14.1 lost a fifth of them; the 10th percentile gives 12.8 and finds them all).
+	 * neighbours' nearest distance at the next one out (on that monolayer the seeds' median is 21.2 px against 19.7
+	 * between the spheres, and its r_out, 14.1, loses a fifth of them; the 10th percentile gives 12.8 and finds them
+	 * all).
 	 */
 	static final double SPACING = 0.1;
 

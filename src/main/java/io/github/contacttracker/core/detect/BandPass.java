@@ -94,7 +94,7 @@ public final class BandPass {
 	 * Beyond this standard deviation (px) the Gaussian is {@value #BOXES} successive box means of the same variance
 	 * ({@link #boxRadii}): a kernel 6 sigma wide costs that many operations a pixel, the boxes' running sums a few
 	 * whatever their width. Particles of a diameter above 8 times it (128 px) are filtered so: a diameter of 1,500 px
-	 * on a 2000 x 2000 frame took a minute of Gaussian passes. The boxes' kernel is within 6% of the Gaussian's peak
+	 * on a 2000 x 2000 frame would take a minute of Gaussian passes. The boxes' kernel is within 6% of the Gaussian's peak
 	 * everywhere.
 	 */
 	static final double BOXES_FROM_SIGMA = 16;

@@ -48,7 +48,7 @@ import io.github.contacttracker.core.image.Plane;
  * them costs minutes a frame for nothing the threshold does not find. Bright-field particles with rings give a few
  * seeds each, dense fields of touching particles a few per component; a texture gives hundreds per particle. Not
  * where the threshold keeps no particle on the first frame: nothing then tells a texture from particles below the
- * threshold (160 dim spots, none above it, were taken for texture and no spot was found), and only the image can
+ * threshold (160 dim spots, none above it, would be taken for texture and no spot found), and only the image can
  * find any.
  *
  * @param detection the detection chosen ({@link Detection#IMAGE} or {@link Detection#THRESHOLD})
