@@ -167,19 +167,10 @@ public final class ProfileCommand extends ContactTrackerCli.Subcommand {
 		out.println("  warning: the threshold " + MeasuredSettings.optionValue(threshold) + " lies " + (above ? "above"
 			: "below") + " every pixel of the frame (" + MeasuredSettings.optionValue(above ? range[1] : range[0]) +
 			"): no threshold cuts these particles apart, and 'track' finds them by their image with the values below");
-		SettingValues settings = SettingValues.defaults();
-		final java.util.Set<io.github.contacttracker.settings.Setting<?>> given = new java.util.HashSet<>();
-		if (options.value(diameterOption) > 0) {
-			settings = settings.with(TrackingSettings.DIAMETER, options.value(diameterOption));
-			given.add(TrackingSettings.DIAMETER);
-		}
-		if (particlesGiven) {
-			settings = settings.withText(TrackingSettings.PARTICLES, dark ? TrackingSettings.DARK : "bright");
-			given.add(TrackingSettings.PARTICLES);
-		}
 		try {
-			final SettingValues v = MeasuredSettings.of(movie.getFileName().toString(), frame, integerData, settings,
-				given).settings();
+			final SettingValues v = MeasuredSettings.of(movie.getFileName().toString(), frame, integerData, SettingValues
+				.defaults(), options.value(diameterOption), !particlesGiven ? null : dark ? TrackingSettings.DARK
+					: TrackingSettings.PARTICLES.defaultValue()).settings();
 			return " --detection " + v.get(TrackingSettings.DETECTION) + " --threshold " + MeasuredSettings.optionValue(v
 				.get(TrackingSettings.THRESHOLD)) + " --r-out " + MeasuredSettings.optionValue(v.get(TrackingSettings.R_OUT)) +
 				" --diameter " + MeasuredSettings.optionValue(v.diameter()) + (v.dark() ? " --particles dark" : "");

@@ -645,8 +645,9 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 			// no threshold keeps two such particles apart: what 'track' measures on this frame, by their image
 			final MeasuredSettings.Result m;
 			try {
-				m = MeasuredSettings.of(imp.getTitle(), p.frameAsGiven(imp), p.integerData(), shownSettings(),
-					shownGiven());
+				m = MeasuredSettings.of(imp.getTitle(), p.frameAsGiven(imp), p.integerData(), SettingValues.defaults()
+					.withText(TrackingSettings.METHOD, method).withText(TrackingSettings.DETECTION, detection), diameter,
+					TrackingSettings.DARK.equals(particles) ? TrackingSettings.DARK : null);
 			}
 			catch (final InvalidInputException e) {
 				final String message = TITLE + ": cannot measure from the image: " + e.getMessage();
@@ -677,26 +678,6 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 		WindowsBeside.log(p.logText(TITLE + ": measured"), imp);
 		if (status != null) status.showStatus(TITLE + ": measured " + p.status());
 		preview(); // the dialog previews its values as they change; these changed without an edit
-	}
-
-	/**
-	 * @return what the measuring reads of the dialog's fields: the method and detection (which may fall back to the
-	 *         particles' image), the particles' contrast and a diameter above 0; not the fields being measured, whose
-	 *         text may be half typed
-	 */
-	private SettingValues shownSettings() {
-		SettingValues v = SettingValues.defaults().withText(TrackingSettings.METHOD, method).withText(
-			TrackingSettings.DETECTION, detection).withText(TrackingSettings.PARTICLES, particles);
-		if (diameter > 0) v = v.with(TrackingSettings.DIAMETER, diameter);
-		return v;
-	}
-
-	/** @return the settings the user gave that the helper measured with: a diameter above 0, dark particles */
-	private java.util.Set<Setting<?>> shownGiven() {
-		final java.util.Set<Setting<?>> given = new java.util.HashSet<>();
-		if (diameter > 0) given.add(TrackingSettings.DIAMETER);
-		if (TrackingSettings.DARK.equals(particles)) given.add(TrackingSettings.PARTICLES);
-		return given;
 	}
 
 	/** Takes the preview off the image: the dialog was cancelled. */

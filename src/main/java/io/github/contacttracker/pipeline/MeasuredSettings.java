@@ -22,6 +22,7 @@
 package io.github.contacttracker.pipeline;
 
 import java.math.BigDecimal;
+import java.util.HashSet;
 import java.util.Set;
 import java.util.function.IntFunction;
 
@@ -73,6 +74,32 @@ public final class MeasuredSettings {
 		final SettingValues settings, final Set<Setting<?>> given)
 	{
 		return of(name, first, 1, true, integerData, settings, given);
+	}
+
+	/**
+	 * As {@link #of(String, RandomAccessibleInterval, boolean, SettingValues, Set)}, where the user gave at most a
+	 * diameter and the particles' contrast besides the method and detection: what the front ends that measure on
+	 * one frame ({@code profile}, the "Measure from the image" buttons) suggest where the helper's own threshold lies
+	 * outside that frame.
+	 *
+	 * @param chosen the settings to measure with: the method and detection chosen, the rest as it comes
+	 * @param diameter the diameter given (px), 0 for none (measured)
+	 * @param particles the contrast given ({@link TrackingSettings#DARK} or the default), null for none (measured)
+	 */
+	public static Result of(final String name, final RandomAccessibleInterval<?> frame, final boolean integerData,
+		final SettingValues chosen, final double diameter, final String particles)
+	{
+		SettingValues v = chosen;
+		final Set<Setting<?>> given = new HashSet<>();
+		if (diameter > 0) {
+			v = v.with(TrackingSettings.DIAMETER, diameter);
+			given.add(TrackingSettings.DIAMETER);
+		}
+		if (particles != null) {
+			v = v.withText(TrackingSettings.PARTICLES, particles);
+			given.add(TrackingSettings.PARTICLES);
+		}
+		return of(name, frame, integerData, v, given);
 	}
 
 	/**

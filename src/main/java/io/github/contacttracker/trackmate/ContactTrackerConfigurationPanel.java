@@ -40,9 +40,7 @@ import java.text.DecimalFormat;
 import java.text.DecimalFormatSymbols;
 import java.util.Locale;
 import java.util.LinkedHashMap;
-import java.util.HashSet;
 import java.util.Map;
-import java.util.Set;
 import java.util.function.Supplier;
 
 import javax.swing.BorderFactory;
@@ -387,19 +385,10 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 	private Supplier<String> byImage(final ShownFrameProfile p, final boolean dark, final double diameter,
 		final SettingValues chosen)
 	{
-		SettingValues given = chosen;
-		final Set<Setting<?>> said = new HashSet<>();
-		if (diameter > 0) {
-			given = given.with(TrackingSettings.DIAMETER, diameter);
-			said.add(TrackingSettings.DIAMETER);
-		}
-		if (dark) {
-			given = given.withText(TrackingSettings.PARTICLES, TrackingSettings.DARK);
-			said.add(TrackingSettings.PARTICLES);
-		}
 		final MeasuredSettings.Result m;
 		try {
-			m = MeasuredSettings.of(imp.getTitle(), p.frameAsGiven(imp), p.integerData(), given, said);
+			m = MeasuredSettings.of(imp.getTitle(), p.frameAsGiven(imp), p.integerData(), chosen, diameter, dark
+				? TrackingSettings.DARK : null);
 		}
 		catch (final InvalidInputException e) {
 			return () -> {

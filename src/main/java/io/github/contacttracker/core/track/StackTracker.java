@@ -211,7 +211,7 @@ public final class StackTracker {
 
 		/** @return the tracker the movie's frames are refined with: {@code tracker}, with the chosen detection */
 		ContactTracker tracker(final ContactTracker tracker) {
-			return choice == null ? tracker : new ContactTracker(tracker.parameters().withDetection(choice.detection()));
+			return withChoice(tracker, choice);
 		}
 
 		/**
@@ -306,8 +306,7 @@ public final class StackTracker {
 		// the detection, where it is to be chosen: from the threshold's components on these frames
 		final DetectionChoice choice = params.choosesDetection() ? choose(iterative, frame.apply(sample[0]), params)
 			: null;
-		final ContactTracker tracker = choice == null ? this.tracker : new ContactTracker(params.withDetection(choice
-			.detection()));
+		final ContactTracker tracker = withChoice(this.tracker, choice);
 		// the kinds of particle, told apart on the same frames; the profile of each is measured on its particles
 		Kinds kinds = null;
 		if (params.kinds() != 1) {
@@ -388,6 +387,11 @@ public final class StackTracker {
 		final boolean settled = verdict == Rounds.Verdict.SETTLED || verdict == Rounds.Verdict.CYCLING;
 		return new ProfileStage(sample, profiles(used), settled, round, choice, tracker.parameters().detectsByImage()
 			? Misfit.of(round) : null);
+	}
+
+	/** @return {@code tracker}, with the detection {@code choice} chose (as it is where none was chosen) */
+	private static ContactTracker withChoice(final ContactTracker tracker, final DetectionChoice choice) {
+		return choice == null ? tracker : new ContactTracker(tracker.parameters().withDetection(choice.detection()));
 	}
 
 	/** @return the detection {@link Detection#AUTO} chooses from the threshold's first pass on the sample frames */
