@@ -242,13 +242,18 @@ public final class MeasuredSettings {
 	/**
 	 * @return the largest r_out for particles of diameter {@code d} that the particles' spacing allows ({@link #SPACED}
 	 *         of the {@link #SPACING} quantile of the distances between the image's seeds and their nearest ones, at
-	 *         least 3 px, to 0.1 px)
+	 *         least 3 px, to 0.1 px), and never below {@link #SPACED} of the diameter: the profile then reaches a
+	 *         diameter from the centre, the particle's radius and as much again for its blurred edge. (A packed field's
+	 *         seeds lie at its particles' diameter apart, and their 10th percentile, shortened by the seeds' own errors,
+	 *         below it: on a simulated monolayer of discs of 14 px whose blurred edges reach 10 px from the centre the
+	 *         spacing gave 7.8 px, the profile's reach fell short of the edges, and a fifth of the particles were
+	 *         found; from 9 px all were.)
 	 */
 	private static double spacedROut(final Plane plane, final double d) {
 		// a diameter beyond the frame's diagonal is refused by the tracker itself; no seeds are sought at its scale
 		if (!(d <= Math.hypot(plane.width(), plane.height()))) return Double.POSITIVE_INFINITY;
 		final double spacing = ImageDetection.seeds(plane, d, NoiseEstimate.sigma(plane)).spacing(SPACING);
-		return Math.round(10 * Math.max(3, Math.min(1e6, SPACED * spacing))) / 10.0;
+		return Math.round(10 * Math.max(3, Math.min(1e6, SPACED * Math.max(d, spacing)))) / 10.0;
 	}
 
 	/**

@@ -38,6 +38,8 @@ import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.core.image.Inversion;
 import io.github.contacttracker.settings.SettingValues;
 import io.github.contacttracker.settings.TrackingSettings;
+import io.github.contacttracker.lab.sim.DetectionScene;
+import io.github.contacttracker.lab.sim.DetectionScenes;
 import io.github.contacttracker.lab.sim.ImageSimulator;
 import io.github.contacttracker.lab.sim.NoiseModel;
 import io.github.contacttracker.lab.sim.Quantiser;
@@ -99,6 +101,23 @@ class MeasuredSettingsTest {
 			TrackingSettings.PARTICLES, TrackingSettings.DARK), Set.of(TrackingSettings.PARTICLES));
 		assertEquals(fromBright.settings().withText(TrackingSettings.PARTICLES, TrackingSettings.DARK), told.settings());
 		assertEquals(fromBright.notice(), told.notice(), "nothing measured about the polarity: it was given");
+	}
+
+	/**
+	 * Bright particles packed edge to edge cover most of the frame, so its median lies on them and the small dark gaps
+	 * between them reach far below it: the levels alone would call them dark. Their blobs say otherwise (the inverted
+	 * frame's gaps stand no higher than the particles do), and they are taken for what they are. Dark discs standing
+	 * apart on a bright background are still taken for dark.
+	 */
+	@Test
+	void aPackedMonolayerOfBrightParticlesIsNotTakenForDark() {
+		assertFalse(ProfileAnalysis.looksDark(firstFrame(DetectionScenes.dense(1, 3))));
+		assertTrue(ProfileAnalysis.looksDark(firstFrame(DetectionScenes.dark(1, 3))));
+	}
+
+	@SuppressWarnings("unchecked")
+	private static RandomAccessibleInterval<UnsignedByteType> firstFrame(final DetectionScene scene) {
+		return (RandomAccessibleInterval<UnsignedByteType>) (Object) scene.frames().get(0);
 	}
 
 	/**

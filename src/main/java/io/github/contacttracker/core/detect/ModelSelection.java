@@ -43,7 +43,9 @@ import io.github.contacttracker.core.radial.Refinement;
  * kind: a bright fringe between dark-ringed particles), one that sits on another member (within a quarter
  * diameter: both fitted one particle), and one whose light lowers the residual sum of squares by less than
  * {@value #SIGNIFICANCE}&sup2; noise variances (the likelihood ratio of the model with and without it, at the
- * others' fitted values: a bump of noise);</li>
+ * others' fitted values: a bump of noise), and a weak one whose own light (the residuals with its light added back,
+ * its fitted neighbours' taken out) does not match its profile ({@link ProfileMatch#MATCH}: a fringe where halos
+ * meet);</li>
  * <li><b>add</b> a particle where the residuals, band-passed as the frame was, hold a peak that stands out as the
  * seeds did, twice as high ({@link #ADD_LEVEL}, {@link ImageDetection#PROMINENCE}, in units of the band-passed
  * residuals' noise, the larger of the pixel noise's and the residuals' own robust spread, so that a model that
@@ -128,24 +130,49 @@ public final class ModelSelection {
 				if (measured != null) return track(plane, params, refinement, measured, noise, null);
 			}
 		}
+		return select(plane, params, refinement, given, noise, null, null);
+	}
+
+	/**
+	 * The particles at {@code (x, y)} (the frame's local coordinates), fitted with the profiles given, each with its
+	 * significance; none added, split or removed. A movie's profile rounds refit the particles an earlier round found,
+	 * so that the centres they compare round to round are those of the same particles (see the stack tracker).
+	 */
+	public static Result refit(final Plane plane, final TrackerParameters params, final ProfileRefinement refinement,
+		final KindProfiles given, final double noise, final double[] x, final double[] y)
+	{
+		return select(plane, params, refinement, given, noise, x, y);
+	}
+
+	/**
+	 * The moves of {@link #track} from the image's seeds, or ({@code x} and {@code y} not null, profiles given) the
+	 * particles at {@code (x, y)} fitted, each with its significance, no move made.
+	 */
+	private static Result select(final Plane plane, final TrackerParameters params, final ProfileRefinement refinement,
+		final KindProfiles given, final double noise, final double[] x, final double[] y)
+	{
+		final boolean grow = x == null;
 		final double d = params.diameter();
 		final int w = plane.width(), h = plane.height();
 		final float[] data = BandPass.pixels(plane);
-		final Peaks seeds = ImageDetection.seeds(plane, d, noise);
+		final Peaks seeds = grow ? ImageDetection.seeds(plane, d, noise) : Peaks.NONE;
 		final double least = ImageDetection.RELATIVE * seeds.typicalHeight();
 		final ImageDetection.Scale scale = ImageDetection.Scale.of(d);
 		final float[][] cache = new float[1][];
 		final float[] bpData = dataBp(plane, scale, data, w, h, cache);
 		final double strong = ProfileMatch.STRONG * ProfileMatch.typicalMatching(seeds, data, w, h, given, noise);
-		// with the profiles known, a weak seed is fitted only where the frame matches a particle's profile (a halo's
-		// fringe does not), and no seed where the profile matches it at less than a faint particle's amplitude (a
-		// textured background's bumps: fitted, they would cost more than the particles)
-		final Moves start = new Moves(seeds.count());
+		// with the profiles known, no seed is fitted where the profile matches it at less than a faint particle's
+		// amplitude (a textured background's bumps: fitted, they would cost more than the particles). Whether a weak
+		// seed is a particle at all is judged after the fit, on its own light (see the removal below): the frame
+		// around a seed holds its neighbours' light too, which in a packed field spoils its match with any single
+		// profile (on a monolayer of blurred discs at contact, a match on the frame kept 114 of 255 seeds).
+		final Moves start = new Moves(grow ? seeds.count() : x.length);
 		int removed = 0;
-		for (int i = 0; i < seeds.count(); i++)
-			if (given == null || (seeds.height()[i] >= strong || ProfileMatch.matchedAny(data, w, h, seeds.x()[i], seeds.y()[i],
-				given, noise) >= ProfileMatch.MATCH) && !(ProfileMatch.amplitudeAny(data, w, h, seeds.x()[i], seeds.y()[i],
-					given) < FAINT)) start.add(seeds.x()[i], seeds.y()[i]);
+		if (!grow) for (int i = 0; i < x.length; i++)
+			start.add(x[i], y[i]);
+		else for (int i = 0; i < seeds.count(); i++)
+			if (given == null || !(ProfileMatch.amplitudeAny(data, w, h, seeds.x()[i], seeds.y()[i], given) < FAINT)) start
+				.add(seeds.x()[i], seeds.y()[i]);
 			else removed++;
 		Particle[] ps = ImageDetection.particles(plane, start.x(), start.y(), ImageDetection.radius(d), ImageDetection
 			.margin(d));
@@ -165,12 +192,13 @@ public final class ModelSelection {
 			for (int k = 0; k < e.length; k++)
 				significance[k] = drawn(e[k]) ? MemberTests.significance(residual, w, h, e[k], of[k], noise) : MemberTests.undrawn(residual, w, h,
 					e[k], of[k], noise);
-			if (round == ROUNDS) break;
+			if (round == ROUNDS || !grow) break;
 			// remove
 			final double[] match = new double[e.length];
 			for (int k = 0; k < e.length; k++)
-				match[k] = ProfileMatch.weak(bpData, w, h, e[k].x(), e[k].y(), strong) ? ProfileMatch.matched(data, w, h, e[k].x(), e[k].y(), of[k],
-					noise) : 1;
+				match[k] = !ProfileMatch.weak(bpData, w, h, e[k].x(), e[k].y(), strong) ? 1 : drawn(e[k]) ? ProfileMatch
+					.matchedOwn(residual, w, h, e[k], of[k], noise) : ProfileMatch.matched(data, w, h, e[k].x(), e[k].y(),
+						of[k], noise);
 			final boolean[] keep = new boolean[e.length];
 			int kept = 0;
 			for (int k = 0; k < e.length; k++) {

@@ -42,6 +42,9 @@ import io.github.contacttracker.core.math.Statistics;
  */
 public record Peaks(double[] x, double[] y, double[] height, double[] prominence) {
 
+	/** No peak. */
+	static final Peaks NONE = new Peaks(new double[0], new double[0], new double[0], new double[0]);
+
 	/** Which quantile of the heights is a typical strong peak's: high, but not the single highest of many. */
 	public static final double STRONG_QUANTILE = 0.9;
 

@@ -24,6 +24,7 @@ package io.github.contacttracker.core.detect;
 import io.github.contacttracker.core.kind.KindProfiles;
 import io.github.contacttracker.core.math.Statistics;
 import io.github.contacttracker.core.profile.EmpiricalProfile;
+import io.github.contacttracker.core.radial.Estimate;
 
 /**
  * How well a frame matches a particle's measured profile at a point: what tells a weak seed that is a particle from
@@ -46,10 +47,34 @@ final class ProfileMatch {
 	{
 		final double[] m = sums(data, w, h, x, y, p);
 		if (m == null) return Double.NaN;
-		final double sp = m[0], si = m[1], spi = m[2], spp = m[3], sii = m[4];
-		final int n = (int) m[5];
-		if (n < 2) return Double.NaN;
 		// the image's variance less the noise's: a dim particle matches as well as a bright one
+		return correlation(m[0], m[1], m[2], m[3], m[4], (int) m[5], noise);
+	}
+
+	/**
+	 * @return as {@link #matched}, for a fitted member, on its own light: the fit's {@code residual} with the member's
+	 *         drawn light {@code a P(r / s)} added back, correlated with its drawn shape {@code P(r / s)} over its disc
+	 *         (scaled as the member is). The frame itself is the member's light plus its fitted neighbours'; in a dense
+	 *         field theirs fills the disc around every particle, and the frame matches no single profile there even at
+	 *         a particle. NaN for a member not drawn (no finite centre, amplitude or scale) or off the frame.
+	 */
+	static double matchedOwn(final float[] residual, final int w, final int h, final Estimate e,
+		final EmpiricalProfile p, final double noise)
+	{
+		final double s = e.scale(), a = e.amplitude();
+		if (!(s > 0) || !Double.isFinite(a)) return Double.NaN;
+		final double[] m = sums(residual, w, h, e.x(), e.y(), p, s, a);
+		return m == null ? Double.NaN : correlation(m[0], m[1], m[2], m[3], m[4], (int) m[5], noise);
+	}
+
+	/**
+	 * @return the correlation of the profile's values with the pixels' from their sums over {@code n} pixels, the
+	 *         pixels' variance taken less the noise's; NaN for fewer than 2 pixels, 0 where either varies not at all
+	 */
+	private static double correlation(final double sp, final double si, final double spi, final double spp,
+		final double sii, final int n, final double noise)
+	{
+		if (n < 2) return Double.NaN;
 		final double cov = spi - sp * si / n, vp = spp - sp * sp / n, vi = sii - si * si / n - (n - 1) * noise * noise;
 		return vp > 0 && vi > 0 ? Math.min(1, cov / Math.sqrt(vp * vi)) : 0;
 	}
@@ -80,15 +105,24 @@ final class ProfileMatch {
 		return best;
 	}
 
-	/**
-	 * @return over the disc around (x, y) that holds {@link #MATCHED_INFORMATION} of the information on a centre, the
-	 *         sums of {@code P}, {@code I}, {@code P I}, {@code P^2}, {@code I^2} and the pixels' count; null off the frame
-	 */
+	/** @return {@link #sums(float[], int, int, double, double, EmpiricalProfile, double, double)} of the image as it is */
 	private static double[] sums(final float[] data, final int w, final int h, final double x, final double y,
 		final EmpiricalProfile p)
 	{
+		return sums(data, w, h, x, y, p, 1, 0);
+	}
+
+	/**
+	 * @return over the disc around (x, y) that holds {@link #MATCHED_INFORMATION} of the information on a centre (its
+	 *         radius times {@code scale}), the sums of {@code P}, {@code I}, {@code P I}, {@code P^2}, {@code I^2} and
+	 *         the pixels' count, {@code P} the profile at {@code r / scale} and {@code I} the image plus
+	 *         {@code added P}; null off the frame
+	 */
+	private static double[] sums(final float[] data, final int w, final int h, final double x, final double y,
+		final EmpiricalProfile p, final double scale, final double added)
+	{
 		if (!Double.isFinite(x) || !Double.isFinite(y)) return null;
-		final double reach = Math.min(p.radius(), p.informationRadius(MATCHED_INFORMATION));
+		final double reach = Math.min(p.radius(), p.informationRadius(MATCHED_INFORMATION)) * scale;
 		final int x0 = Math.max(0, (int) Math.floor(x - reach)), x1 = Math.min(w - 1, (int) Math.ceil(x + reach));
 		final int y0 = Math.max(0, (int) Math.floor(y - reach)), y1 = Math.min(h - 1, (int) Math.ceil(y + reach));
 		double sp = 0, si = 0, spi = 0, spp = 0, sii = 0;
@@ -97,7 +131,7 @@ final class ProfileMatch {
 			for (int xx = x0; xx <= x1; xx++) {
 				final double r = MemberTests.dist(xx - x, yy - y);
 				if (r > reach) continue;
-				final double v = p.lookup(r), im = data[yy * w + xx];
+				final double v = p.lookup(r / scale), im = data[yy * w + xx] + added * v;
 				sp += v;
 				si += im;
 				spi += v * im;
@@ -122,10 +156,11 @@ final class ProfileMatch {
 	}
 
 	/**
-	 * A weak seed or member is a particle only where the frame matches a particle's profile at least this well (see
-	 * {@link #matched}): a correlation of 0.75 leaves the profile more than half (0.56) of the pixels' variance above
-	 * the noise to explain. A particle's own image, even with a touching neighbour's light in its disc, is explained
-	 * far better; a junction where halos meet, whose bright and dark rings lie where a particle's are not, far worse.
+	 * A weak member is a particle only where its own light ({@link #matchedOwn}; where it is not drawn, or for a peak
+	 * of the residuals, the frame: {@link #matched}) matches a particle's profile at least this well: a correlation of
+	 * 0.75 leaves the profile more than half (0.56) of the pixels' variance above the noise to explain. A particle's
+	 * own image is explained far better; a junction where halos meet, whose bright and dark rings lie where a
+	 * particle's are not, far worse.
 	 */
 	public static final double MATCH = 0.75;
 	/**

@@ -29,7 +29,8 @@ import io.github.contacttracker.core.math.Statistics;
  * <ul>
  * <li>{@link Verdict#SETTLED}: no centre moved more than its tolerance: the fixed point of profile and centres.
  * <li>{@link Verdict#CYCLING}: the centres as a whole have settled (the median move is below half the tolerance: the
- * profile, which moves them all together, has stopped moving), and the largest move has not shrunk over two rounds.
+ * profile, which moves them all together, has stopped moving), and the largest move has not shrunk over two rounds
+ * (by a tenth: {@link #STILL}).
  * What still moves then are single centres going back and forth between two fits (a centre whose model fits two
  * nearby minima about equally, such as a particle with a neighbour's light on one side, can jump many standard
  * errors every other round while the median move stays at a small fraction of one), which more rounds do not mend.
@@ -62,6 +63,14 @@ public final class Rounds {
 
 	/** The median move (in tolerances) below which the centres as a whole count as settled. */
 	static final double BULK = 0.5;
+
+	/**
+	 * The largest move has not shrunk over two rounds when it is at least this share of the one two rounds before: a
+	 * centre that goes back and forth between two fits, refitted from the same start each round, repeats its moves
+	 * to the last digits, and those can shrink by a few parts in a thousand each time without ever settling (a
+	 * simulated pair at 0.8 diameters: 1.5999, 1.5976, 1.5999, 1.5975 tolerances, round after round, to the limit).
+	 */
+	static final double STILL = 0.9;
 
 	/** The median move (in tolerances) above which rounds that do not shrink it count as stalled. */
 	static final double STALL_MEDIAN = 10;
@@ -97,7 +106,7 @@ public final class Rounds {
 			sinceShrunk = 0;
 		}
 		else sinceShrunk++;
-		if (max >= twoBack && median <= BULK) return Verdict.CYCLING;
+		if (max >= STILL * twoBack && median <= BULK) return Verdict.CYCLING;
 		return median > STALL_MEDIAN && sinceShrunk >= STALL_ROUNDS ? Verdict.STALLED : Verdict.GOING_ON;
 	}
 

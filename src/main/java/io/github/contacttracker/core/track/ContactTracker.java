@@ -134,6 +134,17 @@ public final class ContactTracker {
 	FrameResult analyse(final Plane plane, final int frameIndex, final boolean keepRegions,
 		final KindProfiles profile)
 	{
+		return analyse(plane, frameIndex, keepRegions, profile, null);
+	}
+
+	/**
+	 * As {@link #analyse(Plane, int, boolean, KindProfiles)}; where the image detects and the profiles are given,
+	 * {@code particles} (an earlier result's spots, in the frame's coordinates; null: none) are refitted, and those
+	 * the fit does not need removed, instead of found again ({@link ModelSelection#refit}).
+	 */
+	FrameResult analyse(final Plane plane, final int frameIndex, final boolean keepRegions,
+		final KindProfiles profile, final List<Localization> particles)
+	{
 		checkReach(plane, params);
 		final int[] discarded = new int[1];
 		final double noise = NoiseEstimate.sigma(plane);
@@ -143,8 +154,9 @@ public final class ContactTracker {
 		final Refinement refinement = refinement(params.method());
 		if (params.detectsByImage()) {
 			if (refinement instanceof ProfileRefinement profiled) {
-				final ModelSelection.Result r = ModelSelection.track(plane, params, profiled, profile, noise, () ->
-					withShapeFlags(firstPasses(plane, params, new int[1]), noise, params, new int[1]));
+				final ModelSelection.Result r = particles != null && profile != null ? refit(plane, profiled, profile,
+					noise, particles) : ModelSelection.track(plane, params, profiled, profile, noise, () -> withShapeFlags(
+						firstPasses(plane, params, new int[1]), noise, params, new int[1]));
 				ps = r.particles();
 				outcome = r.outcome();
 				significance = r.significance();
@@ -188,6 +200,21 @@ public final class ContactTracker {
 		}
 		return new FrameResult(spots, active, second, noise, discarded[0], profile == null && params.method()
 			.needsProfile());
+	}
+
+	/** @return the {@code particles} (spots in the frame's coordinates; those without a finite centre left out) refitted */
+	private ModelSelection.Result refit(final Plane plane, final ProfileRefinement refinement, final KindProfiles profile,
+		final double noise, final List<Localization> particles)
+	{
+		final double[] x = new double[particles.size()], y = new double[particles.size()];
+		int n = 0;
+		for (final Localization l : particles)
+			if (Double.isFinite(l.x()) && Double.isFinite(l.y())) {
+				x[n] = l.x() - plane.minX();
+				y[n++] = l.y() - plane.minY();
+			}
+		return ModelSelection.refit(plane, params, refinement, profile, noise, java.util.Arrays.copyOf(x, n), java.util
+			.Arrays.copyOf(y, n));
 	}
 
 	/**

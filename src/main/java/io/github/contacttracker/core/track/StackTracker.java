@@ -37,6 +37,7 @@ import io.github.contacttracker.core.Localization;
 import io.github.contacttracker.core.Method;
 import io.github.contacttracker.core.TrackerParameters;
 import io.github.contacttracker.core.detect.DetectionChoice;
+import io.github.contacttracker.core.detect.ModelSelection;
 import io.github.contacttracker.core.fit.GroupFit;
 import io.github.contacttracker.core.fit.ProfileRefinement;
 import io.github.contacttracker.core.fit.Rounds;
@@ -307,6 +308,19 @@ public final class StackTracker {
 		final DetectionChoice choice = params.choosesDetection() ? choose(iterative, frame.apply(sample[0]), params)
 			: null;
 		final ContactTracker tracker = withChoice(this.tracker, choice);
+		// Where the image detects and most of the threshold's areas are not single particles (a packed field, where they
+		// hold several particles each: 12% to 20% of them single on simulated dense monolayers), the first centres are
+		// the image's, each sample frame fitted with a profile of its own: a profile measured around the areas' centres
+		// would start the rounds so far from the particles' that they settle elsewhere, or not at all (a fifth of the
+		// particles found, every one flagged; with the image's start all found, 0.03 px off). Where most areas are
+		// single particles (touching beads, spheres parted by dark rims, a pair that merges only when pushed close:
+		// 65% to 100% on public and simulated footage), they start it: they flag their merges, which a frame's own
+		// profile learns as one wide particle (a simulated pair whose last quarter merged: its closest frame lost).
+		final boolean imageStart = tracker.parameters().detectsByImage() && usableShare(iterative) < IMAGE_START;
+		if (imageStart) {
+			progress.total += sample.length;
+			iterative = pass(tracker, null, sample, frame, false, progress, cancelled);
+		}
 		// the kinds of particle, told apart on the same frames; the profile of each is measured on its particles
 		Kinds kinds = null;
 		if (params.kinds() != 1) {
@@ -339,10 +353,12 @@ public final class StackTracker {
 		// no less than the round before did is replaced by the full least squares (where the rows change much, as
 		// with particles cut by the edge, chord steps can grow round after round and the centres run off).
 		List<FrameResult> previous = iterative;
-		final int[] everyOther = new int[(sample.length + 1) / 2];
-		for (int i = 0; i < everyOther.length; i++)
-			everyOther[i] = 2 * i;
-		final Frames start = new Frames(sample, previous).at(everyOther);
+		// (the image's: on every sample frame, each fitted with its own profile, some of which may not have settled)
+		final int every = imageStart ? 1 : 2;
+		final int[] starting = new int[(sample.length + every - 1) / every];
+		for (int i = 0; i < starting.length; i++)
+			starting[i] = every * i;
+		final Frames start = new Frames(sample, previous).at(starting);
 		Measured used = profile(start.results(), null, start.indices(), frame, params.profileReach(), kinds);
 		// a kind none of whose particles can teach a profile (all merged where the threshold joined touching
 		// particles, as it does a pair pushed together): one profile for them all, not none
@@ -363,19 +379,25 @@ public final class StackTracker {
 		final Rounds rounds = new Rounds();
 		Rounds.Verdict verdict = rounds.next(moves(previous, round));
 		double lastStep = Double.POSITIVE_INFINITY;
+		final Unsettled unsettled = new Unsettled();
+		boolean refitted = false;
 		for (int r = 1; r < ProfileRefinement.PROFILE_ROUNDS && verdict == Rounds.Verdict.GOING_ON; r++) {
 			progress.total += sample.length;
 			previous = round;
 			final Measured before = used;
 			final Measured full = before == null ? null : new Measured(before.profiles(), null);
-			used = profile(round, r == 1 ? full : before, sample, frame, params.profileReach(), kinds);
+			// (the rounds that refitted the same particles: see Unsettled)
+			final List<FrameResult> teaching = refitted ? unsettled.keptOut(round) : round;
+			used = profile(teaching, r == 1 ? full : before, sample, frame, params.profileReach(), kinds);
 			double step = change(used, before);
 			if (r > 1 && !(step < lastStep)) {
-				used = profile(round, full, sample, frame, params.profileReach(), kinds);
+				used = profile(teaching, full, sample, frame, params.profileReach(), kinds);
 				step = change(used, before);
 			}
 			lastStep = step;
-			round = pass(tracker, profiles(used), sample, frame, false, progress, cancelled);
+			final boolean refit = r >= SETTLED_MEMBERS && tracker.parameters().detectsByImage();
+			round = pass(tracker, profiles(used), sample, frame, false, progress, cancelled, refit ? previous : null);
+			refitted |= refit;
 			verdict = rounds.next(moves(previous, round));
 		}
 		// no fixed point within the rounds, or rounds that stalled far from one: every centre rests on a profile that
@@ -385,8 +407,79 @@ public final class StackTracker {
 		// is the profile, but a few centres of the sample frames went back and forth between two fits; they are flagged.
 		if (verdict == Rounds.Verdict.CYCLING) round = stillMovingFlagged(round, rounds);
 		final boolean settled = verdict == Rounds.Verdict.SETTLED || verdict == Rounds.Verdict.CYCLING;
+		// Where the last rounds refitted the particles the first ones found, those particles were decided on an early
+		// profile: the sample frames are found once more with the last one, as every other frame is (a pair pushed into
+		// overlap is told apart only by a profile close to its own), each spot that a nearby one of the rounds' saw
+		// still moving flagged as that one was (where the frame's particles are the rounds').
+		if (refitted) {
+			progress.total += sample.length;
+			final List<FrameResult> found = pass(tracker, profiles(used), sample, frame, false, progress, cancelled);
+			round = verdict == Rounds.Verdict.CYCLING ? carried(round, stillMoving(round, rounds), found, params
+				.diameter() / 4) : found;
+		}
 		return new ProfileStage(sample, profiles(used), settled, round, choice, tracker.parameters().detectsByImage()
 			? Misfit.of(round) : null);
+	}
+
+	/**
+	 * From this round of profile and centres on, a frame found by its image refits the particles of the round before
+	 * instead of finding them again ({@link ModelSelection#refit}). Its particles are found by the first two rounds, on
+	 * the start's profile and on the first measured on the movie; in a packed field one particle added or removed moves
+	 * its neighbours' centres by more than their tolerance, and rounds which found them anew never settled (a dense
+	 * monolayer of blurred discs: the count changing by 4 to 11 each round, the median move stalled at 8 to 14
+	 * tolerances, every spot flagged). Removing in these rounds what the fit does not need cascaded there (each
+	 * removal moving the neighbours of the next) and never settled either; a particle the fit would remove is kept
+	 * out of the profile instead ({@link Unsettled}).
+	 */
+	static final int SETTLED_MEMBERS = 2;
+
+	/**
+	 * The particles kept out of the profile in the rounds that refit the same particles ({@link #SETTLED_MEMBERS}):
+	 * one whose fit did not settle in one of those rounds ({@link ProfileEstimator#usable}: a member that cannot find
+	 * its place, such as one seeded between the particles of a packed patch), or that the fit would have removed as
+	 * a bump of noise (its significance below {@link ModelSelection#SIGNIFICANCE}), stays out of the profiles of the
+	 * later rounds (such bumps, kept in, lowered the profile's typical amplitude on dim compressed footage, and the
+	 * last pass found half as many spots again). Which fits settle changes from round to round; each change takes a
+	 * particle's pixels into the profile or out of it, and in a packed field moves every centre near it by more than
+	 * its tolerance, so the rounds would never settle (two of four simulated dense monolayers: the median move stalled
+	 * at 2 to 10 tolerances, every spot flagged; kept out, the rounds settle and only the spots still moving are
+	 * flagged). A frame whose particles changed in number (one refitted off the frame) starts afresh.
+	 */
+	private static final class Unsettled {
+		private final List<boolean[]> out = new ArrayList<>();
+
+		/** @return {@code round}, each spot kept out so far (this round's included) flagged {@code NOT_CONVERGED} */
+		List<FrameResult> keptOut(final List<FrameResult> round) {
+			final List<FrameResult> marked = new ArrayList<>(round.size());
+			for (int i = 0; i < round.size(); i++) {
+				final List<Localization> spots = round.get(i).spots();
+				if (i == out.size()) out.add(null);
+				if (out.get(i) == null || out.get(i).length != spots.size()) out.set(i, new boolean[spots.size()]);
+				final boolean[] kept = out.get(i);
+				final List<Localization> copy = new ArrayList<>(spots.size());
+				for (int k = 0; k < spots.size(); k++) {
+					final Localization l = spots.get(k);
+					kept[k] |= !ProfileEstimator.usable(l) || l.quality() < ModelSelection.SIGNIFICANCE;
+					copy.add(kept[k] ? l.withFlags(l.flags() | Flag.NOT_CONVERGED.bit()) : l);
+				}
+				marked.add(round.get(i).withSpots(copy));
+			}
+			return marked;
+		}
+	}
+
+	/** Below this share of single-particle areas among the threshold's, the image's centres start the profile. */
+	static final double IMAGE_START = 0.5;
+
+	/** @return the share of the results' spots that may teach a profile ({@link ProfileEstimator#usable}; 0 for none) */
+	private static double usableShare(final List<FrameResult> results) {
+		int usable = 0, all = 0;
+		for (final FrameResult r : results)
+			for (final Localization l : r.spots()) {
+				all++;
+				if (ProfileEstimator.usable(l)) usable++;
+			}
+		return all == 0 ? 0 : usable / (double) all;
 	}
 
 	/** @return {@code tracker}, with the detection {@code choice} chose (as it is where none was chosen) */
@@ -424,6 +517,46 @@ public final class StackTracker {
 				out.add(results.get(p));
 			return new Frames(StackTracker.at(indices, positions), out);
 		}
+	}
+
+	/** @return per frame of {@code round}, the spots {@code rounds} saw still moving */
+	private static List<List<Localization>> stillMoving(final List<FrameResult> round, final Rounds rounds) {
+		final List<List<Localization>> out = new ArrayList<>(round.size());
+		int i = 0;
+		for (final FrameResult r : round) {
+			final List<Localization> moving = new ArrayList<>();
+			for (final Localization l : r.spots())
+				if (rounds.stillMoving(i++)) moving.add(l);
+			out.add(moving);
+		}
+		return out;
+	}
+
+	/**
+	 * @return {@code found}, each spot within {@code near} px of one of the frame's {@code moving} spots flagged
+	 *         {@code NOT_CONVERGED} where the frame holds as many spots as the rounds' ({@code rounds}): a frame found
+	 *         otherwise holds other particles than those whose moves the rounds saw (a member the first rounds added
+	 *         between the two of a pair, which the final profile does without), and its own fit judges it
+	 */
+	private static List<FrameResult> carried(final List<FrameResult> rounds, final List<List<Localization>> moving,
+		final List<FrameResult> found, final double near)
+	{
+		final List<FrameResult> out = new ArrayList<>(found.size());
+		for (int i = 0; i < found.size(); i++) {
+			if (found.get(i).spots().size() != rounds.get(i).spots().size()) {
+				out.add(found.get(i));
+				continue;
+			}
+			final List<Localization> spots = new ArrayList<>(found.get(i).spots().size());
+			for (final Localization l : found.get(i).spots()) {
+				boolean flag = false;
+				for (final Localization m : moving.get(i))
+					flag |= Math.hypot(m.x() - l.x(), m.y() - l.y()) < near;
+				spots.add(flag ? l.withFlags(l.flags() | Flag.NOT_CONVERGED.bit()) : l);
+			}
+			out.add(found.get(i).withSpots(spots));
+		}
+		return out;
 	}
 
 	/** @return the results, the spots {@code rounds} saw still moving flagged {@code NOT_CONVERGED} */
@@ -683,6 +816,18 @@ public final class StackTracker {
 		final IntFunction<? extends RandomAccessibleInterval<T>> frame, final boolean keepRegions,
 		final Progress progress, final BooleanSupplier cancelled)
 	{
+		return pass(tracker, profile, indices, frame, keepRegions, progress, cancelled, null);
+	}
+
+	/**
+	 * As {@link #pass(ContactTracker, KindProfiles, int[], IntFunction, boolean, Progress, BooleanSupplier)}, frame
+	 * {@code indices[i]} refitting the particles of {@code earlier.get(i)} where the image detects (null: found anew).
+	 */
+	private static <T extends RealType<T>> List<FrameResult> pass(final ContactTracker tracker,
+		final KindProfiles profile, final int[] indices,
+		final IntFunction<? extends RandomAccessibleInterval<T>> frame, final boolean keepRegions,
+		final Progress progress, final BooleanSupplier cancelled, final List<FrameResult> earlier)
+	{
 		final TaskExecutor executor = Parallelization.getTaskExecutor();
 		final Throwable[] failures = new Throwable[indices.length];
 		final List<FrameResult> results = executor.forEachApply(positions(indices.length), i -> {
@@ -691,7 +836,8 @@ public final class StackTracker {
 				// so a count of "frames" could exceed the movie's (117 on a 30-frame movie, seen in Fiji)
 				if (cancelled.getAsBoolean()) throw new CancellationException("cancelled after " + progress.done.get() +
 					" of " + progress.total + " passes over a frame");
-				final FrameResult r = one(tracker, profile, frame, indices[i], keepRegions);
+				final FrameResult r = one(tracker, profile, frame, indices[i], keepRegions, earlier == null ? null : earlier
+					.get(i).spots());
 				progress.frameDone();
 				return r;
 			}
@@ -709,10 +855,10 @@ public final class StackTracker {
 
 	private static <T extends RealType<T>> FrameResult one(final ContactTracker tracker,
 		final KindProfiles profile, final IntFunction<? extends RandomAccessibleInterval<T>> frame, final int t,
-		final boolean keepRegions)
+		final boolean keepRegions, final List<Localization> particles)
 	{
 		try {
-			return tracker.analyse(Plane.of(frame.apply(t)), t, keepRegions, profile);
+			return tracker.analyse(Plane.of(frame.apply(t)), t, keepRegions, profile, particles);
 		}
 		catch (final InvalidInputException e) {
 			throw new InvalidInputException("frame " + (t + 1) + ": " + e.getMessage(), e);

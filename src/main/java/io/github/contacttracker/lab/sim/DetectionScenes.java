@@ -40,7 +40,7 @@ import net.imglib2.img.array.ArrayImg;
 public final class DetectionScenes {
 
 	/** The scenes {@link #of} knows, in order. */
-	public static final List<String> KEYS = List.of("pair-sweep", "dim", "dark", "clipped", "dense-bidisperse");
+	public static final List<String> KEYS = List.of("pair-sweep", "dim", "dark", "clipped", "dense", "dense-bidisperse");
 
 	/** Pixel size of every scene (nm). */
 	public static final double PIXEL_NM = 84.7;
@@ -69,6 +69,7 @@ public final class DetectionScenes {
 			case "dim" -> dim(frames, seed);
 			case "dark" -> dark(frames, seed);
 			case "clipped" -> clipped(frames, seed);
+			case "dense" -> dense(frames, seed);
 			case "dense-bidisperse" -> denseBidisperse(frames, seed);
 			default -> throw new InvalidInputException("--detection-scenes must be among " + String.join(",", KEYS) +
 				" or all, not '" + key + "'");
@@ -79,7 +80,7 @@ public final class DetectionScenes {
 	public static int defaultFrames(final String key) {
 		return switch (key.trim().toLowerCase(Locale.ROOT)) {
 			case "pair-sweep" -> SWEEP_STEPS;
-			case "dense-bidisperse" -> DENSE_FRAMES;
+			case "dense", "dense-bidisperse" -> DENSE_FRAMES;
 			default -> FRAMES;
 		};
 	}
@@ -227,6 +228,41 @@ public final class DetectionScenes {
 			"many of D 10 px as of D 14 px (blur sigma 1.2 and 1.7 px, 100 above a background of 30, 8-bit, noise sigma " +
 			"3), area fraction %.1f, %d particles in 512 x 512 px, none alone", DENSE_AREA_FRACTION, n), scene, w, h, 8,
 			0, layout, groups, frames, false, random);
+	}
+
+	/** The area fraction of the dense monolayer of one size. */
+	public static final double DENSE_ONE_SIZE_FRACTION = 0.6;
+
+	/**
+	 * A dense monolayer of one size with no particle alone: bright blurred discs of D 14 px (blur sigma 1.7 px, 100
+	 * grey levels above a background of 30, 8-bit, Gaussian noise 3) at an area fraction of
+	 * {@value #DENSE_ONE_SIZE_FRACTION} in 256 x 256 px, about 200 particles, placed as in {@link #denseBidisperse}.
+	 */
+	public static DetectionScene dense(final int frames, final long seed) {
+		final double d = 14;
+		final int w = 256, h = 256;
+		final ParticleType type = new ParticleType("bright disc D 14 px, dense", d * PIXEL_NM / 1000, PIXEL_NM,
+			new BlurredDisc(d / 2, 1.7, 100), 30, 80, d, NoiseModel.gaussian(3));
+		final SplittableRandom random = new SplittableRandom(seed);
+		final int n = (int) Math.round(DENSE_ONE_SIZE_FRACTION * w * h / (Math.PI / 4 * d * d));
+		final double[] x = new double[n], y = new double[n], r = new double[n];
+		for (int i = 0; i < n; i++) {
+			x[i] = random.nextDouble(0, w - 1);
+			y[i] = random.nextDouble(0, h - 1);
+			r[i] = d / 2;
+		}
+		unjam(x, y, r, w, h);
+		final List<double[]> layout = new ArrayList<>();
+		final List<Scene.Particle> ps = new ArrayList<>();
+		for (int i = 0; i < n; i++) {
+			layout.add(new double[] { x[i], y[i] });
+			ps.add(new Scene.Particle(x[i], y[i], 1, 1));
+		}
+		final Scene scene = new Scene("dense", type, ps, 0, 0, 0, 0, type.threshold());
+		return still("dense", String.format(Locale.ROOT, "a dense monolayer of bright blurred discs of D 14 px (blur " +
+			"sigma 1.7 px, 100 above a background of 30, 8-bit, noise sigma 3), area fraction %.1f, %d particles in " +
+			"256 x 256 px, none alone", DENSE_ONE_SIZE_FRACTION, n), scene, w, h, 8, 0, layout, java.util.Collections
+				.nCopies(n, TOUCHING), frames, false, random);
 	}
 
 	/**

@@ -140,4 +140,21 @@ class DetectionScenesTest {
 		assertTrue(alone.worstBias() < 0.01, "bias alone " + alone.worstBias());
 		assertTrue(touching.recall() >= 0.9, "recall touching " + touching.recall());
 	}
+
+	/**
+	 * A packed monolayer of 255 bright blurred discs (D 14 px, area fraction 0.6, none alone), 2 frames, tracked with no
+	 * value given: nearly every particle is found, few spots are false, most spots inside the frame are unflagged, and
+	 * their centres are unbiased within 0.01 px and spread by less than 0.05 px (the study's 5 movies: 98.9% found, 1%
+	 * false, 75% unflagged, bias under 0.002 px, spread 0.034 px).
+	 */
+	@Test
+	void aPackedMonolayerIsFoundAndCentred() {
+		final DetectionStudy.Row all = study(DetectionScenes.dense(2, 1)).total();
+		assertTrue(all.recall() >= 0.97, "recall " + all.recall());
+		assertTrue(all.falseSpots() + all.duplicates() <= 0.02 * all.particles(), all.falseSpots() + " false spots, " +
+			all.duplicates() + " duplicates");
+		assertTrue(all.unflaggedShare() >= 0.7, "unflagged " + all.unflaggedShare() + ", mostly " + all.mainFlag());
+		assertTrue(all.worstBias() < 0.01, "bias " + all.worstBias() + " px");
+		assertTrue(all.spread() < 0.05, "spread " + all.spread() + " px");
+	}
 }
