@@ -202,7 +202,10 @@ public final class ContactTracker {
 			.needsProfile());
 	}
 
-	/** @return the {@code particles} (spots in the frame's coordinates; those without a finite centre left out) refitted */
+	/**
+	 * @return the {@code particles} (spots in the frame's coordinates; those without a finite centre left out)
+	 *         refitted
+	 */
 	private ModelSelection.Result refit(final Plane plane, final ProfileRefinement refinement, final KindProfiles profile,
 		final double noise, final List<Localization> particles)
 	{

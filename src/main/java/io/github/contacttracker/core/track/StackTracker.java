@@ -38,7 +38,6 @@ import io.github.contacttracker.core.Method;
 import io.github.contacttracker.core.TrackerParameters;
 import io.github.contacttracker.core.detect.DetectionChoice;
 import io.github.contacttracker.core.detect.ModelSelection;
-import io.github.contacttracker.core.fit.GroupFit;
 import io.github.contacttracker.core.fit.ProfileRefinement;
 import io.github.contacttracker.core.fit.Rounds;
 import io.github.contacttracker.core.image.Plane;
@@ -206,7 +205,7 @@ public final class StackTracker {
 		 *         ({@link Misfit}), each with the detection chosen
 		 */
 		List<FrameResult> finish(final List<FrameResult> results) {
-			final List<FrameResult> flagged = flagged(results, settled);
+			final List<FrameResult> flagged = RoundResults.flagged(results, settled);
 			return chosen(misfit == null ? flagged : misfit.flagged(flagged), choice);
 		}
 
@@ -316,7 +315,8 @@ public final class StackTracker {
 		// single particles (touching beads, spheres parted by dark rims, a pair that merges only when pushed close:
 		// 65% to 100% on public and simulated footage), they start it: they flag their merges, which a frame's own
 		// profile learns as one wide particle (a simulated pair whose last quarter merged: its closest frame lost).
-		final boolean imageStart = tracker.parameters().detectsByImage() && usableShare(iterative) < IMAGE_START;
+		final boolean imageStart = tracker.parameters().detectsByImage() && RoundResults.usableShare(iterative) <
+			IMAGE_START;
 		if (imageStart) {
 			progress.total += sample.length;
 			iterative = pass(tracker, null, sample, frame, false, progress, cancelled);
@@ -377,16 +377,16 @@ public final class StackTracker {
 			round = pass(tracker, profiles(used), sample, frame, false, progress, cancelled);
 		}
 		final Rounds rounds = new Rounds();
-		Rounds.Verdict verdict = rounds.next(moves(previous, round));
+		Rounds.Verdict verdict = rounds.next(RoundResults.moves(previous, round));
 		double lastStep = Double.POSITIVE_INFINITY;
-		final Unsettled unsettled = new Unsettled();
+		final RoundResults.Unsettled unsettled = new RoundResults.Unsettled();
 		boolean refitted = false;
 		for (int r = 1; r < ProfileRefinement.PROFILE_ROUNDS && verdict == Rounds.Verdict.GOING_ON; r++) {
 			progress.total += sample.length;
 			previous = round;
 			final Measured before = used;
 			final Measured full = before == null ? null : new Measured(before.profiles(), null);
-			// (the rounds that refitted the same particles: see Unsettled)
+			// (the rounds that refitted the same particles: see RoundResults.Unsettled)
 			final List<FrameResult> teaching = refitted ? unsettled.keptOut(round) : round;
 			used = profile(teaching, r == 1 ? full : before, sample, frame, params.profileReach(), kinds);
 			double step = change(used, before);
@@ -398,14 +398,14 @@ public final class StackTracker {
 			final boolean refit = r >= SETTLED_MEMBERS && tracker.parameters().detectsByImage();
 			round = pass(tracker, profiles(used), sample, frame, false, progress, cancelled, refit ? previous : null);
 			refitted |= refit;
-			verdict = rounds.next(moves(previous, round));
+			verdict = rounds.next(RoundResults.moves(previous, round));
 		}
 		// no fixed point within the rounds, or rounds that stalled far from one: every centre rests on a profile that
 		// was still moving. Settled: the
 		// profile of the last round is the fixed point's (to within the tolerance), and the sample frames were just
 		// refined with that very profile: without regions to keep, their results are the final ones. Cycling: so
 		// is the profile, but a few centres of the sample frames went back and forth between two fits; they are flagged.
-		if (verdict == Rounds.Verdict.CYCLING) round = stillMovingFlagged(round, rounds);
+		if (verdict == Rounds.Verdict.CYCLING) round = RoundResults.stillMovingFlagged(round, rounds);
 		final boolean settled = verdict == Rounds.Verdict.SETTLED || verdict == Rounds.Verdict.CYCLING;
 		// Where the last rounds refitted the particles the first ones found, those particles were decided on an early
 		// profile: the sample frames are found once more with the last one, as every other frame is (a pair pushed into
@@ -414,8 +414,8 @@ public final class StackTracker {
 		if (refitted) {
 			progress.total += sample.length;
 			final List<FrameResult> found = pass(tracker, profiles(used), sample, frame, false, progress, cancelled);
-			round = verdict == Rounds.Verdict.CYCLING ? carried(round, stillMoving(round, rounds), found, params
-				.diameter() / 4) : found;
+			round = verdict == Rounds.Verdict.CYCLING ? RoundResults.carried(round, RoundResults.stillMoving(round,
+				rounds), found, params.diameter() / 4) : found;
 		}
 		return new ProfileStage(sample, profiles(used), settled, round, choice, tracker.parameters().detectsByImage()
 			? Misfit.of(round) : null);
@@ -429,58 +429,12 @@ public final class StackTracker {
 	 * monolayer of blurred discs: the count changing by 4 to 11 each round, the median move stalled at 8 to 14
 	 * tolerances, every spot flagged). Removing in these rounds what the fit does not need cascaded there (each
 	 * removal moving the neighbours of the next) and never settled either; a particle the fit would remove is kept
-	 * out of the profile instead ({@link Unsettled}).
+	 * out of the profile instead ({@link RoundResults.Unsettled}).
 	 */
 	static final int SETTLED_MEMBERS = 2;
 
-	/**
-	 * The particles kept out of the profile in the rounds that refit the same particles ({@link #SETTLED_MEMBERS}):
-	 * one whose fit did not settle in one of those rounds ({@link ProfileEstimator#usable}: a member that cannot find
-	 * its place, such as one seeded between the particles of a packed patch), or that the fit would have removed as
-	 * a bump of noise (its significance below {@link ModelSelection#SIGNIFICANCE}), stays out of the profiles of the
-	 * later rounds (such bumps, kept in, lowered the profile's typical amplitude on dim compressed footage, and the
-	 * last pass found half as many spots again). Which fits settle changes from round to round; each change takes a
-	 * particle's pixels into the profile or out of it, and in a packed field moves every centre near it by more than
-	 * its tolerance, so the rounds would never settle (two of four simulated dense monolayers: the median move stalled
-	 * at 2 to 10 tolerances, every spot flagged; kept out, the rounds settle and only the spots still moving are
-	 * flagged). A frame whose particles changed in number (one refitted off the frame) starts afresh.
-	 */
-	private static final class Unsettled {
-		private final List<boolean[]> out = new ArrayList<>();
-
-		/** @return {@code round}, each spot kept out so far (this round's included) flagged {@code NOT_CONVERGED} */
-		List<FrameResult> keptOut(final List<FrameResult> round) {
-			final List<FrameResult> marked = new ArrayList<>(round.size());
-			for (int i = 0; i < round.size(); i++) {
-				final List<Localization> spots = round.get(i).spots();
-				if (i == out.size()) out.add(null);
-				if (out.get(i) == null || out.get(i).length != spots.size()) out.set(i, new boolean[spots.size()]);
-				final boolean[] kept = out.get(i);
-				final List<Localization> copy = new ArrayList<>(spots.size());
-				for (int k = 0; k < spots.size(); k++) {
-					final Localization l = spots.get(k);
-					kept[k] |= !ProfileEstimator.usable(l) || l.quality() < ModelSelection.SIGNIFICANCE;
-					copy.add(kept[k] ? l.withFlags(l.flags() | Flag.NOT_CONVERGED.bit()) : l);
-				}
-				marked.add(round.get(i).withSpots(copy));
-			}
-			return marked;
-		}
-	}
-
 	/** Below this share of single-particle areas among the threshold's, the image's centres start the profile. */
 	static final double IMAGE_START = 0.5;
-
-	/** @return the share of the results' spots that may teach a profile ({@link ProfileEstimator#usable}; 0 for none) */
-	private static double usableShare(final List<FrameResult> results) {
-		int usable = 0, all = 0;
-		for (final FrameResult r : results)
-			for (final Localization l : r.spots()) {
-				all++;
-				if (ProfileEstimator.usable(l)) usable++;
-			}
-		return all == 0 ? 0 : usable / (double) all;
-	}
 
 	/** @return {@code tracker}, with the detection {@code choice} chose (as it is where none was chosen) */
 	private static ContactTracker withChoice(final ContactTracker tracker, final DetectionChoice choice) {
@@ -517,126 +471,6 @@ public final class StackTracker {
 				out.add(results.get(p));
 			return new Frames(StackTracker.at(indices, positions), out);
 		}
-	}
-
-	/** @return per frame of {@code round}, the spots {@code rounds} saw still moving */
-	private static List<List<Localization>> stillMoving(final List<FrameResult> round, final Rounds rounds) {
-		final List<List<Localization>> out = new ArrayList<>(round.size());
-		int i = 0;
-		for (final FrameResult r : round) {
-			final List<Localization> moving = new ArrayList<>();
-			for (final Localization l : r.spots())
-				if (rounds.stillMoving(i++)) moving.add(l);
-			out.add(moving);
-		}
-		return out;
-	}
-
-	/**
-	 * @return {@code found}, each spot within {@code near} px of one of the frame's {@code moving} spots flagged
-	 *         {@code NOT_CONVERGED} where the frame holds as many spots as the rounds' ({@code rounds}): a frame found
-	 *         otherwise holds other particles than those whose moves the rounds saw (a member the first rounds added
-	 *         between the two of a pair, which the final profile does without), and its own fit judges it
-	 */
-	private static List<FrameResult> carried(final List<FrameResult> rounds, final List<List<Localization>> moving,
-		final List<FrameResult> found, final double near)
-	{
-		final List<FrameResult> out = new ArrayList<>(found.size());
-		for (int i = 0; i < found.size(); i++) {
-			if (found.get(i).spots().size() != rounds.get(i).spots().size()) {
-				out.add(found.get(i));
-				continue;
-			}
-			final List<Localization> spots = new ArrayList<>(found.get(i).spots().size());
-			for (final Localization l : found.get(i).spots()) {
-				boolean flag = false;
-				for (final Localization m : moving.get(i))
-					flag |= Math.hypot(m.x() - l.x(), m.y() - l.y()) < near;
-				spots.add(flag ? l.withFlags(l.flags() | Flag.NOT_CONVERGED.bit()) : l);
-			}
-			out.add(found.get(i).withSpots(spots));
-		}
-		return out;
-	}
-
-	/** @return the results, the spots {@code rounds} saw still moving flagged {@code NOT_CONVERGED} */
-	private static List<FrameResult> stillMovingFlagged(final List<FrameResult> results, final Rounds rounds) {
-		final List<FrameResult> out = new ArrayList<>(results.size());
-		int i = 0;
-		for (final FrameResult r : results) {
-			final List<Localization> spots = new ArrayList<>(r.spots().size());
-			for (final Localization l : r.spots())
-				spots.add(rounds.stillMoving(i++) ? l.withFlags(l.flags() | Flag.NOT_CONVERGED.bit()) : l);
-			out.add(r.withSpots(spots));
-		}
-		return out;
-	}
-
-	/** @return the results, every spot flagged {@code NOT_CONVERGED} unless the profile rounds {@code settled} */
-	private static List<FrameResult> flagged(final List<FrameResult> results, final boolean settled) {
-		if (settled) return results;
-		final List<FrameResult> out = new ArrayList<>(results.size());
-		for (final FrameResult r : results) {
-			final List<Localization> spots = new ArrayList<>(r.spots().size());
-			for (final Localization l : r.spots())
-				spots.add(l.withFlags(l.flags() | Flag.NOT_CONVERGED.bit()));
-			out.add(r.withSpots(spots));
-		}
-		return out;
-	}
-
-	/**
-	 * The moves of the spots between two results of the same frames, in frame order, each in units of its
-	 * {@link GroupFit#settled tolerance}; NaN for a spot whose centre is not the fit's own. A spot's partner before is
-	 * the one at its place in the list where the frame's spots are the same in number and that one lies within its
-	 * particle's size; otherwise (a detection by the image added or removed particles as the profile changed, as many
-	 * as it added or not) the nearest spot before, and a spot with none within its particle's size (a particle
-	 * added) has NaN: the others' moves say whether the frame settled.
-	 */
-	static double[] moves(final List<FrameResult> before, final List<FrameResult> after) {
-		int n = 0;
-		for (final FrameResult r : after)
-			n += r.spots().size();
-		final double[] moves = new double[n];
-		int i = 0;
-		for (int t = 0; t < before.size(); t++) {
-			final List<Localization> a = before.get(t).spots(), b = after.get(t).spots();
-			final boolean same = a.size() == b.size();
-			for (int k = 0; k < b.size(); k++, i++) {
-				final Localization now = b.get(k), then = same && near(a.get(k), now) ? a.get(k) : nearest(a, now);
-				moves[i] = fitted(now) && then != null ? Math.hypot(then.x() - now.x(), then.y() - now.y()) / GroupFit
-					.settled(now.sigmaX(), now.sigmaY()) : Double.NaN;
-			}
-		}
-		return moves;
-	}
-
-	/** @return whether {@code then} lies within {@code now}'s radius (at least a pixel) of it */
-	private static boolean near(final Localization then, final Localization now) {
-		return Math.hypot(then.x() - now.x(), then.y() - now.y()) < Math.max(1, now.radius());
-	}
-
-	/** @return the spot of {@code spots} nearest to {@code l} within {@code l}'s radius, or null */
-	private static Localization nearest(final List<Localization> spots, final Localization l) {
-		Localization best = null;
-		double d = Math.max(1, l.radius());
-		for (final Localization s : spots) {
-			final double e = Math.hypot(s.x() - l.x(), s.y() - l.y());
-			if (e < d) {
-				d = e;
-				best = s;
-			}
-		}
-		return best;
-	}
-
-	/**
-	 * Whether a spot's centre is the fit's own: not one kept from the first pass because the fit could not be made
-	 * ({@code FELL_BACK}), nor a particle left out of the model; only those take part in the profile's fixed point
-	 * (the spot in the newer result: the older may be the iterative pass's).
-	 */
-	private static boolean fitted(final Localization l) {
-		return !l.has(Flag.FELL_BACK) && !l.has(Flag.MERGED) && !l.has(Flag.DEGENERATE);
 	}
 
 	/** Frames done over frames to do, across the passes of one run. */

@@ -216,7 +216,7 @@ class StackTrackerTest {
 		final List<Localization> before = List.of(spot(10, 10), spot(40, 10), spot(70, 10));
 		// the particle at (40, 10) removed, one at (100, 10) added, the others moved by 0.01 px
 		final List<Localization> after = List.of(spot(10.01, 10), spot(70.01, 10), spot(100, 10));
-		final double[] moves = StackTracker.moves(List.of(result(before)), List.of(result(after)));
+		final double[] moves = RoundResults.moves(List.of(result(before)), List.of(result(after)));
 		final double tolerance = io.github.contacttracker.core.fit.GroupFit.settled(0.02, 0.02);
 		assertEquals(0.01 / tolerance, moves[0], 1e-9);
 		assertEquals(0.01 / tolerance, moves[1], 1e-9);
