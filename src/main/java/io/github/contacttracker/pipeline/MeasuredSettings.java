@@ -160,7 +160,7 @@ public final class MeasuredSettings {
 			final Seen frame = new Seen(seen);
 			final boolean otherContrast = autoSeesOtherContrast(v, frame);
 			if (imageCanTake(v) && !(auto(v) && (thresholdGiven && rOutGiven || otherContrast))) return byImage(name,
-				frame, v, thresholdGiven, rOutGiven, said, e);
+				frame, v, thresholdGiven, rOutGiven, said, false, e);
 			if (thresholdGiven && rOutGiven) return new Result(settings, "contact-tracker: " + name + ": the diameter " +
 				"could not be measured (" + InvalidInputException.oneLine(e.getMessage()) + "); tracked without it (give --diameter)");
 			throw new InvalidInputException("cannot measure " + (thresholdGiven ? "" : "--threshold ") + (thresholdGiven ||
@@ -195,8 +195,8 @@ public final class MeasuredSettings {
 						fallen = fallen.with(TrackingSettings.R_OUT, r.suggestedROut());
 						kept.append(" --r-out ").append(optionValue(r.suggestedROut()));
 					}
-					return byImage(name, frame, fallen, false, rOutGiven || rim, kept, new InvalidInputException(
-						"its threshold " + optionValue(t) + " lies " + side + " every pixel"));
+					return byImage(name, frame, fallen, false, rOutGiven || rim, kept, rim && (!diameter || !rOutGiven),
+						new InvalidInputException("its threshold " + optionValue(t) + " lies " + side + " every pixel"));
 				}
 				throw new InvalidInputException("cannot measure --threshold on the first frame of " + name + ": the " +
 					"helper's " + optionValue(t) + " lies " + side + " its every pixel (" + optionValue(above ? range[1]
@@ -308,11 +308,14 @@ public final class MeasuredSettings {
 	 * diameter (a particle's image reaches about a radius beyond its edge), or less where the particles are packed
 	 * closer ({@link #SPACED}), all said in the notice.
 	 *
+	 * @param rimKept whether {@code said} holds the helper's rim diameter or r_out, kept where only its threshold lies
+	 *        outside the frame's range: the notice then says what the helper measured, and what it did not
 	 * @throws InvalidInputException where the frame holds no blob to measure the diameter on
 	 */
 	@SuppressWarnings({ "rawtypes", "unchecked" })
 	private static Result byImage(final String name, final Seen seen, final SettingValues given,
-		final boolean thresholdGiven, final boolean rOutGiven, final StringBuilder said, final InvalidInputException why)
+		final boolean thresholdGiven, final boolean rOutGiven, final StringBuilder said, final boolean rimKept,
+		final InvalidInputException why)
 	{
 		SettingValues v = given;
 		if (!v.get(TrackingSettings.DETECTION).equals(TrackingSettings.IMAGE)) { // auto: no threshold to choose by
@@ -338,9 +341,9 @@ public final class MeasuredSettings {
 				v.diameter())));
 			said.append(" --r-out ").append(optionValue(v.get(TrackingSettings.R_OUT)));
 		}
-		return new Result(v, "contact-tracker: " + name + ": the profile helper could not measure (" +
-			InvalidInputException.oneLine(why.getMessage()) + "); tracked by the particles' image:" + said +
-			" (given values win)");
+		return new Result(v, "contact-tracker: " + name + ": the profile helper " + (rimKept ? "measured the particles' " +
+			"rim but no threshold (" : "could not measure (") + InvalidInputException.oneLine(why.getMessage()) +
+			"); tracked by the particles' image:" + said + " (given values win)");
 	}
 
 	/**

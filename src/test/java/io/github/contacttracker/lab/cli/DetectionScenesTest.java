@@ -24,11 +24,17 @@ package io.github.contacttracker.lab.cli;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.util.Set;
+
 import org.junit.jupiter.api.Test;
 
 import io.github.contacttracker.lab.eval.DetectionStudy;
 import io.github.contacttracker.lab.sim.DetectionScene;
 import io.github.contacttracker.lab.sim.DetectionScenes;
+import io.github.contacttracker.pipeline.MeasuredSettings;
+import io.github.contacttracker.settings.SettingValues;
+import net.imglib2.RandomAccessibleInterval;
+import net.imglib2.type.numeric.RealType;
 
 /**
  * Detection as a new user meets it, on the detection study's scenes, small and few: what the tracker meets today,
@@ -156,5 +162,25 @@ class DetectionScenesTest {
 		assertTrue(all.unflaggedShare() >= 0.7, "unflagged " + all.unflaggedShare() + ", mostly " + all.mainFlag());
 		assertTrue(all.worstBias() < 0.01, "bias " + all.worstBias() + " px");
 		assertTrue(all.spread() < 0.05, "spread " + all.spread() + " px");
+	}
+
+	/**
+	 * A pair that stands apart in the first frame, in a movie whose threshold the helper cannot measure (it lies above
+	 * every pixel where the pair overlaps and clips): the helper's rim diameter is kept, and the notice says the helper
+	 * measured the rim, not that it measured nothing.
+	 */
+	@Test
+	void theNoticeSaysWhatTheHelperMeasuredWhereItsRimIsKept() {
+		final DetectionScene scene = DetectionScenes.pairSweep(40, 1000);
+		final MeasuredSettings.Result m = MeasuredSettings.of("pair.tif", t -> frame(scene, t), scene.frames().size(),
+			true, SettingValues.defaults(), Set.of());
+		assertTrue(m.notice().contains(": the profile helper measured the particles' rim but no threshold (its " +
+			"threshold "), m.notice());
+		assertTrue(Math.abs(m.settings().diameter() - 12) < 0.05 * 12, m.notice());
+	}
+
+	@SuppressWarnings({ "unchecked", "rawtypes" })
+	private static RandomAccessibleInterval<? extends RealType<?>> frame(final DetectionScene scene, final int t) {
+		return (RandomAccessibleInterval) scene.frames().get(t);
 	}
 }
