@@ -87,9 +87,10 @@ public final class GroupFit {
 	 * imglib2 idiom) and the result does not depend on their number or order.
 	 *
 	 * @param profile each particle's profile (its kind's), same order as the particles
-	 * @return the new estimates (the others unchanged; the members of a group that could not be fitted, too few
-	 *         pixels left or a singular system, keep theirs flagged {@code FELL_BACK}) and the largest number of
-	 *         iterations a group needed, negative if a group hit the limit
+	 * @return the new estimates, each with the iterations of its group's fit or, fitted member by member, its own over
+	 *         the sweeps (the others unchanged; the members of a
+	 *         group that could not be fitted, too few pixels left or a singular system, keep theirs flagged
+	 *         {@code FELL_BACK}) and the largest number of iterations a group needed, negative if a group hit the limit
 	 */
 	static ProfileRefinement.Refined refine(final Plane plane, final Particle[] particles, final Estimate[] start,
 		final EmpiricalProfile[] profile, final double groupDistance, final double window, final Censoring censoring)
@@ -118,13 +119,19 @@ public final class GroupFit {
 		for (int g = 0; g < groups.size(); g++) {
 			final int[] group = groups.get(g);
 			final Fitted f = fitted.get(g);
-			for (int q = 0; q < group.length; q++)
-				e[group[q]] = f.members()[q];
 			final int it = f.iterations();
+			for (int q = 0; q < group.length; q++) // (a group fitted member by member: each member's own, see MemberSweeps)
+				e[group[q]] = group.length <= MAX_JOINT ? solvedIn(f.members()[q], Math.abs(it)) : f.members()[q];
 			if (it < 0) worst = Math.min(worst, it);
 			else if (worst >= 0) worst = Math.max(worst, it);
 		}
 		return new ProfileRefinement.Refined(e, worst);
+	}
+
+	/** @return {@code e}, its iterations those of its group's fit (its {@code ITERATIONS}: the solves behind it) */
+	static Estimate solvedIn(final Estimate e, final int iterations) {
+		return new Estimate(e.x(), e.y(), e.flags(), e.secondArea(), iterations, e.solve(), e.sigmaX(), e.sigmaY(), e
+			.amplitude(), e.scale());
 	}
 
 	/** A group's fitted members (in the group's order) and the iterations its fit took ({@link #refine}). */

@@ -86,6 +86,7 @@ final class MemberSweeps {
 		// counted in fits: a member is fitted again only when a neighbour moved after its own latest fit (block
 		// Gauss-Seidel: a move before it, it has seen)
 		final long[] fittedAt = new long[n], movedAt = new long[n];
+		final int[] solves = new int[n]; // each member's iterations over the sweeps: the solves behind its centre
 		long clock = 0;
 		final Estimate[] start = new Estimate[n];
 		for (int q = 0; q < n; q++)
@@ -116,6 +117,7 @@ final class MemberSweeps {
 					: settled(before), GroupFit.MAX_SELECTIONS, true);
 				final int it = GroupFit.fitGroup(plane, particles, e, new int[] { k }, profile, memberWindow[q],
 					censoring, budget, kept[q], passes);
+				solves[q] += Math.abs(it);
 				// a centre that slid away from its particle (onto a neighbour, or off into the background): no fit
 				failed[q] = it == 0 || e[k].distanceTo(start[q]) > MAX_SLIDE * Math.sqrt(particles[k].region().area() /
 					Math.PI);
@@ -142,6 +144,7 @@ final class MemberSweeps {
 		}
 		for (int q = 0; q < n; q++) {
 			final int k = group[q];
+			e[k] = GroupFit.solvedIn(e[k], solves[q]);
 			if (failed[q]) e[k] = e[k].withFlags(e[k].flags() | Flag.FELL_BACK.bit());
 			// out of sweeps: one that would be fitted again, or that the last sweep's fit still moved
 			else if (any && (active[q] || movedAt[q] > sweepStart)) e[k] = e[k].withFlags(e[k].flags() | Flag.NOT_CONVERGED

@@ -166,9 +166,10 @@ public final class ProfileRefinement implements Refinement {
 				censoring);
 			final Estimate[] next = r.estimates();
 			for (int k = 0; k < next.length; k++) {
-				next[k] = new Estimate(next[k].x(), next[k].y(), next[k].flags(), next[k].secondArea(), Math.abs(r
-					.iterations()),
-					next[k].solve(), next[k].sigmaX(), next[k].sigmaY(), next[k].amplitude(), next[k].scale());
+				// (a group's fit: its own iterations; the deblender's: the frame's)
+				next[k] = new Estimate(next[k].x(), next[k].y(), next[k].flags(), next[k].secondArea(), deblend ? Math.abs(r
+					.iterations()) : next[k].iterations(), next[k].solve(), next[k].sigmaX(), next[k].sigmaY(), next[k]
+						.amplitude(), next[k].scale());
 			}
 			// (each round: the next profile leaves out the pixels of particles cut by the edge)
 			flagCutByTheBorder(plane, next, of);
