@@ -159,7 +159,6 @@ public final class ModelSelection {
 		final double least = ImageDetection.RELATIVE * seeds.typicalHeight();
 		final ImageDetection.Scale scale = ImageDetection.Scale.of(d);
 		final float[][] cache = new float[1][];
-		final float[] bpData = dataBp(plane, scale, data, w, h, cache);
 		final double strong = ProfileMatch.STRONG * ProfileMatch.typicalMatching(seeds, data, w, h, given, noise);
 		// with the profiles known, no seed is fitted where the profile matches it at less than a faint particle's
 		// amplitude (a textured background's bumps: fitted, they would cost more than the particles). Whether a weak
@@ -196,7 +195,7 @@ public final class ModelSelection {
 			// remove
 			final double[] match = new double[e.length];
 			for (int k = 0; k < e.length; k++)
-				match[k] = !ProfileMatch.weak(bpData, w, h, e[k].x(), e[k].y(), strong) ? 1 : drawn(e[k]) ? ProfileMatch
+				match[k] = !ProfileMatch.weak(dataBp(plane, scale, data, w, h, cache), w, h, e[k].x(), e[k].y(), strong) ? 1 : drawn(e[k]) ? ProfileMatch
 					.matchedOwn(residual, w, h, e[k], of[k], noise) : ProfileMatch.matched(data, w, h, e[k].x(), e[k].y(),
 						of[k], noise);
 			final boolean[] keep = new boolean[e.length];

@@ -121,17 +121,11 @@ public final class GroupFit {
 			final Fitted f = fitted.get(g);
 			final int it = f.iterations();
 			for (int q = 0; q < group.length; q++) // (a group fitted member by member: each member's own, see MemberSweeps)
-				e[group[q]] = group.length <= MAX_JOINT ? solvedIn(f.members()[q], Math.abs(it)) : f.members()[q];
+				e[group[q]] = group.length <= MAX_JOINT ? f.members()[q].withIterations(Math.abs(it)) : f.members()[q];
 			if (it < 0) worst = Math.min(worst, it);
 			else if (worst >= 0) worst = Math.max(worst, it);
 		}
 		return new ProfileRefinement.Refined(e, worst);
-	}
-
-	/** @return {@code e}, its iterations those of its group's fit (its {@code ITERATIONS}: the solves behind it) */
-	static Estimate solvedIn(final Estimate e, final int iterations) {
-		return new Estimate(e.x(), e.y(), e.flags(), e.secondArea(), iterations, e.solve(), e.sigmaX(), e.sigmaY(), e
-			.amplitude(), e.scale());
 	}
 
 	/** A group's fitted members (in the group's order) and the iterations its fit took ({@link #refine}). */

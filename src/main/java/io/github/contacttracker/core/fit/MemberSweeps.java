@@ -144,7 +144,7 @@ final class MemberSweeps {
 		}
 		for (int q = 0; q < n; q++) {
 			final int k = group[q];
-			e[k] = GroupFit.solvedIn(e[k], solves[q]);
+			e[k] = e[k].withIterations(solves[q]);
 			if (failed[q]) e[k] = e[k].withFlags(e[k].flags() | Flag.FELL_BACK.bit());
 			// out of sweeps: one that would be fitted again, or that the last sweep's fit still moved
 			else if (any && (active[q] || movedAt[q] > sweepStart)) e[k] = e[k].withFlags(e[k].flags() | Flag.NOT_CONVERGED

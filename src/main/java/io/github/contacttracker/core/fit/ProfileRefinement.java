@@ -167,9 +167,7 @@ public final class ProfileRefinement implements Refinement {
 			final Estimate[] next = r.estimates();
 			for (int k = 0; k < next.length; k++) {
 				// (a group's fit: its own iterations; the deblender's: the frame's)
-				next[k] = new Estimate(next[k].x(), next[k].y(), next[k].flags(), next[k].secondArea(), deblend ? Math.abs(r
-					.iterations()) : next[k].iterations(), next[k].solve(), next[k].sigmaX(), next[k].sigmaY(), next[k]
-						.amplitude(), next[k].scale());
+				if (deblend) next[k] = next[k].withIterations(Math.abs(r.iterations()));
 			}
 			// (each round: the next profile leaves out the pixels of particles cut by the edge)
 			flagCutByTheBorder(plane, next, of);

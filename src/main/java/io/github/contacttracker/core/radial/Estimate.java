@@ -57,7 +57,7 @@ public record Estimate(double x, double y, int flags, int secondArea, int iterat
 		return new Estimate(x, y, newFlags, secondArea, iterations, solve, sigmaX, sigmaY, amplitude, scale);
 	}
 
-	Estimate withIterations(final int newIterations) {
+	public Estimate withIterations(final int newIterations) {
 		return new Estimate(x, y, flags, secondArea, newIterations, solve, sigmaX, sigmaY, amplitude, scale);
 	}
 

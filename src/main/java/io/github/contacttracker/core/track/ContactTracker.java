@@ -139,8 +139,8 @@ public final class ContactTracker {
 
 	/**
 	 * As {@link #analyse(Plane, int, boolean, KindProfiles)}; where the image detects and the profiles are given,
-	 * {@code particles} (an earlier result's spots, in the frame's coordinates; null: none) are refitted, and those
-	 * the fit does not need removed, instead of found again ({@link ModelSelection#refit}).
+	 * {@code particles} (an earlier result's spots, in the frame's coordinates; null: none) are refitted, none added
+	 * or removed, instead of found again ({@link ModelSelection#refit}).
 	 */
 	FrameResult analyse(final Plane plane, final int frameIndex, final boolean keepRegions,
 		final KindProfiles profile, final List<Localization> particles)

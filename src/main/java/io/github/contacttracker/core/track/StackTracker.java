@@ -405,7 +405,6 @@ public final class StackTracker {
 		// profile of the last round is the fixed point's (to within the tolerance), and the sample frames were just
 		// refined with that very profile: without regions to keep, their results are the final ones. Cycling: so
 		// is the profile, but a few centres of the sample frames went back and forth between two fits; they are flagged.
-		if (verdict == Rounds.Verdict.CYCLING) round = RoundResults.stillMovingFlagged(round, rounds);
 		final boolean settled = verdict == Rounds.Verdict.SETTLED || verdict == Rounds.Verdict.CYCLING;
 		// Where the last rounds refitted the particles the first ones found, those particles were decided on an early
 		// profile: the sample frames are found once more with the last one, as every other frame is (a pair pushed into
@@ -417,6 +416,7 @@ public final class StackTracker {
 			round = verdict == Rounds.Verdict.CYCLING ? RoundResults.carried(round, RoundResults.stillMoving(round,
 				rounds), found, params.diameter() / 4) : found;
 		}
+		else if (verdict == Rounds.Verdict.CYCLING) round = RoundResults.stillMovingFlagged(round, rounds);
 		return new ProfileStage(sample, profiles(used), settled, round, choice, tracker.parameters().detectsByImage()
 			? Misfit.of(round) : null);
 	}
