@@ -156,7 +156,7 @@ public class FrontEndBenchmark {
 
 	private long core() {
 		@SuppressWarnings({ "rawtypes", "unchecked" })
-		final java.util.List frames = io.github.contacttracker.io.ImagePlusFrames.of(grey, 1).frames();
+		final java.util.List frames = io.github.contacttracker.ij.ImagePlusFrames.of(grey, 1).frames();
 		@SuppressWarnings("unchecked")
 		final java.util.List<io.github.contacttracker.core.track.FrameResult> results = io.github.contacttracker.core.track.StackTracker
 			.withThreads(threads, () -> new io.github.contacttracker.core.track.StackTracker(parameters()).track(frames,

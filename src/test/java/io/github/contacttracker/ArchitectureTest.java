@@ -66,19 +66,21 @@ class ArchitectureTest {
 		Map.entry("advisor", Set.of("core")), //
 		Map.entry("potential", Set.of("core")), //
 		Map.entry("settings", Set.of("core")), //
-		// io reads and writes file formats: not the helper's words, nor the potential's tables and plots
+		// io reads and writes file formats: not the helper's words, nor the potential's tables and plots, nor ImageJ
+		// glue (ioHoldsNoImageJGlue)
 		Map.entry("io", Set.of("core", "settings")), //
-		// ImageJ glue shared by front ends: the image on display, frames as an ImageJ time series
+		// ImageJ glue shared by front ends: an ImageJ image's frames as ImgLib2 planes, the image on display, frames
+		// as an ImageJ time series
 		Map.entry("ij", Set.of("core", "io")), //
 		Map.entry("report", Set.of("core", "advisor", "potential", "io", "ij")), //
 		Map.entry("plot", Set.of("core", "advisor", "potential", "io")), //
 		Map.entry("ui", Set.of()), //
-		Map.entry("pipeline", Set.of("core", "advisor", "io", "settings", "report")), //
-		Map.entry("cli", Set.of("core", "advisor", "potential", "settings", "io", "report", "plot", "pipeline")), //
+		Map.entry("pipeline", Set.of("core", "advisor", "io", "ij", "settings", "report")), //
+		Map.entry("cli", Set.of("core", "advisor", "potential", "settings", "io", "ij", "report", "plot", "pipeline")), //
 		Map.entry("command", Set.of("core", "advisor", "potential", "settings", "io", "ij", "report", "plot", "ui",
 			"pipeline")), //
 		Map.entry("trackmate", Set.of("core", "settings", "io", "report", "ui", "pipeline")), //
-		Map.entry("spark", Set.of("core", "potential", "settings", "io", "report", "pipeline")), //
+		Map.entry("spark", Set.of("core", "potential", "settings", "io", "ij", "report", "pipeline")), //
 		// the lab: the simulator, the studies and the research subcommands; nothing outside it uses it
 		Map.entry("lab.sim", Set.of("core")), //
 		Map.entry("lab.eval", Set.of("core", "lab.sim", "potential")), //
@@ -119,6 +121,33 @@ class ArchitectureTest {
 		}
 		assertEquals(ALLOWED.keySet(), seen, "packages");
 		assertTrue(violations.isEmpty(), String.join("\n", violations));
+	}
+
+	/** ImageJ 1's types, named in an import or in full. */
+	private static final Pattern IMAGEJ_TYPE = Pattern.compile("(?<![\\w.])ij\\.[a-zA-Z]");
+
+	/** ImgLib2's types, named in an import or in full. */
+	private static final Pattern IMGLIB2_TYPE = Pattern.compile("(?<![\\w.])net\\.imglib2\\.");
+
+	/**
+	 * {@code io} reads and writes files: where it uses ImageJ, it is to read a movie into an ImageJ image or to save
+	 * one. Turning an ImageJ image into ImgLib2 frames or back is ImageJ glue that the front ends share, and stands
+	 * in {@code ij} ({@code ImagePlusFrames}, {@code TimeSeries}), which uses {@code io}, never the other way round.
+	 * So no file of {@code io} uses both ImageJ's and ImgLib2's types.
+	 */
+	@Test
+	void ioHoldsNoImageJGlue() throws IOException {
+		final Path io = Path.of(System.getProperty("basedir", ".")).resolve("src/main/java/io/github/contacttracker/io");
+		final List<String> glue = new ArrayList<>();
+		try (Stream<Path> files = Files.list(io)) {
+			for (final Path f : (Iterable<Path>) files.filter(p -> p.toString().endsWith(".java")).sorted()::iterator) {
+				final String text = Files.readString(f);
+				if (IMAGEJ_TYPE.matcher(text).find() && IMGLIB2_TYPE.matcher(text).find()) glue.add(f.getFileName()
+					.toString());
+			}
+		}
+		assertTrue(glue.isEmpty(), "ImageJ glue in io (ImageJ images as ImgLib2 frames, or back: it belongs in ij): " +
+			glue);
 	}
 
 	/**

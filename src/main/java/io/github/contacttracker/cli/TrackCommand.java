@@ -36,8 +36,8 @@ import java.util.Map;
 
 import ij.ImagePlus;
 import io.github.contacttracker.core.InvalidInputException;
+import io.github.contacttracker.ij.ImagePlusFrames;
 import io.github.contacttracker.io.ImageFiles;
-import io.github.contacttracker.io.ImagePlusFrames;
 import io.github.contacttracker.io.ImageSource;
 import io.github.contacttracker.io.SpotCsvWriter;
 import io.github.contacttracker.pipeline.FrameSource;

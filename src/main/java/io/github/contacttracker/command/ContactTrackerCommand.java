@@ -22,6 +22,7 @@
 package io.github.contacttracker.command;
 
 import io.github.contacttracker.core.InvalidInputException;
+import io.github.contacttracker.ij.ImagePlusFrames;
 import io.github.contacttracker.ij.ShownImage;
 import io.github.contacttracker.pipeline.FrameSource;
 import io.github.contacttracker.pipeline.MeasuredSettings;
@@ -74,7 +75,6 @@ import io.github.contacttracker.core.Localization;
 import io.github.contacttracker.core.Method;
 import io.github.contacttracker.core.TrackerParameters;
 import io.github.contacttracker.core.track.FrameResult;
-import io.github.contacttracker.io.ImagePlusFrames;
 import io.github.contacttracker.io.ImageSource;
 import io.github.contacttracker.report.ShownFrameProfile;
 import io.github.contacttracker.ui.WindowsBeside;

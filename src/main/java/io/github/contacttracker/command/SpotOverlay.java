@@ -41,6 +41,7 @@ import io.github.contacttracker.core.Flag;
 import io.github.contacttracker.core.Localization;
 import io.github.contacttracker.core.image.Region;
 import io.github.contacttracker.core.track.FrameResult;
+import io.github.contacttracker.ij.ImagePlusFrames;
 import io.github.contacttracker.io.OverlayPng;
 import io.github.contacttracker.report.ShownFrameProfile;
 import io.github.contacttracker.pipeline.KindRadii;

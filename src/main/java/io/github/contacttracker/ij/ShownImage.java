@@ -37,7 +37,7 @@ public final class ShownImage {
 	private ShownImage() {}
 
 	/**
-	 * The frame on display, as {@code io.ImagePlusFrames} counts frames: the time point shown, or the slice shown of
+	 * The frame on display, as {@link ImagePlusFrames} counts frames: the time point shown, or the slice shown of
 	 * a plain stack (whose slices are frames). What Fiji's preview and the profile helper's buttons work on.
 	 *
 	 * @param imp the image

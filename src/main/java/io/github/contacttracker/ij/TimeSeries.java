@@ -35,7 +35,7 @@ import net.imglib2.img.basictypeaccess.array.ShortArray;
 /**
  * ImgLib2 frames as an ImageJ time series, sharing their pixel arrays: the way simulated movies become an
  * {@link ImagePlus} to save as TIFF ({@code io.ImageFiles.saveTiff}) or to hand to a Fiji command. The reverse of
- * {@code io.ImagePlusFrames}.
+ * {@link ImagePlusFrames}.
  */
 public final class TimeSeries {
 

@@ -36,8 +36,8 @@ import ij.process.ImageProcessor;
  * A folder of frames (TIFF, PNG or JPEG, one 2D image per file) as a virtual stack, in natural order
  * ({@code frame2} before {@code frame10}); each file is opened when its frame is needed. Every frame must have the
  * first one's size and bit depth. A frame stored in colour whose red, green and blue are equal is grey (JPEG codes
- * grey pictures in colour too); a folder of colour frames is a colour movie, of which one channel is tracked (see
- * {@link ImagePlusFrames}).
+ * grey pictures in colour too: {@link RgbPixels#grey}); a folder of colour frames is a colour movie, of which one
+ * channel is tracked.
  */
 final class FolderMovie {
 
@@ -86,7 +86,7 @@ final class FolderMovie {
 		// a grey picture stored in colour (JPEG often codes grey in colour) is grey, in a folder of grey frames or
 		// first: exactly its grey levels
 		if (ip.getBitDepth() == 24 && (w == 0 || bits == 8)) {
-			final ImageProcessor grey = ImagePlusFrames.grey(ip);
+			final ImageProcessor grey = RgbPixels.grey(ip);
 			if (grey != null) ip = grey;
 		}
 		if (w > 0 && (ip.getWidth() != w || ip.getHeight() != h || ip.getBitDepth() != bits))

@@ -48,8 +48,7 @@ public final class ImageFiles {
 	 * <ul>
 	 * <li>TIFF, multi-page TIFF, ImageJ hyperstacks, BigTIFF, OME-TIFF, 64-bit float TIFF ({@link TiffMovie});</li>
 	 * <li>AVI: uncompressed, MJPEG or PNG-coded, what ImageJ 1's {@code AVI_Reader} reads; colour frames stay RGB
-	 * (MJPEG codes even grey movies in colour: {@link ImagePlusFrames} tracks those as grey, and one channel of a
-	 * colour movie);</li>
+	 * (MJPEG codes even grey movies in colour: {@link RgbPixels} tells those from colour ones);</li>
 	 * <li>a folder of TIFF, PNG or JPEG frames, one image per file, in natural order ({@link FolderMovie});</li>
 	 * <li>any other single image ImageJ 1 opens (PNG, JPEG, GIF, BMP, ...), read whole.</li>
 	 * </ul>
@@ -145,6 +144,24 @@ public final class ImageFiles {
 		catch (final RuntimeException e) {
 			throw new IOException("cannot read " + name + " as an image: " + e, e);
 		}
+	}
+
+	/**
+	 * @param stack the planes of an image these readers opened (or any other)
+	 * @return whether its planes may be read from several threads at once: each read of a TIFF plane opens the file
+	 *         itself; ImageJ's virtual stacks (its AVI reader shares one file handle) and those of others are read
+	 *         one at a time
+	 */
+	public static boolean readsConcurrently(final ImageStack stack) {
+		return stack instanceof FileStack files && files.readsConcurrently();
+	}
+
+	/**
+	 * @return of an image whose channels are a TIFF file's samples, what they are and, for a user who wrote frames
+	 *         so, how to write them as frames (said when a run does not choose a channel); null for any other image
+	 */
+	public static String samples(final ImagePlus imp) {
+		return imp.getProperty(TiffMovie.SAMPLES) instanceof String samples ? samples : null;
 	}
 
 	/** Saves {@code imp} as a TIFF (stack), atomically: nothing appears at {@code file} if saving fails. */

@@ -36,7 +36,7 @@ import io.github.contacttracker.core.detect.ParticleScale;
 import io.github.contacttracker.core.image.NoiseEstimate;
 import io.github.contacttracker.core.image.Plane;
 import io.github.contacttracker.core.image.Inversion;
-import io.github.contacttracker.io.ImagePlusFrames;
+import io.github.contacttracker.ij.ImagePlusFrames;
 import io.github.contacttracker.settings.Setting;
 import io.github.contacttracker.settings.SettingValues;
 import io.github.contacttracker.settings.TrackingSettings;

@@ -24,8 +24,8 @@ package io.github.contacttracker.pipeline;
 import java.lang.reflect.Array;
 
 import io.github.contacttracker.core.InvalidInputException;
+import io.github.contacttracker.ij.ImagePlusFrames;
 import io.github.contacttracker.io.Calibration;
-import io.github.contacttracker.io.ImagePlusFrames;
 import net.imglib2.RandomAccessibleInterval;
 import net.imglib2.img.array.ArrayImgs;
 import net.imglib2.type.numeric.RealType;

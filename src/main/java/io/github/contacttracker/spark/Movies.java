@@ -27,8 +27,8 @@ import java.util.LinkedHashMap;
 import java.util.Map;
 
 import ij.ImagePlus;
+import io.github.contacttracker.ij.ImagePlusFrames;
 import io.github.contacttracker.io.ImageFiles;
-import io.github.contacttracker.io.ImagePlusFrames;
 
 /**
  * The movies open in this JVM (an executor runs many tasks of one movie): opening a TIFF walks its whole chain of

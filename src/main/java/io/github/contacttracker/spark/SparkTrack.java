@@ -54,7 +54,7 @@ import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.core.Localization;
 import io.github.contacttracker.core.track.FrameResult;
 import io.github.contacttracker.core.track.StackTracker;
-import io.github.contacttracker.io.ImagePlusFrames;
+import io.github.contacttracker.ij.ImagePlusFrames;
 import io.github.contacttracker.io.ImageSource;
 import io.github.contacttracker.io.SpotColumn;
 import io.github.contacttracker.pipeline.FrameSource;

@@ -49,7 +49,7 @@ import io.github.contacttracker.core.image.NoiseEstimate;
 import io.github.contacttracker.core.image.Plane;
 import io.github.contacttracker.core.track.FrameResult;
 import io.github.contacttracker.core.track.StackTracker;
-import io.github.contacttracker.io.ImagePlusFrames;
+import io.github.contacttracker.ij.ImagePlusFrames;
 import io.github.contacttracker.lab.sim.GaussianBesselProfile;
 import io.github.contacttracker.lab.sim.ImageSimulator;
 import io.github.contacttracker.lab.sim.NoiseFreeImage;

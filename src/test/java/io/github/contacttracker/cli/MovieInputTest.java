@@ -174,7 +174,7 @@ class MovieInputTest {
 		assertTrack(spots, FRAMES, 0.02);
 		assertEquals(csv(track(plain, "120")), csv(spots));
 		// frame 1, read to see that it is grey, is kept, not read again
-		final io.github.contacttracker.io.ImagePlusFrames frames = io.github.contacttracker.io.ImagePlusFrames.of(
+		final io.github.contacttracker.ij.ImagePlusFrames frames = io.github.contacttracker.ij.ImagePlusFrames.of(
 			io.github.contacttracker.io.ImageFiles.open(colour), 0);
 		assertEquals(1, frames.reads(), "read to see its colours");
 		frames.frame(0);
@@ -351,7 +351,7 @@ class MovieInputTest {
 		IJ.saveAsTiff(movie8(), tif.toString());
 		final ImagePlus imp = io.github.contacttracker.io.ImageFiles.open(tif);
 		assertTrue(imp.getStack().isVirtual());
-		final io.github.contacttracker.io.ImagePlusFrames frames = io.github.contacttracker.io.ImagePlusFrames.of(imp,
+		final io.github.contacttracker.ij.ImagePlusFrames frames = io.github.contacttracker.ij.ImagePlusFrames.of(imp,
 			0);
 		assertEquals(FRAMES, frames.frameCount());
 		assertEquals(0, frames.reads(), "nothing is read before it is asked for");

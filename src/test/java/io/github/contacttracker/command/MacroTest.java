@@ -58,8 +58,8 @@ import io.github.contacttracker.core.Connectivity;
 import io.github.contacttracker.core.Method;
 import io.github.contacttracker.core.TrackerParameters;
 import io.github.contacttracker.core.track.StackTracker;
+import io.github.contacttracker.ij.ImagePlusFrames;
 import io.github.contacttracker.io.ImageFiles;
-import io.github.contacttracker.io.ImagePlusFrames;
 import io.github.contacttracker.io.SpotCsvWriter;
 import io.github.contacttracker.settings.TrackingSettings;
 

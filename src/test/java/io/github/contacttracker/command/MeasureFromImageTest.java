@@ -42,9 +42,9 @@ import java.util.SplittableRandom;
 
 import ij.ImagePlus;
 import io.github.contacttracker.advisor.ProfileAnalysis;
+import io.github.contacttracker.ij.ImagePlusFrames;
 import io.github.contacttracker.ij.ShownImage;
 import io.github.contacttracker.io.Calibration;
-import io.github.contacttracker.io.ImagePlusFrames;
 import io.github.contacttracker.io.ProfileScenes;
 import io.github.contacttracker.ij.TimeSeries;
 import io.github.contacttracker.lab.sim.ImageSimulator;

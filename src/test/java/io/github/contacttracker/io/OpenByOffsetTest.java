@@ -41,6 +41,7 @@ import ij.io.FileSaver;
 import ij.process.FloatProcessor;
 import net.imglib2.RandomAccessibleInterval;
 import net.imglib2.type.numeric.RealType;
+import io.github.contacttracker.ij.ImagePlusFrames;
 
 /**
  * Reading a TIFF by offset (what the Spark job does through Hadoop) gives the very frames and calibration that

@@ -36,6 +36,7 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 
 import io.github.contacttracker.core.InvalidInputException;
+import io.github.contacttracker.ij.ImagePlusFrames;
 import ij.ImagePlus;
 
 /**

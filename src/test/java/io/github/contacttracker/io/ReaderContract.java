@@ -35,6 +35,7 @@ import java.nio.file.Path;
 
 import ij.ImagePlus;
 import io.github.contacttracker.core.InvalidInputException;
+import io.github.contacttracker.ij.ImagePlusFrames;
 
 /**
  * What every reader promises for any file, however broken or hostile: {@link ImageFiles#open} and the reading of

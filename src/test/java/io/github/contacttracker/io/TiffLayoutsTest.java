@@ -46,6 +46,7 @@ import org.junit.jupiter.params.provider.CsvSource;
 
 import ij.ImagePlus;
 import io.github.contacttracker.core.InvalidInputException;
+import io.github.contacttracker.ij.ImagePlusFrames;
 
 /**
  * The TIFF layouts of grey data that TIFF 6 allows beyond one sample in uncompressed strips: several samples per

@@ -38,8 +38,8 @@ import org.junit.jupiter.api.io.TempDir;
 
 import ij.ImagePlus;
 import ij.ImageStack;
+import io.github.contacttracker.ij.ImagePlusFrames;
 import io.github.contacttracker.io.ImageFiles;
-import io.github.contacttracker.io.ImagePlusFrames;
 import io.github.contacttracker.io.TiffLayoutsTest;
 import net.imglib2.RandomAccessibleInterval;
 import net.imglib2.type.numeric.RealType;

@@ -19,7 +19,7 @@
  * <http://www.gnu.org/licenses/gpl-3.0.html>.
  * #L%
  */
-package io.github.contacttracker.io;
+package io.github.contacttracker.ij;
 
 import java.io.UncheckedIOException;
 import java.util.AbstractList;
@@ -32,6 +32,9 @@ import ij.ImageStack;
 import ij.process.ImageProcessor;
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.core.image.Inversion;
+import io.github.contacttracker.io.Calibration;
+import io.github.contacttracker.io.ImageFiles;
+import io.github.contacttracker.io.RgbPixels;
 import net.imglib2.Interval;
 import net.imglib2.RandomAccessibleInterval;
 import net.imglib2.img.array.ArrayImgs;
@@ -143,9 +146,11 @@ public final class ImagePlusFrames {
 		if (channel < 0 || channel > nc)
 			throw new InvalidInputException("channel " + channel + " does not exist: " + name + " has " + nc +
 				" channel" + (nc == 1 ? "" : "s"));
-		if (channel == 0 && nc > 1 && !rgb)
+		if (channel == 0 && nc > 1 && !rgb) {
+			final String samples = ImageFiles.samples(imp);
 			throw new InvalidInputException(name + " has " + nc + " channels: choose one to track (channel = 1.." +
-				nc + ")" + (imp.getProperty(TiffMovie.SAMPLES) instanceof String samples ? "; " + samples : ""));
+				nc + ")" + (samples != null ? "; " + samples : ""));
+		}
 		final int c = rgb ? 1 : Math.max(channel, 1); // an RGB image's colours are in each of its planes
 		final int count = Math.max(nz, nt); // Z slices of a plain stack are frames
 		final int[] index = new int[count];
@@ -157,7 +162,7 @@ public final class ImagePlusFrames {
 		if (rgb && channel == 0) {
 			first = imp.getStack().getProcessor(index[0]);
 			if (first == null) throw new InvalidInputException("cannot read frame 1 of " + name);
-			final double[] spread = colourSpread((int[]) first.getPixels());
+			final double[] spread = RgbPixels.spread((int[]) first.getPixels());
 			if (spread != null) {
 				colour = dominant(spread);
 				colourChoice = name + " has colour frames: tracked in " + (colour == 0 ? "the mean of red, green and " +
@@ -207,57 +212,6 @@ public final class ImagePlusFrames {
 	}
 
 	/**
-	 * @return null when every pixel has red, green and blue equal (a grey image stored in colour), else each
-	 *         component's standard deviation over the frame (grey levels)
-	 */
-	private static double[] colourSpread(final int[] rgb) {
-		boolean grey = true;
-		for (final int p : rgb)
-			if (((p >> 16) & 0xff) != (p & 0xff) || ((p >> 8) & 0xff) != (p & 0xff)) {
-				grey = false;
-				break;
-			}
-		if (grey) return null;
-		final double[] spread = new double[3];
-		for (int c = 0; c < 3; c++) {
-			final int shift = 16 - 8 * c;
-			double sum = 0, sum2 = 0;
-			for (final int p : rgb) {
-				final int v = (p >> shift) & 0xff;
-				sum += v;
-				sum2 += (double) v * v;
-			}
-			final double mean = sum / rgb.length;
-			spread[c] = Math.sqrt(Math.max(0, sum2 / rgb.length - mean * mean));
-		}
-		return spread;
-	}
-
-	/**
-	 * @return an RGB picture whose red, green and blue are equal at every pixel as an 8-bit one of those grey levels;
-	 *         null for any other
-	 */
-	static ImageProcessor grey(final ImageProcessor ip) {
-		if (!(ip.getPixels() instanceof int[] rgb) || colourSpread(rgb) != null) return null;
-		return new ij.process.ByteProcessor(ip.getWidth(), ip.getHeight(), component(rgb, 3));
-	}
-
-	/** @return the RGB pixels' component {@code colour} (1 red, 2 green, 3 blue; 0 the rounded mean of the three) */
-	private static byte[] component(final int[] rgb, final int colour) {
-		final byte[] out = new byte[rgb.length];
-		if (colour == 0) for (int i = 0; i < rgb.length; i++) {
-			final int p = rgb[i];
-			out[i] = (byte) ((((p >> 16) & 0xff) + ((p >> 8) & 0xff) + (p & 0xff) + 1) / 3);
-		}
-		else {
-			final int shift = 24 - 8 * colour;
-			for (int i = 0; i < rgb.length; i++)
-				out[i] = (byte) (rgb[i] >> shift);
-		}
-		return out;
-	}
-
-	/**
 	 * @param t the 0-based frame index
 	 * @return frame {@code t}, 2D, in the image's own values
 	 * @throws InvalidInputException when the frame cannot be read from its file (naming it and the reason)
@@ -268,7 +222,7 @@ public final class ImagePlusFrames {
 		if (!virtual) return wrap(stack.getProcessor(stackIndex[t]));
 		// Planes of our own TIFF reader are read in parallel (each read opens the file itself); other virtual stacks
 		// (ImageJ's AVI reader, a plugin's) one at a time.
-		if (!(stack instanceof FileStack files && files.readsConcurrently())) {
+		if (!ImageFiles.readsConcurrently(stack)) {
 			synchronized (cache) {
 				final RandomAccessibleInterval<? extends RealType<?>> cached = cache.get(t);
 				if (cached != null) return cached;
@@ -328,7 +282,7 @@ public final class ImagePlusFrames {
 		final Object pixels = ip.getPixels();
 		if (pixels instanceof int[] rgb) {
 			if (colour < 0) throw new InvalidInputException("a frame is in colour (RGB), unlike the first");
-			return ArrayImgs.unsignedBytes(component(rgb, colour), width, height);
+			return ArrayImgs.unsignedBytes(RgbPixels.component(rgb, colour), width, height);
 		}
 		if (colour >= 0) throw new InvalidInputException("a frame is grey, unlike the first (RGB)");
 		if (cTable != null) {
@@ -413,7 +367,7 @@ public final class ImagePlusFrames {
 	}
 
 	/**
-	 * @param region the part to keep (the Fiji selection: {@code ij.ShownImage.selection}), or {@code null} for all
+	 * @param region the part to keep (the Fiji selection: {@link ShownImage#selection}), or {@code null} for all
 	 * @return {@code frame} cut to {@code region}, its pixels at their places in the frame (a view)
 	 */
 	@SuppressWarnings({ "rawtypes", "unchecked" })
