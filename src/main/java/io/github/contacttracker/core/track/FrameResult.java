@@ -22,6 +22,7 @@
 package io.github.contacttracker.core.track;
 
 import java.io.Serializable;
+import java.util.ArrayList;
 import java.util.List;
 
 import io.github.contacttracker.core.Localization;
@@ -65,6 +66,14 @@ public record FrameResult(List<Localization> spots, List<Region> activeAreas, Li
 	/** @return this result with other spots (the same particles, e.g. flagged) */
 	public FrameResult withSpots(final List<Localization> newSpots) {
 		return new FrameResult(newSpots, activeAreas, secondAreas, noiseSigma, discarded, ownProfile, detection);
+	}
+
+	/** @return all spots of {@code results}, in frame order */
+	static List<Localization> allSpots(final List<FrameResult> results) {
+		final List<Localization> all = new ArrayList<>();
+		for (final FrameResult r : results)
+			all.addAll(r.spots());
+		return all;
 	}
 
 	/** @return this result with the detection {@code auto} chose for its movie */

@@ -32,7 +32,7 @@ import io.github.contacttracker.core.fit.Rounds;
 import io.github.contacttracker.core.profile.ProfileEstimator;
 
 /**
- * What the rounds of profile and centres on a movie's sample frames say of each spot ({@link StackTracker}): how far
+ * What the rounds of profile and centres on a movie's sample frames say of each spot ({@link ProfileRounds}): how far
  * it moved from one round to the next, whether it still moves, whether it may teach the next profile, and the flags
  * that follow.
  */
@@ -42,7 +42,7 @@ final class RoundResults {
 
 	/**
 	 * The particles kept out of the profile in the rounds that refit the same particles
-	 * ({@link StackTracker#SETTLED_MEMBERS}): one whose fit did not settle in one of those rounds
+	 * ({@link ProfileRounds#SETTLED_MEMBERS}): one whose fit did not settle in one of those rounds
 	 * ({@link ProfileEstimator#usable}: a member that cannot find its place, such as one seeded between the particles
 	 * of a packed patch), or that the fit would have removed as a bump of noise (its significance below
 	 * {@link ModelSelection#SIGNIFICANCE}), stays out of the profiles of the later rounds (such bumps, kept in, lowered

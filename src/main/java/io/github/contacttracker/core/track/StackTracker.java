@@ -21,39 +21,31 @@
  */
 package io.github.contacttracker.core.track;
 
+import static io.github.contacttracker.core.track.FramePass.pass;
+
 import java.io.Serializable;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CancellationException;
-import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.BooleanSupplier;
 import java.util.function.IntFunction;
 import java.util.function.Supplier;
 
 import io.github.contacttracker.core.Detection;
-import io.github.contacttracker.core.Flag;
-import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.core.Localization;
-import io.github.contacttracker.core.Method;
 import io.github.contacttracker.core.TrackerParameters;
 import io.github.contacttracker.core.detect.DetectionChoice;
-import io.github.contacttracker.core.detect.ModelSelection;
-import io.github.contacttracker.core.fit.ProfileRefinement;
-import io.github.contacttracker.core.fit.Rounds;
-import io.github.contacttracker.core.image.Plane;
-import io.github.contacttracker.core.kind.KindFeatures;
 import io.github.contacttracker.core.kind.KindProfiles;
-import io.github.contacttracker.core.kind.Kinds;
-import io.github.contacttracker.core.profile.EmpiricalProfile;
-import io.github.contacttracker.core.profile.ProfileEstimator;
+import io.github.contacttracker.core.track.FramePass.Progress;
 import net.imglib2.RandomAccessibleInterval;
 import net.imglib2.parallel.Parallelization;
-import net.imglib2.parallel.TaskExecutor;
 import net.imglib2.type.numeric.RealType;
 
 /**
  * Localizes every frame of a time series, frames in parallel. Results come back in frame order whatever the
- * number of threads, so a run is reproducible.
+ * number of threads, so a run is reproducible. The profile methods (deblend, fit) first measure the movie's profile
+ * on a few sample frames ({@link ProfileStage}: the {@link ProfileRounds} on the frames chosen here), then refine
+ * every other frame with it; each pass over frames is a {@link FramePass}.
  * <p>
  * The threads are the caller's: every pass runs on {@link Parallelization#getTaskExecutor()} of the calling thread
  * (the imglib2 idiom), so a front end decides once, e.g. {@code Parallelization.runWithNumThreads(n, () ->
@@ -126,15 +118,15 @@ public final class StackTracker {
 		final ProgressListener listener, final BooleanSupplier cancelled)
 	{
 		final TrackerParameters params = tracker.parameters();
-		final int[] all = range(count);
+		final int[] all = FramePass.range(count);
 		if (!params.method().needsProfile() || count == 0)
-			return pass(tracker, null, all, frame, keepRegions, new Progress(listener, count), cancelled);
+			return pass(tracker, null, all, frame, keepRegions, progress(listener, count), cancelled);
 		// deblend and fit: iterative centres on a spread of frames; the profile measured on them; those frames
 		// refined with it and the profile measured again around the refined centres; then every frame.
 		final int[] sample = profileFrames(count, frame);
 		// the iterative pass and the first round on the sample; all frames at the end, but without regions to keep
 		// the sample frames are done by then (see below)
-		final Progress progress = new Progress(listener, 2 * sample.length + count - (keepRegions ? 0 : sample.length));
+		final Progress progress = progress(listener, 2 * sample.length + count - (keepRegions ? 0 : sample.length));
 		final ProfileStage stage = profileStage(sample, frame, progress, cancelled);
 		if (keepRegions) return stage.finish(pass(stage.tracker(tracker), stage.profile, all, frame, true, progress,
 			cancelled));
@@ -211,7 +203,7 @@ public final class StackTracker {
 
 		/** @return the tracker the movie's frames are refined with: {@code tracker}, with the chosen detection */
 		ContactTracker tracker(final ContactTracker tracker) {
-			return withChoice(tracker, choice);
+			return ProfileRounds.withChoice(tracker, choice);
 		}
 
 		/**
@@ -255,7 +247,7 @@ public final class StackTracker {
 		final IntFunction<? extends RandomAccessibleInterval<T>> frame, final BooleanSupplier cancelled)
 	{
 		if (!tracker.parameters().method().needsProfile() || count == 0) return null;
-		return profileStage(profileFrames(count, frame), frame, new Progress(null, 0), cancelled);
+		return profileStage(profileFrames(count, frame), frame, progress(null, 0), cancelled);
 	}
 
 	/**
@@ -268,225 +260,23 @@ public final class StackTracker {
 	public <T extends RealType<T>> List<FrameResult> trackWith(final ProfileStage stage, final int[] indices,
 		final IntFunction<? extends RandomAccessibleInterval<T>> frame, final BooleanSupplier cancelled)
 	{
-		final Progress none = new Progress(null, 0);
+		final Progress none = progress(null, 0);
 		if (stage == null) return pass(tracker, null, indices, frame, false, none, cancelled);
 		return stage.finish(pass(stage.tracker(tracker), stage.profile, indices, frame, false, none, cancelled));
 	}
 
-	private <T extends RealType<T>> ProfileStage profileStage(int[] sample,
+	/** @return the {@link ProfileStage} of a movie: the {@link ProfileRounds} on its {@code sample} frames */
+	private <T extends RealType<T>> ProfileStage profileStage(final int[] sample,
 		final IntFunction<? extends RandomAccessibleInterval<T>> frame, final Progress progress,
 		final BooleanSupplier cancelled)
 	{
-		final TrackerParameters params = tracker.parameters();
-		// A dense field needs fewer frames for as many particles (the rounds' cost follows the frames): how many is
-		// estimated from the iterative centres of two sample frames, the first and the middle one, and only the frames
-		// kept are then run (the profile's error falls with the particles it is measured on, not with the frames).
-		// (the iterative start from the threshold's components: seeds of the image that are no particles, such as the
-		// fringes where bright-field halos meet, are told apart by the profile, which is not known yet)
-		final ContactTracker iterativeTracker = new ContactTracker(params.withMethod(Method.ITERATIVE).withDetection(
-			io.github.contacttracker.core.Detection.THRESHOLD));
-		final int[] probe = sample.length <= 2 ? range(sample.length) : new int[] { 0, sample.length / 2 };
-		final List<FrameResult> probed = pass(iterativeTracker, null, at(sample, probe), frame,
-			false, progress, cancelled);
-		final int[] keep = fewer(sample.length, usableParticles(probed) / (double) probe.length);
-		final FrameResult[] done = new FrameResult[sample.length]; // by position among the sample frames
-		for (int i = 0; i < probe.length; i++)
-			done[probe[i]] = probed.get(i);
-		final int[] rest = java.util.stream.IntStream.of(keep).filter(p -> done[p] == null).toArray();
-		final List<FrameResult> others = pass(iterativeTracker, null, at(sample, rest), frame, false, progress,
-			cancelled);
-		for (int i = 0; i < rest.length; i++)
-			done[rest[i]] = others.get(i);
-		List<FrameResult> iterative = new ArrayList<>(keep.length);
-		for (final int p : keep)
-			iterative.add(done[p]);
-		progress.total -= sample.length - probe.length - rest.length; // iterative frames not run
-		progress.total -= sample.length - keep.length; // the first round's frames
-		sample = at(sample, keep);
-		// the detection, where it is to be chosen: from the threshold's components on these frames
-		final DetectionChoice choice = params.choosesDetection() ? choose(iterative, frame.apply(sample[0]), params)
-			: null;
-		final ContactTracker tracker = withChoice(this.tracker, choice);
-		// Where the image detects and most of the threshold's areas are not single particles (a packed field, where they
-		// hold several particles each: 12% to 20% of them single on simulated dense monolayers), the first centres are
-		// the image's, each sample frame fitted with a profile of its own: a profile measured around the areas' centres
-		// would start the rounds so far from the particles' that they settle elsewhere, or not at all (a fifth of the
-		// particles found, every one flagged; with the image's start all found, 0.03 px off). Where most areas are
-		// single particles (touching beads, spheres parted by dark rims, a pair that merges only when pushed close:
-		// 65% to 100% on public and simulated footage), they start it: they flag their merges, which a frame's own
-		// profile learns as one wide particle (a simulated pair whose last quarter merged: its closest frame lost).
-		final boolean imageStart = tracker.parameters().detectsByImage() && RoundResults.usableShare(iterative) <
-			IMAGE_START;
-		if (imageStart) {
-			progress.total += sample.length;
-			iterative = pass(tracker, null, sample, frame, false, progress, cancelled);
-		}
-		// the kinds of particle, told apart on the same frames; the profile of each is measured on its particles
-		Kinds kinds = null;
-		if (params.kinds() != 1) {
-			// each frame read and its spots measured once (frames shared among the threads), to find the kinds and to
-			// place each spot
-			final List<FrameResult> measured = iterative;
-			final int[] frames = sample;
-			final List<KindFeatures[]> features = Parallelization.getTaskExecutor().forEachApply(positions(
-				frames.length), i -> KindFeatures.measure(Plane.of(frame.apply(frames[i])), measured.get(i).spots(), params
-					.rOut()));
-			final List<KindFeatures> found = new ArrayList<>();
-			for (int i = 0; i < sample.length; i++) {
-				final List<Localization> spots = iterative.get(i).spots();
-				final KindFeatures[] f = features.get(i);
-				for (int k = 0; k < f.length; k++) // merges too: a kind may be all merges at a low threshold
-					if (!spots.get(k).has(Flag.DEGENERATE)) found.add(f[k]);
-			}
-			kinds = KindProfiles.tellApart(found, params.kinds());
-			if (kinds != null) iterative = withKinds(iterative, features, kinds);
-		}
-		// The profile is measured around estimated centres, and in a configuration that never changes (every frame
-		// the same cluster) it absorbs part of their error; so profile and centres are alternated on the sample
-		// frames until the centres stop moving (the joint least-squares fixed point, to a tenth of the centres' errors).
-		// The first round's profile, on the iterative centres, only starts the rounds: it is measured on every other
-		// sample frame (a start needs no more: the rounds after it converge to the same fixed point), the later
-		// ones on them all. The third and later rounds' profiles are chord steps from the second's least squares (see
-		// ProfileEstimator). Not from the first's: it rests on the iterative centres without fitted amplitudes and
-		// scales, too far from the later rows for a step from it to land near the exact profile.
-		// A chord step converges only while the rows stay near those of its normal matrix: one that moves the profile
-		// no less than the round before did is replaced by the full least squares (where the rows change much, as
-		// with particles cut by the edge, chord steps can grow round after round and the centres run off).
-		List<FrameResult> previous = iterative;
-		// (the image's: on every sample frame, each fitted with its own profile, some of which may not have settled)
-		final int every = imageStart ? 1 : 2;
-		final int[] starting = new int[(sample.length + every - 1) / every];
-		for (int i = 0; i < starting.length; i++)
-			starting[i] = every * i;
-		final Frames start = new Frames(sample, previous).at(starting);
-		Measured used = profile(start.results(), null, start.indices(), frame, params.profileReach(), kinds);
-		// a kind none of whose particles can teach a profile (all merged where the threshold joined touching
-		// particles, as it does a pair pushed together): one profile for them all, not none
-		if (used == null && kinds != null) {
-			kinds = null;
-			used = profile(start.results(), null, start.indices(), frame, params.profileReach(), null);
-		}
-		List<FrameResult> round = pass(tracker, profiles(used), sample, frame, false, progress, cancelled);
-		// where the threshold's areas taught no profile (dim spots below the threshold: it kept none of them), this
-		// round's spots, found by the image with each frame's own profile, teach it; the rounds go on from there (with
-		// no centre to compare, the first verdict would otherwise find nothing moving and call it settled)
-		if (used == null && tracker.parameters().detectsByImage() && !spots(round).isEmpty()) {
-			progress.total += sample.length;
-			previous = round;
-			used = profile(round, null, sample, frame, params.profileReach(), kinds);
-			round = pass(tracker, profiles(used), sample, frame, false, progress, cancelled);
-		}
-		final Rounds rounds = new Rounds();
-		Rounds.Verdict verdict = rounds.next(RoundResults.moves(previous, round));
-		double lastStep = Double.POSITIVE_INFINITY;
-		final RoundResults.Unsettled unsettled = new RoundResults.Unsettled();
-		boolean refitted = false;
-		for (int r = 1; r < ProfileRefinement.PROFILE_ROUNDS && verdict == Rounds.Verdict.GOING_ON; r++) {
-			progress.total += sample.length;
-			previous = round;
-			final Measured before = used;
-			final Measured full = before == null ? null : new Measured(before.profiles(), null);
-			// (the rounds that refitted the same particles: see RoundResults.Unsettled)
-			final List<FrameResult> teaching = refitted ? unsettled.keptOut(round) : round;
-			used = profile(teaching, r == 1 ? full : before, sample, frame, params.profileReach(), kinds);
-			double step = change(used, before);
-			if (r > 1 && !(step < lastStep)) {
-				used = profile(teaching, full, sample, frame, params.profileReach(), kinds);
-				step = change(used, before);
-			}
-			lastStep = step;
-			final boolean refit = r >= SETTLED_MEMBERS && tracker.parameters().detectsByImage();
-			round = pass(tracker, profiles(used), sample, frame, false, progress, cancelled, refit ? previous : null);
-			refitted |= refit;
-			verdict = rounds.next(RoundResults.moves(previous, round));
-		}
-		// no fixed point within the rounds, or rounds that stalled far from one: every centre rests on a profile that
-		// was still moving. Settled: the
-		// profile of the last round is the fixed point's (to within the tolerance), and the sample frames were just
-		// refined with that very profile: without regions to keep, their results are the final ones. Cycling: so
-		// is the profile, but a few centres of the sample frames went back and forth between two fits; they are flagged.
-		final boolean settled = verdict == Rounds.Verdict.SETTLED || verdict == Rounds.Verdict.CYCLING;
-		// Where the last rounds refitted the particles the first ones found, those particles were decided on an early
-		// profile: the sample frames are found once more with the last one, as every other frame is (a pair pushed into
-		// overlap is told apart only by a profile close to its own), each spot that a nearby one of the rounds' saw
-		// still moving flagged as that one was (where the frame's particles are the rounds').
-		if (refitted) {
-			progress.total += sample.length;
-			final List<FrameResult> found = pass(tracker, profiles(used), sample, frame, false, progress, cancelled);
-			round = verdict == Rounds.Verdict.CYCLING ? RoundResults.carried(round, RoundResults.stillMoving(round,
-				rounds), found, params.diameter() / 4) : found;
-		}
-		else if (verdict == Rounds.Verdict.CYCLING) round = RoundResults.stillMovingFlagged(round, rounds);
-		return new ProfileStage(sample, profiles(used), settled, round, choice, tracker.parameters().detectsByImage()
-			? Misfit.of(round) : null);
+		final ProfileRounds.Outcome o = ProfileRounds.measure(tracker, sample, frame, progress, cancelled);
+		return new ProfileStage(o.sample(), o.profile(), o.settled(), o.round(), o.choice(), o.misfit());
 	}
 
-	/**
-	 * From this round of profile and centres on, a frame found by its image refits the particles of the round before
-	 * instead of finding them again ({@link ModelSelection#refit}). Its particles are found by the first two rounds, on
-	 * the start's profile and on the first measured on the movie; in a packed field one particle added or removed moves
-	 * its neighbours' centres by more than their tolerance, and rounds which found them anew never settled (a dense
-	 * monolayer of blurred discs: the count changing by 4 to 11 each round, the median move stalled at 8 to 14
-	 * tolerances, every spot flagged). Removing in these rounds what the fit does not need cascaded there (each
-	 * removal moving the neighbours of the next) and never settled either; a particle the fit would remove is kept
-	 * out of the profile instead ({@link RoundResults.Unsettled}).
-	 */
-	static final int SETTLED_MEMBERS = 2;
-
-	/** Below this share of single-particle areas among the threshold's, the image's centres start the profile. */
-	static final double IMAGE_START = 0.5;
-
-	/** @return {@code tracker}, with the detection {@code choice} chose (as it is where none was chosen) */
-	private static ContactTracker withChoice(final ContactTracker tracker, final DetectionChoice choice) {
-		return choice == null ? tracker : new ContactTracker(tracker.parameters().withDetection(choice.detection()));
-	}
-
-	/** @return the detection {@link Detection#AUTO} chooses from the threshold's first pass on the sample frames */
-	private static <T extends RealType<T>> DetectionChoice choose(final List<FrameResult> firstPass,
-		final RandomAccessibleInterval<T> first, final TrackerParameters params)
-	{
-		final List<List<Localization>> spots = new ArrayList<>(firstPass.size());
-		int discarded = 0;
-		for (final FrameResult r : firstPass) {
-			spots.add(r.spots());
-			discarded += r.discarded();
-		}
-		return DetectionChoice.choose(spots, discarded, Plane.of(first), params.diameter());
-	}
-
-	/** @return the elements of {@code array} at {@code positions}, in that order */
-	private static int[] at(final int[] array, final int[] positions) {
-		final int[] out = new int[positions.length];
-		for (int i = 0; i < positions.length; i++)
-			out[i] = array[positions[i]];
-		return out;
-	}
-
-	/** Frames (their indices in the stack) and their results, in the same order. */
-	private record Frames(int[] indices, List<FrameResult> results) {
-		/** @return the frames at {@code positions} (of this list), in that order */
-		Frames at(final int[] positions) {
-			final List<FrameResult> out = new ArrayList<>(positions.length);
-			for (final int p : positions)
-				out.add(results.get(p));
-			return new Frames(StackTracker.at(indices, positions), out);
-		}
-	}
-
-	/** Frames done over frames to do, across the passes of one run. */
-	private static final class Progress {
-		final ProgressListener listener;
-		final AtomicInteger done = new AtomicInteger();
-		int total;
-
-		Progress(final ProgressListener listener, final int total) {
-			this.listener = listener;
-			this.total = total;
-		}
-
-		void frameDone() {
-			if (listener != null) listener.progress(done.incrementAndGet(), total);
-		}
+	/** @return a run's progress, told to {@code listener} (null: to nobody) */
+	private static Progress progress(final ProgressListener listener, final int total) {
+		return new Progress(listener == null ? null : listener::progress, total);
 	}
 
 	/** At most this many frames, evenly spread over the stack, go into a profile measurement... */
@@ -513,197 +303,8 @@ public final class StackTracker {
 		return frames;
 	}
 
-	/**
-	 * Enough particles for the profile: past {@value #PROFILE_PARTICLES} usable particles the profile's spline is
-	 * as well determined as the centres need (the bench stack's 15 frames hold 180), and more frames only multiply
-	 * the cost of the profile rounds.
-	 *
-	 * @param n the sample frames
-	 * @param perFrame usable particles a frame (as the profile counts them: {@link #usableParticles})
-	 * @return the positions among the {@code n} sample frames (evenly spread) of the frames kept
-	 */
-	private static int[] fewer(final int n, final double perFrame) {
-		final double particles = perFrame * n;
-		final int m = particles <= PROFILE_PARTICLES ? n : (int) Math.max(1, Math.min(n, Math.ceil(PROFILE_PARTICLES /
-			perFrame)));
-		final int[] kept = new int[m];
-		for (int i = 0; i < m; i++)
-			kept[i] = (int) ((long) i * n / m);
-		return kept;
-	}
-
-	/** @return the spots of {@code results} the profile can use ({@link ProfileEstimator#usable}) */
-	private static int usableParticles(final List<FrameResult> results) {
-		int particles = 0;
-		for (final FrameResult r : results)
-			for (final Localization l : r.spots())
-				if (ProfileEstimator.usable(l)) particles++;
-		return particles;
-	}
-
-	/** The profile rounds use frames holding about this many particles, if the sample frames hold more. */
-	public static final int PROFILE_PARTICLES = 300;
-
-	private static int[] range(final int count) {
-		final int[] r = new int[count];
-		for (int i = 0; i < count; i++)
-			r[i] = i;
-		return r;
-	}
-
-	private static List<Integer> positions(final int n) {
-		final List<Integer> list = new ArrayList<>(n);
-		for (int i = 0; i < n; i++)
-			list.add(i);
-		return list;
-	}
-
-	/**
-	 * The profiles of a round and the linearisation of their least squares (null: the next round is measured in
-	 * full).
-	 */
-	private record Measured(KindProfiles profiles, ProfileEstimator.Linearisation linearisation) {}
-
-	private static KindProfiles profiles(final Measured m) {
-		return m == null ? null : m.profiles();
-	}
-
-	/** @return how far the profiles moved from {@code before} to {@code after} (infinite if either is missing) */
-	private static double change(final Measured after, final Measured before) {
-		return after == null || before == null || after.linearisation() == null || before.linearisation() == null
-			? Double.POSITIVE_INFINITY : after.linearisation().change(before.linearisation());
-	}
-
-	/**
-	 * Measures the radial profile of each kind on frames {@code indices} (with their results, in the same order, each
-	 * spot of its {@link Localization#kind() kind}), the frames shared among the threads; null (each frame then
-	 * measures its own) when they hold too few usable pixels. The profiles the results were refined with, if any,
-	 * choose the pixels left out near clip levels, and the new ones are a chord step from their least squares.
-	 */
-	private static <T extends RealType<T>> Measured profile(final List<FrameResult> results,
-		final Measured fitted, final int[] indices,
-		final IntFunction<? extends RandomAccessibleInterval<T>> frame, final double reach, final Kinds kinds)
-	{
-		final int count = kinds == null ? 1 : kinds.count();
-		// One estimator per frame, merged in frame order: the sums, and so the results, do not depend on the
-		// number of threads.
-		final List<Localization> all = spots(results);
-		final double[][] norms = ProfileEstimator.norms(all, positions(all, kinds), count);
-		final KindProfiles fittedWith = profiles(fitted);
-		final EmpiricalProfile[] before = fittedWith == null ? null : new EmpiricalProfile[count];
-		if (before != null) for (int c = 0; c < count; c++)
-			before[c] = fittedWith.profile(c);
-		final ProfileEstimator.Linearisation from = fitted == null ? null : fitted.linearisation();
-		final List<ProfileEstimator> parts = Parallelization.getTaskExecutor().forEachApply(positions(indices.length),
-			i -> {
-				final ProfileEstimator part = new ProfileEstimator(reach, count, from);
-				final List<Localization> spots = results.get(i).spots();
-				part.add(frame.apply(indices[i]), spots, positions(spots, kinds), norms[0], norms[1], before, results.get(
-					i).noiseSigma());
-				return part;
-			});
-		final ProfileEstimator sum = parts.get(0);
-		for (int i = 1; i < parts.size(); i++)
-			sum.merge(parts.get(i));
-		try {
-			final ProfileEstimator.Solution solved = sum.solve();
-			final EmpiricalProfile[] measured = solved.profiles();
-			return new Measured(kinds == null ? KindProfiles.one(measured[0]) : KindProfiles.of(kinds, measured), solved
-				.linearisation());
-		}
-		catch (final IllegalStateException e) {
-			return null;
-		}
-	}
-
-	/** @return the position of each spot's kind among the kinds' profiles ({@link KindProfiles#position}) */
-	private static int[] positions(final List<Localization> spots, final Kinds kinds) {
-		final int[] at = new int[spots.size()];
-		for (int k = 0; k < at.length; k++)
-			at[k] = KindProfiles.position(kinds, spots.get(k).kind());
-		return at;
-	}
-
-	/** @return the results, each spot labelled with its kind ({@code features}: the spots', frame by frame) */
-	private static List<FrameResult> withKinds(final List<FrameResult> results, final List<KindFeatures[]> features,
-		final Kinds kinds)
-	{
-		final List<FrameResult> out = new ArrayList<>(results.size());
-		for (int i = 0; i < results.size(); i++) {
-			final List<Localization> spots = results.get(i).spots();
-			final int[] kind = KindProfiles.kindsOf(kinds, features.get(i));
-			final List<Localization> labelled = new ArrayList<>(spots.size());
-			for (int k = 0; k < kind.length; k++)
-				labelled.add(spots.get(k).withKind(kind[k]));
-			out.add(results.get(i).withSpots(labelled));
-		}
-		return out;
-	}
-
-	/**
-	 * Localizes frames {@code indices} on the caller's task executor; results in that order. A frame's failure
-	 * (an exception or running out of memory) is caught in its task and the first failure in frame order rethrown
-	 * as it was, so the error a user sees does not depend on the threads.
-	 */
-	private static <T extends RealType<T>> List<FrameResult> pass(final ContactTracker tracker,
-		final KindProfiles profile, final int[] indices,
-		final IntFunction<? extends RandomAccessibleInterval<T>> frame, final boolean keepRegions,
-		final Progress progress, final BooleanSupplier cancelled)
-	{
-		return pass(tracker, profile, indices, frame, keepRegions, progress, cancelled, null);
-	}
-
-	/**
-	 * As {@link #pass(ContactTracker, KindProfiles, int[], IntFunction, boolean, Progress, BooleanSupplier)}, frame
-	 * {@code indices[i]} refitting the particles of {@code earlier.get(i)} where the image detects (null: found anew).
-	 */
-	private static <T extends RealType<T>> List<FrameResult> pass(final ContactTracker tracker,
-		final KindProfiles profile, final int[] indices,
-		final IntFunction<? extends RandomAccessibleInterval<T>> frame, final boolean keepRegions,
-		final Progress progress, final BooleanSupplier cancelled, final List<FrameResult> earlier)
-	{
-		final TaskExecutor executor = Parallelization.getTaskExecutor();
-		final Throwable[] failures = new Throwable[indices.length];
-		final List<FrameResult> results = executor.forEachApply(positions(indices.length), i -> {
-			try {
-				// counted in passes over a frame: the profile methods track their sample frames once per profile round,
-				// so a count of "frames" could exceed the movie's (117 on a 30-frame movie, seen in Fiji)
-				if (cancelled.getAsBoolean()) throw new CancellationException("cancelled after " + progress.done.get() +
-					" of " + progress.total + " passes over a frame");
-				final FrameResult r = one(tracker, profile, frame, indices[i], keepRegions, earlier == null ? null : earlier
-					.get(i).spots());
-				progress.frameDone();
-				return r;
-			}
-			catch (final RuntimeException | OutOfMemoryError e) {
-				// out of memory too: the executor would wrap it in a RuntimeException, hiding it from the front ends
-				failures[i] = e;
-				return null;
-			}
-		});
-		for (final Throwable e : failures)
-			if (e instanceof OutOfMemoryError oom) throw oom;
-			else if (e != null) throw (RuntimeException) e;
-		return results;
-	}
-
-	private static <T extends RealType<T>> FrameResult one(final ContactTracker tracker,
-		final KindProfiles profile, final IntFunction<? extends RandomAccessibleInterval<T>> frame, final int t,
-		final boolean keepRegions, final List<Localization> particles)
-	{
-		try {
-			return tracker.analyse(Plane.of(frame.apply(t)), t, keepRegions, profile, particles);
-		}
-		catch (final InvalidInputException e) {
-			throw new InvalidInputException("frame " + (t + 1) + ": " + e.getMessage(), e);
-		}
-	}
-
 	/** @return all spots of {@code results}, in frame order */
 	public static List<Localization> spots(final List<FrameResult> results) {
-		final List<Localization> all = new ArrayList<>();
-		for (final FrameResult r : results)
-			all.addAll(r.spots());
-		return all;
+		return FrameResult.allSpots(results);
 	}
 }
