@@ -487,7 +487,7 @@ public final class ProfileAnalysis {
 	 *         most of the frame: bright particles packed edge to edge put it on the particles, with the small dark
 	 *         gaps between them far below, and only the blobs tell which are the particles (a simulated monolayer of
 	 *         bright discs at an area fraction of 0.6: the median test says dark, the inverted blobs stand 1.06 times
-	 *         as high as the frame's; PERI's dark spheres in dyed fluid, 2.3).
+	 *         as high as the frame's; dark spheres in dyed fluid on a confocal slice, 2.3).
 	 */
 	@SuppressWarnings({ "rawtypes", "unchecked" })
 	public static boolean looksDark(final RandomAccessibleInterval<? extends RealType<?>> frame) {

@@ -105,9 +105,9 @@ public record DetectionChoice(Detection detection, int merged, int spots, int di
 	 * finds them), and dark cores in bright rings taken for bright particles, whose rings the image would track (the
 	 * bright-field movie inverted, or dark particles not said to be dark). The margin is for dense packings, whose
 	 * gaps are blobs of the other contrast too: measured, the inverted frame's peaks stand 0.6 times as high as the
-	 * frame's on a monolayer of bright spheres (softmatterlab's JT008) and 1.3 times on a dense confocal packing
-	 * (colloidoscope's abraham), against 2.0 to 3.0 on dark cores in bright rings (the paper authors' 1.avi and 6.avi
-	 * inverted, DeepTrack's dim trapped particle).
+	 * frame's on a monolayer of bright spheres and 1.3 times on a dense confocal packing, against 2.0 to 3.0 on dark
+	 * cores in bright rings (bright-field movies of silica spheres inverted, a dim optically trapped particle); the
+	 * manual's real-footage section names the public footage.
 	 *
 	 * @param frame the frame as the tracker would see it
 	 * @param inverted the frame inverted

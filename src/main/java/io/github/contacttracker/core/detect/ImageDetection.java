@@ -80,9 +80,23 @@ public final class ImageDetection {
 	 */
 	public static Peaks seeds(final Plane plane, final double diameter, final double noise) {
 		final Scale scale = Scale.of(diameter);
-		final float[] bp = BandPass.of(plane, scale.sigma(), scale.halfWidth());
-		final double unit = unit(scale.noise(noise), bp);
-		final Peaks peaks = Peaks.find(bp, plane.width(), plane.height(), 0, LEVEL * unit, PROMINENCE * unit);
+		return seeds(BandPass.of(plane, scale.sigma(), scale.halfWidth()), plane.width(), plane.height(), diameter,
+			noise);
+	}
+
+	/**
+	 * {@link #seeds(Plane, double, double)} of a frame already band-passed at {@link Scale#of the particles' scale}
+	 * (where the caller needs that frame too: it is the detection's largest cost)
+	 *
+	 * @param bandPassed the frame band-passed at {@code Scale.of(diameter)} (read only)
+	 * @param w the frame's width
+	 * @param h the frame's height
+	 */
+	public static Peaks seeds(final float[] bandPassed, final int w, final int h, final double diameter,
+		final double noise)
+	{
+		final double unit = unit(Scale.of(diameter).noise(noise), bandPassed);
+		final Peaks peaks = Peaks.find(bandPassed, w, h, 0, LEVEL * unit, PROMINENCE * unit);
 		return peaks.sparse(diameter / 2, RELATIVE * peaks.typicalHeight());
 	}
 

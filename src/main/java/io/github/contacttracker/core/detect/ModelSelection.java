@@ -155,10 +155,12 @@ public final class ModelSelection {
 		final double d = params.diameter();
 		final int w = plane.width(), h = plane.height();
 		final float[] data = BandPass.pixels(plane);
-		final Peaks seeds = grow ? ImageDetection.seeds(plane, d, noise) : Peaks.NONE;
-		final double least = ImageDetection.RELATIVE * seeds.typicalHeight();
 		final ImageDetection.Scale scale = ImageDetection.Scale.of(d);
 		final float[][] cache = new float[1][];
+		// the seeds from the band-passed frame that the moves below use too
+		final Peaks seeds = grow ? ImageDetection.seeds(dataBp(plane, scale, data, w, h, cache), w, h, d, noise)
+			: Peaks.NONE;
+		final double least = ImageDetection.RELATIVE * seeds.typicalHeight();
 		final double strong = ProfileMatch.STRONG * ProfileMatch.typicalMatching(seeds, data, w, h, given, noise);
 		// with the profiles known, no seed is fitted where the profile matches it at less than a faint particle's
 		// amplitude (a textured background's bumps: fitted, they would cost more than the particles). Whether a weak
