@@ -137,6 +137,7 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 		final int[] sx = new int[m], sy = new int[m];
 		final double[] sv = new double[m], sf = new double[m], su = new double[m], sw = new double[m];
 		final int[] from = new int[m];
+		final double[] sp = new double[PACKED * m]; // (the packed numbers copied as they are, not packed again)
 		for (int i = 0, j = 0; i < count; i++) {
 			if (!keep[i]) continue;
 			from[j] = candidate(i);
@@ -145,9 +146,14 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 			sv[j] = value[i];
 			sf[j] = fixed[i];
 			su[j] = u[i];
-			sw[j++] = v[i];
+			sw[j] = v[i];
+			for (int c = 0, a = PACKED * i, b = PACKED * j; c < PACKED; c++)
+				sp[b + c] = packed[a + c];
+			j++;
 		}
-		return new FitPixels(sx, sy, sv, sf, m, su, sw, from);
+		final double[] summary = summary(su, sw, sf, m);
+		return new FitPixels(sx, sy, sv, sf, m, su, sw, java.util.Arrays.copyOf(summary, 9), java.util.Arrays
+			.copyOfRange(summary, 9, 15), from, sp);
 	}
 
 	private static double[] planeCoordinate(final int[] c, final int count, final double origin, final double unit) {
@@ -245,10 +251,11 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 		}
 		else {
 			light = fixed.clone();
+			final RowRuns rows = RowRuns.of(x, y, count);
 			for (int k = 0; k < ps.length; k++) {
 				if (lit[k] == null || lit[k] == e[k]) continue;
-				light(light, lit[k], -1, profile[k]);
-				light(light, e[k], 1, profile[k]);
+				light(rows, light, lit[k], -1, profile[k]);
+				light(rows, light, e[k], 1, profile[k]);
 				lit[k] = e[k];
 			}
 		}
@@ -261,24 +268,25 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 	 */
 	private FitPixels withLight(final double[] light) {
 		double f0 = Double.POSITIVE_INFINITY, f1 = Double.NEGATIVE_INFINITY;
-		for (int i = 0; i < count; i++) {
+		final double[] relit = packed.clone(); // (only the light changes)
+		for (int i = 0, o = PACKED - 1; i < count; i++, o += PACKED) {
 			final double f = light[i];
+			relit[o] = f;
 			if (f < f0) f0 = f;
 			if (f > f1) f1 = f;
 		}
 		final double[] e = extent.clone();
 		e[4] = f0;
 		e[5] = f1;
-		return new FitPixels(x, y, value, light, count, u, v, backgroundBlock, e, candidates);
+		return new FitPixels(x, y, value, light, count, u, v, backgroundBlock, e, candidates, relit);
 	}
 
-	/** Adds {@code sign} times the light of a particle at estimate {@code est} to {@code light}, on its rows. */
-	private void light(final double[] light, final Estimate est, final double sign, final EmpiricalProfile profile) {
-		final double kx = est.x(), ky = est.y(), ks = GroupFit.scaleOf(est), ka = GroupFit.amplitudeOf(est);
-		final double reach = profile.radius() * ks;
-		final int from = firstOfRow(y, count, (int) Math.floor(ky - reach));
-		final int to = firstOfRow(y, count, (int) Math.ceil(ky + reach) + 1);
-		addLight(x, y, light, from, to, kx, ky, ks, sign * ka, reach, profile);
+	/** Adds {@code sign} times the light of a particle at estimate {@code est} to {@code light}. */
+	private static void light(final RowRuns rows, final double[] light, final Estimate est, final double sign,
+		final EmpiricalProfile profile)
+	{
+		final double ks = GroupFit.scaleOf(est);
+		rows.draw(light, est.x(), est.y(), ks, sign * GroupFit.amplitudeOf(est), profile.radius() * ks, profile);
 	}
 
 	/**
@@ -323,47 +331,15 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 		final double[] fixed = new double[count];
 		if (count == 0) return fixed;
 		final int y0 = py[0], y1 = py[count - 1];
+		final RowRuns rows = RowRuns.of(px, py, count);
 		for (int k = 0; k < ps.length; k++) {
 			if (!ps[k].reliable() || GroupFit.contains(group, k)) continue;
-			final double kx = e[k].x(), ky = e[k].y(), ks = GroupFit.scaleOf(e[k]), ka = GroupFit.amplitudeOf(e[k]);
+			final double kx = e[k].x(), ky = e[k].y(), ks = GroupFit.scaleOf(e[k]);
 			final double reach = profile[k].radius() * ks;
 			if (kx < x0 - reach || kx > x1 + reach || ky < y0 - reach || ky > y1 + reach) continue;
-			final int from = firstOfRow(py, count, (int) Math.floor(ky - reach));
-			final int to = firstOfRow(py, count, (int) Math.ceil(ky + reach) + 1);
-			addLight(px, py, fixed, from, to, kx, ky, ks, ka, reach, profile[k]);
+			rows.draw(fixed, kx, ky, ks, GroupFit.amplitudeOf(e[k]), reach, profile[k]);
 		}
 		return fixed;
-	}
-
-	/** @return the index of the first pixel at row {@code row} or below it (rows ascending), {@code count} if none */
-	private static int firstOfRow(final int[] py, final int count, final int row) {
-		int lo = 0, hi = count;
-		while (lo < hi) {
-			final int mid = (lo + hi) >>> 1;
-			if (py[mid] < row) lo = mid + 1;
-			else hi = mid;
-		}
-		return lo;
-	}
-
-	/** Adds to {@code fixed} over pixels {@code from} to {@code to} the light of a particle outside the group. */
-	private static void addLight(final int[] px, final int[] py, final double[] fixed, final int from, final int to,
-		final double kx, final double ky, final double ks, final double ka, final double reach,
-		final EmpiricalProfile profile)
-	{
-		// the profile's table read as EmpiricalProfile.lookup reads it, inlined: this loop draws every neighbour on
-		// every member's pixels, the fit's innermost work on a dense field, where a call per pixel would cost as much
-		final double[] table = profile.valueTable();
-		final int last = table.length - 1;
-		// (a product, not two quotients: a division costs several multiplications in this loop)
-		final double reach2 = reach * reach, perStep = 1 / (ks * EmpiricalProfile.TABLE_STEP);
-		for (int i = from; i < to; i++) {
-			final double dx = px[i] - kx, dy = py[i] - ky, d2 = dx * dx + dy * dy;
-			if (!(d2 < reach2)) continue;
-			final double t = Math.sqrt(d2) * perStep;
-			final int k = (int) t;
-			if (k < last) fixed[i] += ka * (table[k] + (t - k) * (table[k + 1] - table[k]));
-		}
 	}
 
 	/**
