@@ -78,7 +78,7 @@ final class CommandRuns {
 		final Cancelable run = (Cancelable) m;
 		if (!run.isCanceled()) return false;
 		final String reason = run.getCancelReason();
-		if (Boolean.getBoolean("contact.tracker.fuzz.verbose")) System.out.println(reason);
+		if (Boolean.getBoolean("contact.tracker.fuzz.verbose")) System.out.println(reason + "  <-  " + what);
 		assertTrue(reason != null && !reason.isBlank(), "a refusal says why: " + what);
 		assertEquals(1, reason.lines().count(), reason + "; " + what);
 		assertFalse(reason.contains("Exception") || reason.contains("internal error"), reason + "; " + what);

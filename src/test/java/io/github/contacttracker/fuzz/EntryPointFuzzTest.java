@@ -52,7 +52,9 @@ import io.github.contacttracker.io.ImageFiles;
 class EntryPointFuzzTest {
 
 	/** Cases in the suite's run. */
-	static final int SHORT_RUN = 80;
+	static final int SHORT_RUN = 150;
+	/** The least share of cases that must track or measure (about 0.6 do, in long runs). */
+	static final double REACH_FLOOR = 0.4;
 
 	@TempDir
 	Path dir;
@@ -66,7 +68,8 @@ class EntryPointFuzzTest {
 			final long caseSeed = rnd.nextLong();
 			final SplittableRandom r = new SplittableRandom(caseSeed);
 			final Path movie = dir.resolve("case" + c + ".tif");
-			ImageFiles.saveTiff(FuzzImages.image(r, 3), movie);
+			final ij.ImagePlus imp = FuzzImages.image(r, 3);
+			ImageFiles.saveTiff(imp, movie);
 			final Path csv = dir.resolve("case" + c + ".csv");
 			final List<String> args = new ArrayList<>();
 			if (r.nextInt(5) == 0) {
@@ -76,7 +79,7 @@ class EntryPointFuzzTest {
 			else {
 				args.add("track");
 				args.add(movie.toString());
-				options(r, args);
+				options(r, args, imp);
 				args.add("--csv");
 				args.add(csv.toString());
 				args.add("--no-progress");
@@ -96,17 +99,15 @@ class EntryPointFuzzTest {
 			Files.deleteIfExists(csv);
 			Files.deleteIfExists(dir.resolve("case" + c + ".settings.txt"));
 		}
-		System.out.println("entry-point fuzz: " + cases + " cases, " + tracked + " tracked, " +
-			refused + " refused in one line");
 		// the cases reach both ends: a fuzz that only ever refused (or only tracked) would test one path
-		assertTrue(tracked > 0 && refused > 0, tracked + " tracked, " + refused + " refused");
+		FuzzCase.reach("entry-point fuzz (track, profile)", cases, tracked, refused, REACH_FLOOR);
 	}
 
 	/**
 	 * Every spot of a run's CSV has finite coordinates, within the image's extent (px, as the pixel centres' range
 	 * widened by half a pixel) unless it is flagged.
 	 */
-	private static void positionsInside(final Path csv, final String what) throws IOException {
+	static void positionsInside(final Path csv, final String what) throws IOException {
 		if (!Files.exists(csv)) return; // profile: no CSV
 		final List<String> lines = Files.readAllLines(csv).stream().filter(l -> !l.startsWith("#")).toList();
 		if (lines.size() < 2) return;
@@ -126,17 +127,23 @@ class EntryPointFuzzTest {
 		}
 	}
 
-	/** Random options: values given or measured, some out of range, some not numbers. */
-	private static void options(final SplittableRandom r, final List<String> args) {
-		final String[][] choices = { { "--threshold", "50", "0", "-3", "1e9", "NaN", "x" }, { "--r-out", "5", "0.5",
-			"0", "-1", "400" }, { "--diameter", "4", "0", "30", "1e6" }, { "--method", "fit", "paper", "deblend", "first",
-				"iterative", "nope" }, { "--detection", "image", "threshold", "other" }, { "--min-area", "1", "20", "0" },
-			{ "--kinds", "0", "1", "4", "9" }, { "--particles", "dark", "bright" }, { "--connectivity", "4", "8", "6" } };
-		for (final String[] c : choices)
-			if (r.nextInt(3) == 0) {
-				args.add(c[0]);
-				// mostly a sensible value (the first), so that the tracking itself is reached as often as a refusal
-				args.add(c[r.nextInt(3) > 0 ? 1 : 1 + r.nextInt(c.length - 1)]);
-			}
+	/**
+	 * Random options, each given or left to the profile helper to measure: the values a user would give for the
+	 * movie (a threshold between its background and its particles, its particles' polarity, diameter and r_out),
+	 * but for none, one or two that are out of range, not numbers, or not the movie's.
+	 */
+	private static void options(final SplittableRandom r, final List<String> args, final ij.ImagePlus imp) {
+		final String[][] choices = { { "--threshold", fmt(FuzzImages.threshold(imp)), "0", "-3", "1e9", "NaN", "x" }, {
+			"--r-out", Long.toString(FuzzImages.rOut(imp)), "0.5", "0", "-1", "400", "2" }, { "--diameter", Long.toString(
+				FuzzImages.diameter(imp)), "0", "30", "1e6", "-2" }, { "--method", "fit", "paper", "deblend", "first",
+					"iterative", "nope" }, { "--detection", "auto", "threshold", "image", "other" }, { "--min-area", "1",
+						"20", "0", "1000000" }, { "--kinds", "0", "1", "4", "9" }, { "--particles", FuzzImages.dark(imp)
+							? "dark" : "bright", FuzzImages.dark(imp) ? "bright" : "dark", "grey" }, { "--connectivity", "8",
+								"4", "6" } };
+		FuzzCase.options(r, choices, 0, args);
+	}
+
+	private static String fmt(final double v) {
+		return v == Math.rint(v) ? Long.toString((long) v) : Double.toString(v);
 	}
 }

@@ -66,6 +66,65 @@ final class FuzzCase {
 		return Integer.getInteger("contact.tracker.fuzz.timeout", 120);
 	}
 
+	/**
+	 * Reports a fuzz run's reach and asserts it: the share of cases that passed the checks and ran the computation
+	 * must be at least {@code floor}, so that a generator (or a stricter check) that stops reaching the computation
+	 * fails the suite instead of testing only the refusals; and some cases must be refused, so that the refusals are
+	 * tested too. Not asserted in runs shorter than 10 cases, whose shares say little.
+	 *
+	 * @param fuzzer the fuzzer's name for the report
+	 * @param reached the cases that ran the computation (tracked, measured, computed)
+	 * @param refused the cases refused in one line
+	 * @param floor the least share of cases that must reach the computation, 0 to 1
+	 */
+	static void reach(final String fuzzer, final int cases, final int reached, final int refused, final double floor) {
+		System.out.println(String.format(java.util.Locale.ROOT,
+			"%s: %d cases, %d reached the computation (%.0f%%, floor %.0f%%), %d refused in one line", fuzzer, cases,
+			reached, 100.0 * reached / Math.max(1, cases), 100 * floor, refused));
+		if (cases < 10) return;
+		assertTrue(reached >= floor * cases, fuzzer + ": only " + reached + " of " + cases + " cases reached the " +
+			"computation, fewer than " + Math.round(100 * floor) + "%: the generator no longer reaches it");
+		assertTrue(refused > 0, fuzzer + ": no case of " + cases + " was refused: the refusals are not tested");
+	}
+
+	/**
+	 * @return which of {@code n} choices get an odd value (any of its values, maybe the sensible one): none in half
+	 *         the cases, one or two in the others; the rest keep the sensible value or are left out
+	 */
+	static List<Integer> oddOnes(final SplittableRandom r, final int n) {
+		final int odd = Math.max(0, r.nextInt(4) - 1);
+		final List<Integer> oddOnes = new java.util.ArrayList<>();
+		for (int k = 0; k < odd; k++)
+			oddOnes.add(r.nextInt(n));
+		return oddOnes;
+	}
+
+	/**
+	 * Adds random options to {@code args}: of {@code choices} (each an option, its sensible value, then its odd
+	 * ones), none, one or two get any of their values ({@link #oddOnes}); the others their sensible value, given one
+	 * time in three (the command then measures or defaults it) or always for the first {@code always} choices
+	 * counted from the end.
+	 *
+	 * @return whether an odd value may have been given
+	 */
+	static boolean options(final SplittableRandom r, final String[][] choices, final int always,
+		final List<String> args)
+	{
+		final List<Integer> odd = oddOnes(r, choices.length);
+		for (int i = 0; i < choices.length; i++) {
+			final String[] c = choices[i];
+			if (odd.contains(i)) {
+				args.add(c[0]);
+				args.add(c[1 + r.nextInt(c.length - 1)]);
+			}
+			else if (i >= choices.length - always || r.nextInt(3) == 0) {
+				args.add(c[0]);
+				args.add(c[1]);
+			}
+		}
+		return !odd.isEmpty();
+	}
+
 	FuzzCase(final long caseSeed, final List<String> args) {
 		final ByteArrayOutputStream out = new ByteArrayOutputStream(), err = new ByteArrayOutputStream();
 		// on a thread of its own, so that a case that never ends is a failure naming it, not a run that never ends
@@ -93,6 +152,7 @@ final class FuzzCase {
 		assertFalse(said.contains("internal error"), what);
 		assertTrue(status == 0 || status == ContactTrackerCli.EXIT_BAD_INPUT, "exit " + status + ": " + what);
 		if (refused()) assertEquals(1, said.lines().filter(l -> l.contains("error")).count(), what);
+		if (refused() && Boolean.getBoolean("contact.tracker.fuzz.verbose")) System.out.print("refused: " + said);
 	}
 
 	/** @return whether the command line refused the input (exit 2) */

@@ -25,6 +25,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Map;
 import java.util.SplittableRandom;
 
@@ -56,7 +57,9 @@ import io.github.contacttracker.command.WithContext;
 class ProfileCommandFuzzTest extends WithContext {
 
 	/** Cases in the suite's run. */
-	static final int SHORT_RUN = 60;
+	static final int SHORT_RUN = 150;
+	/** The least share of cases that must measure. */
+	static final double REACH_FLOOR = 0.3;
 
 
 	@Test
@@ -69,7 +72,7 @@ class ProfileCommandFuzzTest extends WithContext {
 			final SplittableRandom r = new SplittableRandom(caseSeed);
 			final ImagePlus imp = FuzzImages.image(r, 4);
 			final String selection = select(r, imp);
-			final Map<String, Object> inputs = inputs(r);
+			final Map<String, Object> inputs = inputs(r, imp);
 			final String what = "case seed " + caseSeed + ": " + imp.getWidth() + " x " + imp.getHeight() + " x " + imp
 				.getStackSize() + ", " + imp.getBitDepth() + "-bit, " + selection + ", inputs " + inputs;
 			inputs.put("imp", imp);
@@ -83,9 +86,7 @@ class ProfileCommandFuzzTest extends WithContext {
 					assertEquals(1, ResultsTable.getResultsTable().size(), "one row of suggestions: " + what);
 			}
 		}
-		System.out.println("Profile command fuzz: " + cases + " cases, " + measured + " measured, " + refused +
-			" refused in one line");
-		assertTrue(measured > 0 && refused > 0, measured + " measured, " + refused + " refused");
+		FuzzCase.reach("Profile command fuzz", cases, measured, refused, REACH_FLOOR);
 	}
 
 	/**
@@ -112,13 +113,14 @@ class ProfileCommandFuzzTest extends WithContext {
 	/** @return the selection given to the image, for a failure's message */
 	private static String select(final SplittableRandom r, final ImagePlus imp) {
 		final int w = imp.getWidth(), h = imp.getHeight();
-		switch (r.nextInt(11)) {
+		// two cases in three as a user: a point on a particle (the brightest pixel, the darkest one for dark particles)
+		switch (r.nextInt(3) > 0 ? 8 : r.nextInt(8)) {
 			case 0:
 				return "no selection";
-			case 8, 9, 10: {
-				final int[] at = brightest(imp.getProcessor());
+			case 8: {
+				final int[] at = brightest(imp.getProcessor(), FuzzImages.dark(imp) ? -1 : 1);
 				imp.setRoi(new PointRoi(at[0], at[1]));
-				return "point on the brightest pixel " + at[0] + ", " + at[1];
+				return "point on the " + (FuzzImages.dark(imp) ? "darkest" : "brightest") + " pixel " + at[0] + ", " + at[1];
 			}
 			case 1:
 				imp.setRoi(new PointRoi(r.nextInt(w), r.nextInt(h)));
@@ -148,30 +150,37 @@ class ProfileCommandFuzzTest extends WithContext {
 		}
 	}
 
-	/** @return the first brightest pixel's x and y (for colour, of the processor's own value) */
-	private static int[] brightest(final ij.process.ImageProcessor ip) {
+	/**
+	 * @param sign 1 for the brightest pixel, -1 for the darkest
+	 * @return the first brightest pixel's x and y (for colour, of the processor's own value)
+	 */
+	private static int[] brightest(final ij.process.ImageProcessor ip, final int sign) {
 		int bx = 0, by = 0;
 		float best = Float.NEGATIVE_INFINITY;
 		for (int y = 0; y < ip.getHeight(); y++)
 			for (int x = 0; x < ip.getWidth(); x++)
-				if (ip.getPixelValue(x, y) > best) {
-					best = ip.getPixelValue(x, y);
+				if (sign * ip.getPixelValue(x, y) > best) {
+					best = sign * ip.getPixelValue(x, y);
 					bx = x;
 					by = y;
 				}
 		return new int[] { bx, by };
 	}
 
-	/** @return random inputs: sensible ones but for none, one or two that are out of range; some left out */
-	private static Map<String, Object> inputs(final SplittableRandom r) {
-		final Object[][] choices = { { "diameter", 0.0, 4.0, 12.0, 1.0, 0.1, -2.0, 1e6, Double.NaN,
-			Double.POSITIVE_INFINITY }, { "max_radius", 0.0, 20.0, 2.0, 0.5, -1.0, 1e7, Double.NaN }, { "plot", false,
-				true }, { "results", true, false } };
+	/**
+	 * @return random inputs: the sensible ones (the diameter measured or the particles', the profile's reach
+	 *         measured) but for none, one or two that are out of range or odd; some left out
+	 */
+	private static Map<String, Object> inputs(final SplittableRandom r, final ImagePlus imp) {
+		final Object[][] choices = { { "diameter", r.nextBoolean() ? 0.0 : (double) FuzzImages.diameter(imp), 4.0, 12.0,
+			1.0, 0.1, -2.0, 1e6, Double.NaN, Double.POSITIVE_INFINITY }, { "max_radius", 0.0, 20.0, 2.0, 0.5, -1.0, 1e7,
+				Double.NaN }, { "plot", false, true }, { "results", true, false } };
+		final List<Integer> odd = FuzzCase.oddOnes(r, choices.length);
 		final Map<String, Object> in = new LinkedHashMap<>();
-		for (final Object[] c : choices) {
-			final int pick = r.nextInt(3);
-			if (pick == 0) in.put((String) c[0], c[1 + r.nextInt(c.length - 1)]);
-			else if (pick == 1) in.put((String) c[0], c[1]);
+		for (int i = 0; i < choices.length; i++) {
+			final Object[] c = choices[i];
+			if (odd.contains(i)) in.put((String) c[0], c[1 + r.nextInt(c.length - 1)]);
+			else if (r.nextBoolean()) in.put((String) c[0], c[1]);
 		}
 		return in;
 	}

@@ -66,7 +66,9 @@ import net.imglib2.type.numeric.RealType;
 class TrackMateFuzzTest {
 
 	/** Cases in the suite's run. */
-	static final int SHORT_RUN = 80;
+	static final int SHORT_RUN = 200;
+	/** The least share of cases that must detect. */
+	static final double REACH_FLOOR = 0.3;
 
 	/** The header TrackMate's messages of invalid settings start with, on a line of its own. */
 	private static final String SETTINGS_HEADER = "Invalid Contact Tracker settings:";
@@ -80,8 +82,8 @@ class TrackMateFuzzTest {
 			final long caseSeed = rnd.nextLong();
 			final SplittableRandom r = new SplittableRandom(caseSeed);
 			final ContactTrackerDetectorFactory<?> factory = new ContactTrackerDetectorFactory<>();
-			final Map<String, Object> settings = settings(r, factory.getDefaultSettings());
 			final ImagePlus imp = FuzzImages.image(r, 3);
+			final Map<String, Object> settings = settings(r, factory.getDefaultSettings(), imp);
 			final String what = "case seed " + caseSeed + ": " + imp.getWidth() + " x " + imp.getHeight() + " x " + imp
 				.getStackSize() + ", " + imp.getBitDepth() + "-bit, settings " + settings;
 			final String error;
@@ -94,16 +96,20 @@ class TrackMateFuzzTest {
 			if (error != null) {
 				refusedSettings++;
 				settingsMessage(error, what);
+				if (Boolean.getBoolean("contact.tracker.fuzz.verbose")) System.out.println(error.strip() + "  <-  " + what);
 				continue;
 			}
 			final String outcome = detect(r, imp, settings, what);
 			if (outcome == null) detected++;
-			else refusedInput++;
+			else {
+				refusedInput++;
+				if (Boolean.getBoolean("contact.tracker.fuzz.verbose")) System.out.println(outcome + "  <-  " + what);
+			}
 		}
-		System.out.println("TrackMate fuzz: " + cases + " cases, " + detected + " detected, " + refusedSettings +
-			" settings refused, " + refusedInput + " images or intervals refused, each in one line");
-		assertTrue(detected > 0 && refusedSettings > 0 && refusedInput > 0, detected + " detected, " + refusedSettings +
-			" settings refused, " + refusedInput + " refused");
+		FuzzCase.reach("TrackMate fuzz (" + refusedSettings + " settings refused, " + refusedInput +
+			" images or intervals)", cases, detected, refusedSettings + refusedInput, REACH_FLOOR);
+		assertTrue(refusedSettings > 0 && refusedInput > 0 || cases < 40, refusedSettings + " settings refused, " +
+			refusedInput + " images or intervals refused");
 	}
 
 	/**
@@ -119,15 +125,23 @@ class TrackMateFuzzTest {
 	}
 
 	/**
-	 * @return the default settings with none, one or two values changed: a number of the other type, out of range,
+	 * @return the settings a user would give for the movie (its threshold, r_out, particles' polarity; the others
+	 *         TrackMate's defaults) with one or two values changed (in a third of the cases): a number of the other type, out of range,
 	 *         not finite, text, null, missing; or an unknown key added
 	 */
-	private static Map<String, Object> settings(final SplittableRandom r, final Map<String, Object> defaults) {
+	private static Map<String, Object> settings(final SplittableRandom r, final Map<String, Object> defaults,
+		final ImagePlus imp)
+	{
 		final Map<String, Object> s = new HashMap<>(defaults);
+		s.put("GREY_THRESHOLD", FuzzImages.threshold(imp));
+		s.put("R_OUT", (double) FuzzImages.rOut(imp));
+		s.put("MIN_AREA", 5);
+		s.put("PARTICLES", FuzzImages.dark(imp) ? "dark" : "bright");
 		final List<String> keys = new ArrayList<>(s.keySet());
 		keys.sort(null); // the order of a HashMap's keys is no seed's
 		final Object[] odd = { -1, 0, 3, 1e9, -2.5, Double.NaN, Double.NEGATIVE_INFINITY, "x", "fit", "dark", "image",
 			"", null, true, 7L, 0.5f, Integer.MAX_VALUE };
+		// one or two odd values in a third of the cases: any odd value refuses the settings
 		final int changes = r.nextInt(3) == 0 ? 1 + r.nextInt(2) : 0;
 		for (int k = 0; k < changes; k++) {
 			final String key = keys.get(r.nextInt(keys.size()));
@@ -137,9 +151,6 @@ class TrackMateFuzzTest {
 				default -> s.put(key, odd[r.nextInt(odd.length)]);
 			}
 		}
-		// a threshold that the images' values reach, most of the time
-		if (s.get("GREY_THRESHOLD") instanceof Double && r.nextBoolean()) s.put("GREY_THRESHOLD", 20.0 + r.nextInt(
-			200));
 		return s;
 	}
 
