@@ -159,7 +159,16 @@ public final class SparkTrack {
 		if (o.master != null) conf.setMaster(o.master);
 		else if (!conf.contains("spark.master")) conf.setMaster("local[*]"); // embedded, without spark-submit
 		o.conf.forEach(conf::set);
-		final SparkSession spark = SparkSession.builder().config(conf).getOrCreate();
+		final SparkSession spark;
+		try {
+			spark = SparkSession.builder().config(conf).getOrCreate();
+		}
+		catch (final Exception e) { // Scala's SparkException, undeclared: a master URL or a --conf Spark cannot use
+			err.println("contact-tracker-spark: error: Spark cannot start with master " + conf.get("spark.master") +
+				(o.conf.isEmpty() ? "" : " and --conf " + String.join(" ", o.conf.keySet())) + ": " + oneLine(e
+					.getMessage()));
+			return EXIT_BAD_INPUT;
+		}
 		try {
 			spark.sparkContext().setLogLevel("WARN");
 			return track(spark, o, outDir, out, err);
