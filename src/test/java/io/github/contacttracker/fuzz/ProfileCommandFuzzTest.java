@@ -58,8 +58,8 @@ class ProfileCommandFuzzTest extends WithContext {
 
 	/** Cases in the suite's run. */
 	static final int SHORT_RUN = 150;
-	/** The least share of cases that must measure. */
-	static final double REACH_FLOOR = 0.3;
+	/** The least share of cases that must measure (0.32 to 0.35 do in long runs, 0.44 in the suite's). */
+	static final double REACH_FLOOR = 0.25;
 
 
 	@Test

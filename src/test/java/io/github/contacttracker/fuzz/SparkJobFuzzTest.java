@@ -68,8 +68,11 @@ class SparkJobFuzzTest {
 
 	/** Movies in the suite's run. */
 	static final int SHORT_RUN = 15;
-	/** The least share of movies that must be tracked and written. */
-	static final double REACH_FLOOR = 0.3;
+	/**
+	 * The least share of movies that must be tracked and written (0.34 do in a long run: a run's threshold is the
+	 * first movie's, outside some other movies' data).
+	 */
+	static final double REACH_FLOOR = 0.25;
 
 	@TempDir
 	Path dir;
