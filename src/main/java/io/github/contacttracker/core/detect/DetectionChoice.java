@@ -42,8 +42,8 @@ import io.github.contacttracker.core.image.Plane;
  * that cuts the particles into crumbs loses them, and nothing in its spots says so. By the threshold otherwise: each
  * component is one particle, and the image would find the same ones at several times the cost.
  * <p>
- * Also by the threshold where the image's seeds outnumber the threshold's particles more than
- * {@value #SEEDS_PER_PARTICLE} times: seeds on that scale are the texture of the background (a mottled or compressed
+ * Also by the threshold where the image's seeds outnumber the threshold's particles (one an area, as many as a merged
+ * area holds) more than {@value #SEEDS_PER_PARTICLE} times: seeds on that scale are the texture of the background (a mottled or compressed
  * bright field, particles whose diameter was measured on their core or ring), not particles, and fitting hundreds of
  * them costs minutes a frame for nothing the threshold does not find. Bright-field particles with rings give a few
  * seeds each, dense fields of touching particles a few per component; a texture gives hundreds per particle. Not
@@ -57,7 +57,8 @@ import io.github.contacttracker.core.image.Plane;
  * @param discarded the threshold's components discarded on the sample frames
  * @param frames the sample frames
  * @param seeds the image's seeds on the first sample frame
- * @param firstSpots the threshold's spots on the first sample frame
+ * @param firstSpots the particles the threshold's spots hold on the first sample frame: one a spot, as many as fit in
+ *        its area for a spot flagged {@code MERGED}
  */
 public record DetectionChoice(Detection detection, int merged, int spots, int discarded, int frames, int seeds,
 	int firstSpots)
@@ -88,7 +89,7 @@ public record DetectionChoice(Detection detection, int merged, int spots, int di
 			for (final Localization l : frame)
 				if (l.has(Flag.MERGED)) merged++;
 		}
-		final int firstSpots = firstPass.isEmpty() ? 0 : firstPass.get(0).size();
+		final int firstSpots = firstPass.isEmpty() ? 0 : held(firstPass.get(0), diameter);
 		final int frames = firstPass.size();
 		if (merged == 0 && discarded <= spots || !fits(first, diameter)) return new DetectionChoice(
 			Detection.THRESHOLD, 0, spots, 0, frames, -1, firstSpots);
@@ -96,6 +97,19 @@ public record DetectionChoice(Detection detection, int merged, int spots, int di
 		final boolean texture = firstSpots > 0 && seeds > SEEDS_PER_PARTICLE * firstSpots;
 		return new DetectionChoice(texture ? Detection.THRESHOLD : Detection.IMAGE, merged, spots, discarded, frames,
 			seeds, firstSpots);
+	}
+
+	/**
+	 * @return the particles the threshold's areas hold: one per area, and as many as its area holds discs of the
+	 *         diameter for one flagged {@code MERGED} (a packed field above a threshold is one area of hundreds of
+	 *         particles, whose seeds are particles, not texture)
+	 */
+	private static int held(final List<Localization> spots, final double diameter) {
+		final double disc = Math.PI / 4 * diameter * diameter;
+		long held = 0;
+		for (final Localization l : spots)
+			held += l.has(Flag.MERGED) && disc > 0 ? Math.max(1, Math.round(l.activeArea() / disc)) : 1;
+		return (int) Math.min(Integer.MAX_VALUE, held);
 	}
 
 	/**

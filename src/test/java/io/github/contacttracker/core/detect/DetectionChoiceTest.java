@@ -111,6 +111,28 @@ class DetectionChoiceTest {
 		assertTrue(crumbs.said().contains("discarded more areas than it kept (16 against 15 spots"), crumbs.said());
 	}
 
+	/**
+	 * A packed field that a threshold joins into one area: the image's seeds, one a particle, outnumber the threshold's
+	 * one spot more than {@link DetectionChoice#SEEDS_PER_PARTICLE} times, yet they are the particles its area holds,
+	 * not texture: by the image.
+	 */
+	@Test
+	void seedsOfAPackedFieldTheThresholdJoinsAreNotTakenForTexture() {
+		final List<Scenes.Truth> t = new ArrayList<>();
+		for (int i = 0; i < 12; i++)
+			for (int j = 0; j < 12; j++)
+				t.add(new Scenes.Truth(12 + 11 * i + (j % 2) * 5.5, 12 + 9.5 * j, 120, 5));
+		final int w = 152, h = 130;
+		final Plane packed = Plane.of(TestImages.bytes(Scenes.noisy(Scenes.render(w, h, (x, y) -> 30, t, Scenes
+			.blurredDisc(1, 0.3), 2), 3, 0, 255, 11), w, h));
+		final Localization joined = new Localization(0, 76, 65, 76, 65, 144 * 79, 144 * 79, 1, 60, Flag.MERGED.bit(), 3,
+			0.01, 0.01, Double.NaN, Double.NaN, 0);
+		final DetectionChoice choice = DetectionChoice.choose(List.of(List.of(joined)), 0, packed, 10);
+		assertTrue(choice.seeds() > DetectionChoice.SEEDS_PER_PARTICLE, "seeds: " + choice.seeds());
+		assertEquals(Detection.IMAGE, choice.detection(), choice.said());
+		assertTrue(choice.firstSpots() >= 100, "the area holds " + choice.firstSpots() + " particles");
+	}
+
 	/** Bright particles: their own contrast is the stronger; the same frame inverted (dark particles): the other. */
 	@Test
 	void theOtherContrastIsSeenWhereTheParticlesAreDark() {
