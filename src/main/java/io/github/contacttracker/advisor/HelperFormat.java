@@ -40,6 +40,14 @@ public final class HelperFormat {
 		return Numbers.significant(v, SIGNIFICANT_DIGITS);
 	}
 
+	/**
+	 * @return {@code v} rounded as {@link #fmt} writes it: a value the helper suggests is the one a person reads and
+	 *         copies, and the one tracked with
+	 */
+	public static double rounded(final double v) {
+		return Double.isFinite(v) ? Double.parseDouble(fmt(v)) : v;
+	}
+
 	/** @return a measured value: rounded to 0.01 first ({@link #round2}), then written as {@link #fmt} does */
 	public static String fmt2(final double v) {
 		return fmt(round2(v));

@@ -135,9 +135,12 @@ public final class ProfileAnalysis {
 			centres = List.copyOf(centres);
 		}
 
-		/** @return {@link #threshold} rounded up to a whole grey level when the data are integers */
+		/**
+		 * @return {@link #threshold} rounded up to a whole grey level when the data are integers, else to the helper's
+		 *         significant digits ({@link HelperFormat#rounded}: a change of at most 0.05%, far below the noise)
+		 */
 		public double suggestedThreshold(final boolean integerData) {
-			return integerData ? Math.ceil(threshold - 1e-9) : threshold;
+			return integerData ? Math.ceil(threshold - 1e-9) : HelperFormat.rounded(threshold);
 		}
 
 		/** @return {@link #diameter} rounded to 0.01 px, as the helper prints it */

@@ -27,6 +27,7 @@ import java.util.Set;
 import java.util.function.IntFunction;
 
 import io.github.contacttracker.advisor.Finding;
+import io.github.contacttracker.advisor.HelperFormat;
 import io.github.contacttracker.advisor.ProfileAnalysis;
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.core.Method;
@@ -332,7 +333,10 @@ public final class MeasuredSettings {
 		}
 		if (!thresholdGiven) {
 			final double[] range = ImagePlusFrames.range(seen.frame, 0);
-			v = v.with(TrackingSettings.THRESHOLD, 0.5 * (range[0] + range[1]));
+			// (float data: as the helper writes a value it suggests)
+			final double middle = 0.5 * (range[0] + range[1]);
+			v = v.with(TrackingSettings.THRESHOLD, range[0] == Math.rint(range[0]) && range[1] == Math.rint(range[1])
+				? middle : HelperFormat.rounded(middle));
 			said.append(" --threshold ").append(optionValue(v.get(TrackingSettings.THRESHOLD)));
 		}
 		if (!rOutGiven) {

@@ -46,6 +46,8 @@ import io.github.contacttracker.lab.sim.Quantiser;
 import io.github.contacttracker.lab.sim.RadialProfile;
 import io.github.contacttracker.lab.sim.SmallParticles;
 import net.imglib2.RandomAccessibleInterval;
+import net.imglib2.converter.Converters;
+import net.imglib2.type.numeric.real.FloatType;
 import net.imglib2.type.numeric.integer.UnsignedByteType;
 
 /** What {@code track} measures when values are not given: the polarity of the particles among them. */
@@ -101,6 +103,30 @@ class MeasuredSettingsTest {
 			TrackingSettings.PARTICLES, TrackingSettings.DARK), Set.of(TrackingSettings.PARTICLES));
 		assertEquals(fromBright.settings().withText(TrackingSettings.PARTICLES, TrackingSettings.DARK), told.settings());
 		assertEquals(fromBright.notice(), told.notice(), "nothing measured about the polarity: it was given");
+	}
+
+	/**
+	 * On float data the threshold is suggested as the helper writes a number, four significant digits (a change far
+	 * below the noise), and that is the value tracked with, by the helper's profile and by the image's fall-back
+	 * alike: a user copies what the notice says and gets the same run.
+	 */
+	@Test
+	void aThresholdMeasuredOnFloatDataReadsAsWrittenAndIsTheOneUsed() {
+		final RandomAccessibleInterval<FloatType> isolated = floats(brightField());
+		final RandomAccessibleInterval<FloatType> packed = floats(firstFrame(DetectionScenes.dense(1, 3)));
+		for (final RandomAccessibleInterval<FloatType> frame : List.of(isolated, packed)) {
+			final MeasuredSettings.Result r = MeasuredSettings.of("f.tif", frame, false, SettingValues.defaults(), Set
+				.of());
+			final double t = r.settings().get(TrackingSettings.THRESHOLD);
+			final String written = MeasuredSettings.optionValue(t);
+			assertTrue(written.replace("-", "").replace(".", "").replaceFirst("^0+", "").length() <= 4, written);
+			assertTrue(r.notice().contains("--threshold " + written + " "), r.notice());
+		}
+	}
+
+	/** @return {@code frame}'s values times 1.37 plus 0.3, as 32-bit floats: grey levels that are not whole */
+	private static RandomAccessibleInterval<FloatType> floats(final RandomAccessibleInterval<UnsignedByteType> frame) {
+		return Converters.convert(frame, (i, o) -> o.setReal(1.37 * i.getRealDouble() + 0.3), new FloatType());
 	}
 
 	/**
