@@ -39,6 +39,7 @@ import io.github.contacttracker.plot.ProfilePlots;
 import io.github.contacttracker.report.ProfileReport;
 import io.github.contacttracker.report.ShownFrameProfile;
 import io.github.contacttracker.pipeline.MeasuredSettings;
+import io.github.contacttracker.settings.FrontEnd;
 import io.github.contacttracker.settings.SettingValues;
 import io.github.contacttracker.settings.TrackingSettings;
 import net.imglib2.RandomAccessibleInterval;
@@ -170,7 +171,7 @@ public final class ProfileCommand extends ContactTrackerCli.Subcommand {
 		try {
 			final SettingValues v = MeasuredSettings.of(movie.getFileName().toString(), frame, integerData, SettingValues
 				.defaults(), options.value(diameterOption), !particlesGiven ? null : dark ? TrackingSettings.DARK
-					: TrackingSettings.PARTICLES.defaultValue()).settings();
+					: TrackingSettings.PARTICLES.defaultValue(), FrontEnd.COMMAND_LINE).settings();
 			return " --detection " + v.get(TrackingSettings.DETECTION) + " --threshold " + MeasuredSettings.optionValue(v
 				.get(TrackingSettings.THRESHOLD)) + " --r-out " + MeasuredSettings.optionValue(v.get(TrackingSettings.R_OUT)) +
 				" --diameter " + MeasuredSettings.optionValue(v.diameter()) + (v.dark() ? " --particles dark" : "");

@@ -45,6 +45,7 @@ import io.github.contacttracker.pipeline.MeasuredSettings;
 import io.github.contacttracker.pipeline.Outputs;
 import io.github.contacttracker.pipeline.TrackingPipeline;
 import io.github.contacttracker.pipeline.TrackingResult;
+import io.github.contacttracker.settings.FrontEnd;
 import io.github.contacttracker.settings.Option;
 import io.github.contacttracker.settings.CommandOptions;
 import io.github.contacttracker.settings.SettingOptions;
@@ -199,7 +200,7 @@ final class TrackCommand extends ContactTrackerCli.Subcommand {
 		final SettingValues settings, final StringBuilder notice)
 	{
 		final MeasuredSettings.Result r = MeasuredSettings.of(input.getFileName().toString(), frames::frame, frames
-			.frameCount(), imp.getBitDepth() != 32, settings, settingOptions.given());
+			.frameCount(), imp.getBitDepth() != 32, settings, settingOptions.given(), FrontEnd.COMMAND_LINE);
 		if (notice.length() > 0 && !r.notice().isEmpty()) notice.append('\n');
 		notice.append(r.notice());
 		return r.settings();

@@ -494,7 +494,7 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 		final MeasuredSettings.Result r;
 		try {
 			r = MeasuredSettings.of(imp.getTitle(), frames::frame, frames.frameCount(), imp.getBitDepth() != 32, before,
-				given);
+				given, FrontEnd.FIJI);
 		}
 		catch (final InvalidInputException e) {
 			throw new InvalidInputException("the macro gives no threshold and r_out, and they cannot be measured: " + e
@@ -647,7 +647,7 @@ public class ContactTrackerCommand extends OwnCommand implements Previewable {
 			try {
 				m = MeasuredSettings.of(imp.getTitle(), p.frameAsGiven(imp), p.integerData(), SettingValues.defaults()
 					.withText(TrackingSettings.METHOD, method).withText(TrackingSettings.DETECTION, detection), diameter,
-					TrackingSettings.DARK.equals(particles) ? TrackingSettings.DARK : null);
+					TrackingSettings.DARK.equals(particles) ? TrackingSettings.DARK : null, FrontEnd.FIJI);
 			}
 			catch (final InvalidInputException e) {
 				final String message = TITLE + ": cannot measure from the image: " + e.getMessage();

@@ -34,6 +34,7 @@ import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.core.Localization;
 import io.github.contacttracker.io.Calibration;
 import io.github.contacttracker.io.SpotColumn;
+import io.github.contacttracker.settings.FrontEnd;
 import io.github.contacttracker.settings.Setting;
 import io.github.contacttracker.settings.SettingValues;
 import io.github.contacttracker.settings.TrackingSettings;
@@ -94,7 +95,7 @@ public final class ColumnTracking {
 			named.add(s);
 		}
 		final MeasuredSettings.Result measured = MeasuredSettings.of(name, frames::frame, frames.frameCount(), frames
-			.integerData(), settings, named);
+			.integerData(), settings, named, FrontEnd.COMMAND_LINE);
 		final TrackingPipeline pipeline = new TrackingPipeline(measured.settings());
 		final FrameSource source = frames.source(name);
 		final TrackingResult result;

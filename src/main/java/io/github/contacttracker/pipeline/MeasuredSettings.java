@@ -22,7 +22,9 @@
 package io.github.contacttracker.pipeline;
 
 import java.math.BigDecimal;
+import java.util.ArrayList;
 import java.util.HashSet;
+import java.util.List;
 import java.util.Set;
 import java.util.function.IntFunction;
 
@@ -38,6 +40,7 @@ import io.github.contacttracker.core.image.NoiseEstimate;
 import io.github.contacttracker.core.image.Plane;
 import io.github.contacttracker.core.image.Inversion;
 import io.github.contacttracker.ij.ImagePlusFrames;
+import io.github.contacttracker.settings.FrontEnd;
 import io.github.contacttracker.settings.Setting;
 import io.github.contacttracker.settings.SettingValues;
 import io.github.contacttracker.settings.TrackingSettings;
@@ -72,9 +75,9 @@ public final class MeasuredSettings {
 	 * @throws InvalidInputException when the threshold or r_out is missing and cannot be measured
 	 */
 	public static Result of(final String name, final RandomAccessibleInterval<?> first, final boolean integerData,
-		final SettingValues settings, final Set<Setting<?>> given)
+		final SettingValues settings, final Set<Setting<?>> given, final FrontEnd words)
 	{
-		return of(name, first, 1, true, integerData, settings, given);
+		return of(name, first, 1, true, integerData, settings, given, words);
 	}
 
 	/**
@@ -88,7 +91,7 @@ public final class MeasuredSettings {
 	 * @param particles the contrast given ({@link TrackingSettings#DARK} or the default), null for none (measured)
 	 */
 	public static Result of(final String name, final RandomAccessibleInterval<?> frame, final boolean integerData,
-		final SettingValues chosen, final double diameter, final String particles)
+		final SettingValues chosen, final double diameter, final String particles, final FrontEnd words)
 	{
 		SettingValues v = chosen;
 		final Set<Setting<?>> given = new HashSet<>();
@@ -100,7 +103,7 @@ public final class MeasuredSettings {
 			v = v.withText(TrackingSettings.PARTICLES, particles);
 			given.add(TrackingSettings.PARTICLES);
 		}
-		return of(name, frame, integerData, v, given);
+		return of(name, frame, integerData, v, given, words);
 	}
 
 	/**
@@ -116,18 +119,19 @@ public final class MeasuredSettings {
 	 */
 	@SuppressWarnings({ "unchecked", "rawtypes" })
 	public static Result of(final String name, final IntFunction<? extends RandomAccessibleInterval<?>> frame,
-		final int count, final boolean integerData, final SettingValues settings, final Set<Setting<?>> given)
+		final int count, final boolean integerData, final SettingValues settings, final Set<Setting<?>> given,
+		final FrontEnd words)
 	{
 		final RandomAccessibleInterval<?> first = frame.apply(0);
 		if (count >= 3 && ProfileAnalysis.blank((RandomAccessibleInterval) first))
 			for (final int t : new int[] { count / 2, count - 1 })
 				try {
-					return of(name, frame.apply(t), t + 1, false, integerData, settings, given);
+					return of(name, frame.apply(t), t + 1, false, integerData, settings, given, words);
 				}
 				catch (final InvalidInputException e) {
 					// the next frame, then the first frame's fallbacks
 				}
-		return of(name, first, 1, true, integerData, settings, given);
+		return of(name, first, 1, true, integerData, settings, given, words);
 	}
 
 	/**
@@ -137,19 +141,20 @@ public final class MeasuredSettings {
 	 */
 	@SuppressWarnings({ "unchecked", "rawtypes" })
 	private static Result of(final String name, final RandomAccessibleInterval<?> first, final int number,
-		final boolean fallBack, final boolean integerData, final SettingValues settings, final Set<Setting<?>> given)
+		final boolean fallBack, final boolean integerData, final SettingValues settings, final Set<Setting<?>> given,
+		final FrontEnd words)
 	{
 		final boolean thresholdGiven = given.contains(TrackingSettings.THRESHOLD), rOutGiven = given.contains(
 			TrackingSettings.R_OUT), particlesGiven = given.contains(TrackingSettings.PARTICLES);
 		final boolean diameter = settings.diameter() > 0;
 		if (thresholdGiven && rOutGiven && diameter) return new Result(settings, "");
 		SettingValues v = settings;
-		final StringBuilder said = new StringBuilder();
+		final Said said = new Said();
 		if (!thresholdGiven && !particlesGiven && !settings.dark() && ProfileAnalysis.looksDark(
 			(RandomAccessibleInterval) first))
 		{
 			v = v.withText(TrackingSettings.PARTICLES, TrackingSettings.DARK);
-			said.append(" --particles dark");
+			said.add(TrackingSettings.PARTICLES, TrackingSettings.DARK);
 		}
 		final RandomAccessibleInterval seen = v.dark() ? Inversion.of((RandomAccessibleInterval) first) : first;
 		final ProfileAnalysis.Result r;
@@ -161,18 +166,22 @@ public final class MeasuredSettings {
 			final Seen frame = new Seen(seen);
 			final boolean otherContrast = autoSeesOtherContrast(v, frame);
 			if (imageCanTake(v) && !(auto(v) && (thresholdGiven && rOutGiven || otherContrast))) return byImage(name,
-				frame, v, thresholdGiven, rOutGiven, said, false, e);
+				frame, v, thresholdGiven, rOutGiven, said, false, e, words);
 			if (thresholdGiven && rOutGiven) return new Result(settings, "contact-tracker: " + name + ": the diameter " +
-				"could not be measured (" + InvalidInputException.oneLine(e.getMessage()) + "); tracked without it (give --diameter)");
-			throw new InvalidInputException("cannot measure " + (thresholdGiven ? "" : "--threshold ") + (thresholdGiven ||
-				rOutGiven ? "" : "and ") + (rOutGiven ? "" : "--r-out ") + "on the first frame of " + name + ": " + e
-					.getMessage() + (otherContrast && !v.dark() ? "; the inverted frame shows stronger blobs: if the particles " +
-						"are darker than the background, give --particles dark" : "") + byImageHint(frame, v) + "; or give " +
-				"them (contact-tracker profile MOVIE --at X,Y measures one particle)", e);
+				"could not be measured (" + InvalidInputException.oneLine(e.getMessage()) + "); tracked without it (give " +
+				words.name(TrackingSettings.DIAMETER) + ")");
+			final List<String> missing = new ArrayList<>();
+			if (!thresholdGiven) missing.add(words.name(TrackingSettings.THRESHOLD));
+			if (!rOutGiven) missing.add(words.name(TrackingSettings.R_OUT));
+			throw new InvalidInputException("cannot measure " + String.join(" and ", missing) + " on the first frame of " +
+				name + ": " + e.getMessage() + (otherContrast && !v.dark() ? "; the inverted frame shows stronger blobs: if " +
+					"the particles are darker than the background, give " + words.value(TrackingSettings.PARTICLES,
+						TrackingSettings.DARK) : "") + byImageHint(frame, v, words) + "; or give them (" + words.measuresOne() +
+				" measures one particle)", e);
 		}
 		if (!thresholdGiven) {
 			v = v.with(TrackingSettings.THRESHOLD, r.suggestedThreshold(integerData));
-			said.append(" --threshold ").append(optionValue(v.get(TrackingSettings.THRESHOLD)));
+			said.add(TrackingSettings.THRESHOLD, optionValue(v.get(TrackingSettings.THRESHOLD)));
 			final double[] range = ImagePlusFrames.range(seen, 0);
 			// outside the frame's range. Above every pixel: what the helper took for particles' cores are not (e.g. the
 			// bright rings around the dark cores of a bright-field movie, inverted). Below: the helper's background lies
@@ -186,41 +195,42 @@ public final class MeasuredSettings {
 					// isolated blurred spheres whose rim the helper measured (only no threshold keeps two apart at
 					// contact): its diameter and r_out stand
 					final boolean rim = r.findings().stream().anyMatch(f -> f instanceof Finding.DiameterFromHalfHeight);
-					final StringBuilder kept = new StringBuilder(particlesGiven || !v.dark() ? "" : " --particles dark");
+					final Said kept = new Said();
+					if (!particlesGiven && v.dark()) kept.add(TrackingSettings.PARTICLES, TrackingSettings.DARK);
 					SettingValues fallen = settings.withText(TrackingSettings.PARTICLES, v.get(TrackingSettings.PARTICLES));
 					if (rim && !diameter) {
 						fallen = fallen.with(TrackingSettings.DIAMETER, r.suggestedDiameter());
-						kept.append(" --diameter ").append(optionValue(r.suggestedDiameter()));
+						kept.add(TrackingSettings.DIAMETER, optionValue(r.suggestedDiameter()));
 					}
 					if (rim && !rOutGiven) {
 						fallen = fallen.with(TrackingSettings.R_OUT, r.suggestedROut());
-						kept.append(" --r-out ").append(optionValue(r.suggestedROut()));
+						kept.add(TrackingSettings.R_OUT, optionValue(r.suggestedROut()));
 					}
 					return byImage(name, frame, fallen, false, rOutGiven || rim, kept, rim && (!diameter || !rOutGiven),
-						new InvalidInputException("its threshold " + optionValue(t) + " lies " + side + " every pixel"));
+						new InvalidInputException("its threshold " + optionValue(t) + " lies " + side + " every pixel"), words);
 				}
-				throw new InvalidInputException("cannot measure --threshold on the first frame of " + name + ": the " +
-					"helper's " + optionValue(t) + " lies " + side + " its every pixel (" + optionValue(above ? range[1]
-						: range[0]) + ")" + (above && !v.dark() ? "; if the particles are darker than the background, give " +
-							"--particles dark" : "") + byImageHint(frame, v) + "; or give the values (contact-tracker profile " +
-					"MOVIE --at X,Y measures one particle)");
+				throw new InvalidInputException("cannot measure " + words.name(TrackingSettings.THRESHOLD) + " on the first " +
+					"frame of " + name + ": the helper's " + optionValue(t) + " lies " + side + " its every pixel (" +
+					optionValue(above ? range[1] : range[0]) + ")" + (above && !v.dark() ? "; if the particles are darker " +
+						"than the background, give " + words.value(TrackingSettings.PARTICLES, TrackingSettings.DARK) : "") +
+					byImageHint(frame, v, words) + "; or give the values (" + words.measuresOne() + " measures one particle)");
 			}
 		}
 		if (!rOutGiven) {
 			v = v.with(TrackingSettings.R_OUT, r.suggestedROut());
-			said.append(" --r-out ").append(optionValue(v.get(TrackingSettings.R_OUT)));
+			said.add(TrackingSettings.R_OUT, optionValue(v.get(TrackingSettings.R_OUT)));
 		}
 		if (!diameter) {
 			v = v.with(TrackingSettings.DIAMETER, r.suggestedDiameter());
-			said.append(" --diameter ").append(optionValue(v.diameter()));
+			said.add(TrackingSettings.DIAMETER, optionValue(v.diameter()));
 		}
 		final int minArea = r.suggestedMinArea(v.get(TrackingSettings.THRESHOLD));
 		if (!given.contains(TrackingSettings.MIN_AREA) && minArea < v.get(TrackingSettings.MIN_AREA)) {
 			v = v.with(TrackingSettings.MIN_AREA, minArea);
-			said.append(" --min-area ").append(minArea);
+			said.add(TrackingSettings.MIN_AREA, String.valueOf(minArea));
 		}
-		return new Result(v, "contact-tracker: " + name + ": measured on frame " + number + " by the profile helper:" + said +
-			" (given values win; 'contact-tracker profile " + name + "' shows how)");
+		return new Result(v, "contact-tracker: " + name + ": measured on frame " + number + " by the profile helper:" + said
+			.in(words) + " (given values win; " + words.showsHow(name) + " shows how)");
 	}
 
 	/**
@@ -292,13 +302,16 @@ public final class MeasuredSettings {
 	 *         the method is the paper's (which keeps its threshold)
 	 */
 	@SuppressWarnings({ "rawtypes", "unchecked" })
-	private static String byImageHint(final Seen seen, final SettingValues v) {
+	private static String byImageHint(final Seen seen, final SettingValues v, final FrontEnd words) {
 		if (v.get(TrackingSettings.METHOD).equals(Method.PAPER.key())) return "";
 		final double d = seen.blobs();
 		if (!(d > 0)) return "";
 		final String dd = optionValue(Math.round(d * 10) / 10.0);
-		return "; its blobs are about " + dd + " px across: --detection image" + (v.diameter() > 0 ? "" : " --diameter " +
-			dd) + " tracks them by their image, without a threshold";
+		final Said image = new Said();
+		image.add(TrackingSettings.DETECTION, TrackingSettings.IMAGE);
+		if (!(v.diameter() > 0)) image.add(TrackingSettings.DIAMETER, dd);
+		return "; its blobs are about " + dd + " px across:" + image.in(words) + " tracks them by their image, without " +
+			"a threshold";
 	}
 
 	/**
@@ -315,21 +328,22 @@ public final class MeasuredSettings {
 	 */
 	@SuppressWarnings({ "rawtypes", "unchecked" })
 	private static Result byImage(final String name, final Seen seen, final SettingValues given,
-		final boolean thresholdGiven, final boolean rOutGiven, final StringBuilder said, final boolean rimKept,
-		final InvalidInputException why)
+		final boolean thresholdGiven, final boolean rOutGiven, final Said said, final boolean rimKept,
+		final InvalidInputException why, final FrontEnd words)
 	{
 		SettingValues v = given;
 		if (!v.get(TrackingSettings.DETECTION).equals(TrackingSettings.IMAGE)) { // auto: no threshold to choose by
 			v = v.withText(TrackingSettings.DETECTION, TrackingSettings.IMAGE);
-			said.append(" --detection image");
+			said.add(TrackingSettings.DETECTION, TrackingSettings.IMAGE);
 		}
 		if (!(v.diameter() > 0)) {
 			final double d = seen.blobs();
 			if (!(d > 0)) throw new InvalidInputException("cannot measure the particles on the first frame of " + name +
 				": " + InvalidInputException.oneLine(why.getMessage()) + ", and the frame holds no blob to measure " +
-				"their diameter on; give --diameter (contact-tracker profile MOVIE --at X,Y measures one particle)", why);
+				"their diameter on; give " + words.name(TrackingSettings.DIAMETER) + " (" + words.measuresOne() + " measures " +
+				"one particle)", why);
 			v = v.with(TrackingSettings.DIAMETER, Math.round(d * 100) / 100.0);
-			said.append(" --diameter ").append(optionValue(v.diameter()));
+			said.add(TrackingSettings.DIAMETER, optionValue(v.diameter()));
 		}
 		if (!thresholdGiven) {
 			final double[] range = ImagePlusFrames.range(seen.frame, 0);
@@ -337,17 +351,33 @@ public final class MeasuredSettings {
 			final double middle = 0.5 * (range[0] + range[1]);
 			v = v.with(TrackingSettings.THRESHOLD, range[0] == Math.rint(range[0]) && range[1] == Math.rint(range[1])
 				? middle : HelperFormat.rounded(middle));
-			said.append(" --threshold ").append(optionValue(v.get(TrackingSettings.THRESHOLD)));
+			said.add(TrackingSettings.THRESHOLD, optionValue(v.get(TrackingSettings.THRESHOLD)));
 		}
 		if (!rOutGiven) {
 			final long w = seen.frame.dimension(0), h = seen.frame.dimension(1);
 			v = v.with(TrackingSettings.R_OUT, Math.min(Math.min(v.diameter(), Math.hypot(w, h)), spacedROut(seen.plane(),
 				v.diameter())));
-			said.append(" --r-out ").append(optionValue(v.get(TrackingSettings.R_OUT)));
+			said.add(TrackingSettings.R_OUT, optionValue(v.get(TrackingSettings.R_OUT)));
 		}
 		return new Result(v, "contact-tracker: " + name + ": the profile helper " + (rimKept ? "measured the particles' " +
 			"rim but no threshold (" : "could not measure (") + InvalidInputException.oneLine(why.getMessage()) +
-			"); tracked by the particles' image:" + said + " (given values win)");
+			"); tracked by the particles' image:" + said.in(words) + " (given values win)");
+	}
+
+	/** The values a notice says were measured, in order, said in a front end's words ({@link FrontEnd#values}). */
+	private static final class Said {
+		private final List<Setting<?>> settings = new ArrayList<>();
+		private final List<String> values = new ArrayList<>();
+
+		void add(final Setting<?> setting, final String value) {
+			settings.add(setting);
+			values.add(value);
+		}
+
+		/** @return the values with a space before them, or nothing */
+		String in(final FrontEnd words) {
+			return settings.isEmpty() ? "" : " " + words.values(settings, values);
+		}
 	}
 
 	/**

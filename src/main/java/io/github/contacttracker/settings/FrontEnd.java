@@ -79,18 +79,58 @@ public enum FrontEnd {
 	}
 
 	private String set(final List<Setting<?>> settings, final List<String> values) {
+		return (this == COMMAND_LINE ? "use " : "set ") + phrase(settings, values, " to ", " and ");
+	}
+
+	/**
+	 * @return the settings with their values: options on the command line, else each field's label, {@code to}, its
+	 *         value, joined by {@code and} (Fiji: then the macro keys)
+	 */
+	private String phrase(final List<Setting<?>> settings, final List<String> values, final String to,
+		final String and)
+	{
 		final List<String> fields = new ArrayList<>(), options = new ArrayList<>(), keys = new ArrayList<>();
 		for (int i = 0; i < settings.size(); i++) {
 			final Setting<?> s = settings.get(i);
-			fields.add("'" + s.label() + "' to " + values.get(i));
+			fields.add("'" + s.label() + "'" + to + values.get(i));
 			options.add(s.cliOption() + " " + values.get(i));
 			keys.add(s.name() + "=" + values.get(i));
 		}
 		return switch (this) {
-			case COMMAND_LINE -> "use " + String.join(" ", options);
-			case FIJI -> "set " + String.join(" and ", fields) + " (macro " + String.join(" ", keys) + ")";
-			case TRACKMATE -> "set " + String.join(" and ", fields);
+			case COMMAND_LINE -> String.join(" ", options);
+			case FIJI -> String.join(and, fields) + " (macro " + String.join(" ", keys) + ")";
+			case TRACKMATE -> String.join(and, fields);
 		};
+	}
+
+	/**
+	 * @param setting a tracking setting
+	 * @param value a value of it, as typed
+	 * @return the setting with that value, as this front end's user gives it, to be read after "give":
+	 *         {@code --particles dark}, {@code 'Particles' dark (macro particles=dark)}, {@code 'Particles' dark}
+	 */
+	public String value(final Setting<?> setting, final String value) {
+		return values(List.of(setting), List.of(value));
+	}
+
+	/**
+	 * @return settings with their values as one phrase, as {@link #value} gives one: {@code --detection image
+	 *         --diameter 13.8}, {@code 'Detection' image, 'Diameter' 13.8 (macro detection=image diameter=13.8)}
+	 */
+	public String values(final List<Setting<?>> settings, final List<String> values) {
+		return phrase(settings, values, " ", ", ");
+	}
+
+	/** @return what measures one particle the user points to, as the subject of "measures one particle" */
+	public String measuresOne() {
+		return this == COMMAND_LINE ? "contact-tracker profile MOVIE --at X,Y" : "Plugins > Tracking > Contact Tracker " +
+			"Profile, a click on the particle,";
+	}
+
+	/** @return what shows how the profile helper measured a movie's values, as the subject of "shows how" */
+	public String showsHow(final String movie) {
+		return this == COMMAND_LINE ? "'contact-tracker profile " + movie + "'" : "Plugins > Tracking > Contact " +
+			"Tracker Profile";
 	}
 
 	/**

@@ -62,6 +62,7 @@ import io.github.contacttracker.pipeline.MeasuredSettings;
 import io.github.contacttracker.pipeline.Outputs;
 import io.github.contacttracker.pipeline.TrackingPipeline;
 import io.github.contacttracker.pipeline.TrackingResult;
+import io.github.contacttracker.settings.FrontEnd;
 import io.github.contacttracker.settings.Setting;
 import io.github.contacttracker.settings.SettingValues;
 import io.github.contacttracker.settings.TrackingSettings;
@@ -305,7 +306,7 @@ public final class SparkTrack {
 			final String path = movie.replaceAll("/+$", "");
 			final MeasuredSettings.Result measured = MeasuredSettings.of(path.substring(path.lastIndexOf('/') + 1),
 				frames::frame, frames.frameCount(), !open.floats(), settings, givenNames.stream().map(
-					TrackingSettings::named).collect(Collectors.toSet()));
+					TrackingSettings::named).collect(Collectors.toSet()), FrontEnd.COMMAND_LINE);
 			final TrackingPipeline pipeline = new TrackingPipeline(measured.settings());
 			final FrameSource source = pipeline.frames(FrameSource.of(frames, movie));
 			pipeline.checkThreshold(source);

@@ -21,6 +21,7 @@
  */
 package io.github.contacttracker.trackmate;
 
+import io.github.contacttracker.settings.FrontEnd;
 import io.github.contacttracker.settings.Setting;
 import io.github.contacttracker.settings.SettingValues;
 import io.github.contacttracker.settings.TrackMateSettings;
@@ -388,7 +389,7 @@ public final class ContactTrackerConfigurationPanel extends ConfigurationPanel {
 		final MeasuredSettings.Result m;
 		try {
 			m = MeasuredSettings.of(imp.getTitle(), p.frameAsGiven(imp), p.integerData(), chosen, diameter, dark
-				? TrackingSettings.DARK : null);
+				? TrackingSettings.DARK : null, FrontEnd.TRACKMATE);
 		}
 		catch (final InvalidInputException e) {
 			return () -> {

@@ -54,6 +54,7 @@ import ij.WindowManager;
 import ij.macro.Interpreter;
 import ij.measure.ResultsTable;
 import ij.process.ColorProcessor;
+import io.github.contacttracker.settings.FrontEnd;
 import io.github.contacttracker.core.Connectivity;
 import io.github.contacttracker.core.Method;
 import io.github.contacttracker.core.TrackerParameters;
@@ -265,7 +266,7 @@ class MacroTest {
 		final ImagePlus imp = Simulated.image();
 		final io.github.contacttracker.pipeline.MeasuredSettings.Result expected = io.github.contacttracker.pipeline
 			.MeasuredSettings.of(imp.getTitle(), ImagePlusFrames.of(imp, 0).frame(0), true,
-				io.github.contacttracker.settings.SettingValues.defaults(), java.util.Set.of());
+				io.github.contacttracker.settings.SettingValues.defaults(), java.util.Set.of(), FrontEnd.COMMAND_LINE);
 		WindowManager.setTempCurrentImage(imp);
 		final String printed;
 		try {

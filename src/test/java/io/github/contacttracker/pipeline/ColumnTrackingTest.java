@@ -35,6 +35,7 @@ import java.util.SplittableRandom;
 
 import org.junit.jupiter.api.Test;
 
+import io.github.contacttracker.settings.FrontEnd;
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.core.Localization;
 import io.github.contacttracker.io.Calibration;
@@ -126,7 +127,7 @@ class ColumnTrackingTest {
 		final SettingValues settings = SettingValues.defaults().withText(TrackingSettings.THRESHOLD, "100").withText(
 			TrackingSettings.R_OUT, "30").withText(TrackingSettings.METHOD, "paper");
 		final MeasuredSettings.Result m = MeasuredSettings.of("sim", ArrayImgs.unsignedBytes(planes[0], W, H), true,
-			settings, Set.of(TrackingSettings.THRESHOLD, TrackingSettings.R_OUT, TrackingSettings.METHOD));
+			settings, Set.of(TrackingSettings.THRESHOLD, TrackingSettings.R_OUT, TrackingSettings.METHOD), FrontEnd.COMMAND_LINE);
 		final List<Localization> spots = new TrackingPipeline(m.settings()).run(FrameSource.of(FRAMES,
 			t -> ArrayImgs.unsignedBytes(planes[t], W, H), Calibration.PIXELS, "sim", null),
 			false).spots();

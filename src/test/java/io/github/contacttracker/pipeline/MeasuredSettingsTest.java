@@ -33,6 +33,7 @@ import java.util.SplittableRandom;
 
 import org.junit.jupiter.api.Test;
 
+import io.github.contacttracker.settings.FrontEnd;
 import io.github.contacttracker.advisor.ProfileAnalysis;
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.core.image.Inversion;
@@ -88,7 +89,7 @@ class MeasuredSettingsTest {
 		assertFalse(ProfileAnalysis.looksDark(dark), "1.avi inverted is not taken for dark either");
 		final SettingValues defaults = SettingValues.defaults();
 		final InvalidInputException e = assertThrows(InvalidInputException.class, () -> MeasuredSettings.of("bf.tif",
-			dark, true, defaults, Set.of()));
+			dark, true, defaults, Set.of(), FrontEnd.COMMAND_LINE));
 		assertTrue(e.getMessage().startsWith("cannot measure --threshold on the first frame of bf.tif: the helper's "),
 			e.getMessage());
 		assertTrue(e.getMessage().contains(" lies above its every pixel ("), e.getMessage());
@@ -98,11 +99,45 @@ class MeasuredSettingsTest {
 		assertTrue(e.getMessage().contains("; its blobs are about ") && e.getMessage().contains(
 			" px across: --detection image --diameter "), e.getMessage());
 
-		final MeasuredSettings.Result fromBright = MeasuredSettings.of("bf.tif", bright, true, defaults, Set.of());
+		final MeasuredSettings.Result fromBright = MeasuredSettings.of("bf.tif", bright, true, defaults, Set.of(), FrontEnd.COMMAND_LINE);
 		final MeasuredSettings.Result told = MeasuredSettings.of("bf.tif", dark, true, defaults.withText(
-			TrackingSettings.PARTICLES, TrackingSettings.DARK), Set.of(TrackingSettings.PARTICLES));
+			TrackingSettings.PARTICLES, TrackingSettings.DARK), Set.of(TrackingSettings.PARTICLES), FrontEnd.COMMAND_LINE);
 		assertEquals(fromBright.settings().withText(TrackingSettings.PARTICLES, TrackingSettings.DARK), told.settings());
 		assertEquals(fromBright.notice(), told.notice(), "nothing measured about the polarity: it was given");
+	}
+
+	/**
+	 * What the helper says, where it measures and where it cannot, is said in the words of the front end it runs in: a
+	 * Fiji user is pointed to the dialog's fields and their macro keys, and to the Profile command, never to an
+	 * option of the command line; a TrackMate user to the panel's fields. The command line's words are its options.
+	 */
+	@Test
+	void theHelperSpeaksTheFrontEndsWords() {
+		final RandomAccessibleInterval<UnsignedByteType> dark = inverted(brightField());
+		final InvalidInputException fiji = assertThrows(InvalidInputException.class, () -> MeasuredSettings.of("bf.tif",
+			dark, true, SettingValues.defaults(), Set.of(), FrontEnd.FIJI));
+		assertFalse(fiji.getMessage().contains("--"), fiji.getMessage());
+		assertTrue(fiji.getMessage().startsWith("cannot measure 'Threshold' (macro threshold) on the first frame"), fiji
+			.getMessage());
+		assertTrue(fiji.getMessage().contains("give 'Particles' dark (macro particles=dark)"), fiji.getMessage());
+		assertTrue(fiji.getMessage().contains("(Plugins > Tracking > Contact Tracker Profile, a click on the particle, " +
+			"measures one particle)"), fiji.getMessage());
+		final InvalidInputException cli = assertThrows(InvalidInputException.class, () -> MeasuredSettings.of("bf.tif",
+			dark, true, SettingValues.defaults(), Set.of(), FrontEnd.COMMAND_LINE));
+		assertTrue(cli.getMessage().contains("give --particles dark") && cli.getMessage().contains(
+			"(contact-tracker profile MOVIE --at X,Y measures one particle)"), cli.getMessage());
+
+		final RandomAccessibleInterval<UnsignedByteType> packed = firstFrame(DetectionScenes.dense(1, 3));
+		final MeasuredSettings.Result trackMate = MeasuredSettings.of("dense.tif", packed, true, SettingValues
+			.defaults(), Set.of(), FrontEnd.TRACKMATE);
+		assertFalse(trackMate.notice().contains("--"), trackMate.notice());
+		assertTrue(trackMate.notice().contains("tracked by the particles' image: 'Detection' image, 'Particle diameter' "),
+			trackMate.notice());
+		final MeasuredSettings.Result line = MeasuredSettings.of("dense.tif", packed, true, SettingValues.defaults(), Set
+			.of(), FrontEnd.COMMAND_LINE);
+		assertEquals(trackMate.settings(), line.settings(), "the words change, not the values");
+		assertTrue(line.notice().contains("tracked by the particles' image: --detection image --diameter "), line
+			.notice());
 	}
 
 	/**
@@ -116,7 +151,7 @@ class MeasuredSettingsTest {
 		final RandomAccessibleInterval<FloatType> packed = floats(firstFrame(DetectionScenes.dense(1, 3)));
 		for (final RandomAccessibleInterval<FloatType> frame : List.of(isolated, packed)) {
 			final MeasuredSettings.Result r = MeasuredSettings.of("f.tif", frame, false, SettingValues.defaults(), Set
-				.of());
+				.of(), FrontEnd.COMMAND_LINE);
 			final double t = r.settings().get(TrackingSettings.THRESHOLD);
 			final String written = MeasuredSettings.optionValue(t);
 			assertTrue(written.replace("-", "").replace(".", "").replaceFirst("^0+", "").length() <= 4, written);
@@ -162,15 +197,15 @@ class MeasuredSettingsTest {
 			.render(centres, 200, 200, 40), NoiseModel.gaussian(2), rnd).image(), dark = inverted(bright);
 		assertTrue(ProfileAnalysis.looksDark(dark));
 		final SettingValues defaults = SettingValues.defaults();
-		final MeasuredSettings.Result fromBright = MeasuredSettings.of("m.tif", bright, true, defaults, Set.of());
-		final MeasuredSettings.Result fromDark = MeasuredSettings.of("m.tif", dark, true, defaults, Set.of());
+		final MeasuredSettings.Result fromBright = MeasuredSettings.of("m.tif", bright, true, defaults, Set.of(), FrontEnd.COMMAND_LINE);
+		final MeasuredSettings.Result fromDark = MeasuredSettings.of("m.tif", dark, true, defaults, Set.of(), FrontEnd.COMMAND_LINE);
 		assertEquals(fromBright.settings().withText(TrackingSettings.PARTICLES, TrackingSettings.DARK), fromDark
 			.settings());
 		assertEquals(fromBright.notice().replace("profile helper:", "profile helper: --particles dark"), fromDark
 			.notice());
 		final SettingValues given = defaults.with(TrackingSettings.THRESHOLD, 100.0).with(TrackingSettings.R_OUT, 20.0);
 		assertFalse(MeasuredSettings.of("m.tif", dark, true, given, Set.of(TrackingSettings.THRESHOLD,
-			TrackingSettings.R_OUT)).settings().dark());
+			TrackingSettings.R_OUT), FrontEnd.COMMAND_LINE).settings().dark());
 	}
 	/**
 	 * Particles a few pixels across: their active areas come near the default {@code min_area}, so a smaller one is
@@ -180,17 +215,17 @@ class MeasuredSettingsTest {
 	void aSmallerMinAreaIsMeasuredForSmallParticlesUnlessGiven() {
 		final RandomAccessibleInterval<UnsignedByteType> small = SmallParticles.simulate(1, 11).frames().get(0);
 		final SettingValues defaults = SettingValues.defaults();
-		final MeasuredSettings.Result measured = MeasuredSettings.of("s.tif", small, true, defaults, Set.of());
+		final MeasuredSettings.Result measured = MeasuredSettings.of("s.tif", small, true, defaults, Set.of(), FrontEnd.COMMAND_LINE);
 		final int minArea = measured.settings().get(TrackingSettings.MIN_AREA);
 		assertTrue(minArea < TrackingSettings.MIN_AREA.defaultValue(), "lowered: " + minArea);
 		assertEquals(ProfileAnalysis.analyse(small, 0, 0).suggestedMinArea(measured.settings().get(
 			TrackingSettings.THRESHOLD)), minArea, "the helper's, at the threshold used");
 		assertTrue(measured.notice().contains(" --min-area " + minArea + " (given values win"), measured.notice());
 		final MeasuredSettings.Result given = MeasuredSettings.of("s.tif", small, true, defaults.with(
-			TrackingSettings.MIN_AREA, 20), Set.of(TrackingSettings.MIN_AREA));
+			TrackingSettings.MIN_AREA, 20), Set.of(TrackingSettings.MIN_AREA), FrontEnd.COMMAND_LINE);
 		assertEquals(20, given.settings().get(TrackingSettings.MIN_AREA));
 		assertFalse(given.notice().contains("--min-area"), given.notice());
-		final MeasuredSettings.Result large = MeasuredSettings.of("bf.tif", brightField(), true, defaults, Set.of());
+		final MeasuredSettings.Result large = MeasuredSettings.of("bf.tif", brightField(), true, defaults, Set.of(), FrontEnd.COMMAND_LINE);
 		assertEquals(TrackingSettings.MIN_AREA.defaultValue(), large.settings().get(TrackingSettings.MIN_AREA));
 		assertFalse(large.notice().contains("--min-area"), large.notice());
 	}
@@ -211,7 +246,7 @@ class MeasuredSettingsTest {
 		org.junit.jupiter.api.Assertions.assertTimeoutPreemptively(java.time.Duration.ofSeconds(10), () -> {
 			try {
 				MeasuredSettings.of("flat.tif", frame, true, given, Set.of(TrackingSettings.DETECTION,
-					TrackingSettings.DIAMETER));
+					TrackingSettings.DIAMETER), FrontEnd.COMMAND_LINE);
 			}
 			catch (final InvalidInputException e) {
 				// a refusal in one line is as good as values
@@ -233,15 +268,15 @@ class MeasuredSettingsTest {
 		final List<RandomAccessibleInterval<UnsignedByteType>> movie = List.of(blank, particles, particles, particles);
 		final SettingValues defaults = SettingValues.defaults();
 		final MeasuredSettings.Result onMovie = MeasuredSettings.of("movie.tif", movie::get, movie.size(), true,
-			defaults, Set.of());
-		final MeasuredSettings.Result onFrame = MeasuredSettings.of("movie.tif", particles, true, defaults, Set.of());
+			defaults, Set.of(), FrontEnd.COMMAND_LINE);
+		final MeasuredSettings.Result onFrame = MeasuredSettings.of("movie.tif", particles, true, defaults, Set.of(), FrontEnd.COMMAND_LINE);
 		assertTrue(onMovie.notice().contains("measured on frame 3 by the profile helper"), onMovie.notice());
 		assertEquals(onFrame.notice().replace("frame 1", "frame 3"), onMovie.notice());
 		assertEquals(onFrame.settings(), onMovie.settings());
 		assertEquals(TrackingSettings.AUTO, onMovie.settings().get(TrackingSettings.DETECTION), "not sent to the image");
 		// one frame, blank: nothing to measure on, said (a constant frame holds no blob either)
 		final InvalidInputException e = assertThrows(InvalidInputException.class, () -> MeasuredSettings.of("blank.tif",
-			List.of(blank)::get, 1, true, defaults, Set.of()));
+			List.of(blank)::get, 1, true, defaults, Set.of(), FrontEnd.COMMAND_LINE));
 		assertTrue(e.getMessage().startsWith("cannot measure the particles on the first frame of blank.tif"), e
 			.getMessage());
 	}

@@ -31,6 +31,7 @@ import java.util.SplittableRandom;
 
 import org.junit.jupiter.api.Test;
 
+import io.github.contacttracker.settings.FrontEnd;
 import io.github.contacttracker.core.Localization;
 import io.github.contacttracker.core.track.FrameResult;
 import io.github.contacttracker.io.Calibration;
@@ -76,7 +77,7 @@ class PairIntoOverlapTest {
 	void aBlurredPairIsTwoUnflaggedSpotsDownToHalfADiameterWithNoValueGiven() {
 		final List<RandomAccessibleInterval<UnsignedByteType>> movie = movie();
 		final MeasuredSettings.Result m = MeasuredSettings.of("pair.tif", movie::get, FRAMES, true, SettingValues
-			.defaults(), Set.of());
+			.defaults(), Set.of(), FrontEnd.COMMAND_LINE);
 		final double diameter = m.settings().get(TrackingSettings.DIAMETER);
 		assertEquals(D, diameter, 0.05 * D, "the rim's diameter, not the light's reach: " + m.notice());
 		final TrackingResult r = new TrackingPipeline(m.settings()).run(FrameSource.of(FRAMES, movie::get,

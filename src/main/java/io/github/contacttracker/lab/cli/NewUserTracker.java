@@ -41,6 +41,7 @@ import io.github.contacttracker.pipeline.MeasuredSettings;
 import io.github.contacttracker.pipeline.Outputs;
 import io.github.contacttracker.pipeline.TrackingPipeline;
 import io.github.contacttracker.pipeline.TrackingResult;
+import io.github.contacttracker.settings.FrontEnd;
 import io.github.contacttracker.settings.SettingValues;
 import io.github.contacttracker.settings.TrackingSettings;
 import net.imglib2.RandomAccessibleInterval;
@@ -82,7 +83,7 @@ final class NewUserTracker implements DetectionStudy.Tracker {
 			final SettingValues given = trueDiameter ? SettingValues.defaults().with(TrackingSettings.DIAMETER, scene.scene()
 				.type().diameterPx()) : SettingValues.defaults();
 			final MeasuredSettings.Result measured = MeasuredSettings.of(name, frame, n, true, given, trueDiameter ? Set
-				.of(TrackingSettings.DIAMETER) : Set.of());
+				.of(TrackingSettings.DIAMETER) : Set.of(), FrontEnd.COMMAND_LINE);
 			final SettingValues used = measured.settings();
 			final TrackingResult result = new TrackingPipeline(used).run(FrameSource.of(n, frame, Calibration.PIXELS,
 				name, t -> ImagePlusFrames.range(frame.apply(t), t)), Outputs.NONE, threads, false, null, () -> false);

@@ -28,6 +28,7 @@ import java.util.Set;
 
 import org.junit.jupiter.api.Test;
 
+import io.github.contacttracker.settings.FrontEnd;
 import io.github.contacttracker.lab.eval.DetectionStudy;
 import io.github.contacttracker.lab.sim.DetectionScene;
 import io.github.contacttracker.lab.sim.DetectionScenes;
@@ -173,7 +174,7 @@ class DetectionScenesTest {
 	void theNoticeSaysWhatTheHelperMeasuredWhereItsRimIsKept() {
 		final DetectionScene scene = DetectionScenes.pairSweep(40, 1000);
 		final MeasuredSettings.Result m = MeasuredSettings.of("pair.tif", t -> frame(scene, t), scene.frames().size(),
-			true, SettingValues.defaults(), Set.of());
+			true, SettingValues.defaults(), Set.of(), FrontEnd.COMMAND_LINE);
 		assertTrue(m.notice().contains(": the profile helper measured the particles' rim but no threshold (its " +
 			"threshold "), m.notice());
 		assertTrue(Math.abs(m.settings().diameter() - 12) < 0.05 * 12, m.notice());
