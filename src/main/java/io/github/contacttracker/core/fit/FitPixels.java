@@ -344,30 +344,18 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 
 	/**
 	 * The x ranges of row {@code y} within {@code [x0, x1]} where some member's window holds a pixel ({@code (x -
-	 * gx)^2 + (y - gy)^2 < reach2}, the very test of a pixel), merged and in increasing order, as pairs of inclusive
-	 * ends in {@code out}; returns twice their number.
+	 * gx)^2 + (y - gy)^2 < reach2}, the very test of a pixel: {@link RowRuns#chord}), merged and in increasing order,
+	 * as pairs of inclusive ends in {@code out}; returns twice their number.
 	 */
 	private static int spans(final int y, final int x0, final int x1, final double[] gx, final double[] gy,
 		final double[] reach2, final int[] out)
 	{
 		int m = 0;
+		final int[] ends = new int[2];
 		for (int q = 0; q < gx.length; q++) {
-			final double dy = y - gy[q], dy2 = dy * dy;
-			// the pixel nearest the centre: if it is out, the whole row is (the test grows with |x - gx|)
-			final int c = (int) Math.max(x0, Math.min(x1, Math.rint(gx[q])));
-			if (!within(c, y, gx[q], dy2, reach2[q])) continue;
-			final double half = Math.sqrt(Math.max(0, reach2[q] - dy2));
-			// the ends from the root, then made exact by the test itself
-			int a = (int) Math.max(x0, Math.min(c, Math.ceil(gx[q] - half)));
-			while (a > x0 && within(a - 1, y, gx[q], dy2, reach2[q]))
-				a--;
-			while (!within(a, y, gx[q], dy2, reach2[q]))
-				a++;
-			int b = (int) Math.min(x1, Math.max(c, Math.floor(gx[q] + half)));
-			while (b < x1 && within(b + 1, y, gx[q], dy2, reach2[q]))
-				b++;
-			while (!within(b, y, gx[q], dy2, reach2[q]))
-				b--;
+			final double dy = y - gy[q];
+			if (!RowRuns.chord(gx[q], dy * dy, reach2[q], x0, x1, ends)) continue;
+			int a = ends[0], b = ends[1];
 			// insert [a, b] in order of start, merging overlapping or adjacent spans
 			int i = 0;
 			while (i < m && out[i + 1] < a - 1)
@@ -385,11 +373,6 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 			out[i + 1] = b;
 		}
 		return m;
-	}
-
-	private static boolean within(final int x, final int y, final double gx, final double dy2, final double reach2) {
-		final double dx = x - gx;
-		return dx * dx + dy2 < reach2;
 	}
 
 	/**

@@ -71,30 +71,48 @@ final class RowRuns {
 	{
 		final double reach2 = reach * reach, perStep = 1 / (ks * EmpiricalProfile.TABLE_STEP);
 		final double[] table = profile.valueTable();
+		final int[] ends = new int[2];
 		for (int r = 0; r < runs.length; r += 4) {
 			final double dy = runs[r] - ky, dy2 = dy * dy;
-			if (!(dy2 < reach2)) continue; // (every pixel of the row is out of reach)
-			// the pixels within reach form one range of x: its ends from the root, within the run, then made exact by
-			// the test itself (a step or none: the root errs by far less than a pixel)
-			final int x0 = runs[r + 1], x1 = x0 + runs[r + 3] - 1;
-			final double half = Math.sqrt(reach2 - dy2);
-			int a = (int) Math.max(x0, Math.min(x1 + 1, Math.ceil(kx - half)));
-			int b = (int) Math.min(x1, Math.max(x0 - 1, Math.floor(kx + half)));
-			while (a > x0 && within(a - 1, kx, dy2, reach2))
-				a--;
-			while (b < x1 && within(b + 1, kx, dy2, reach2))
-				b++;
-			while (a <= b && !within(a, kx, dy2, reach2))
-				a++;
-			while (b >= a && !within(b, kx, dy2, reach2))
-				b--;
-			if (a <= b) row(light, runs[r + 2] - x0, a, b, kx, dy2, perStep, ka, table);
+			final int x0 = runs[r + 1];
+			if (chord(kx, dy2, reach2, x0, x0 + runs[r + 3] - 1, ends)) row(light, runs[r + 2] - x0, ends[0], ends[1], kx,
+				dy2, perStep, ka, table);
 		}
 	}
 
+	/**
+	 * The pixels of a row within a disc, where they meet {@code [lo, hi]}: the x with {@code (x - cx)^2 + dy2 <
+	 * reach2}, the very test of a pixel, which holds on one range of x (the test grows with {@code |x - cx|}). Its ends
+	 * come from the root, then are made exact by the test itself (a step or none: the root errs by far less than a
+	 * pixel).
+	 *
+	 * @param dy2 the row's squared distance from the disc's centre
+	 * @param ends receives the first and the last x
+	 * @return whether any pixel of {@code [lo, hi]} is within
+	 */
+	static boolean chord(final double cx, final double dy2, final double reach2, final int lo, final int hi,
+		final int[] ends)
+	{
+		if (!(dy2 < reach2)) return false; // (every pixel of the row is out of reach)
+		final double half = Math.sqrt(reach2 - dy2);
+		int a = (int) Math.max(lo, Math.min(hi + 1, Math.ceil(cx - half)));
+		int b = (int) Math.min(hi, Math.max(lo - 1, Math.floor(cx + half)));
+		while (a > lo && within(a - 1, cx, dy2, reach2))
+			a--;
+		while (b < hi && within(b + 1, cx, dy2, reach2))
+			b++;
+		while (a <= b && !within(a, cx, dy2, reach2))
+			a++;
+		while (b >= a && !within(b, cx, dy2, reach2))
+			b--;
+		ends[0] = a;
+		ends[1] = b;
+		return a <= b;
+	}
+
 	/** The test of a pixel at {@code x} on a row {@code dy2} (squared) from the centre: within reach. */
-	private static boolean within(final int x, final double kx, final double dy2, final double reach2) {
-		final double dx = x - kx;
+	private static boolean within(final int x, final double cx, final double dy2, final double reach2) {
+		final double dx = x - cx;
 		return dx * dx + dy2 < reach2;
 	}
 

@@ -100,7 +100,7 @@ final class ProfileRounds {
 		final int[] probe = sample.length <= 2 ? FramePass.range(sample.length) : new int[] { 0, sample.length / 2 };
 		final List<FrameResult> probed = pass(iterativeTracker, null, at(sample, probe), frame,
 			false, progress, cancelled);
-		final int[] keep = fewer(sample.length, usableParticles(probed) / (double) probe.length);
+		final int[] keep = fewer(sample.length, RoundResults.usable(probed) / (double) probe.length);
 		final FrameResult[] done = new FrameResult[sample.length]; // by position among the sample frames
 		for (int i = 0; i < probe.length; i++)
 			done[probe[i]] = probed.get(i);
@@ -291,7 +291,7 @@ final class ProfileRounds {
 	 * the cost of the profile rounds.
 	 *
 	 * @param n the sample frames
-	 * @param perFrame usable particles a frame (as the profile counts them: {@link #usableParticles})
+	 * @param perFrame usable particles a frame (as the profile counts them: {@link RoundResults#usable})
 	 * @return the positions among the {@code n} sample frames (evenly spread) of the frames kept
 	 */
 	private static int[] fewer(final int n, final double perFrame) {
@@ -302,15 +302,6 @@ final class ProfileRounds {
 		for (int i = 0; i < m; i++)
 			kept[i] = (int) ((long) i * n / m);
 		return kept;
-	}
-
-	/** @return the spots of {@code results} the profile can use ({@link ProfileEstimator#usable}) */
-	private static int usableParticles(final List<FrameResult> results) {
-		int particles = 0;
-		for (final FrameResult r : results)
-			for (final Localization l : r.spots())
-				if (ProfileEstimator.usable(l)) particles++;
-		return particles;
 	}
 
 	/** The profile rounds use frames holding about this many particles, if the sample frames hold more. */

@@ -76,15 +76,21 @@ final class RoundResults {
 		}
 	}
 
-	/** @return the share of the results' spots that may teach a profile ({@link ProfileEstimator#usable}; 0 for none) */
-	static double usableShare(final List<FrameResult> results) {
-		int usable = 0, all = 0;
+	/** @return the results' spots that may teach a profile ({@link ProfileEstimator#usable}) */
+	static int usable(final List<FrameResult> results) {
+		int usable = 0;
 		for (final FrameResult r : results)
-			for (final Localization l : r.spots()) {
-				all++;
+			for (final Localization l : r.spots())
 				if (ProfileEstimator.usable(l)) usable++;
-			}
-		return all == 0 ? 0 : usable / (double) all;
+		return usable;
+	}
+
+	/** @return the share of the results' spots that may teach a profile ({@link #usable}; 0 for none) */
+	static double usableShare(final List<FrameResult> results) {
+		int all = 0;
+		for (final FrameResult r : results)
+			all += r.spots().size();
+		return all == 0 ? 0 : usable(results) / (double) all;
 	}
 
 	/** @return per frame of {@code round}, the spots {@code rounds} saw still moving */
