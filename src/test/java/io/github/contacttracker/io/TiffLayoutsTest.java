@@ -463,6 +463,41 @@ public class TiffLayoutsTest {
 		assertRefused(half, "16-bit float samples are not supported", "a.astype('float32')");
 	}
 
+	/**
+	 * An uncompressed strip whose stated size overstates it (a public 512 x 512 16-bit monolayer states 4 MiB for its
+	 * 512 KiB strip) is read as far as its rows need, as ImageJ reads it; where the file does not hold even that, it
+	 * is refused in one line.
+	 */
+	@Test
+	void anUncompressedStripWhoseSizeIsOverstatedIsReadAsFarAsItsRowsNeed() throws IOException {
+		final Page p = new Page(16, 12, 16, 1, 1, 1, 1, 1, 1, 0, 12);
+		final Path file = write(dir.resolve("overstated.tif"), p, 1, ByteOrder.LITTLE_ENDIAN);
+		final byte[] b = Files.readAllBytes(file);
+		final ByteBuffer bb = ByteBuffer.wrap(b).order(ByteOrder.LITTLE_ENDIAN);
+		final int ifd = bb.getInt(4);
+		long offset = -1;
+		for (int e = 0; e < bb.getShort(ifd); e++) {
+			final int at = ifd + 2 + 12 * e;
+			if (bb.getShort(at) == 279) bb.putInt(at + 8, 4194304); // StripByteCounts: 4 MiB
+			if (bb.getShort(at) == 273) offset = bb.getInt(at + 8); // StripOffsets
+		}
+		Files.write(file, b);
+		for (final ImagePlus imp : new ImagePlus[] { ImageFiles.open(file), ImageFiles.openByOffset(SeekableBytes.of(
+			file)) })
+			for (int y = 0; y < p.height; y++)
+				for (int x = 0; x < p.width; x++)
+					assertEquals(value(0, 0, x, y, 16, 1), imp.getStack().getProcessor(1).getf(x, y), 0, "pixel " + x + "," +
+						y);
+		// the strip's rows need 16 x 12 x 2 bytes from its offset: a strip that starts too near the file's end for them
+		// is refused
+		assertTrue(offset > 0, "strip at " + offset);
+		for (int e = 0; e < bb.getShort(ifd); e++)
+			if (bb.getShort(ifd + 2 + 12 * e) == 273) bb.putInt(ifd + 2 + 12 * e + 8, b.length - 16 * 12 * 2 + 7);
+		final Path cut = dir.resolve("overstated-cut.tif");
+		Files.write(cut, b);
+		assertRefused(cut, "truncated", "beyond the end of the file");
+	}
+
 	/** LZW of data long enough that its table fills and is cleared, the codes 12 bits wide. */
 	@Test
 	void longLzwDataFillsAndClearsTheTable() throws IOException {
