@@ -23,6 +23,7 @@ package io.github.contacttracker.core.detect;
 
 import java.util.Arrays;
 
+import io.github.contacttracker.core.kind.KindProfiles;
 import io.github.contacttracker.core.profile.EmpiricalProfile;
 import io.github.contacttracker.core.radial.Estimate;
 
@@ -175,10 +176,27 @@ final class MemberTests {
 	static double undrawn(final float[] residual, final int w, final int h, final Estimate e,
 		final EmpiricalProfile p, final double noise)
 	{
-		if (!Double.isFinite(e.x()) || !Double.isFinite(e.y())) return 0;
+		return undrawn(residual, w, h, e.x(), e.y(), p, noise);
+	}
+
+	/** @return the best {@link #undrawn} significance at (x, y) among the kinds' profiles */
+	static double undrawnAny(final float[] residual, final int w, final int h, final double x, final double y,
+		final KindProfiles profiles, final double noise)
+	{
+		double best = 0;
+		for (int c = 0; c < profiles.count(); c++)
+			best = Math.max(best, undrawn(residual, w, h, x, y, profiles.profile(c), noise));
+		return best;
+	}
+
+	/** @return {@link #undrawn} of a particle at (cx, cy) */
+	private static double undrawn(final float[] residual, final int w, final int h, final double cx, final double cy,
+		final EmpiricalProfile p, final double noise)
+	{
+		if (!Double.isFinite(cx) || !Double.isFinite(cy)) return 0;
 		final double reach = p.radius();
-		final int x0 = Math.max(0, (int) Math.floor(e.x() - reach)), x1 = Math.min(w - 1, (int) Math.ceil(e.x() + reach));
-		final int y0 = Math.max(0, (int) Math.floor(e.y() - reach)), y1 = Math.min(h - 1, (int) Math.ceil(e.y() + reach));
+		final int x0 = Math.max(0, (int) Math.floor(cx - reach)), x1 = Math.min(w - 1, (int) Math.ceil(cx + reach));
+		final int y0 = Math.max(0, (int) Math.floor(cy - reach)), y1 = Math.min(h - 1, (int) Math.ceil(cy + reach));
 		double rp = 0, pp = 0, r0 = 0;
 		int n = 0;
 		for (int y = y0; y <= y1; y++)
@@ -189,7 +207,7 @@ final class MemberTests {
 		r0 /= Math.max(1, n); // the residuals' local mean: the background the fit would have taken
 		for (int y = y0; y <= y1; y++)
 			for (int x = x0; x <= x1; x++) {
-				final double v = p.lookup(dist(x - e.x(), y - e.y()));
+				final double v = p.lookup(dist(x - cx, y - cy));
 				rp += (residual[y * w + x] - r0) * v;
 				pp += v * v;
 			}

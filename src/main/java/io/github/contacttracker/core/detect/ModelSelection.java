@@ -85,6 +85,29 @@ public final class ModelSelection {
 	 * its whole height; a profile that is still being measured leaves ripples near every particle).
 	 */
 	public static final double ADD_LEVEL = 2 * ImageDetection.LEVEL;
+	/**
+	 * A fainter residual peak, at least {@link #FAINT_LEVEL} high, adds a particle only this many
+	 * diameters or more from every kept member, where its light is as significant as a kept member's must be
+	 * ({@value #SIGNIFICANCE}) and matches a profile: the partner of a dim pair that touches, whose dip towards the
+	 * brighter one is shallower than a seed's prominence. Nearer, such a peak is the ripple a profile leaves on a
+	 * bright particle.
+	 */
+	static final double FAINT_APART = 0.75;
+	/**
+	 * The least height of a residual peak that may add a particle, in units of the band-passed residuals' noise:
+	 * below a seed's level ({@link ImageDetection#LEVEL}), since a faint peak adds a particle only where the
+	 * significance of its light ({@value #SIGNIFICANCE}, the matched filter's measure, which the band-pass only
+	 * approximates) says so. A dim particle at a peak signal to noise of 3 has a significance near 6.5, and a
+	 * band-passed height near 5 half the time.
+	 */
+	static final double FAINT_LEVEL = 4;
+	/**
+	 * Faint peaks add particles only where the model matches the particles about as closely as the noise allows: the
+	 * band-passed residuals' spread near the particles at most this many times the noise's. Where the profile's misfit
+	 * is larger (real footage of bright particles: 6 to 100 times on public fluorescent and monolayer movies), its
+	 * ripples and the specks between the particles stand out as faint peaks as a dim particle would.
+	 */
+	static final double FAINT_MISFIT = 1.5;
 
 	private ModelSelection() {}
 
@@ -198,7 +221,7 @@ public final class ModelSelection {
 			final double[] match = new double[e.length];
 			for (int k = 0; k < e.length; k++)
 				match[k] = !ProfileMatch.weak(dataBp(plane, scale, data, w, h, cache), w, h, e[k].x(), e[k].y(), strong) ? 1 : drawn(e[k]) ? ProfileMatch
-					.matchedOwn(residual, w, h, e[k], of[k], noise) : ProfileMatch.matched(data, w, h, e[k].x(), e[k].y(),
+					.shapeOwn(residual, w, h, e[k], of[k], noise) : ProfileMatch.matched(data, w, h, e[k].x(), e[k].y(),
 						of[k], noise);
 			final boolean[] keep = new boolean[e.length];
 			int kept = 0;
@@ -217,8 +240,11 @@ public final class ModelSelection {
 				if (b) kept++;
 			// split and add
 			final float[] bp = BandPass.of(residual, w, h, scale.sigma(), scale.halfWidth());
-			final double unit = Math.max(ImageDetection.unit(scale.noise(noise), bp), robustSpread(bp, near(w, h, e, of)));
-			final Peaks more = Peaks.find(bp, w, h, 0, Math.max(ADD_LEVEL * unit, least), ImageDetection.PROMINENCE *
+			final double noiseUnit = ImageDetection.unit(scale.noise(noise), bp);
+			final double unit = Math.max(noiseUnit, robustSpread(bp, near(w, h, e, of)));
+			// the residuals' noise where the model does not match the particles as closely as the noise allows
+			final double residualNoise = noise * unit / noiseUnit;
+			final Peaks more = Peaks.find(bp, w, h, 0, Math.max(FAINT_LEVEL * unit, least), ImageDetection.PROMINENCE *
 				unit);
 			final Moves moves = new Moves(e.length + 2 * more.count() + e.length);
 			final boolean[] split = new boolean[e.length];
@@ -243,6 +269,15 @@ public final class ModelSelection {
 					}
 				}
 				if (dn < d / 4 || moves.near(px, py, d / 4)) continue; // on a member, or on one just added
+				if (more.height()[p] < ADD_LEVEL * unit) {
+					// a faint peak: a particle of its own where its light, at its best amplitude, lowers the residuals
+					// as much as a kept member's must, and its shape is a particle's, in units of the residuals' noise
+					// (where the profiles do not match the particles, their misfit counts as noise)
+					if (unit <= FAINT_MISFIT * noiseUnit && (nearest < 0 || dn >= FAINT_APART * d) && MemberTests.undrawnAny(residual, w, h, px, py, profiles,
+						residualNoise) >= SIGNIFICANCE && ProfileMatch.shapeAny(residual, w, h, px, py, profiles,
+							residualNoise) >= ProfileMatch.MATCH) moves.add(px, py);
+					continue;
+				}
 				if (nearest >= 0 && dn < d && !split[nearest]) {
 					// a peak beside a member: the member held two particles; it splits along the peak's direction
 					split[nearest] = true;

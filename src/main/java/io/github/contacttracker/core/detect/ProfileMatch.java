@@ -80,6 +80,59 @@ final class ProfileMatch {
 	}
 
 	/**
+	 * @return the shape verdict on a fitted member's own light: 1 where it differs from its drawn shape by no more
+	 *         than the noise makes it differ ({@link #WITHIN_NOISE}), else its correlation ({@link #matchedOwn}); NaN
+	 *         as there
+	 */
+	static double shapeOwn(final float[] residual, final int w, final int h, final Estimate e, final EmpiricalProfile p,
+		final double noise)
+	{
+		final double s = e.scale(), a = e.amplitude();
+		if (!(s > 0) || !Double.isFinite(a)) return Double.NaN;
+		final double[] m = sums(residual, w, h, e.x(), e.y(), p, s, a);
+		return m == null ? Double.NaN : withinNoise(m, noise) ? 1 : correlation(m[0], m[1], m[2], m[3], m[4], (int) m[5],
+			noise);
+	}
+
+	/** @return the best shape verdict at (x, y) among the kinds' profiles: as {@link #shapeOwn}, on the image as it is */
+	static double shapeAny(final float[] data, final int w, final int h, final double x, final double y,
+		final KindProfiles profiles, final double noise)
+	{
+		double best = Double.NEGATIVE_INFINITY;
+		for (int c = 0; c < profiles.count(); c++) {
+			final double[] m = sums(data, w, h, x, y, profiles.profile(c));
+			if (m != null) best = Math.max(best, withinNoise(m, noise) ? 1 : correlation(m[0], m[1], m[2], m[3], m[4],
+				(int) m[5], noise));
+		}
+		return best;
+	}
+
+	/**
+	 * @return whether the pixels of the sums differ from their best {@code a P + b} ({@code a > 0}) by no more than the
+	 *         noise makes them: the squared misfit in noise variances, a chi-square of {@code n - 2} degrees of
+	 *         freedom, within {@link #WITHIN_NOISE} of its standard deviations of its mean
+	 */
+	private static boolean withinNoise(final double[] m, final double noise) {
+		final int n = (int) m[5];
+		if (n <= 2 || !(noise > 0)) return false;
+		final double cov = m[2] - m[0] * m[1] / n, vp = m[3] - m[0] * m[0] / n, raw = m[4] - m[1] * m[1] / n;
+		return cov > 0 && vp > 0 && raw - cov * cov / vp <= noise * noise * (n - 2 + WITHIN_NOISE * Math.sqrt(2.0 * (n -
+			2)));
+	}
+
+	/**
+	 * The shape verdicts ({@link #shapeOwn}, {@link #shapeAny}) take a lit disc for a particle's however low its
+	 * correlation where its pixels differ from the best {@code a P + b} ({@code a > 0}) by no more than the noise
+	 * makes them: their squared misfit in noise variances, a chi-square of {@code n - 2} degrees of freedom, is within
+	 * this many of its standard deviations of its mean. At a peak signal to noise of 3 to 4 the noise alone takes a
+	 * particle's correlation below {@link #MATCH} one time in four; a fringe whose rings lie where the profile's do not
+	 * differs from it by far more than the noise. Whether a faint bump is a particle at all is the significance's
+	 * question.
+	 */
+	static final double WITHIN_NOISE = 3;
+
+
+	/**
 	 * @return the amplitude of the profile that best matches the frame around (x, y), {@code a} in {@code a P(r) + b}
 	 *         by least squares over the disc {@link #matched} reads: in units of the particles the profile was measured
 	 *         on (1 for a typical one); NaN off the frame

@@ -65,7 +65,8 @@ public final class GroupFit {
 	 */
 	static final int MAX_JOINT = 24;
 	/**
-	 * Converged when no centre moves more than this in an iteration (px); that step is taken, unevaluated. The
+	 * The floor of the move (px) below which a fit has converged (a tenth of the centres' own errors where that is
+	 * larger: {@link #settled}); the step is taken, unevaluated. The
 	 * iterations converge at least tenfold per step near the solution (on the bench stack: steps of about 5e-2,
 	 * 1e-4, 1e-7 px), so the centres end within about 1e-4 px of the exact least-squares point: a hundredth of a
 	 * nanometre at usual pixel sizes, two orders below the Cramer-Rao bound. A tighter tolerance costs a pass over
@@ -406,12 +407,16 @@ public final class GroupFit {
 						latest.models);
 				}
 				if (trialRss <= rss) {
+					final double gain = (rss - trialRss) / predictedDrop(jtj, jtr, step, np);
 					System.arraycopy(trial, 0, p, 0, np);
 					System.arraycopy(tr, 0, jtr, 0, np);
 					hessianAtP = false;
 					latest.take(pixels, trial);
 					rss = trialRss;
-					mu = Math.max(mu / 10, 1e-9);
+					// a step that lowered the residuals as the linear model foretold: less damping; one that lowered them
+					// by far less (the model bends within the step: the profile's table, a faint particle's shallow
+					// minimum), more, else the steps cross the valley from side to side for every iteration they have
+					mu = gain < POOR_GAIN ? mu * 10 : Math.max(mu / 10, 1e-9);
 					lastMove = move;
 					sinceHessian++;
 					continue;
@@ -440,6 +445,27 @@ public final class GroupFit {
 				.sqrt(vx * inv[b][b]), Math.sqrt(vy * inv[b + 1][b + 1]), p[b + 2], p[b + 3]);
 		}
 		return converged ? it : -it;
+	}
+
+	/**
+	 * An accepted step that lowered the residual sum of squares by less than this fraction of what the linearised
+	 * model foretold raises the damping (tenfold), as one that failed does.
+	 */
+	static final double POOR_GAIN = 0.25;
+
+	/**
+	 * @return the drop of the residual sum of squares the linearised model foretells for {@code step}:
+	 *         {@code 2 step . J^T r - step . J^T J step} (positive for a step of the damped system)
+	 */
+	private static double predictedDrop(final double[][] jtj, final double[] jtr, final double[] step, final int np) {
+		double drop = 0;
+		for (int a = 0; a < np; a++) {
+			double h = 0;
+			for (int b = 0; b < np; b++)
+				h += jtj[a][b] * step[b];
+			drop += step[a] * (2 * jtr[a] - h);
+		}
+		return drop;
 	}
 
 	/**
@@ -559,10 +585,14 @@ public final class GroupFit {
 	static final double OWN_ERROR = Double.NaN;
 
 	/**
-	 * A joint fit's budget. A member fitted in turn gets {@value MemberSweeps#ITERATIONS_PER_SWEEP} iterations a
-	 * sweep (the sweeps are its outer iterations), in the first sweep the tolerance of its own error
-	 * ({@link #OWN_ERROR}) and up to {@value #MAX_SELECTIONS} choices of pixels, which it then keeps ({@link Kept}); in
-	 * the later sweeps the tolerance of its latest error ({@link #settled}).
+	 * A joint fit's budget: settled where no centre moves by more than a tenth of its own error, and never below
+	 * {@link #TOLERANCE} ({@link #OWN_ERROR}). A bright particle's error is a hundredth of a pixel or less, so its fit
+	 * settles at {@link #TOLERANCE}; a faint one's is a few tenths, and a thousandth of a pixel asks of its shallow
+	 * least squares more than the noise lets it give within the iterations. A member fitted in turn gets
+	 * {@value MemberSweeps#ITERATIONS_PER_SWEEP} iterations a sweep (the sweeps are its outer iterations), in the
+	 * first sweep the tolerance of its own error ({@link #OWN_ERROR}) and up to {@value #MAX_SELECTIONS} choices of
+	 * pixels, which it then keeps ({@link Kept}); in the later sweeps the tolerance of its latest error
+	 * ({@link #settled}).
 	 */
-	static final Budget JOINT = new Budget(MAX_ITERATIONS, TOLERANCE, MAX_SELECTIONS, false);
+	static final Budget JOINT = new Budget(MAX_ITERATIONS, OWN_ERROR, MAX_SELECTIONS, false);
 }

@@ -34,8 +34,8 @@ import io.github.contacttracker.core.math.Statistics;
  * What still moves then are single centres going back and forth between two fits (a centre whose model fits two
  * nearby minima about equally, such as a particle with a neighbour's light on one side, can jump many standard
  * errors every other round while the median move stays at a small fraction of one), which more rounds do not mend.
- * The rounds stop, and only the centres that moved more than their tolerance in the last
- * round are flagged ({@link #stillMoving}). A geometric approach to the fixed point (every simulation) never
+ * The rounds stop, and only the centres that moved by half their standard error or more in the last round are
+ * flagged ({@link #stillMoving}). A geometric approach to the fixed point (every simulation) never
  * stalls over two rounds, so it always ends {@code SETTLED}.
  * <li>{@link Verdict#STALLED}: the centres as a whole are far from settled (the median move above
  * {@value #STALL_MEDIAN} tolerances, a whole standard error) and it has not come below half its value of
@@ -110,8 +110,17 @@ public final class Rounds {
 		return median > STALL_MEDIAN && sinceShrunk >= STALL_ROUNDS ? Verdict.STALLED : Verdict.GOING_ON;
 	}
 
-	/** @return whether centre {@code i} moved more than its tolerance in the latest round */
+	/**
+	 * A centre that still moves when the rounds stop on {@link Verdict#CYCLING} is flagged where its latest move is at
+	 * least this many tolerances: half its standard error (or 0.005 px, the larger). A centre going back and forth
+	 * between two fits jumps that far and more; one that a profile measured on faint particles, noisy itself, moves by
+	 * a fraction of that each round rests as well on the data as its error says, and a flag would discard it for
+	 * nothing (a field of dim spots at a signal to noise of 3 to 5: one spot in ten).
+	 */
+	static final double FLAGGED = 5;
+
+	/** @return whether centre {@code i} moved by {@link #FLAGGED} tolerances or more in the latest round */
 	public boolean stillMoving(final int i) {
-		return last[i] > 1;
+		return last[i] >= FLAGGED;
 	}
 }

@@ -58,16 +58,13 @@ class ProfileMatchTest {
 			RADIUS), 2), NOISE, 0, 255, 5);
 		final Plane plane = Plane.of(TestImages.bytes(pixels, W, H));
 		// the exact profile, measured at the true centres
+		final EmpiricalProfile profile = measured(plane, truth, 1.5 * s);
 		final int n = truth.size();
-		final double[] x = new double[n], y = new double[n], ones = new double[n];
+		final double[] x = new double[n], y = new double[n];
 		for (int k = 0; k < n; k++) {
 			x[k] = truth.get(k).x();
 			y[k] = truth.get(k).y();
-			ones[k] = 1;
 		}
-		final ProfileEstimator estimator = new ProfileEstimator(1.5 * s, 1, null);
-		estimator.add(plane, x, y, ones, ones, new boolean[n], null);
-		final EmpiricalProfile profile = estimator.solve().profiles()[0];
 		// the fit's residuals: the frame less every particle's light
 		final float[] data = BandPass.pixels(plane), residual = data.clone();
 		final Estimate[] members = new Estimate[n];
@@ -88,5 +85,73 @@ class ProfileMatchTest {
 		final double none = ProfileMatch.matchedOwn(residual, W, H, gap, profile, NOISE);
 		assertTrue(none < ProfileMatch.MATCH, "a member on a gap matches nothing: " + none);
 		assertTrue(truth.size() == 19, truth.size() + " particles");
+	}
+	/**
+	 * At a peak signal to noise of 3 a particle's correlation with its profile is mostly noise: many fall below
+	 * {@link ProfileMatch#MATCH}, and the shape verdict would remove real particles. Its pixels differ from the profile
+	 * by no more than the noise makes them, and the verdict keeps them; a bright blob of another shape (two spots side
+	 * by side, where the profile has one) differs from it by far more than the noise, and is not kept.
+	 */
+	@Test
+	void aFaintParticleMatchesWithinTheNoiseAndABrightBlobOfAnotherShapeDoesNot() {
+		final int w = 200, h = 200;
+		final double noise = 3;
+		final java.util.function.DoubleUnaryOperator spot = Scenes.blurredDisc(0, 1.2);
+		final List<Scenes.Truth> faint = new ArrayList<>();
+		for (int i = 0; i < 8; i++)
+			for (int j = 0; j < 8; j++)
+				faint.add(new Scenes.Truth(15.3 + 24 * i + 0.1 * j, 15.6 + 24 * j + 0.07 * i, 3 * noise, 1));
+		// the profile, measured where the same spots are bright
+		final List<Scenes.Truth> bright = new ArrayList<>();
+		for (final Scenes.Truth t : faint)
+			bright.add(new Scenes.Truth(t.x(), t.y(), 100 * noise, 1));
+		final Plane clear = Plane.of(TestImages.floats(Scenes.noisy(Scenes.render(w, h, (x, y) -> 100, bright, spot, 6),
+			noise, 0, 1e9, 3), w, h));
+		final EmpiricalProfile profile = measured(clear, bright, 6);
+		final double typical = profile.lookup(0) - profile.background();
+		int correlated = 0, kept = 0;
+		for (long seed = 1; seed <= 4; seed++) {
+			final float[] data = BandPass.pixels(Plane.of(TestImages.floats(Scenes.noisy(Scenes.render(w, h, (xx,
+				yy) -> 100, faint, spot, 6), noise, 0, 1e9, 10 + seed), w, h)));
+			for (final Scenes.Truth t : faint) {
+				// the member fitted at its own place and amplitude, its light drawn: the residuals hold the rest
+				final Estimate e = new Estimate(t.x(), t.y(), 0, 0, 0, null, Double.NaN, Double.NaN, t.amplitude() /
+					typical, 1);
+				final float[] residual = data.clone();
+				ModelSelection.draw(residual, w, h, e, profile, -1);
+				if (ProfileMatch.matchedOwn(residual, w, h, e, profile, noise) >= ProfileMatch.MATCH) correlated++;
+				if (ProfileMatch.shapeOwn(residual, w, h, e, profile, noise) >= ProfileMatch.MATCH) kept++;
+			}
+		}
+		final int all = 4 * faint.size();
+		assertTrue(correlated < 0.9 * all, "the correlation alone keeps " + correlated + " of " + all);
+		assertTrue(kept >= 0.97 * all, "the verdict keeps " + kept + " of " + all);
+		// a bright blob of two spots 4 px apart, drawn as one particle of the profile at its middle
+		final List<Scenes.Truth> two = List.of(new Scenes.Truth(99.5, 100.4, 30 * noise, 1), new Scenes.Truth(103.5,
+			100.4, 30 * noise, 1));
+		final float[] data = BandPass.pixels(Plane.of(TestImages.floats(Scenes.noisy(Scenes.render(w, h, (xx,
+			yy) -> 100, two, spot, 6), noise, 0, 1e9, 99), w, h)));
+		final Estimate middle = new Estimate(101.5, 100.4, 0, 0, 0, null, Double.NaN, Double.NaN, 30 * noise /
+			typical, 1);
+		final float[] residual = data.clone();
+		ModelSelection.draw(residual, w, h, middle, profile, -1);
+		final double shape = ProfileMatch.shapeOwn(residual, w, h, middle, profile, noise);
+		System.out.println("faint particles: correlation " + correlated + " of " + all + ", verdict " + kept +
+			"; two spots drawn as one: " + shape);
+		assertTrue(shape < ProfileMatch.MATCH, "two spots drawn as one: " + shape);
+	}
+
+	/** @return the profile measured on the frame at the particles' true centres, out to {@code reach} px */
+	private static EmpiricalProfile measured(final Plane plane, final List<Scenes.Truth> truth, final double reach) {
+		final int n = truth.size();
+		final double[] x = new double[n], y = new double[n], ones = new double[n];
+		for (int k = 0; k < n; k++) {
+			x[k] = truth.get(k).x();
+			y[k] = truth.get(k).y();
+			ones[k] = 1;
+		}
+		final ProfileEstimator estimator = new ProfileEstimator(reach, 1, null);
+		estimator.add(plane, x, y, ones, ones, new boolean[n], null);
+		return estimator.solve().profiles()[0];
 	}
 }

@@ -33,6 +33,7 @@ import io.github.contacttracker.core.radial.Particle;
 public final class FitAccess {
 
 	public static final int MAX_JOINT = GroupFit.MAX_JOINT;
+	public static final int MAX_ITERATIONS = GroupFit.MAX_ITERATIONS;
 	public static final int MAX_SWEEPS = MemberSweeps.MAX_SWEEPS;
 
 	private FitAccess() {}

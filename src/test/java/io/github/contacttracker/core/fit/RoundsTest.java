@@ -88,4 +88,27 @@ class RoundsTest {
 		for (int i = 0; i < v.length; i++)
 			assertEquals(Verdict.GOING_ON, v[i], "round " + (i + 1));
 	}
+	/**
+	 * When the rounds cycle, the centres that jump half a standard error or more (5 tolerances) are flagged; those a
+	 * noisy profile moves by a fraction of that (faint particles: 1 to 4 tolerances, round after round) are not.
+	 */
+	@Test
+	void cyclingFlagsTheCentresThatJumpHalfAnError() {
+		final double[] faint = round(0.3, 3), jumping = round(0.3, 3);
+		jumping[100] = 16;
+		for (final double[][] rounds : new double[][][] { { round(0.3, 3), round(0.3, 3), faint }, { round(0.3, 16),
+			round(0.3, 3), jumping } })
+		{
+			final Rounds r = new Rounds();
+			Verdict v = null;
+			for (final double[] m : rounds)
+				v = r.next(m);
+			assertEquals(Verdict.CYCLING, v);
+			int flagged = 0;
+			for (int i = 0; i < 101; i++)
+				if (r.stillMoving(i)) flagged++;
+			assertEquals(rounds[2] == jumping ? 1 : 0, flagged, "centres moving 3 tolerances" + (rounds[2] == jumping
+				? ", one 16" : ""));
+		}
+	}
 }

@@ -96,17 +96,42 @@ class DetectionScenesTest {
 	}
 
 	/**
-	 * Dim 16-bit spots at SNR 3-5 (2 frames): today about four in five particles are found (the study's 5 movies:
-	 * 84% alone, 61% touching), at most 2 false spots, and the unflagged centres are unbiased within 0.1 px along x
-	 * and y with a spread within 1.5 times the bound (there: 1.13).
+	 * The fit of a faint spot settles well within its iterations: at a peak signal to noise of 3 to 5 its residual sum
+	 * of squares is shallow and bent within a step, and the steps, accepted for any drop, crossed its valley from side
+	 * to side until the iterations ran out (a fifth of the dim scene's fits ended so, flagged NOT_CONVERGED). With the
+	 * damping raised where a step drops the residuals by far less than foretold, and the fit settled at a tenth of
+	 * the centres' own errors, none does.
 	 */
 	@Test
-	void dimSpotsAreMostlyFoundAndCentredToTheBound() {
-		final DetectionStudy study = study(DetectionScenes.dim(2, 31));
-		final DetectionStudy.Row all = study.total();
-		assertTrue(all.recall() >= 0.7, "recall " + all.recall());
-		assertTrue(all.falseSpots() <= 2, all.falseSpots() + " false spots");
-		assertTrue(all.unflaggedShare() >= 0.8, "unflagged " + all.unflaggedShare());
+	void theFitsOfFaintSpotsSettle() {
+		final DetectionScene scene = DetectionScenes.dim(3, 32);
+		int spots = 0, capped = 0;
+		for (final java.util.List<io.github.contacttracker.core.Localization> frame : new NewUserTracker(2).track(scene)
+			.spots())
+			for (final io.github.contacttracker.core.Localization l : frame) {
+				spots++;
+				if (l.iterations() > io.github.contacttracker.core.fit.FitAccess.MAX_ITERATIONS) capped++;
+			}
+		assertTrue(spots > 80, spots + " spots");
+		assertEquals(0, capped, capped + " of " + spots + " fits ran out of iterations");
+	}
+
+	/**
+	 * Dim 16-bit spots at SNR 3-5 (5 frames): nearly all found, the touching ones too (the partner of a touching pair
+	 * dips towards the brighter one by less than a seed's prominence, and is added from the residuals where its light
+	 * is significant), at most 3 false spots, 95% unflagged or more (the fits of faint spots settle, and a centre that
+	 * a faint profile moves by a fraction of its error round to round is not flagged), and the unflagged centres
+	 * unbiased within 0.1 px along x and y with a spread within 1.5 times the bound.
+	 */
+	@Test
+	void dimSpotsAreFoundAndCentredToTheBound() {
+		final DetectionStudy study = study(DetectionScenes.dim(5, 31));
+		final DetectionStudy.Row all = study.total(), alone = band(study, DetectionScenes.ALONE), touching = band(study,
+			DetectionScenes.TOUCHING);
+		assertTrue(alone.recall() >= 0.93, "recall alone " + alone.recall());
+		assertTrue(touching.recall() >= 0.8, "recall touching " + touching.recall());
+		assertTrue(all.falseSpots() <= 3, all.falseSpots() + " false spots");
+		assertTrue(all.unflaggedShare() >= 0.95, "unflagged " + all.unflaggedShare() + ", mostly " + all.mainFlag());
 		assertTrue(Math.abs(all.biasX()) < 0.1 && Math.abs(all.biasY()) < 0.1, "bias " + all.biasX() + ", " + all
 			.biasY());
 		assertTrue(all.spreadOverBound() < 1.5, "spread / CRB " + all.spreadOverBound());
