@@ -276,7 +276,7 @@ final class TiffDirectories {
 			// as far as its rows need, as ImageJ reads it, where the file holds that much
 			if (compression == 1 && !tiles && offsets[s] >= 0 && offsets[s] <= size && counts[s] > size - offsets[s]) {
 				final long need = uncompressedStripBytes(d, s);
-				if (need >= 0 && need <= size - offsets[s]) counts[s] = need;
+				if (need <= size - offsets[s]) counts[s] = need;
 			}
 			if (offsets[s] < 0 || counts[s] < 0 || offsets[s] > size || counts[s] > size - offsets[s])
 				throw new IOException("cannot read " + file + ": truncated or damaged TIFF: strip " + (s + 1) + " of " +

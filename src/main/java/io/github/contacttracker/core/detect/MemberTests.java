@@ -183,10 +183,7 @@ final class MemberTests {
 	static double undrawnAny(final float[] residual, final int w, final int h, final double x, final double y,
 		final KindProfiles profiles, final double noise)
 	{
-		double best = 0;
-		for (int c = 0; c < profiles.count(); c++)
-			best = Math.max(best, undrawn(residual, w, h, x, y, profiles.profile(c), noise));
-		return best;
+		return ProfileMatch.best(profiles, p -> undrawn(residual, w, h, x, y, p, noise));
 	}
 
 	/** @return {@link #undrawn} of a particle at (cx, cy) */

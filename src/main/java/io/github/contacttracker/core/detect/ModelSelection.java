@@ -242,10 +242,12 @@ public final class ModelSelection {
 			final float[] bp = BandPass.of(residual, w, h, scale.sigma(), scale.halfWidth());
 			final double noiseUnit = ImageDetection.unit(scale.noise(noise), bp);
 			final double unit = Math.max(noiseUnit, robustSpread(bp, near(w, h, e, of)));
-			// the residuals' noise where the model does not match the particles as closely as the noise allows
+			// faint peaks add particles only where the model matches them as closely as the noise allows; the
+			// residuals' noise there counts what misfit is left
+			final boolean faintAdds = unit <= FAINT_MISFIT * noiseUnit;
 			final double residualNoise = noise * unit / noiseUnit;
-			final Peaks more = Peaks.find(bp, w, h, 0, Math.max(FAINT_LEVEL * unit, least), ImageDetection.PROMINENCE *
-				unit);
+			final Peaks more = Peaks.find(bp, w, h, 0, Math.max((faintAdds ? FAINT_LEVEL : ADD_LEVEL) * unit, least),
+				ImageDetection.PROMINENCE * unit);
 			final Moves moves = new Moves(e.length + 2 * more.count() + e.length);
 			final boolean[] split = new boolean[e.length];
 			for (int k = 0; k < e.length; k++)
@@ -270,10 +272,9 @@ public final class ModelSelection {
 				}
 				if (dn < d / 4 || moves.near(px, py, d / 4)) continue; // on a member, or on one just added
 				if (more.height()[p] < ADD_LEVEL * unit) {
-					// a faint peak: a particle of its own where its light, at its best amplitude, lowers the residuals
-					// as much as a kept member's must, and its shape is a particle's, in units of the residuals' noise
-					// (where the profiles do not match the particles, their misfit counts as noise)
-					if (unit <= FAINT_MISFIT * noiseUnit && (nearest < 0 || dn >= FAINT_APART * d) && MemberTests.undrawnAny(residual, w, h, px, py, profiles,
+					// a faint peak (found only where faintAdds): a particle of its own where its light, at its best
+					// amplitude, lowers the residuals as much as a kept member's must, and its shape is a particle's
+					if ((nearest < 0 || dn >= FAINT_APART * d) && MemberTests.undrawnAny(residual, w, h, px, py, profiles,
 						residualNoise) >= SIGNIFICANCE && ProfileMatch.shapeAny(residual, w, h, px, py, profiles,
 							residualNoise) >= ProfileMatch.MATCH) moves.add(px, py);
 					continue;

@@ -61,10 +61,19 @@ final class ProfileMatch {
 	static double matchedOwn(final float[] residual, final int w, final int h, final Estimate e,
 		final EmpiricalProfile p, final double noise)
 	{
-		final double s = e.scale(), a = e.amplitude();
-		if (!(s > 0) || !Double.isFinite(a)) return Double.NaN;
-		final double[] m = sums(residual, w, h, e.x(), e.y(), p, s, a);
+		final double[] m = ownSums(residual, w, h, e, p);
 		return m == null ? Double.NaN : correlation(m[0], m[1], m[2], m[3], m[4], (int) m[5], noise);
+	}
+
+	/**
+	 * @return the sums of a fitted member's own light (the residuals with its drawn light added back) against its
+	 *         drawn shape; null for a member not drawn or off the frame
+	 */
+	private static double[] ownSums(final float[] residual, final int w, final int h, final Estimate e,
+		final EmpiricalProfile p)
+	{
+		final double s = e.scale(), a = e.amplitude();
+		return s > 0 && Double.isFinite(a) ? sums(residual, w, h, e.x(), e.y(), p, s, a) : null;
 	}
 
 	/**
@@ -87,24 +96,20 @@ final class ProfileMatch {
 	static double shapeOwn(final float[] residual, final int w, final int h, final Estimate e, final EmpiricalProfile p,
 		final double noise)
 	{
-		final double s = e.scale(), a = e.amplitude();
-		if (!(s > 0) || !Double.isFinite(a)) return Double.NaN;
-		final double[] m = sums(residual, w, h, e.x(), e.y(), p, s, a);
-		return m == null ? Double.NaN : withinNoise(m, noise) ? 1 : correlation(m[0], m[1], m[2], m[3], m[4], (int) m[5],
-			noise);
+		return shape(ownSums(residual, w, h, e, p), noise);
 	}
 
 	/** @return the best shape verdict at (x, y) among the kinds' profiles: as {@link #shapeOwn}, on the image as it is */
 	static double shapeAny(final float[] data, final int w, final int h, final double x, final double y,
 		final KindProfiles profiles, final double noise)
 	{
-		double best = Double.NEGATIVE_INFINITY;
-		for (int c = 0; c < profiles.count(); c++) {
-			final double[] m = sums(data, w, h, x, y, profiles.profile(c));
-			if (m != null) best = Math.max(best, withinNoise(m, noise) ? 1 : correlation(m[0], m[1], m[2], m[3], m[4],
-				(int) m[5], noise));
-		}
-		return best;
+		return best(profiles, p -> shape(sums(data, w, h, x, y, p), noise));
+	}
+
+	/** @return the shape verdict on sums: 1 where {@link #withinNoise}, else their correlation; NaN for none */
+	private static double shape(final double[] m, final double noise) {
+		return m == null ? Double.NaN : withinNoise(m, noise) ? 1 : correlation(m[0], m[1], m[2], m[3], m[4], (int) m[5],
+			noise);
 	}
 
 	/**
@@ -131,7 +136,6 @@ final class ProfileMatch {
 	 */
 	static final double WITHIN_NOISE = 3;
 
-
 	/**
 	 * @return the amplitude of the profile that best matches the frame around (x, y), {@code a} in {@code a P(r) + b}
 	 *         by least squares over the disc {@link #matched} reads: in units of the particles the profile was measured
@@ -152,9 +156,14 @@ final class ProfileMatch {
 	static double amplitudeAny(final float[] data, final int w, final int h, final double x, final double y,
 		final KindProfiles profiles)
 	{
+		return best(profiles, p -> amplitude(data, w, h, x, y, p));
+	}
+
+	/** @return the largest of {@code value} over the kinds' profiles (NaN if it is NaN for one) */
+	static double best(final KindProfiles profiles, final java.util.function.ToDoubleFunction<EmpiricalProfile> value) {
 		double best = Double.NEGATIVE_INFINITY;
 		for (int c = 0; c < profiles.count(); c++)
-			best = Math.max(best, amplitude(data, w, h, x, y, profiles.profile(c)));
+			best = Math.max(best, value.applyAsDouble(profiles.profile(c)));
 		return best;
 	}
 
@@ -202,10 +211,7 @@ final class ProfileMatch {
 	static double matchedAny(final float[] data, final int w, final int h, final double x, final double y,
 		final KindProfiles profiles, final double noise)
 	{
-		double best = Double.NEGATIVE_INFINITY;
-		for (int c = 0; c < profiles.count(); c++)
-			best = Math.max(best, matched(data, w, h, x, y, profiles.profile(c), noise));
-		return best;
+		return best(profiles, p -> matched(data, w, h, x, y, p, noise));
 	}
 
 	/**
