@@ -165,6 +165,31 @@ class MeasuredSettingsTest {
 	}
 
 	/**
+	 * A dense monolayer of two sizes (D 10 and 14 px, area fraction 0.7): the helper's level cuts it into spots nearly
+	 * all closer together than two particles can be told apart, and none of the rest stands alone. Before, the helper
+	 * measured its profile on the few spots left (4 particles on the study's first movie), suggested r_out 19 px for
+	 * particles 10 and 14 px across. It now says it cannot measure, why, and what to give; {@code track} finds the
+	 * particles by their image with the frame's blob scale, between the two diameters, and an r_out within one.
+	 */
+	@Test
+	void aLevelThatPartsNoParticlesIsNotMeasuredOn() {
+		final RandomAccessibleInterval<UnsignedByteType> packed = firstFrame(DetectionScenes.denseBidisperse(1, 6000));
+		final InvalidInputException e = assertThrows(InvalidInputException.class, () -> ProfileAnalysis.analyse(packed, 0,
+			0));
+		assertTrue(e.getMessage().contains(" lie closer to another than two particles of their profile can (") && e
+			.getMessage().endsWith("and no other stands alone: that level does not part these particles into one spot " +
+				"each; give their diameter"),
+			e.getMessage());
+		final MeasuredSettings.Result r = MeasuredSettings.of("bidisperse.tif", packed, true, SettingValues.defaults(),
+			Set.of(), FrontEnd.COMMAND_LINE);
+		assertEquals(TrackingSettings.IMAGE, r.settings().get(TrackingSettings.DETECTION), r.notice());
+		assertTrue(r.settings().diameter() > 10 && r.settings().diameter() < 14, r.notice());
+		assertTrue(r.settings().get(TrackingSettings.R_OUT) <= 10, r.notice());
+		assertTrue(r.notice().contains("could not measure (") && r.notice().contains("does not part these particles"), r
+			.notice());
+	}
+
+	/**
 	 * Bright particles packed edge to edge cover most of the frame, so its median lies on them and the small dark gaps
 	 * between them reach far below it: the levels alone would call them dark. Their blobs say otherwise (the inverted
 	 * frame's gaps stand no higher than the particles do), and they are taken for what they are. Dark discs standing
