@@ -71,6 +71,16 @@ final class TiffChunks {
 			.tileLength());
 	}
 
+	/**
+	 * @return the bytes strip {@code s} of a stripped image holds uncompressed: its rows (the last strip of a plane
+	 *         may hold fewer) times a row's bytes (one sample's where the samples lie in planes)
+	 */
+	static long stripBytes(final TiffDirectories.Directory p, final int s) {
+		final long rows = Math.min(p.rowsPerStrip(), p.height() - s % pieces(p) * p.rowsPerStrip());
+		final long rowBits = (long) p.width() * p.bits() * (p.planar() == 2 ? 1 : p.samples());
+		return rows * ((rowBits + 7) / 8);
+	}
+
 	/** @return the bytes of one whole strip or tile, uncompressed */
 	private static long pieceBytes(final TiffDirectories.Directory p) {
 		final long pixels = p.tiled() ? (long) p.tileWidth() * p.tileLength() : (long) p.width() * p.rowsPerStrip();

@@ -275,7 +275,7 @@ final class TiffDirectories {
 			// an uncompressed strip whose size overstates it (some writers give the whole plane's, or more) is read
 			// as far as its rows need, as ImageJ reads it, where the file holds that much
 			if (compression == 1 && !tiles && offsets[s] >= 0 && offsets[s] <= size && counts[s] > size - offsets[s]) {
-				final long need = uncompressedStripBytes(d, s);
+				final long need = TiffChunks.stripBytes(d, s);
 				if (need <= size - offsets[s]) counts[s] = need;
 			}
 			if (offsets[s] < 0 || counts[s] < 0 || offsets[s] > size || counts[s] > size - offsets[s])
@@ -293,18 +293,6 @@ final class TiffDirectories {
 		FrameBudget.check(file, width, height, (int) Math.min(8, (bits * samples + 7) / 8));
 		if (metaCountsAt >= 0 || metaAt >= 0) imageJMetadata(ch, dir, metaCountsAt, metaAt, big, size, file);
 		return d;
-	}
-
-	/**
-	 * @return the bytes strip {@code s} of an uncompressed, stripped image holds: its rows (the last strip of a plane
-	 *         may hold fewer) times a row's bytes (one sample's where the samples lie in planes)
-	 */
-	private static long uncompressedStripBytes(final Directory d, final int s) {
-		final int perPlane = (d.height() + d.rowsPerStrip() - 1) / d.rowsPerStrip();
-		final int block = s % perPlane;
-		final long rows = Math.min(d.rowsPerStrip(), d.height() - (long) block * d.rowsPerStrip());
-		final long rowBits = (long) d.width() * d.bits() * (d.planar() == 2 ? 1 : d.samples());
-		return rows * ((rowBits + 7) / 8);
 	}
 
 	/**

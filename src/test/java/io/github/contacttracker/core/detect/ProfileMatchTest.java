@@ -136,8 +136,6 @@ class ProfileMatchTest {
 		final float[] residual = data.clone();
 		ModelSelection.draw(residual, w, h, middle, profile, -1);
 		final double shape = ProfileMatch.shapeOwn(residual, w, h, middle, profile, noise);
-		System.out.println("faint particles: correlation " + correlated + " of " + all + ", verdict " + kept +
-			"; two spots drawn as one: " + shape);
 		assertTrue(shape < ProfileMatch.MATCH, "two spots drawn as one: " + shape);
 	}
 
