@@ -51,7 +51,11 @@ import io.github.contacttracker.core.radial.Refinement;
  * residuals' noise, the larger of the pixel noise's and the residuals' own robust spread, so that a model that
  * does not match the particles everywhere adds nothing) farther than a quarter diameter from every member: a
  * particle the seeds missed, such as the second of a pair closer than the filter resolves, which the fit of one
- * member leaves as a peak beside it.</li>
+ * member leaves as a peak beside it;</li>
+ * <li><b>split</b> a member beside which such a peak stands nearer than a diameter: the member held two particles, and
+ * its two children are seeded along the peak's direction. Where the profiles are known and the member is fitted no
+ * wider than its kind, a peak at least {@value #NEIGHBOUR_APART} diameters from it is a neighbour the seeds missed: it
+ * adds a particle where it stands out as an added particle's must, and never splits the member.</li>
  * </ul>
  * After a move, every particle is seeded again at its fitted centre (an added one at its residual peak) and the frame
  * fitted again with the same profiles. A particle's significance, the square root of that drop of the residual sum of
@@ -93,6 +97,18 @@ public final class ModelSelection {
 	 * bright particle.
 	 */
 	static final double FAINT_APART = 0.75;
+	/**
+	 * A residual peak this many diameters or more from the nearest member, where the profiles are known and that
+	 * member is fitted no wider than its kind ({@link #WIDE}), adds a particle rather than splitting the member: in a
+	 * packed field a particle the seeds missed sits a diameter from its neighbours, and its light pulls each towards it
+	 * until its peak lies nearer than a diameter (a monolayer of blurred discs at contact: 0.83 to 0.96 diameters). Split,
+	 * the member's children landed between particles; the missed particle's three neighbours were 0.3 to 1 px off, and
+	 * unflagged. A member that holds two particles is fitted wider, and its peaks, beyond both particles, lie at 0.7 to 1
+	 * diameter from it (a blurred pair at 0.85 diameters, fitted as one at scale 1.24 to 1.33). A peak there that does not
+	 * stand out as an added particle's must splits nothing either: split, a member of its kind's width beside the frame's
+	 * edge left a child 3 px from any particle, unflagged.
+	 */
+	static final double NEIGHBOUR_APART = 0.75;
 	/**
 	 * The least height of a residual peak that may add a particle, in units of the band-passed residuals' noise:
 	 * below a seed's level ({@link ImageDetection#LEVEL}), since a faint peak adds a particle only where the
@@ -279,15 +295,18 @@ public final class ModelSelection {
 							residualNoise) >= ProfileMatch.MATCH) moves.add(px, py);
 					continue;
 				}
-				if (nearest >= 0 && dn < d && !split[nearest]) {
+				// (a peak a neighbour's distance from a member of its kind's width: a particle the seeds missed)
+				final boolean apart = nearest < 0 || dn >= d || given != null && dn >= NEIGHBOUR_APART * d && !(e[nearest]
+					.scale() >= WIDE);
+				if (apart && (more.height()[p] >= strong || ProfileMatch.matchedAny(data, w, h, px, py, profiles,
+					noise) >= ProfileMatch.MATCH)) moves.add(px, py);
+				else if (!apart && !split[nearest]) {
 					// a peak beside a member: the member held two particles; it splits along the peak's direction
 					split[nearest] = true;
 					moves.replace(e[nearest].x(), e[nearest].y(), e[nearest].x() + 0.5 * (px - e[nearest].x()),
 						e[nearest].y() + 0.5 * (py - e[nearest].y()), e[nearest].x() - 0.5 * (px - e[nearest].x()),
 						e[nearest].y() - 0.5 * (py - e[nearest].y()));
 				}
-				else if ((nearest < 0 || dn >= d) && (more.height()[p] >= strong || ProfileMatch.matchedAny(data, w, h, px, py, profiles,
-					noise) >= ProfileMatch.MATCH)) moves.add(px, py);
 			}
 			int splits = 0;
 			for (final boolean b : split)

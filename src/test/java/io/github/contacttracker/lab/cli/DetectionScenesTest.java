@@ -174,20 +174,28 @@ class DetectionScenesTest {
 	}
 
 	/**
-	 * A packed monolayer of 255 bright blurred discs (D 14 px, area fraction 0.6, none alone), 2 frames, tracked with no
-	 * value given: nearly every particle is found, few spots are false, most spots inside the frame are unflagged, and
-	 * their centres are unbiased within 0.01 px and spread by less than 0.05 px (the study's 5 movies: 98.9% found, 1%
-	 * false, 75% unflagged, bias under 0.002 px, spread 0.034 px).
+	 * Packed monolayers of 255 bright blurred discs (D 14 px, area fraction 0.6, none alone), 2 frames each, tracked
+	 * with no value given, two layouts (the second is one whose seeds fell between particles, fits there did not
+	 * settle, and the profile rounds stalled, every spot flagged, before a residual peak a neighbour's distance from a
+	 * member added the particle it marks): every particle is found, under 1% of the spots are false, the spots inside the
+	 * frame are unflagged and their centres unbiased within 0.005 px and spread by less than 0.035 px (the study's 5
+	 * movies: 99.6% found, 0.2% false, 97.4% unflagged, bias under 0.001 px, spread 0.023 px).
 	 */
 	@Test
 	void aPackedMonolayerIsFoundAndCentred() {
-		final DetectionStudy.Row all = study(DetectionScenes.dense(2, 1)).total();
-		assertTrue(all.recall() >= 0.97, "recall " + all.recall());
-		assertTrue(all.falseSpots() + all.duplicates() <= 0.02 * all.particles(), all.falseSpots() + " false spots, " +
+		final DetectionStudy study = new DetectionStudy();
+		final NewUserTracker tracker = new NewUserTracker(2);
+		for (final long seed : new long[] { 1, 5001 }) {
+			final DetectionScene scene = DetectionScenes.dense(2, seed);
+			study.add(scene, tracker.track(scene));
+		}
+		final DetectionStudy.Row all = study.total();
+		assertTrue(all.recall() >= 0.99, "recall " + all.recall());
+		assertTrue(all.falseSpots() + all.duplicates() <= 0.01 * all.particles(), all.falseSpots() + " false spots, " +
 			all.duplicates() + " duplicates");
-		assertTrue(all.unflaggedShare() >= 0.7, "unflagged " + all.unflaggedShare() + ", mostly " + all.mainFlag());
-		assertTrue(all.worstBias() < 0.01, "bias " + all.worstBias() + " px");
-		assertTrue(all.spread() < 0.05, "spread " + all.spread() + " px");
+		assertTrue(all.unflaggedShare() >= 0.95, "unflagged " + all.unflaggedShare() + ", mostly " + all.mainFlag());
+		assertTrue(all.worstBias() < 0.005, "bias " + all.worstBias() + " px");
+		assertTrue(all.spread() < 0.035, "spread " + all.spread() + " px");
 	}
 
 	/**
