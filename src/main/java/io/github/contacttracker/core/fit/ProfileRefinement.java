@@ -292,7 +292,7 @@ public final class ProfileRefinement implements Refinement {
 			final double inside = Math.min(Math.min(x + 0.5, plane.width() - 0.5 - x), Math.min(y + 0.5, plane
 				.height() - 0.5 - y));
 			if (inside >= scale * safe.computeIfAbsent(profile[k], p -> p.informationRadius(SAFE_INFORMATION))) continue;
-			if (!(profile[k].informationOutside(x, y, scale, plane.width(), plane.height()) < CUT_INFORMATION)) e[k] =
+			if (profile[k].cutOff(x, y, scale, plane.width(), plane.height(), CUT_INFORMATION)) e[k] =
 				e[k].withFlags(e[k].flags() | Flag.AT_BORDER.bit());
 		}
 	}

@@ -78,11 +78,16 @@ public final class EmpiricalProfile implements Serializable {
 
 	/** P(r) from the table (linear interpolation); 0 beyond the radius. */
 	public double lookup(final double r) {
+		return interpolated(tableValue, r);
+	}
+
+	/** A table at {@link #TABLE_STEP} read at {@code r} (linear interpolation); 0 beyond its end. */
+	private static double interpolated(final double[] table, final double r) {
 		final double u = r / TABLE_STEP;
 		final int i = (int) u;
-		if (i >= tableValue.length - 1) return 0;
+		if (i >= table.length - 1) return 0;
 		final double f = u - i;
-		return tableValue[i] + f * (tableValue[i + 1] - tableValue[i]);
+		return table[i] + f * (table[i + 1] - table[i]);
 	}
 
 	/**
@@ -180,8 +185,58 @@ public final class EmpiricalProfile implements Serializable {
 	public double informationOutside(final double x, final double y, final double scale, final int width,
 		final int height)
 	{
-		final double reach = radius * scale;
-		if (x - reach >= -0.5 && y - reach >= -0.5 && x + reach <= width - 0.5 && y + reach <= height - 0.5) return 0;
+		return informationOutside(x, y, scale, width, height, Double.NEGATIVE_INFINITY, Double.POSITIVE_INFINITY);
+	}
+
+	/**
+	 * @return whether the frame cuts off at least {@code share} of the information on the centre ({@link
+	 *         #informationOutside} {@code >= share}): settled by {@link #edgeShares}' bounds where they lie clear of
+	 *         {@code share}, else by the sum over the pixels (a centre near a corner, or one cut by about {@code share})
+	 */
+	public boolean cutOff(final double x, final double y, final double scale, final int width, final int height,
+		final double share)
+	{
+		return !(informationOutside(x, y, scale, width, height, share - EDGE_MARGIN, share + EDGE_MARGIN) < share);
+	}
+
+	/**
+	 * How far (as a share) {@link #edgeShares}' bounds, from integrals, must lie from a share for {@link #cutOff} to
+	 * take them: the sums over the pixels differ from the integrals by under a hundredth on profiles down to 2 px
+	 * across (EmpiricalProfileTest), so twice that.
+	 */
+	static final double EDGE_MARGIN = 0.02;
+
+	/**
+	 * @return whether {@link #cutOff} takes the bounds at this scale: a profile smooth on the scale of a pixel, whose
+	 *         sums the check of {@link #edgeShares} found within a quarter of {@link #EDGE_MARGIN} of the integrals
+	 */
+	boolean boundsServe(final double scale) {
+		return scale >= EDGE_SCALE && edgeShares()[0] <= EDGE_MARGIN / 4;
+	}
+
+	/**
+	 * The least scale at which {@link #cutOff} takes the bounds: a smaller one draws the profile's slope on fewer
+	 * pixels than the check of {@link #edgeShares} (at scale 1) saw.
+	 */
+	private static final double EDGE_SCALE = 0.9;
+
+	/**
+	 * {@link #informationOutside}, or, where the bounds from the integrals ({@link #edgeShares}) lie below {@code
+	 * below} or above {@code above}, that bound: whatever the sum would give beyond them, their side is known.
+	 */
+	private double informationOutside(final double x, final double y, final double scale, final int width,
+		final int height, final double below, final double above)
+	{
+		final double reach0 = radius * scale;
+		if (x - reach0 >= -0.5 && y - reach0 >= -0.5 && x + reach0 <= width - 0.5 && y + reach0 <= height - 0.5)
+			return 0;
+		if ((below > Double.NEGATIVE_INFINITY || above < Double.POSITIVE_INFINITY) && boundsServe(scale)) {
+			final double[] bounds = edgeBounds(x, y, scale, width, height);
+			final double least = bounds[0], most = bounds[1];
+			if (most < below) return most;
+			if (least > above) return least;
+		}
+		final double reach = reach0;
 		final double perStep = 1 / (TABLE_STEP * scale);
 		final double[] d = tableDerivative;
 		double allX = 0, allY = 0, outX = 0, outY = 0;
@@ -200,6 +255,123 @@ public final class EmpiricalProfile implements Serializable {
 				}
 			}
 		return Math.max(allX > 0 ? outX / allX : 0, allY > 0 ? outY / allY : 0);
+	}
+
+	/**
+	 * @return bounds on {@link #informationOutside} from the integrals ({@link #edgeShares}): each edge's cut as a
+	 *         share of the information on x and on y, beyond a line at distance h (negative: the centre outside), is
+	 *         a half-plane's; the frame's outside is their union, so its share lies between the largest of them and
+	 *         their sum (the integrals stand for the sums over the pixels to within {@link #EDGE_MARGIN})
+	 */
+	double[] edgeBounds(final double x, final double y, final double scale, final int width, final int height) {
+		return edgeBounds(edgeShares(), x, y, scale, width, height);
+	}
+
+	private static double[] edgeBounds(final double[] t, final double x, final double y, final double scale,
+		final int width, final int height)
+	{
+		final double left = (x + 0.5) / scale, right = (width - 0.5 - x) / scale;
+		final double top = (y + 0.5) / scale, bottom = (height - 0.5 - y) / scale;
+		final double xl = edgeShare(t, 0, left), xr = edgeShare(t, 0, right), xt = edgeShare(t, 1, top), xb =
+			edgeShare(t, 1, bottom);
+		final double yl = edgeShare(t, 1, left), yr = edgeShare(t, 1, right), yt = edgeShare(t, 0, top), yb =
+			edgeShare(t, 0, bottom);
+		final double least = Math.max(Math.max(Math.max(xl, xr), Math.max(xt, xb)), Math.max(Math.max(yl, yr), Math
+			.max(yt, yb)));
+		return new double[] { least, Math.min(1, Math.max(xl + xr + xt + xb, yl + yr + yt + yb)) };
+	}
+
+	/** Step (px at scale 1) of the columns {@link #edgeShares} integrates over. */
+	private static final double EDGE_STEP = 0.25;
+
+	/** {@link #edgeShares}, made on first use (a profile whose particles never near the edge needs none). */
+	private transient volatile double[] edgeShares;
+
+	/**
+	 * The share of the information on a centre's x and on its y beyond a line px from it (at scale 1) that runs along
+	 * y: the integrals of {@code P'(r)^2 (x / r)^2} and {@code P'(r)^2 (y / r)^2} over the half-plane beyond it over
+	 * those over the plane, by columns {@link #EDGE_STEP} wide, cumulative ({@link #edgeShare} reads them). A line
+	 * along x swaps the two. First, at index 0, how far the sums over the pixels lie from these integrals where a
+	 * frame's edge cuts about {@link #EDGE_PROBE} of the information on x: the largest difference over four centres a
+	 * quarter pixel apart. A profile sharp on the scale of a pixel differs more: its bounds are not taken.
+	 */
+	private double[] edgeShares() {
+		double[] t = edgeShares;
+		if (t != null) return t;
+		final int half = (int) Math.ceil(radius / EDGE_STEP), n = 2 * half + 1;
+		final double[] colX = new double[n], colY = new double[n];
+		// the columns' centres at c = (i - half) EDGE_STEP, the rows' alike; the share beyond h then sums columns
+		for (int i = 0; i < n; i++) {
+			final double cx = (i - half) * EDGE_STEP;
+			for (int j = 0; j < n; j++) {
+				final double cy = (j - half) * EDGE_STEP, r2 = cx * cx + cy * cy;
+				if (!(r2 < radius * radius) || r2 == 0) continue;
+				final double slope = interpolated(tableDerivative, Math.sqrt(r2)), g = slope * slope / r2;
+				colX[i] += g * cx * cx;
+				colY[i] += g * cy * cy;
+			}
+		}
+		t = new double[1 + 2 * (n + 1)];
+		// cumulative from the far side beyond the line (x < -h): t[i] is the share of the columns left of column i's
+		// left edge, at x = (i - half - 1/2) EDGE_STEP, i = 0..n
+		double allX = 0, allY = 0;
+		for (int i = 0; i < n; i++) {
+			allX += colX[i];
+			allY += colY[i];
+		}
+		double sx = 0, sy = 0;
+		for (int i = 0; i <= n; i++) {
+			t[1 + i] = allX > 0 ? sx / allX : 0;
+			t[1 + n + 1 + i] = allY > 0 ? sy / allY : 0;
+			if (i < n) {
+				sx += colX[i];
+				sy += colY[i];
+			}
+		}
+		t[0] = edgeError(t);
+		edgeShares = t;
+		return t;
+	}
+
+	/** The share of the information on x cut off near which {@link #edgeShares} checks the sums. */
+	private static final double EDGE_PROBE = 0.05;
+
+	/** @return the largest difference of the sums over the pixels from the shares {@code t} near {@link #EDGE_PROBE} */
+	private double edgeError(final double[] t) {
+		// the line's distance where the integral's share on x is the probe's (it falls as the line moves out)
+		double lo = -radius, hi = radius;
+		for (int i = 0; i < 50; i++) {
+			final double mid = 0.5 * (lo + hi);
+			if (edgeShare(t, 0, mid) > EDGE_PROBE) lo = mid;
+			else hi = mid;
+		}
+		final int size = (int) Math.ceil(4 * radius) + 4;
+		double worst = 0;
+		for (int k = 0; k < 4; k++) {
+			final double h = lo + 0.25 * k, x = h - 0.5, y = 0.5 * size + 0.25 * k;
+			final double exact = informationOutside(x, y, 1, size, size, Double.NEGATIVE_INFINITY,
+				Double.POSITIVE_INFINITY);
+			final double[] b = edgeBounds(t, x, y, 1, size, size);
+			worst = Math.max(worst, Math.max(b[0] - exact, exact - b[1]));
+		}
+		return worst;
+	}
+
+	/**
+	 * @param which 0: the information on the coordinate across the line, 1: along it
+	 * @param h the line's distance from the centre (px at scale 1; negative: the centre beyond it)
+	 * @return the share of that information beyond the line ({@link #edgeShares}), linearly interpolated
+	 */
+	private static double edgeShare(final double[] t, final int which, final double h) {
+		final int m = (t.length - 1) / 2, n = m - 1, half = (n - 1) / 2;
+		// the line at x = -h, at index (-h / EDGE_STEP + half + 1/2) of the cumulative sums
+		final double u = -h / EDGE_STEP + half + 0.5;
+		if (!(u > 0)) return 0;
+		if (u >= n) return 1;
+		final int i = (int) u;
+		final double f = u - i;
+		final int o = 1 + which * m;
+		return t[o + i] + f * (t[o + i + 1] - t[o + i]);
 	}
 
 	private double coefficient(final int j) {

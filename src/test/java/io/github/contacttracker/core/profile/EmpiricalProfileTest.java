@@ -83,4 +83,56 @@ class EmpiricalProfileTest {
 			before = share;
 		}
 	}
+
+	/** A small blurred spot, about 3 px across, reaching 6 px: the pixels sample its slope coarsely. */
+	private static final EmpiricalProfile SMALL = small();
+
+	private static EmpiricalProfile small() {
+		final double[] c = new double[11];
+		for (int j = 0; j < c.length; j++)
+			c[j] = 80 * Math.exp(-0.5 * (j * 0.5) * (j * 0.5) / (1.2 * 1.2));
+		return new EmpiricalProfile(0.5, c, 10, 1000);
+	}
+
+	/**
+	 * Where the bounds from the integrals serve (profiles smooth on the pixels' scale: 30 px across, Gaussians of
+	 * sigma 3 and 5 px), they hold the sum over the pixels to within half {@link EmpiricalProfile#EDGE_MARGIN}, for
+	 * centres near one edge and near a corner, at scales 0.7-1.3; a profile 3 px across is not sampled finely enough
+	 * and is left to the sum. Either way {@link EmpiricalProfile#cutOff} decides as the sum does.
+	 */
+	@Test
+	void theBoundsFromTheIntegralsHoldTheSums() {
+		final java.util.Random random = new java.util.Random(7);
+		final EmpiricalProfile[] profiles = { RING, gauss(3), gauss(5), SMALL, gauss(1.5) };
+		final boolean[] serve = { true, true, true, false, false };
+		for (int p = 0; p < profiles.length; p++) {
+			final EmpiricalProfile profile = profiles[p];
+			assertEquals(serve[p], profile.boundsServe(1), "profile " + p);
+			int taken = 0;
+			for (int trial = 0; trial < 400; trial++) {
+				final double scale = 0.7 + 0.6 * random.nextDouble(), reach = profile.radius() * scale;
+				final boolean corner = trial % 2 == 1;
+				final double x = -0.5 + (random.nextDouble() * 1.3 - 0.3) * reach;
+				final double y = corner ? 159.5 - (random.nextDouble() * 1.3 - 0.3) * reach : 80.3;
+				final double exact = profile.informationOutside(x, y, scale, 200, 160);
+				final String at = "profile " + p + " at (" + x + ", " + y + ") x" + scale;
+				if (profile.boundsServe(scale)) {
+					taken++;
+					final double[] bounds = profile.edgeBounds(x, y, scale, 200, 160);
+					assertTrue(exact >= bounds[0] - 0.5 * EmpiricalProfile.EDGE_MARGIN && exact <= bounds[1] + 0.5
+						* EmpiricalProfile.EDGE_MARGIN, at + ": " + exact + " outside " + bounds[0] + ".." + bounds[1]);
+				}
+				assertEquals(exact >= 0.05, profile.cutOff(x, y, scale, 200, 160, 0.05), at + ": " + exact);
+			}
+			assertTrue(serve[p] == taken > 0, "profile " + p + ": bounds taken " + taken + " times");
+		}
+	}
+
+	/** A Gaussian spot of this sigma (px), 80 grey levels high. */
+	private static EmpiricalProfile gauss(final double sigma) {
+		final double[] c = new double[(int) Math.ceil(5 * sigma / 0.5)];
+		for (int j = 0; j < c.length; j++)
+			c[j] = 80 * Math.exp(-0.5 * (j * 0.5) * (j * 0.5) / (sigma * sigma));
+		return new EmpiricalProfile(0.5, c, 10, 1000);
+	}
 }
