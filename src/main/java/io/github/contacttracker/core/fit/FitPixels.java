@@ -87,25 +87,31 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 	private FitPixels(final int[] x, final int[] y, final double[] value, final double[] fixed, final int count,
 		final double[] u, final double[] v, final int[] candidates)
 	{
-		this(x, y, value, fixed, count, u, v, summary(u, v, fixed, count), candidates);
+		this(x, y, value, fixed, count, u, v, candidates, pack(x, y, value, fixed, count, u, v));
 	}
 
 	private FitPixels(final int[] x, final int[] y, final double[] value, final double[] fixed, final int count,
-		final double[] u, final double[] v, final double[] summary, final int[] candidates)
+		final double[] u, final double[] v, final int[] candidates, final double[] packed)
+	{
+		this(x, y, value, fixed, count, u, v, summary(packed, count), candidates, packed);
+	}
+
+	private FitPixels(final int[] x, final int[] y, final double[] value, final double[] fixed, final int count,
+		final double[] u, final double[] v, final double[] summary, final int[] candidates, final double[] packed)
 	{
 		this(x, y, value, fixed, count, u, v, java.util.Arrays.copyOf(summary, 9), java.util.Arrays.copyOfRange(
-			summary, 9, 15), candidates);
+			summary, 9, 15), candidates, packed);
 	}
 
 	/**
 	 * In one pass: the background plane's block of J^T J, {1, u, v} x {1, u, v} row by row (the same at every
 	 * step), then the least and greatest u, v and other groups' light ({@link #extent}).
 	 */
-	private static double[] summary(final double[] u, final double[] v, final double[] fixed, final int count) {
+	private static double[] summary(final double[] packed, final int count) {
 		double su = 0, sv = 0, suu = 0, suv = 0, svv = 0;
 		double u0 = Double.POSITIVE_INFINITY, u1 = Double.NEGATIVE_INFINITY, v0 = u0, v1 = u1, f0 = u0, f1 = u1;
-		for (int i = 0; i < count; i++) {
-			final double ui = u[i], vi = v[i], fi = fixed[i];
+		for (int i = 0, o = 0; i < count; i++, o += PACKED) {
+			final double ui = packed[o + 2], vi = packed[o + 3], fi = packed[o + 5];
 			su += ui;
 			sv += vi;
 			suu += ui * ui;
@@ -122,38 +128,46 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 		return new double[] { count, su, sv, su, suu, suv, sv, suv, svv, u0, u1, v0, v1, f0, f1 };
 	}
 
-	/** @return these pixels as candidates in their own right, numbered from 0 (a subset kept for good) */
+	/**
+	 * @return these pixels as candidates in their own right, numbered from 0 (a subset kept for good), with their
+	 *         positions, values, light and plane coordinates unpacked (a subset has them packed only)
+	 */
 	FitPixels asCandidates() {
-		return candidates == null ? this : new FitPixels(x, y, value, fixed, count, u, v, backgroundBlock, extent, null,
-			packed);
+		if (candidates == null) return this;
+		final int[] ux = new int[count], uy = new int[count];
+		final double[] uu = new double[count], uv = new double[count], uValue = new double[count], uFixed =
+			new double[count];
+		for (int i = 0, o = 0; i < count; i++, o += PACKED) {
+			ux[i] = (int) packed[o];
+			uy[i] = (int) packed[o + 1];
+			uu[i] = packed[o + 2];
+			uv[i] = packed[o + 3];
+			uValue[i] = packed[o + 4];
+			uFixed[i] = packed[o + 5];
+		}
+		return new FitPixels(ux, uy, uValue, uFixed, count, uu, uv, backgroundBlock, extent, null, packed);
 	}
 
-	/** @return the pixels marked in {@code keep}, in the same order (these pixels if all are) */
+	/**
+	 * @return the pixels marked in {@code keep}, in the same order (these pixels if all are): packed only, as the
+	 *         passes read them (their separate arrays null until {@link #asCandidates})
+	 */
 	FitPixels subset(final boolean[] keep) {
 		int m = 0;
 		for (int i = 0; i < count; i++)
 			if (keep[i]) m++;
 		if (m == count) return this;
-		final int[] sx = new int[m], sy = new int[m];
-		final double[] sv = new double[m], sf = new double[m], su = new double[m], sw = new double[m];
 		final int[] from = new int[m];
 		final double[] sp = new double[PACKED * m]; // (the packed numbers copied as they are, not packed again)
 		for (int i = 0, j = 0; i < count; i++) {
 			if (!keep[i]) continue;
 			from[j] = candidate(i);
-			sx[j] = x[i];
-			sy[j] = y[i];
-			sv[j] = value[i];
-			sf[j] = fixed[i];
-			su[j] = u[i];
-			sw[j] = v[i];
-			for (int c = 0, a = PACKED * i, b = PACKED * j; c < PACKED; c++)
-				sp[b + c] = packed[a + c];
+			System.arraycopy(packed, PACKED * i, sp, PACKED * j, PACKED);
 			j++;
 		}
-		final double[] summary = summary(su, sw, sf, m);
-		return new FitPixels(sx, sy, sv, sf, m, su, sw, java.util.Arrays.copyOf(summary, 9), java.util.Arrays
-			.copyOfRange(summary, 9, 15), from, sp);
+		final double[] summary = summary(sp, m);
+		return new FitPixels(null, null, null, null, m, null, null, java.util.Arrays.copyOf(summary, 9), java.util
+			.Arrays.copyOfRange(summary, 9, 15), from, sp);
 	}
 
 	private static double[] planeCoordinate(final int[] c, final int count, final double origin, final double unit) {
