@@ -63,14 +63,14 @@ final class RowRuns {
 
 	/**
 	 * Adds to {@code light} (one value per pixel) the light of a particle at {@code (kx, ky)}, scale {@code ks} and
-	 * amplitude {@code ka} on the pixels within {@code reach} (px) of it: {@code ka P(d / ks)}, P read by the squared
-	 * distance as {@link EmpiricalProfile#lookupSquare} reads it (no root per pixel).
+	 * amplitude {@code ka} on the pixels within {@code reach} (px) of it: {@code ka P(d / ks)}, P read from the
+	 * profile's table as {@link EmpiricalProfile#lookup} reads it.
 	 */
 	void draw(final double[] light, final double kx, final double ky, final double ks, final double ka,
 		final double reach, final EmpiricalProfile profile)
 	{
-		final double reach2 = reach * reach, perStep = 1 / (ks * ks * profile.squareStep());
-		final double[] table = profile.squareTable();
+		final double reach2 = reach * reach, perStep = 1 / (ks * EmpiricalProfile.TABLE_STEP);
+		final double[] table = profile.valueTable();
 		final int[] ends = new int[2];
 		for (int r = 0; r < runs.length; r += 4) {
 			final double dy = runs[r] - ky, dy2 = dy * dy;
@@ -116,17 +116,14 @@ final class RowRuns {
 		return dx * dx + dy2 < reach2;
 	}
 
-	/**
-	 * Adds the light to the pixels at {@code x = a .. b} of one row, pixel {@code x} at {@code offset + x}, from the
-	 * table by squared distance ({@code perStep}: its entries per px squared, at the particle's scale).
-	 */
+	/** Adds the light to the pixels at {@code x = a .. b} of one row, pixel {@code x} at {@code offset + x}. */
 	private static void row(final double[] light, final int offset, final int a, final int b, final double kx,
 		final double dy2, final double perStep, final double ka, final double[] table)
 	{
 		final int last = table.length - 1;
 		for (int x = a; x <= b; x++) {
 			final double dx = x - kx, d2 = dx * dx + dy2;
-			final double t = d2 * perStep;
+			final double t = Math.sqrt(d2) * perStep;
 			final int k = (int) t;
 			if (k < last) light[offset + x] += ka * (table[k] + (t - k) * (table[k + 1] - table[k]));
 		}

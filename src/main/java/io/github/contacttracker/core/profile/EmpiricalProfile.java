@@ -112,46 +112,6 @@ public final class EmpiricalProfile implements Serializable {
 		return tableValue;
 	}
 
-	/**
-	 * Entries of the table of P by squared distance ({@link #squareTable}): its step is the radius squared over this,
-	 * so that linear interpolation errs there about as the table by distance does (0.005 grey levels on a profile
-	 * 65 px across with a 60-level edge 4 px wide), and less on small profiles.
-	 */
-	public static final int SQUARE_ENTRIES = 1 << 14;
-
-	/** {@link #squareTable}, made on first use (a distributed front end does not ship it). */
-	private transient volatile double[] tableBySquare;
-
-	/**
-	 * @return the table of P at the squared distances {@code i} {@link #squareStep()} (not a copy: for inner loops,
-	 *         read only): P read without a root, where a loop has the squared distance (a particle's light drawn on
-	 *         many pixels)
-	 */
-	public double[] squareTable() {
-		double[] t = tableBySquare;
-		if (t != null) return t;
-		final double step = squareStep();
-		t = new double[SQUARE_ENTRIES + 2];
-		for (int i = 0; i < t.length; i++)
-			t[i] = value(Math.sqrt(i * step));
-		tableBySquare = t;
-		return t;
-	}
-
-	/** @return the step of {@link #squareTable} (px squared) */
-	public double squareStep() {
-		return radius * radius / SQUARE_ENTRIES;
-	}
-
-	/** @return P at the squared distance {@code r2} (px squared) from {@link #squareTable}; 0 beyond the radius */
-	public double lookupSquare(final double r2) {
-		final double[] t = squareTable();
-		final double u = r2 / squareStep();
-		final int i = (int) u;
-		if (i >= t.length - 1) return 0;
-		return t[i] + (u - i) * (t[i + 1] - t[i]);
-	}
-
 	/** @return the table of P'(r) / r at multiples of {@link #TABLE_STEP} (not a copy: for inner loops, read only) */
 	public double[] slopePerRTable() {
 		return tableSlopePerR;

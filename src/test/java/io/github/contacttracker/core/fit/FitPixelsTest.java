@@ -108,7 +108,7 @@ class FitPixelsTest {
 				if (!ps[k].reliable() || GroupFit.contains(group, k)) continue;
 				final double ks = GroupFit.scaleOf(e[k]), reach = profile.radius() * ks;
 				final double dx = xs[i] - e[k].x(), dy = ys[i] - e[k].y(), d2 = dx * dx + dy * dy;
-				if (d2 < reach * reach) fixed[i] += GroupFit.amplitudeOf(e[k]) * profile.lookupSquare(d2 / (ks * ks));
+				if (d2 < reach * reach) fixed[i] += GroupFit.amplitudeOf(e[k]) * profile.lookup(Math.sqrt(d2) / ks);
 			}
 		}
 		return new FitPixels(xs, ys, values, fixed, n, 0.5 * (x0 + x1), 0.5 * (y0 + y1), Math.max(1, 0.5 * (x1 - x0)));

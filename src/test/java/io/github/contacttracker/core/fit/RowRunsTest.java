@@ -51,13 +51,13 @@ class RowRunsTest {
 		final double kx, final double ky, final double ks, final double ka, final double reach,
 		final EmpiricalProfile profile)
 	{
-		final double[] table = profile.squareTable();
+		final double[] table = profile.valueTable();
 		final int last = table.length - 1;
-		final double reach2 = reach * reach, perStep = 1 / (ks * ks * profile.squareStep());
+		final double reach2 = reach * reach, perStep = 1 / (ks * EmpiricalProfile.TABLE_STEP);
 		for (int i = 0; i < count; i++) {
 			final double dx = px[i] - kx, dy = py[i] - ky, d2 = dx * dx + dy * dy;
 			if (!(d2 < reach2)) continue;
-			final double t = d2 * perStep;
+			final double t = Math.sqrt(d2) * perStep;
 			final int k = (int) t;
 			if (k < last) light[i] += ka * (table[k] + (t - k) * (table[k + 1] - table[k]));
 		}
