@@ -73,7 +73,7 @@ final class NormalEquations {
 		final double[] Rs = new double[n];
 		for (int q = 0; q < n; q++) {
 			tvs[q] = profile[q].valueTable();
-			tds[q] = profile[q].slopePerRTable();
+			tds[q] = profile[q].derivativeTable();
 			Rs[q] = profile[q].radius();
 		}
 		final double perStep = 1 / EmpiricalProfile.TABLE_STEP;
@@ -109,15 +109,14 @@ final class NormalEquations {
 				final int k = (int) t;
 				final double f = t - k;
 				final double val = tv[k] + f * (tv[k + 1] - tv[k]);
-				final double a = p[b + 2];
+				final double a = p[b + 2], d = a * (td[k] + f * (td[k + 1] - td[k])) * perScale[q];
 				model += a * val;
-				// the radial derivative over r, from the table of P'(r) / r: no division
-				final double radial = -a * perScale[q] * perScale[q] * (td[k] + f * (td[k + 1] - td[k]));
+				final double radial = r > 1e-12 ? -d / r : 0;
 				final int c = GroupFit.PER_PARTICLE * m;
 				g[c] = radial * dx;
 				g[c + 1] = radial * dy;
 				g[c + 2] = val;
-				g[c + 3] = radial * r2 * perScale[q];
+				g[c + 3] = -d * rs;
 				within[m++] = b;
 			}
 			if (models != null) models[i] = model;
@@ -160,12 +159,12 @@ final class NormalEquations {
 		final double[] jtr, final double[] noise, final double[] models)
 	{
 		final int np = GroupFit.PER_PARTICLE + GroupFit.BACKGROUND, b0 = GroupFit.PER_PARTICLE;
-		final double[] tv = profile.valueTable(), tq = profile.slopePerRTable();
+		final double[] tv = profile.valueTable(), td = profile.derivativeTable();
 		final double R = profile.radius(), perStep = 1 / EmpiricalProfile.TABLE_STEP;
 		final double[] pixels = px.packed();
 		final int count = px.count();
 		final double cx = p[0], cy = p[1], a = p[2], sc = p[3], pb = p[b0], pu = p[b0 + 1], pv = p[b0 + 2];
-		final double reach2 = R * sc * (R * sc), perScale = 1 / sc, radialScale = -a * perScale * perScale;
+		final double reach2 = R * sc * (R * sc), perScale = 1 / sc;
 		double rss = 0, r0 = 0, ru = 0, rv = 0, j0 = 0, j1 = 0, j2 = 0, j3 = 0;
 		final boolean weights = noise != null; // (its sums add to those given, as the general pass's do)
 		double n0 = weights ? noise[0] : 0, n1 = weights ? noise[1] : 0, n2 = weights ? noise[2] : 0, n3 = weights ?
@@ -183,12 +182,13 @@ final class NormalEquations {
 					final int k = (int) t;
 					final double f = t - k;
 					final double val = tv[k] + f * (tv[k + 1] - tv[k]);
+					final double d = a * (td[k] + f * (td[k + 1] - td[k])) * perScale;
 					model += a * val;
-					final double radial = radialScale * (tq[k] + f * (tq[k + 1] - tq[k]));
+					final double radial = r > 1e-12 ? -d / r : 0;
 					g0 = radial * dx;
 					g1 = radial * dy;
 					g2 = val;
-					g3 = radial * r2 * perScale;
+					g3 = -d * rs;
 					within = true;
 				}
 			}
@@ -225,12 +225,12 @@ final class NormalEquations {
 		final double[][] jtj, final double[] jtr, final double[] noise, final double[] models)
 	{
 		final int np = GroupFit.PER_PARTICLE + GroupFit.BACKGROUND, b0 = GroupFit.PER_PARTICLE;
-		final double[] tv = profile.valueTable(), tq = profile.slopePerRTable();
+		final double[] tv = profile.valueTable(), td = profile.derivativeTable();
 		final double R = profile.radius(), perStep = 1 / EmpiricalProfile.TABLE_STEP;
 		final double[] pixels = px.packed();
 		final int count = px.count();
 		final double cx = p[0], cy = p[1], a = p[2], sc = p[3], pb = p[b0], pu = p[b0 + 1], pv = p[b0 + 2];
-		final double reach2 = R * sc * (R * sc), perScale = 1 / sc, radialScale = -a * perScale * perScale;
+		final double reach2 = R * sc * (R * sc), perScale = 1 / sc;
 		if (gradients.length < GRADIENT * count) gradients = new double[GRADIENT * count];
 		final double[] gr = gradients;
 		for (int i = 0, o = 0, q = 0; i < count; i++, o += FitPixels.PACKED, q += GRADIENT) {
@@ -245,12 +245,13 @@ final class NormalEquations {
 					final int k = (int) t;
 					final double f = t - k;
 					final double val = tv[k] + f * (tv[k + 1] - tv[k]);
+					final double d = a * (td[k] + f * (td[k + 1] - td[k])) * perScale;
 					model += a * val;
-					final double radial = radialScale * (tq[k] + f * (tq[k + 1] - tq[k]));
+					final double radial = r > 1e-12 ? -d / r : 0;
 					g0 = radial * dx;
 					g1 = radial * dy;
 					g2 = val;
-					g3 = radial * r2 * perScale;
+					g3 = -d * rs;
 				}
 			}
 			gr[q] = g0;

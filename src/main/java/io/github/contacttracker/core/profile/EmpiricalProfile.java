@@ -44,8 +44,6 @@ public final class EmpiricalProfile implements Serializable {
 	/** Tables of P and P' at {@link #TABLE_STEP} for fast lookups. */
 	private final double[] tableValue;
 	private final double[] tableDerivative;
-	/** P'(r) / r at {@link #TABLE_STEP} (at 0: its limit, P''(0)). */
-	private final double[] tableSlopePerR;
 	/** The least and greatest values in {@link #tableValue} (linear interpolation stays between them). */
 	private final double least, greatest;
 
@@ -67,12 +65,10 @@ public final class EmpiricalProfile implements Serializable {
 		final int n = (int) Math.ceil(radius / TABLE_STEP) + 2;
 		tableValue = new double[n];
 		tableDerivative = new double[n];
-		tableSlopePerR = new double[n];
 		double lo = 0, hi = 0;
 		for (int i = 0; i < n; i++) {
 			tableValue[i] = value(i * TABLE_STEP);
 			tableDerivative[i] = derivative(i * TABLE_STEP);
-			tableSlopePerR[i] = i == 0 ? secondDerivativeAtZero() : tableDerivative[i] / (i * TABLE_STEP);
 			lo = Math.min(lo, tableValue[i]);
 			hi = Math.max(hi, tableValue[i]);
 		}
@@ -110,19 +106,6 @@ public final class EmpiricalProfile implements Serializable {
 	/** @return the table of P at multiples of {@link #TABLE_STEP} (not a copy: for inner loops, read only) */
 	public double[] valueTable() {
 		return tableValue;
-	}
-
-	/** @return the table of P'(r) / r at multiples of {@link #TABLE_STEP} (not a copy: for inner loops, read only) */
-	public double[] slopePerRTable() {
-		return tableSlopePerR;
-	}
-
-	/** @return P''(0), the limit of P'(r) / r at the centre */
-	private double secondDerivativeAtZero() {
-		double s = 0;
-		for (int j = -1; j <= 1; j++)
-			s += coefficient(j) * (Math.abs(j) == 1 ? 1 : -2);
-		return s / (spacing * spacing);
 	}
 
 	/** @return the table of P' at multiples of {@link #TABLE_STEP} (not a copy: for inner loops, read only) */
