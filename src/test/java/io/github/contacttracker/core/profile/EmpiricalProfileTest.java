@@ -84,16 +84,6 @@ class EmpiricalProfileTest {
 		}
 	}
 
-	/** A small blurred spot, about 3 px across, reaching 6 px: the pixels sample its slope coarsely. */
-	private static final EmpiricalProfile SMALL = small();
-
-	private static EmpiricalProfile small() {
-		final double[] c = new double[11];
-		for (int j = 0; j < c.length; j++)
-			c[j] = 80 * Math.exp(-0.5 * (j * 0.5) * (j * 0.5) / (1.2 * 1.2));
-		return new EmpiricalProfile(0.5, c, 10, 1000);
-	}
-
 	/**
 	 * Where the bounds from the integrals serve (profiles smooth on the pixels' scale: 30 px across, Gaussians of
 	 * sigma 3 and 5 px), they hold the sum over the pixels to within half {@link EmpiricalProfile#EDGE_MARGIN}, for
@@ -103,7 +93,8 @@ class EmpiricalProfileTest {
 	@Test
 	void theBoundsFromTheIntegralsHoldTheSums() {
 		final java.util.Random random = new java.util.Random(7);
-		final EmpiricalProfile[] profiles = { RING, gauss(3), gauss(5), SMALL, gauss(1.5) };
+		// (a spot of sigma 1.2 px, about 3 px across: the pixels sample its slope coarsely)
+		final EmpiricalProfile[] profiles = { RING, gauss(3), gauss(5), gauss(1.2), gauss(1.5) };
 		final boolean[] serve = { true, true, true, false, false };
 		for (int p = 0; p < profiles.length; p++) {
 			final EmpiricalProfile profile = profiles[p];
