@@ -245,7 +245,7 @@ public final class ModelSelection {
 				keep[k] = !(e[k].amplitude() <= (given != null ? FAINT : 0)) && !(e[k].scale() <= PINNED_LOW) && !pinned(e[k]) && !(significance[
 					k] < SIGNIFICANCE) && !(match[k] < ProfileMatch.MATCH);
 				for (int j = 0; j < k && keep[k]; j++)
-					if (keep[j] && e[j].distanceTo(e[k]) < d / 4) {
+					if (keep[j] && e[j].closerThan(e[k], d / 4)) {
 						// two members on one particle: the weaker goes
 						if (e[k].amplitude() > e[j].amplitude()) keep[j] = false;
 						else keep[k] = false;
@@ -428,7 +428,7 @@ public final class ModelSelection {
 		final int[] others = new int[members.length];
 		int count = 0;
 		for (int j = 0; j < members.length; j++)
-			if (j != member && drawn(members[j]) && members[j].distanceTo(e) < 2 * d) others[count++] = j;
+			if (j != member && drawn(members[j]) && members[j].closerThan(e, 2 * d)) others[count++] = j;
 		final int x0 = Math.max(0, (int) Math.floor(cx - d)), x1 = Math.min(w - 1, (int) Math.ceil(cx + d));
 		final int y0 = Math.max(0, (int) Math.floor(cy - d)), y1 = Math.min(h - 1, (int) Math.ceil(cy + d));
 		double s = 0, sx = 0, sy = 0, sxx = 0, syy = 0, sxy = 0;

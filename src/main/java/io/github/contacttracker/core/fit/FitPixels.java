@@ -195,6 +195,13 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 	static FitPixels gather(final Plane plane, final Particle[] ps, final Estimate[] e, final int[] group,
 		final EmpiricalProfile[] profile, final double window, final Censoring censoring)
 	{
+		return gather(plane, ps, e, group, profile, window, censoring, null);
+	}
+
+	/** {@link #gather}, the particles outside the group looked up in {@code nearby} (null: every one scanned) */
+	static FitPixels gather(final Plane plane, final Particle[] ps, final Estimate[] e, final int[] group,
+		final EmpiricalProfile[] profile, final double window, final Censoring censoring, final Nearby nearby)
+	{
 		double R = 0;
 		for (final int k : group)
 			R = Math.max(R, profile[k].radius());
@@ -236,8 +243,8 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 			}
 		}
 		if (count == 0) return new FitPixels(px, py, pv, new double[0], 0, mx, my, unit); // (none: not fitted)
-		return new FitPixels(px, py, pv, otherLight(px, py, count, x0, x1, ps, e, group, profile), count, mx, my,
-			unit);
+		return new FitPixels(px, py, pv, otherLight(px, py, count, x0, x1, ps, e, group, profile, nearby), count, mx,
+			my, unit);
 	}
 
 	/**
@@ -248,29 +255,29 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 	 *         or two.
 	 */
 	FitPixels relit(final Particle[] ps, final Estimate[] e, final int[] group, final EmpiricalProfile[] profile,
-		final Estimate[] lit)
+		final Lit lit, final Nearby nearby)
 	{
-		int changed = 0, others = 0;
-		for (int k = 0; k < ps.length; k++)
-			if (lit[k] != null) {
-				others++;
-				if (lit[k] != e[k]) changed++;
-			}
+		final Estimate[] at = lit.at();
+		final int[] which = lit.which();
+		int changed = 0;
+		for (final int k : which)
+			if (at[k] != e[k]) changed++;
 		final double[] light;
-		if (2 * changed > others) { // most have moved: drawn afresh, once each rather than taken out and drawn again
+		// most have moved: drawn afresh, once each rather than taken out and drawn again
+		if (2 * changed > which.length) {
 			final int[] xs = xRange();
-			light = otherLight(x, y, count, xs[0], xs[1], ps, e, group, profile);
-			for (int k = 0; k < ps.length; k++)
-				if (lit[k] != null) lit[k] = e[k];
+			light = otherLight(x, y, count, xs[0], xs[1], ps, e, group, profile, nearby);
+			for (final int k : which)
+				at[k] = e[k];
 		}
 		else {
 			light = fixed.clone();
 			final RowRuns rows = RowRuns.of(x, y, count);
-			for (int k = 0; k < ps.length; k++) {
-				if (lit[k] == null || lit[k] == e[k]) continue;
-				light(rows, light, lit[k], -1, profile[k]);
+			for (final int k : which) {
+				if (at[k] == e[k]) continue;
+				light(rows, light, at[k], -1, profile[k]);
 				light(rows, light, e[k], 1, profile[k]);
-				lit[k] = e[k];
+				at[k] = e[k];
 			}
 		}
 		return withLight(light);
@@ -307,20 +314,34 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 	 * @return the estimates the light of the particles outside {@code group} was drawn at by {@link #gather}, for
 	 *         those near enough to matter (the others null)
 	 */
-	Estimate[] litAt(final Particle[] ps, final Estimate[] e, final int[] group, final EmpiricalProfile[] profile) {
+	Lit litAt(final Particle[] ps, final Estimate[] e, final int[] group, final EmpiricalProfile[] profile,
+		final Nearby nearby)
+	{
 		final Estimate[] lit = new Estimate[ps.length];
-		if (count == 0) return lit;
+		if (count == 0) return new Lit(lit, new int[0]);
 		final int[] xs = xRange();
 		final int x0 = xs[0], x1 = xs[1], y0 = y[0], y1 = y[count - 1];
-		for (int k = 0; k < ps.length; k++) {
+		final int[] near = nearby == null ? null : nearby.near(x0, x1, y0, y1, nearby.reach() + MOVE_IN + 1);
+		final int[] which = new int[near == null ? ps.length : near.length];
+		int m = 0;
+		for (int i = 0; i < which.length; i++) {
+			final int k = near == null ? i : near[i];
 			if (!ps[k].reliable() || GroupFit.contains(group, k)) continue;
 			// those whose light can reach these pixels at all (as in otherLight; a neighbour may move into reach)
 			final double reach = profile[k].radius() * GroupFit.scaleOf(e[k]) + MOVE_IN;
-			if (e[k].x() >= x0 - reach && e[k].x() <= x1 + reach && e[k].y() >= y0 - reach && e[k].y() <= y1 + reach)
+			if (e[k].x() >= x0 - reach && e[k].x() <= x1 + reach && e[k].y() >= y0 - reach && e[k].y() <= y1 + reach) {
 				lit[k] = e[k];
+				which[m++] = k;
+			}
 		}
-		return lit;
+		return new Lit(lit, java.util.Arrays.copyOf(which, m));
 	}
+
+	/**
+	 * The estimates the light of the particles outside a group was drawn at, per particle ({@code at}: null for
+	 * those too far to matter), and the particles lit ({@code which}, in increasing order).
+	 */
+	record Lit(Estimate[] at, int[] which) {}
 
 	/** @return the least and greatest x of the pixels (the rows are in order: their y are the first's and last's) */
 	private int[] xRange() {
@@ -340,13 +361,17 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 	 * pixels in row order (x within {@code [x0, x1]}): each particle on the rows within its reach only.
 	 */
 	private static double[] otherLight(final int[] px, final int[] py, final int count, final int x0, final int x1,
-		final Particle[] ps, final Estimate[] e, final int[] group, final EmpiricalProfile[] profile)
+		final Particle[] ps, final Estimate[] e, final int[] group, final EmpiricalProfile[] profile,
+		final Nearby nearby)
 	{
 		final double[] fixed = new double[count];
 		if (count == 0) return fixed;
 		final int y0 = py[0], y1 = py[count - 1];
 		final RowRuns rows = RowRuns.of(px, py, count);
-		for (int k = 0; k < ps.length; k++) {
+		final int[] near = nearby == null ? null : nearby.near(x0, x1, y0, y1, nearby.reach() + 1);
+		final int m = near == null ? ps.length : near.length;
+		for (int i = 0; i < m; i++) {
+			final int k = near == null ? i : near[i];
 			if (!ps[k].reliable() || GroupFit.contains(group, k)) continue;
 			final double kx = e[k].x(), ky = e[k].y(), ks = GroupFit.scaleOf(e[k]);
 			final double reach = profile[k].radius() * ks;

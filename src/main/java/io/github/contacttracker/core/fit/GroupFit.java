@@ -186,7 +186,8 @@ public final class GroupFit {
 		final int[] parent = UnionFind.singletons(n);
 		for (int i = 0; i < n; i++)
 			for (int j = i + 1; j < n; j++)
-				if (ps[i].reliable() && ps[j].reliable() && e[i].distanceTo(e[j]) < distance) UnionFind.union(parent, i, j);
+				if (ps[i].reliable() && ps[j].reliable() && e[i].closerThan(e[j], distance))
+					UnionFind.union(parent, i, j);
 		final List<int[]> groups = new ArrayList<>();
 		for (int r = 0; r < n; r++) {
 			if (UnionFind.find(parent, r) != r || !ps[r].reliable()) continue;
@@ -240,11 +241,12 @@ public final class GroupFit {
 	{
 		final int n = group.length, np = PER_PARTICLE * n + BACKGROUND;
 		final FitPixels candidates;
+		final Nearby nearby = kept == null ? null : kept.nearby;
 		if (kept != null && kept.candidates != null) candidates = kept.candidates.relit(ps, e, group, profile,
-			kept.lit);
+			kept.lit, nearby);
 		else {
-			candidates = FitPixels.gather(plane, ps, e, group, profile, window, censoring);
-			if (kept != null) kept.lit = candidates.litAt(ps, e, group, profile);
+			candidates = FitPixels.gather(plane, ps, e, group, profile, window, censoring, nearby);
+			if (kept != null) kept.lit = candidates.litAt(ps, e, group, profile, nearby);
 		}
 		if (kept != null) kept.candidates = candidates;
 		if (candidates.count() <= np) return 0;
@@ -555,7 +557,9 @@ public final class GroupFit {
 		FitPixels candidates;
 		boolean[] use;
 		/** the estimates the candidates' light of other particles was drawn at ({@link FitPixels#relit}) */
-		Estimate[] lit;
+		FitPixels.Lit lit;
+		/** the frame's particles by their current centres, kept current by the sweeps (null: every one scanned) */
+		Nearby nearby;
 		/** J^T J of the member's latest fit, on the kept pixels (null: none) */
 		double[][] jtj;
 	}

@@ -97,9 +97,17 @@ final class MemberSweeps {
 		for (int q = 0; q < n; q++)
 			memberWindow[q] = Math.min(window, information.computeIfAbsent(profile[group[q]], pk -> pk
 				.informationRadius(INFORMATION)));
-		final GroupFit.Kept[] kept = new GroupFit.Kept[n];
+		// (the particles near a member looked up in a grid where the frame holds many; a scan of a few is cheaper)
+		final Nearby nearby = e.length >= Nearby.WORTH ? new Nearby(e, profile, plane.width(), plane.height()) : null;
+		final int[] memberOf = new int[e.length]; // each particle's place in the group (-1: not a member)
+		java.util.Arrays.fill(memberOf, -1);
 		for (int q = 0; q < n; q++)
+			memberOf[group[q]] = q;
+		final GroupFit.Kept[] kept = new GroupFit.Kept[n];
+		for (int q = 0; q < n; q++) {
 			kept[q] = new GroupFit.Kept();
+			kept[q].nearby = nearby; // (null: every particle scanned)
+		}
 		final NormalEquations passes = new NormalEquations(); // (its work array serves every member's fits)
 		int most = 0;
 		boolean any = true;
@@ -122,6 +130,7 @@ final class MemberSweeps {
 				failed[q] = it == 0 || e[k].distanceTo(start[q]) > MAX_SLIDE * Math.sqrt(particles[k].region().area() /
 					Math.PI);
 				if (failed[q]) e[k] = start[q].withFlags(e[k].flags());
+				if (nearby != null) nearby.moved(k, e[k]);
 				// a member that failed is back at its start: it moved if that is not where its neighbours last saw it
 				// (counted as unfinished, one sliding off every sweep would hold its group for all of them)
 				unfinished[q] = it < 0 && !failed[q];
@@ -133,12 +142,31 @@ final class MemberSweeps {
 			// the pixels of a member's fit lie within its window, and a neighbour's move changes its light where the
 			// profile's slope lies, within the neighbour's own window. Beyond that window the neighbour's move changes
 			// its light by far less than the noise, so refitting there would cost fits without moving a centre.
+			// (the neighbours looked up in the grid: every member within the widest of their windows)
+			double widest = 0;
+			for (int j = 0; j < n; j++)
+				widest = Math.max(widest, memberWindow[j] * GroupFit.scaleOf(e[group[j]]));
 			any = false;
 			for (int q = 0; q < n; q++) {
 				active[q] = unfinished[q];
-				for (int j = 0; j < n && !active[q]; j++)
-					active[q] = j != q && movedAt[j] > fittedAt[q] && e[group[j]].distanceTo(e[group[q]]) < memberWindow[q] *
-						GroupFit.scaleOf(e[group[q]]) + memberWindow[j] * GroupFit.scaleOf(e[group[j]]);
+				if (active[q]) {
+					any = true;
+					continue;
+				}
+				final Estimate eq = e[group[q]];
+				final double own = memberWindow[q] * GroupFit.scaleOf(eq);
+				final int[] near = nearby == null ? null : nearby.nearInAnyOrder(eq.x(), eq.x(), eq.y(), eq.y(), own +
+					widest + 1);
+				for (int i = 0, m = near == null ? n : near.length; i < m; i++) {
+					final int j = near == null ? i : memberOf[near[i]];
+					if (j < 0 || j == q || movedAt[j] <= fittedAt[q]) continue;
+					final Estimate ej = e[group[j]];
+					final double reach = own + memberWindow[j] * GroupFit.scaleOf(ej);
+					if (ej.closerThan(eq, reach)) {
+						active[q] = true;
+						break;
+					}
+				}
 				any |= active[q];
 			}
 		}
