@@ -81,6 +81,36 @@ public final class FlagAdvice {
 	}
 
 	/**
+	 * A run that found nothing says so, what it left out and what to try (a diameter given three times the particles'
+	 * finds no peak at their scale; a threshold above them, or bright particles asked for on dark ones, no area).
+	 *
+	 * @param spots the run's spots
+	 * @param frames the frames it tracked
+	 * @param discarded the candidates it left out: areas too small or flat, or the image's seeds too faint or not
+	 *        needed by the fit
+	 * @param used the parameters the run used
+	 * @param inverted whether the frames were inverted for dark particles
+	 * @param ui where the user changes the settings, which names them in the advice
+	 * @return the warning, or null where the run found a spot or had no frame
+	 */
+	public static String nothingFound(final int spots, final int frames, final int discarded,
+		final TrackerParameters used, final boolean inverted, final FrontEnd ui)
+	{
+		if (spots > 0 || frames == 0) return null;
+		final String what;
+		if (used.detectsByImage()) what = "no peak of the image filtered at the particles' diameter was kept as a " +
+			"particle" + (discarded > 0 ? " (" + discarded + " seeds left out: too faint, or not needed by the fit)"
+				: "") + ": " + checkDiameter(used, ui);
+		else what = "no area at or above " + ui.name(TrackingSettings.THRESHOLD) + " " + Numbers.fmt(used.threshold(),
+			2) + " was kept" + (discarded > 0 ? " (" + discarded + " smaller than " + ui.name(TrackingSettings.MIN_AREA) +
+				" " + used.minArea() + ", flat, or the thin fringes between particles)" : "") + ": check " + ui.name(
+					TrackingSettings.THRESHOLD) + " and " + ui.name(TrackingSettings.MIN_AREA) + againstTheSize(ui);
+		final String dark = inverted ? "" : "; if the particles are darker than the background, " + ui.set(
+			TrackingSettings.PARTICLES, TrackingSettings.DARK);
+		return "no spot found in " + frames + (frames == 1 ? " frame: " : " frames: ") + what + dark;
+	}
+
+	/**
 	 * @param used the parameters of the run that flagged the spots
 	 * @param ui where the user changes the settings, which names them in the advice
 	 * @return the flag's usual cause under those parameters and what to try that the run did not, in words

@@ -163,6 +163,9 @@ public final class TrackingPipeline {
 		final String most = FlagAdvice.of(spots, choice == null ? params : params.withDetection(choice.detection()),
 			ui);
 		if (most != null) warnings.add(most);
+		final String none = FlagAdvice.nothingFound(spots.size(), frames.size(), discarded, choice == null ? params
+			: params.withDetection(choice.detection()), settings.dark(), ui);
+		if (none != null) warnings.add(none);
 		return new TrackingResult(frames, spots, flagged, discarded, (System.nanoTime() - startNanos) * 1e-9, List
 			.copyOf(warnings), detection(frames));
 	}

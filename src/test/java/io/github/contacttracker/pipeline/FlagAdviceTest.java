@@ -64,6 +64,18 @@ class FlagAdviceTest {
 							if (flag.isWarning()) check.accept(flag, used(method, detection, diameter, kinds));
 	}
 
+	/** @return two frames of a pair of {@code type} touching */
+	private static FrameSource pair(final ParticleType type) {
+		final SimulatedStack<?> pair = SimulatedStack.simulate(type, Scenario.PAIR, 1.0, 2, 3, 8);
+		return FrameSource.of(pair.frameCount(), t -> pair.frames().get(t), Calibration.PIXELS, "pair", null);
+	}
+
+	/** @return the last warning of a run of {@code source} with {@code settings} in front end {@code ui} */
+	private static String lastWarning(final SettingValues settings, final FrameSource source, final FrontEnd ui) {
+		final List<String> warnings = new TrackingPipeline(settings, ui).run(source, false).warnings();
+		return warnings.get(warnings.size() - 1);
+	}
+
 	/** @return the advice as the command line words it */
 	private static String cli(final Flag flag, final TrackerParameters used) {
 		return FlagAdvice.advice(flag, used, FrontEnd.COMMAND_LINE);
@@ -126,9 +138,7 @@ class FlagAdviceTest {
 	void anIterativeRunOnTouchingParticlesIsAdvisedTheFit() {
 		final ParticleType type = PaperParticles.silica206();
 		assertTrue(type.rOut() > type.diameterPx(), "the preset's r_out reaches past a touching neighbour's centre");
-		final SimulatedStack<?> pair = SimulatedStack.simulate(type, Scenario.PAIR, 1.0, 2, 3, 8);
-		final FrameSource source = FrameSource.of(pair.frameCount(), t -> pair.frames().get(t), Calibration.PIXELS,
-			"pair", null);
+		final FrameSource source = pair(type);
 		final SettingValues settings = SettingValues.defaults().with(TrackingSettings.THRESHOLD, type.threshold()).with(
 			TrackingSettings.R_OUT, type.rOut()).with(TrackingSettings.DIAMETER, type.diameterPx()).with(
 				TrackingSettings.METHOD, Method.ITERATIVE.key());
@@ -142,19 +152,50 @@ class FlagAdviceTest {
 		assertFalse(warning.contains("--method iterative"), warning);
 
 		// the same run in Fiji names the dialog's fields and the macro keys, in TrackMate the panel's fields
-		final List<String> fiji = new TrackingPipeline(settings, FrontEnd.FIJI).run(source, false).warnings();
-		final String inFiji = fiji.get(fiji.size() - 1);
+		final String inFiji = lastWarning(settings, source, FrontEnd.FIJI);
 		assertTrue(inFiji.startsWith("4 of 4 spots (100%) are flagged, most FELL_BACK (4): "), inFiji);
 		assertTrue(inFiji.contains("set 'Method' to fit (macro method=fit)"), inFiji);
 		assertTrue(inFiji.contains("'Min second area' (macro min_second_area)"), inFiji);
 		assertTrue(inFiji.contains("Contact Tracker Profile"), inFiji);
 		assertFalse(inFiji.contains("--"), inFiji);
-		final List<String> panel = new TrackingPipeline(settings, FrontEnd.TRACKMATE).run(source, false).warnings();
-		final String inPanel = panel.get(panel.size() - 1);
+		final String inPanel = lastWarning(settings, source, FrontEnd.TRACKMATE);
 		assertTrue(inPanel.contains("set 'Method' to fit"), inPanel);
 		assertFalse(inPanel.contains("--") || inPanel.contains("macro"), inPanel);
 		for (final String line : List.of(warning, inFiji, inPanel))
 			assertPlain(line, "the run's warning");
+	}
+
+	/**
+	 * A run that finds no spot says so, with what it left out and what to try in the front end's terms: here every
+	 * area of a pair is smaller than the min area asked for. A run that finds spots, or has no frame, says nothing of
+	 * the kind.
+	 */
+	@Test
+	void aRunThatFindsNothingSaysWhy() {
+		final ParticleType type = PaperParticles.silica206();
+		final FrameSource source = pair(type);
+		final SettingValues settings = SettingValues.defaults().with(TrackingSettings.THRESHOLD, type.threshold()).with(
+			TrackingSettings.R_OUT, type.rOut()).with(TrackingSettings.DIAMETER, type.diameterPx()).with(
+				TrackingSettings.DETECTION, TrackingSettings.BY_THRESHOLD).with(TrackingSettings.MIN_AREA, 100_000);
+		final TrackingResult r = new TrackingPipeline(settings).run(source, false);
+		assertEquals(0, r.spots().size());
+		final String warning = r.warnings().get(r.warnings().size() - 1);
+		assertTrue(warning.startsWith("no spot found in 2 frames: no area at or above --threshold "), warning);
+		assertTrue(warning.contains("(4 smaller than --min-area 100000"), warning);
+		assertTrue(warning.contains("--particles dark"), warning);
+		final String inFiji = lastWarning(settings, source, FrontEnd.FIJI);
+		assertTrue(inFiji.contains("'Min area' (macro min_area)"), inFiji);
+		assertFalse(inFiji.contains("--"), inFiji);
+		assertPlain(warning, "the run's warning");
+
+		final TrackerParameters byImage = used(Method.FIT, Detection.IMAGE, 34.06, 1);
+		final String image = FlagAdvice.nothingFound(0, 5, 12, byImage, true, FrontEnd.COMMAND_LINE);
+		assertTrue(image.startsWith("no spot found in 5 frames: no peak of the image filtered at the particles' " +
+			"diameter was kept as a particle (12 seeds left out: too faint, or not needed by the fit): check --diameter, " +
+			"now 34.06 px"), image);
+		assertFalse(image.contains("--particles dark"), "the run already inverted the frames: " + image);
+		assertEquals(null, FlagAdvice.nothingFound(1, 5, 12, byImage, false, FrontEnd.COMMAND_LINE));
+		assertEquals(null, FlagAdvice.nothingFound(0, 0, 0, byImage, false, FrontEnd.COMMAND_LINE));
 	}
 
 	/**
