@@ -85,10 +85,19 @@ final class ProfileRounds {
 	 * @param progress the run's passes over a frame, whose total the rounds correct as they go
 	 * @return the profile, the sample frames kept and their last round's results
 	 */
-	static <T extends RealType<T>> Outcome measure(final ContactTracker given, int[] sample,
+	static <T extends RealType<T>> Outcome measure(final ContactTracker given, final int[] sample,
 		final IntFunction<? extends RandomAccessibleInterval<T>> frame, final Progress progress,
 		final BooleanSupplier cancelled)
 	{
+		return measure(given, sample, frame, progress, cancelled, false);
+	}
+
+	/** {@link #measure}, the image's centres starting the profile where {@code imageStarts}, else where they must */
+	private static <T extends RealType<T>> Outcome measure(final ContactTracker given, final int[] sampled,
+		final IntFunction<? extends RandomAccessibleInterval<T>> frame, final Progress progress,
+		final BooleanSupplier cancelled, final boolean imageStarts)
+	{
+		int[] sample = sampled;
 		final TrackerParameters params = given.parameters();
 		// A dense field needs fewer frames for as many particles (the rounds' cost follows the frames): how many is
 		// estimated from the iterative centres of two sample frames, the first and the middle one, and only the frames
@@ -127,8 +136,8 @@ final class ProfileRounds {
 		// single particles (touching beads, spheres parted by dark rims, a pair that merges only when pushed close:
 		// 65% to 100% on public and simulated footage), they start it: they flag their merges, which a frame's own
 		// profile learns as one wide particle (a simulated pair whose last quarter merged: its closest frame lost).
-		final boolean imageStart = tracker.parameters().detectsByImage() && RoundResults.usableShare(iterative) <
-			IMAGE_START;
+		final boolean imageStart = tracker.parameters().detectsByImage() && (imageStarts || RoundResults.usableShare(
+			iterative) < IMAGE_START);
 		if (imageStart) {
 			progress.total += sample.length;
 			iterative = pass(tracker, null, sample, frame, false, progress, cancelled);
@@ -179,6 +188,14 @@ final class ProfileRounds {
 			used = profile(start.results(), null, start.indices(), frame, params.profileReach(), null);
 		}
 		List<FrameResult> round = pass(tracker, profiles(used), sample, frame, false, progress, cancelled);
+		// Areas that look single but hold several particles each (a packed field that no outline tells apart) teach a
+		// profile too wide for the particles: the image's seeds, fitted with it, pin at its scale's limits and most are
+		// left out (a simulated monolayer of blurred discs: 72 spots for 510 particles, every one flagged). The rounds
+		// start again from the image's centres, each frame's profile its own.
+		if (!imageStart && tracker.parameters().detectsByImage() && mostLeftOut(round)) {
+			progress.total += sample.length;
+			return measure(given, sampled, frame, progress, cancelled, true);
+		}
 		// where the threshold's areas taught no profile (dim spots below the threshold: it kept none of them), this
 		// round's spots, found by the image with each frame's own profile, teach it; the rounds go on from there (with
 		// no centre to compare, the first verdict would otherwise find nothing moving and call it settled)
@@ -244,6 +261,16 @@ final class ProfileRounds {
 	 * out of the profile instead ({@link RoundResults.Unsettled}).
 	 */
 	static final int SETTLED_MEMBERS = 2;
+
+	/** @return whether the image's seeds left out on these frames outnumber the spots found */
+	private static boolean mostLeftOut(final List<FrameResult> round) {
+		long spots = 0, left = 0;
+		for (final FrameResult r : round) {
+			spots += r.spots().size();
+			left += r.discarded();
+		}
+		return left > spots;
+	}
 
 	/** Below this share of single-particle areas among the threshold's, the image's centres start the profile. */
 	static final double IMAGE_START = 0.5;
