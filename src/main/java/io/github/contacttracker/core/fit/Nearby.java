@@ -70,7 +70,10 @@ final class Nearby {
 			radius[k] = profile[k].radius();
 			reach = Math.max(reach, reach(k, e[k]));
 		}
-		cell = Math.max(1, reach);
+		// cells as wide as the widest reach (a box's neighbours lie in the cells around it), and no more cells than
+		// particles (a large frame of small particles: memory as the particles', not the frame's)
+		cell = Math.max(Math.max(1, reach), Math.sqrt((double) Math.max(1, width) * Math.max(1, height) / Math.max(1,
+			n)));
 		nx = (int) Math.ceil(Math.max(1, width) / cell);
 		ny = (int) Math.ceil(Math.max(1, height) / cell);
 		head = new int[nx * ny];
