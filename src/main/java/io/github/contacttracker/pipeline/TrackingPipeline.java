@@ -160,11 +160,10 @@ public final class TrackingPipeline {
 			"movie (too few isolated, unflagged particles); " + ownProfile + " frames measured their own, which is " +
 			"less precise");
 		final DetectionChoice choice = frames.isEmpty() ? null : frames.get(0).detection();
-		final String most = FlagAdvice.of(spots, choice == null ? params : params.withDetection(choice.detection()),
-			ui);
+		final TrackerParameters used = choice == null ? params : params.withDetection(choice.detection());
+		final String most = FlagAdvice.of(spots, used, ui);
 		if (most != null) warnings.add(most);
-		final String none = FlagAdvice.nothingFound(spots.size(), frames.size(), discarded, choice == null ? params
-			: params.withDetection(choice.detection()), settings.dark(), ui);
+		final String none = FlagAdvice.nothingFound(spots.size(), frames.size(), discarded, used, settings.dark(), ui);
 		if (none != null) warnings.add(none);
 		return new TrackingResult(frames, spots, flagged, discarded, (System.nanoTime() - startNanos) * 1e-9, List
 			.copyOf(warnings), detection(frames));

@@ -144,7 +144,7 @@ final class MemberSweeps {
 			// its light by far less than the noise, so refitting there would cost fits without moving a centre.
 			// (the neighbours looked up in the grid: every member within the widest of their windows)
 			double widest = 0;
-			for (int j = 0; j < n; j++)
+			for (int j = 0; nearby != null && j < n; j++)
 				widest = Math.max(widest, memberWindow[j] * GroupFit.scaleOf(e[group[j]]));
 			any = false;
 			for (int q = 0; q < n; q++) {

@@ -85,19 +85,10 @@ final class ProfileRounds {
 	 * @param progress the run's passes over a frame, whose total the rounds correct as they go
 	 * @return the profile, the sample frames kept and their last round's results
 	 */
-	static <T extends RealType<T>> Outcome measure(final ContactTracker given, final int[] sample,
+	static <T extends RealType<T>> Outcome measure(final ContactTracker given, int[] sample,
 		final IntFunction<? extends RandomAccessibleInterval<T>> frame, final Progress progress,
 		final BooleanSupplier cancelled)
 	{
-		return measure(given, sample, frame, progress, cancelled, false);
-	}
-
-	/** {@link #measure}, the image's centres starting the profile where {@code imageStarts}, else where they must */
-	private static <T extends RealType<T>> Outcome measure(final ContactTracker given, final int[] sampled,
-		final IntFunction<? extends RandomAccessibleInterval<T>> frame, final Progress progress,
-		final BooleanSupplier cancelled, final boolean imageStarts)
-	{
-		int[] sample = sampled;
 		final TrackerParameters params = given.parameters();
 		// A dense field needs fewer frames for as many particles (the rounds' cost follows the frames): how many is
 		// estimated from the iterative centres of two sample frames, the first and the middle one, and only the frames
@@ -128,6 +119,7 @@ final class ProfileRounds {
 		final DetectionChoice choice = params.choosesDetection() ? choose(iterative, frame.apply(sample[0]), params)
 			: null;
 		final ContactTracker tracker = withChoice(given, choice);
+		final boolean detects = tracker.parameters().detectsByImage();
 		// Where the image detects and most of the threshold's areas are not single particles (a packed field, where they
 		// hold several particles each: 12% to 20% of them single on simulated dense monolayers), the first centres are
 		// the image's, each sample frame fitted with a profile of its own: a profile measured around the areas' centres
@@ -136,70 +128,23 @@ final class ProfileRounds {
 		// single particles (touching beads, spheres parted by dark rims, a pair that merges only when pushed close:
 		// 65% to 100% on public and simulated footage), they start it: they flag their merges, which a frame's own
 		// profile learns as one wide particle (a simulated pair whose last quarter merged: its closest frame lost).
-		final boolean imageStart = tracker.parameters().detectsByImage() && (imageStarts || RoundResults.usableShare(
-			iterative) < IMAGE_START);
-		if (imageStart) {
-			progress.total += sample.length;
-			iterative = pass(tracker, null, sample, frame, false, progress, cancelled);
-		}
-		// the kinds of particle, told apart on the same frames; the profile of each is measured on its particles
-		Kinds kinds = null;
-		if (params.kinds() != 1) {
-			// each frame read and its spots measured once (frames shared among the threads), to find the kinds and to
-			// place each spot
-			final List<FrameResult> measured = iterative;
-			final int[] frames = sample;
-			final List<KindFeatures[]> features = Parallelization.getTaskExecutor().forEachApply(FramePass.positions(
-				frames.length), i -> KindFeatures.measure(Plane.of(frame.apply(frames[i])), measured.get(i).spots(),
-					params.rOut()));
-			final List<KindFeatures> found = new ArrayList<>();
-			for (int i = 0; i < sample.length; i++) {
-				final List<Localization> spots = iterative.get(i).spots();
-				final KindFeatures[] f = features.get(i);
-				for (int k = 0; k < f.length; k++) // merges too: a kind may be all merges at a low threshold
-					if (!spots.get(k).has(Flag.DEGENERATE)) found.add(f[k]);
-			}
-			kinds = KindProfiles.tellApart(found, params.kinds());
-			if (kinds != null) iterative = withKinds(iterative, features, kinds);
-		}
-		// The profile is measured around estimated centres, and in a configuration that never changes (every frame
-		// the same cluster) it absorbs part of their error; so profile and centres are alternated on the sample
-		// frames until the centres stop moving (the joint least-squares fixed point, to a tenth of the centres' errors).
-		// The first round's profile, on the iterative centres, only starts the rounds: it is measured on every other
-		// sample frame (a start needs no more: the rounds after it converge to the same fixed point), the later
-		// ones on them all. The third and later rounds' profiles are chord steps from the second's least squares (see
-		// ProfileEstimator). Not from the first's: it rests on the iterative centres without fitted amplitudes and
-		// scales, too far from the later rows for a step from it to land near the exact profile.
-		// A chord step converges only while the rows stay near those of its normal matrix: one that moves the profile
-		// no less than the round before did is replaced by the full least squares (where the rows change much, as
-		// with particles cut by the edge, chord steps can grow round after round and the centres run off).
-		List<FrameResult> previous = iterative;
-		// (the image's: on every sample frame, each fitted with its own profile, some of which may not have settled)
-		final int every = imageStart ? 1 : 2;
-		final int[] starting = new int[(sample.length + every - 1) / every];
-		for (int i = 0; i < starting.length; i++)
-			starting[i] = every * i;
-		final Frames start = new Frames(sample, previous).at(starting);
-		Measured used = profile(start.results(), null, start.indices(), frame, params.profileReach(), kinds);
-		// a kind none of whose particles can teach a profile (all merged where the threshold joined touching
-		// particles, as it does a pair pushed together): one profile for them all, not none
-		if (used == null && kinds != null) {
-			kinds = null;
-			used = profile(start.results(), null, start.indices(), frame, params.profileReach(), null);
-		}
-		List<FrameResult> round = pass(tracker, profiles(used), sample, frame, false, progress, cancelled);
+		Start start = start(tracker, params, sample, iterative, detects && RoundResults.usableShare(iterative) <
+			IMAGE_START, frame, progress, cancelled);
 		// Areas that look single but hold several particles each (a packed field that no outline tells apart) teach a
 		// profile too wide for the particles: the image's seeds, fitted with it, pin at its scale's limits and most are
 		// left out (a simulated monolayer of blurred discs: 72 spots for 510 particles, every one flagged). The rounds
 		// start again from the image's centres, each frame's profile its own.
-		if (!imageStart && tracker.parameters().detectsByImage() && mostLeftOut(round)) {
-			progress.total += sample.length;
-			return measure(given, sampled, frame, progress, cancelled, true);
+		if (detects && !start.fromImage() && mostLeftOut(start.round())) {
+			progress.total += sample.length; // (the first round again)
+			start = start(tracker, params, sample, iterative, true, frame, progress, cancelled);
 		}
+		final Kinds kinds = start.kinds();
+		Measured used = start.used();
+		List<FrameResult> previous = start.previous(), round = start.round();
 		// where the threshold's areas taught no profile (dim spots below the threshold: it kept none of them), this
 		// round's spots, found by the image with each frame's own profile, teach it; the rounds go on from there (with
 		// no centre to compare, the first verdict would otherwise find nothing moving and call it settled)
-		if (used == null && tracker.parameters().detectsByImage() && !FrameResult.allSpots(round).isEmpty()) {
+		if (used == null && detects && !FrameResult.allSpots(round).isEmpty()) {
 			progress.total += sample.length;
 			previous = round;
 			used = profile(round, null, sample, frame, params.profileReach(), kinds);
@@ -248,6 +193,78 @@ final class ProfileRounds {
 		else if (verdict == Rounds.Verdict.CYCLING) round = RoundResults.stillMovingFlagged(round, rounds);
 		return new Outcome(sample, profiles(used), settled, round, choice, tracker.parameters().detectsByImage()
 			? Misfit.of(round) : null);
+	}
+
+	/**
+	 * How the rounds start: the centres they start from ({@code previous}: the threshold's iterative ones, or where
+	 * {@code fromImage} the image's, each sample frame fitted with a profile of its own), the kinds, the first
+	 * profile measured around those centres ({@code used}) and the first round found with it.
+	 */
+	private record Start(boolean fromImage, Kinds kinds, Measured used, List<FrameResult> previous,
+		List<FrameResult> round) {}
+
+	/**
+	 * @param threshold the sample frames' iterative centres, from the threshold's areas
+	 * @param imageStart whether the image's centres start the profile instead
+	 * @return the start of the rounds on the sample frames
+	 */
+	private static <T extends RealType<T>> Start start(final ContactTracker tracker, final TrackerParameters params,
+		final int[] sample, final List<FrameResult> threshold, final boolean imageStart,
+		final IntFunction<? extends RandomAccessibleInterval<T>> frame, final Progress progress,
+		final BooleanSupplier cancelled)
+	{
+		List<FrameResult> iterative = threshold;
+		if (imageStart) {
+			progress.total += sample.length;
+			iterative = pass(tracker, null, sample, frame, false, progress, cancelled);
+		}
+		// the kinds of particle, told apart on the same frames; the profile of each is measured on its particles
+		Kinds kinds = null;
+		if (params.kinds() != 1) {
+			// each frame read and its spots measured once (frames shared among the threads), to find the kinds and to
+			// place each spot
+			final List<FrameResult> measured = iterative;
+			final int[] frames = sample;
+			final List<KindFeatures[]> features = Parallelization.getTaskExecutor().forEachApply(FramePass.positions(
+				frames.length), i -> KindFeatures.measure(Plane.of(frame.apply(frames[i])), measured.get(i).spots(),
+					params.rOut()));
+			final List<KindFeatures> found = new ArrayList<>();
+			for (int i = 0; i < sample.length; i++) {
+				final List<Localization> spots = iterative.get(i).spots();
+				final KindFeatures[] f = features.get(i);
+				for (int k = 0; k < f.length; k++) // merges too: a kind may be all merges at a low threshold
+					if (!spots.get(k).has(Flag.DEGENERATE)) found.add(f[k]);
+			}
+			kinds = KindProfiles.tellApart(found, params.kinds());
+			if (kinds != null) iterative = withKinds(iterative, features, kinds);
+		}
+		// The profile is measured around estimated centres, and in a configuration that never changes (every frame
+		// the same cluster) it absorbs part of their error; so profile and centres are alternated on the sample
+		// frames until the centres stop moving (the joint least-squares fixed point, to a tenth of the centres' errors).
+		// The first round's profile, on the iterative centres, only starts the rounds: it is measured on every other
+		// sample frame (a start needs no more: the rounds after it converge to the same fixed point), the later
+		// ones on them all. The third and later rounds' profiles are chord steps from the second's least squares (see
+		// ProfileEstimator). Not from the first's: it rests on the iterative centres without fitted amplitudes and
+		// scales, too far from the later rows for a step from it to land near the exact profile.
+		// A chord step converges only while the rows stay near those of its normal matrix: one that moves the profile
+		// no less than the round before did is replaced by the full least squares (where the rows change much, as
+		// with particles cut by the edge, chord steps can grow round after round and the centres run off).
+		final List<FrameResult> previous = iterative;
+		// (the image's: on every sample frame, each fitted with its own profile, some of which may not have settled)
+		final int every = imageStart ? 1 : 2;
+		final int[] starting = new int[(sample.length + every - 1) / every];
+		for (int i = 0; i < starting.length; i++)
+			starting[i] = every * i;
+		final Frames first = new Frames(sample, previous).at(starting);
+		Measured used = profile(first.results(), null, first.indices(), frame, params.profileReach(), kinds);
+		// a kind none of whose particles can teach a profile (all merged where the threshold joined touching
+		// particles, as it does a pair pushed together): one profile for them all, not none
+		if (used == null && kinds != null) {
+			kinds = null;
+			used = profile(first.results(), null, first.indices(), frame, params.profileReach(), null);
+		}
+		return new Start(imageStart, kinds, used, previous, pass(tracker, profiles(used), sample, frame, false, progress,
+			cancelled));
 	}
 
 	/**
