@@ -35,12 +35,14 @@ public final class Censoring {
 	/** Margin between the model and a clip level, in noise standard deviations (0.1% of normal noise goes beyond). */
 	static final double MARGIN_SIGMAS = 3;
 
-	private final double floor, saturation, lowest, highest;
+	private final double floor, saturation, lowest, highest, noise;
 	private final boolean backgroundClipped;
 
-	private Censoring(final double floor, final double saturation, final double margin,
+	private Censoring(final double floor, final double saturation, final double noise,
 		final boolean backgroundClipped)
 	{
+		final double margin = MARGIN_SIGMAS * noise;
+		this.noise = noise;
 		this.floor = floor;
 		this.saturation = saturation;
 		lowest = floor + margin;
@@ -54,7 +56,7 @@ public final class Censoring {
 	 */
 	public static Censoring of(final Plane plane, final double noise) {
 		final double floor = plane.floor();
-		return new Censoring(floor, plane.saturation(), MARGIN_SIGMAS * Math.max(noise, 0), floor > Double.NEGATIVE_INFINITY &&
+		return new Censoring(floor, plane.saturation(), Math.max(noise, 0), floor > Double.NEGATIVE_INFINITY &&
 			clippedBackground(plane, floor));
 	}
 
@@ -62,7 +64,7 @@ public final class Censoring {
 	 * More than this share of a frame's pixels at the floor: its background itself is clipped (confocal slices with the
 	 * detector's offset subtracted), and the band beside the floor takes the whole background out of a fit.
 	 */
-	static final double CLIPPED_BACKGROUND = 0.05;
+	public static final double CLIPPED_BACKGROUND = 0.05;
 
 	/** @return whether more than {@link #CLIPPED_BACKGROUND} of the frame's pixels lie at the floor */
 	private static boolean clippedBackground(final Plane plane, final double floor) {
@@ -84,6 +86,11 @@ public final class Censoring {
 	 */
 	public boolean backgroundClipped() {
 		return backgroundClipped;
+	}
+
+	/** @return the noise standard deviation the margin is made of (grey levels; 0 where not known) */
+	public double noise() {
+		return noise;
 	}
 
 	/** @return whether an observed value is at a clip level (its true value unknown) */

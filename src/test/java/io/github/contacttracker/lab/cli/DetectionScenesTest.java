@@ -157,13 +157,14 @@ class DetectionScenesTest {
 	}
 
 	/**
-	 * Bright spheres on a background clipped at 0 (2 frames): every particle alone is found, unflagged, unbiased
+	 * Bright spheres on a background clipped at 0 (5 frames): every particle alone is found, unflagged, unbiased
 	 * within 0.01 px (the study: 0.002 px); at least 9 in 10 of those touching in pairs and chains are found (the
-	 * study: all of them).
+	 * study: all of them), unbiased within 0.01 px too (here 0.002 px; with the background measured from the pixels
+	 * above the floor alone, 0.016 px, pulled towards each other; the study: 0.031 px).
 	 */
 	@Test
 	void particlesOnAClippedBackgroundAreFound() {
-		final DetectionStudy study = study(DetectionScenes.clipped(2, 33));
+		final DetectionStudy study = study(DetectionScenes.clipped(5, 33));
 		final DetectionStudy.Row alone = band(study, DetectionScenes.ALONE), touching = band(study,
 			DetectionScenes.TOUCHING);
 		assertEquals(1.0, alone.recall(), "recall alone");
@@ -171,6 +172,7 @@ class DetectionScenesTest {
 		assertEquals(1.0, alone.unflaggedShare(), "unflagged alone");
 		assertTrue(alone.worstBias() < 0.01, "bias alone " + alone.worstBias());
 		assertTrue(touching.recall() >= 0.9, "recall touching " + touching.recall());
+		assertTrue(touching.worstBias() < 0.01, "bias touching " + touching.worstBias());
 	}
 
 	/**
