@@ -57,6 +57,11 @@ public record Estimate(double x, double y, int flags, int secondArea, int iterat
 		return new Estimate(x, y, newFlags, secondArea, iterations, solve, sigmaX, sigmaY, amplitude, scale);
 	}
 
+	/** @return this estimate with the amplitude {@code newAmplitude} (a fit's, where the rest is its start) */
+	public Estimate withAmplitude(final double newAmplitude) {
+		return new Estimate(x, y, flags, secondArea, iterations, solve, sigmaX, sigmaY, newAmplitude, scale);
+	}
+
 	public Estimate withIterations(final int newIterations) {
 		return new Estimate(x, y, flags, secondArea, newIterations, solve, sigmaX, sigmaY, amplitude, scale);
 	}
