@@ -110,6 +110,27 @@ public final class FlagAdvice {
 		return "no spot found in " + frames + (frames == 1 ? " frame: " : " frames: ") + what + dark;
 	}
 
+	/** A run warns of the other contrast's blobs from this many on its first frame... */
+	public static final int OTHER_CONTRAST_AT_LEAST = 5;
+	/** ...and this share of the spots it found there. */
+	public static final double OTHER_CONTRAST_SHARE = 0.2;
+
+	/**
+	 * @param blobs the blobs of the contrast the run did not track that stand out on its first frame as its particles
+	 *        do, away from them ({@link io.github.contacttracker.core.detect.OtherContrast})
+	 * @param spots the spots the run found on that frame
+	 * @param inverted whether the run tracked dark particles (the frames inverted)
+	 * @return the warning where there are at least {@value #OTHER_CONTRAST_AT_LEAST} such blobs and a fifth as many
+	 *         as the spots, else null: a run tracks one contrast, and the other's particles get no spot
+	 */
+	public static String otherContrast(final int blobs, final int spots, final boolean inverted, final FrontEnd ui) {
+		if (blobs < OTHER_CONTRAST_AT_LEAST || blobs < OTHER_CONTRAST_SHARE * spots) return null;
+		return "frame 1 also holds " + blobs + " blobs " + (inverted ? "brighter" : "darker") + " than the background, " +
+			"as strong as the " + spots + " particles tracked there and away from them: a run tracks one contrast; if " +
+			"they are particles too, track them in a second run: " + ui.set(TrackingSettings.PARTICLES, inverted
+				? "bright" : TrackingSettings.DARK);
+	}
+
 	/**
 	 * @param used the parameters of the run that flagged the spots
 	 * @param ui where the user changes the settings, which names them in the advice

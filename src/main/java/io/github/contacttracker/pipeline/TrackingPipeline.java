@@ -34,6 +34,9 @@ import io.github.contacttracker.core.Localization;
 import io.github.contacttracker.core.Numbers;
 import io.github.contacttracker.core.TrackerParameters;
 import io.github.contacttracker.core.detect.DetectionChoice;
+import io.github.contacttracker.core.detect.OtherContrast;
+import io.github.contacttracker.core.image.Inversion;
+import io.github.contacttracker.core.image.Plane;
 import io.github.contacttracker.core.track.FrameResult;
 import io.github.contacttracker.core.track.StackTracker;
 import io.github.contacttracker.io.Calibration;
@@ -122,7 +125,26 @@ public final class TrackingPipeline {
 		@SuppressWarnings("unchecked")
 		final List<FrameResult> frames = StackTracker.withThreads(threads, () -> tracker.track(source.frameCount(),
 			(IntFunction) frame, keepRegions, progress, cancelled));
-		return finish(frames, source.calibration(), outputs, start);
+		return finish(frames, source.calibration(), outputs, start, otherContrast(source, frames));
+	}
+
+	/**
+	 * @return how many blobs of the contrast the run did not track stand out on the first frame as its particles do,
+	 *         away from them ({@link OtherContrast}); 0 where the diameter is not known
+	 */
+	@SuppressWarnings({ "rawtypes", "unchecked" })
+	private int otherContrast(final FrameSource source, final List<FrameResult> frames) {
+		final double d = settings.diameter();
+		if (frames.isEmpty() || source.frameCount() == 0 || !(d > 0)) return 0;
+		final RandomAccessibleInterval first = source.frame(0); // raw: the pixel type varies by source
+		final Plane plane = Plane.of(first);
+		final List<Localization> spots = frames.get(0).spots();
+		final double[] x = new double[spots.size()], y = new double[spots.size()];
+		for (int k = 0; k < x.length; k++) {
+			x[k] = spots.get(k).x() - plane.minX();
+			y[k] = spots.get(k).y() - plane.minY();
+		}
+		return OtherContrast.blobs(plane, Plane.of((RandomAccessibleInterval) Inversion.of(first)), x, y, d);
 	}
 
 	/**
@@ -146,6 +168,16 @@ public final class TrackingPipeline {
 	public TrackingResult finish(final List<FrameResult> frames, final Calibration calibration,
 		final Outputs outputs, final long startNanos) throws IOException
 	{
+		return finish(frames, calibration, outputs, startNanos, 0);
+	}
+
+	/**
+	 * As {@link #finish(List, Calibration, Outputs, long)}, where {@code otherContrast} blobs of the contrast not
+	 * tracked stand out on the first frame ({@link OtherContrast}; a run with the frames at hand counts them)
+	 */
+	private TrackingResult finish(final List<FrameResult> frames, final Calibration calibration,
+		final Outputs outputs, final long startNanos, final int otherContrast) throws IOException
+	{
 		final List<Localization> spots = withDiameter(StackTracker.spots(frames));
 		outputs.write(spots, calibration, settings);
 		int flagged = 0, discarded = 0, ownProfile = 0;
@@ -165,6 +197,9 @@ public final class TrackingPipeline {
 		if (most != null) warnings.add(most);
 		final String none = FlagAdvice.nothingFound(spots.size(), frames.size(), discarded, used, settings.dark(), ui);
 		if (none != null) warnings.add(none);
+		final String other = FlagAdvice.otherContrast(otherContrast, frames.isEmpty() ? 0 : frames.get(0).spots().size(),
+			settings.dark(), ui);
+		if (other != null) warnings.add(other);
 		return new TrackingResult(frames, spots, flagged, discarded, (System.nanoTime() - startNanos) * 1e-9, List
 			.copyOf(warnings), detection(frames));
 	}

@@ -199,6 +199,65 @@ class FlagAdviceTest {
 	}
 
 	/**
+	 * A field of 16 bright and 9 dark soft-edged discs (D 10 px, 80 above and below a background of 100, noise 3), tracked
+	 * bright: the run finds the bright ones and says that frame 1 also holds 9 dark blobs, naming the setting that
+	 * tracks them, in each front end's words; tracked dark, it finds the dark ones and names the bright ones. A field of
+	 * bright discs alone says nothing of the kind, and neither do fewer than 5 such blobs or fewer than a fifth as many
+	 * as the spots.
+	 */
+	@Test
+	void aFieldOfBothContrastsSaysWhatTheRunLeftOut() {
+		final SettingValues settings = SettingValues.defaults().with(TrackingSettings.THRESHOLD, 140.0).with(
+			TrackingSettings.R_OUT, 9.0).with(TrackingSettings.DIAMETER, 10.0).with(TrackingSettings.DETECTION,
+				TrackingSettings.IMAGE);
+		final TrackingResult bright = new TrackingPipeline(settings).run(mixed(3), false);
+		assertEquals(16, bright.spots().size(), "the bright ones");
+		final String said = bright.warnings().get(bright.warnings().size() - 1);
+		assertTrue(said.startsWith("frame 1 also holds 9 blobs darker than the background, as strong as the 16 " +
+			"particles tracked there"), said);
+		assertTrue(said.endsWith("track them in a second run: use --particles dark"), said);
+		assertPlain(said, "the run's warning");
+		final String inFiji = lastWarning(settings, mixed(3), FrontEnd.FIJI);
+		assertTrue(inFiji.contains("'Particles' (macro particles=dark)") || inFiji.contains("set 'Particles' to dark"),
+			inFiji);
+		assertFalse(inFiji.contains("--"), inFiji);
+		final TrackingResult dark = new TrackingPipeline(settings.withText(TrackingSettings.PARTICLES,
+			TrackingSettings.DARK).with(TrackingSettings.THRESHOLD, 255 - 60.0)).run(mixed(3), false);
+		assertEquals(9, dark.spots().size(), "the dark ones");
+		assertTrue(dark.warnings().stream().anyMatch(w -> w.startsWith("frame 1 also holds 16 blobs brighter") && w
+			.endsWith("--particles bright")), dark.warnings().toString());
+		final TrackingResult alone = new TrackingPipeline(settings).run(mixed(0), false);
+		assertEquals(25, alone.spots().size());
+		assertTrue(alone.warnings().stream().noneMatch(w -> w.contains("also holds")), alone.warnings().toString());
+		assertEquals(null, FlagAdvice.otherContrast(4, 10, false, FrontEnd.COMMAND_LINE));
+		assertEquals(null, FlagAdvice.otherContrast(9, 50, false, FrontEnd.COMMAND_LINE));
+	}
+
+	/**
+	 * @return one 8-bit frame of 160 x 160 px, 25 soft-edged discs of D 10 px on a grid, every {@code darkEvery}-th dark
+	 *         (80 below a background of 100) and the others bright (80 above), Gaussian noise 3
+	 */
+	private static FrameSource mixed(final int darkEvery) {
+		final List<double[]> bright = new java.util.ArrayList<>(), dark = new java.util.ArrayList<>();
+		int i = 0;
+		for (int gy = 0; gy < 5; gy++)
+			for (int gx = 0; gx < 5; gx++, i++)
+				(darkEvery > 0 && i % darkEvery == 0 ? dark : bright).add(new double[] { 18.3 + 30.1 * gx, 17.6 + 30.4 *
+					gy });
+		final java.util.function.DoubleUnaryOperator disc = r -> 80 / (1 + Math.exp((r - 5) / 0.7));
+		final double[] up = io.github.contacttracker.core.TestImages.render(160, 160, 100, disc, bright.toArray(
+			double[][]::new));
+		final double[] down = io.github.contacttracker.core.TestImages.render(160, 160, 0, disc, dark.toArray(
+			double[][]::new));
+		final java.util.Random noise = new java.util.Random(3);
+		final byte[] px = new byte[up.length];
+		for (int k = 0; k < px.length; k++)
+			px[k] = (byte) Math.max(0, Math.min(255, Math.round(up[k] - down[k] + 3 * noise.nextGaussian())));
+		return FrameSource.of(1, t -> net.imglib2.img.array.ArrayImgs.unsignedBytes(px, 160, 160), Calibration.PIXELS,
+			"mixed", null);
+	}
+
+	/**
 	 * Every advice, in every front end, names each setting as its users meet it: no command-line option outside the
 	 * command line, and in Fiji each field's label (the start of the dialog's) with its macro key.
 	 */
