@@ -126,9 +126,9 @@ public final class FlagAdvice {
 	public static String otherContrast(final int blobs, final int spots, final boolean inverted, final FrontEnd ui) {
 		if (blobs < OTHER_CONTRAST_AT_LEAST || blobs < OTHER_CONTRAST_SHARE * spots) return null;
 		return "frame 1 also holds " + blobs + " blobs " + (inverted ? "brighter" : "darker") + " than the background, " +
-			"as strong as the " + spots + " particles tracked there and away from them: a run tracks one contrast; if " +
-			"they are particles too, track them in a second run: " + ui.set(TrackingSettings.PARTICLES, inverted
-				? "bright" : TrackingSettings.DARK);
+			"at least half as strong as the " + spots + " particles tracked there and away from them: a run tracks one " +
+			"contrast; if they are particles too, track them in a second run: " + ui.set(TrackingSettings.PARTICLES,
+				inverted ? "bright" : TrackingSettings.DARK);
 	}
 
 	/**
