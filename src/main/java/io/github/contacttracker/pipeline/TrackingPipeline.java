@@ -125,20 +125,23 @@ public final class TrackingPipeline {
 		@SuppressWarnings("unchecked")
 		final List<FrameResult> frames = StackTracker.withThreads(threads, () -> tracker.track(source.frameCount(),
 			(IntFunction) frame, keepRegions, progress, cancelled));
-		return finish(frames, source.calibration(), outputs, start, otherContrast(source, frames));
+		return finish(frames, source.calibration(), outputs, start, frames.isEmpty() ? 0 : otherContrast(source, frames
+			.get(0)));
 	}
 
 	/**
+	 * @param source the frames as the run tracks them ({@link #frames})
+	 * @param result the run's result on the first of them
 	 * @return how many blobs of the contrast the run did not track stand out on the first frame as its particles do,
 	 *         away from them ({@link OtherContrast}); 0 where the diameter is not known
 	 */
 	@SuppressWarnings({ "rawtypes", "unchecked" })
-	private int otherContrast(final FrameSource source, final List<FrameResult> frames) {
+	public int otherContrast(final FrameSource source, final FrameResult result) {
 		final double d = settings.diameter();
-		if (frames.isEmpty() || source.frameCount() == 0 || !(d > 0)) return 0;
+		if (source.frameCount() == 0 || !(d > 0)) return 0;
 		final RandomAccessibleInterval first = source.frame(0); // raw: the pixel type varies by source
 		final Plane plane = Plane.of(first);
-		final List<Localization> spots = frames.get(0).spots();
+		final List<Localization> spots = result.spots();
 		final double[] x = new double[spots.size()], y = new double[spots.size()];
 		for (int k = 0; k < x.length; k++) {
 			x[k] = spots.get(k).x() - plane.minX();
@@ -173,9 +176,9 @@ public final class TrackingPipeline {
 
 	/**
 	 * As {@link #finish(List, Calibration, Outputs, long)}, where {@code otherContrast} blobs of the contrast not
-	 * tracked stand out on the first frame ({@link OtherContrast}; a run with the frames at hand counts them)
+	 * tracked stand out on the first frame ({@link #otherContrast})
 	 */
-	private TrackingResult finish(final List<FrameResult> frames, final Calibration calibration,
+	public TrackingResult finish(final List<FrameResult> frames, final Calibration calibration,
 		final Outputs outputs, final long startNanos, final int otherContrast) throws IOException
 	{
 		final List<Localization> spots = withDiameter(StackTracker.spots(frames));

@@ -370,8 +370,12 @@ public final class SparkTrack {
 		final Path folder = Path.of(dir);
 		final Outputs outputs = new Outputs(folder.resolve(name + ".csv"), xml ? folder.resolve(name + ".xml") : null,
 			xml ? imageSource(plan) : null);
-		final TrackingResult r = new TrackingPipeline(plan.values()).finish(Arrays.asList(byFrame), plan.calibration(),
-			outputs, start);
+		final TrackingPipeline pipeline = new TrackingPipeline(plan.values());
+		// the first frame read once more, for the blobs of the other contrast (as the command line counts them)
+		final FrameSource first = pipeline.frames(FrameSource.of(Movies.open(plan.uri(), plan.movie(), plan.channel())
+			.frames(), plan.movie()));
+		final TrackingResult r = pipeline.finish(Arrays.asList(byFrame), plan.calibration(), outputs, start, pipeline
+			.otherContrast(first, byFrame[0]));
 		final String fileName = plan.uri().substring(plan.uri().lastIndexOf('/') + 1);
 		return new MovieOutcome(plan.index(), name, plan.movie() + ": " + r.summary(fileName), r.spots(), plan
 			.calibration(), null);

@@ -169,6 +169,41 @@ class SparkTrackTest {
 		}
 	}
 
+	/**
+	 * A field of 16 bright and 9 dark discs (D 10 px, 80 above and below a background of 100), tracked bright: the job
+	 * says, as the command line does, that the first frame also holds 9 dark blobs (its executors read that frame once
+	 * more to count them).
+	 */
+	@Test
+	void aFieldOfBothContrastsIsWarnedAboutAsTheCommandLineDoes() throws IOException {
+		final int w = 160, h = 160;
+		final ij.ImageStack stack = new ij.ImageStack(w, h);
+		final java.util.Random noise = new java.util.Random(3);
+		for (int t = 0; t < 2; t++) {
+			final byte[] px = new byte[w * h];
+			for (int y = 0; y < h; y++)
+				for (int x = 0; x < w; x++) {
+					double v = 100;
+					for (int i = 0; i < 25; i++) {
+						final double r = Math.hypot(x - 18.3 - 30.1 * (i % 5), y - 17.6 - 30.4 * (i / 5));
+						v += (i % 3 == 0 ? -80 : 80) / (1 + Math.exp((r - 5) / 0.7));
+					}
+					px[y * w + x] = (byte) Math.max(0, Math.min(255, Math.round(v + 3 * noise.nextGaussian())));
+				}
+			stack.addSlice(new ij.process.ByteProcessor(w, h, px));
+		}
+		final Path mixed = dir.resolve("mixed.tif");
+		assertTrue(new ij.io.FileSaver(new ij.ImagePlus("mixed", stack)).saveAsTiffStack(mixed.toString()));
+		final Object[] c = SparkTestMovies.cli("track", mixed.toString(), "--diameter", "10", "--out-dir", Files
+			.createDirectories(dir.resolve("mixed-cli")).toString());
+		assertEquals(0, c[0], (String) c[2]);
+		final Object[] s = spark(mixed.toString(), "--diameter", "10", "--out-dir", dir.resolve("mixed-spark").toString());
+		assertEquals(0, s[0], (String) s[2]);
+		final String summary = SparkTestMovies.summary((String) s[1], mixed.toString());
+		assertEquals(SparkTestMovies.summary((String) c[1], mixed.toString()), summary);
+		assertTrue(summary.contains("warning: frame 1 also holds 9 blobs darker than the background"), summary);
+	}
+
 	/** A refused run leaves no output folder it made behind (two movies that would write one CSV). */
 	@Test
 	void aRefusedRunRemovesTheFolderItMade() throws IOException {
