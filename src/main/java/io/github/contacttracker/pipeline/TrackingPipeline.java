@@ -166,17 +166,9 @@ public final class TrackingPipeline {
 	 * @param calibration the movie's calibration (positions in its units)
 	 * @param outputs the files to write
 	 * @param startNanos {@link System#nanoTime()} when the run began
+	 * @param otherContrast how many blobs of the contrast not tracked stand out on the first frame
+	 *        ({@link #otherContrast})
 	 * @throws IOException when writing a file fails (none is left behind)
-	 */
-	public TrackingResult finish(final List<FrameResult> frames, final Calibration calibration,
-		final Outputs outputs, final long startNanos) throws IOException
-	{
-		return finish(frames, calibration, outputs, startNanos, 0);
-	}
-
-	/**
-	 * As {@link #finish(List, Calibration, Outputs, long)}, where {@code otherContrast} blobs of the contrast not
-	 * tracked stand out on the first frame ({@link #otherContrast})
 	 */
 	public TrackingResult finish(final List<FrameResult> frames, final Calibration calibration,
 		final Outputs outputs, final long startNanos, final int otherContrast) throws IOException
