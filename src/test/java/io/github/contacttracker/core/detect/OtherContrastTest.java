@@ -80,6 +80,37 @@ class OtherContrastTest {
 		assertEquals(0, count(field(0, r -> Scenes.ringed(3, 1.5).applyAsDouble(r))), "bright cores in dark rings");
 	}
 
+	/**
+	 * A monolayer of bright discs packed edge to edge on a dark background (a triangular lattice, shaken), every
+	 * seventh of them missing: those gaps, a particle wide, stand out of the inverted frame against the bright
+	 * particles around them as dark particles would; they only read the background, and nothing is counted.
+	 */
+	@Test
+	void theGapsOfAPackedMonolayerAreNotParticles() {
+		final java.util.Random shake = new java.util.Random(17);
+		final List<Scenes.Truth> truth = new ArrayList<>();
+		int k = 0;
+		for (int row = 0; row < 20; row++)
+			for (int col = 0; col < 19; col++, k++)
+				if (k % 7 != 6) truth.add(new Scenes.Truth(6 + SPACING * (col + 0.5 * (row % 2)) + shake.nextGaussian() * 0.4,
+					6 + SPACING * Math.sqrt(0.75) * row + shake.nextGaussian() * 0.4, 150, 1));
+		final double[] clean = Scenes.render(210, 210, (px, py) -> 15, truth, Scenes.blurredDisc(4.5, 2), 12);
+		final double[] pixels = Scenes.noisy(clean, 3, 0, 255, 23);
+		final double[] inverted = new double[pixels.length];
+		for (int i = 0; i < inverted.length; i++)
+			inverted[i] = 255 - pixels[i];
+		final double[] x = new double[truth.size()], y = new double[truth.size()];
+		for (int j = 0; j < x.length; j++) {
+			x[j] = truth.get(j).x();
+			y[j] = truth.get(j).y();
+		}
+		assertEquals(0, OtherContrast.blobs(new DoublePlane(pixels, 210, 210), new DoublePlane(inverted, 210, 210), x, y,
+			SPACING - 0.5), truth.size() + " bright discs packed");
+	}
+
+	/** The packed monolayer's spacing (px): a diameter and half a pixel. */
+	private static final double SPACING = 11;
+
 	/** Nothing tracked: nothing to compare with, nothing counted. */
 	@Test
 	void nothingTrackedCountsNothing() {
