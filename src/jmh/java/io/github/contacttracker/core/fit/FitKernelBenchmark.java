@@ -41,8 +41,9 @@ import io.github.contacttracker.core.profile.ProfileAccess;
 /**
  * The fit's kernel: one pass of {@link NormalEquations} over a member's pixels, as a member of a dense group fitted in
  * turn sees them (a disc of 20 px radius, 1,257 pixels, other particles' light on them), with J^T J (the pass that
- * starts a step) and with the residuals alone (the pass that evaluates one). Under the JVM's default compilers;
- * divide by the pixels for the cost per pixel.
+ * starts a step) and with the residuals alone (the pass that evaluates one); and the light of a touching neighbour
+ * drawn on those pixels ({@link RowRuns#draw}, each sweep, for every neighbour that moved). Under the JVM's default
+ * compilers; divide by the pixels for the cost per pixel.
  */
 @State(Scope.Thread)
 @BenchmarkMode(Mode.AverageTime)
@@ -58,6 +59,8 @@ public class FitKernelBenchmark {
 	private final double[] p = new double[GroupFit.PER_PARTICLE + GroupFit.BACKGROUND];
 	private final double[][] jtj = new double[p.length][p.length];
 	private final double[] jtr = new double[p.length], noise = new double[GroupFit.PER_PARTICLE];
+	private RowRuns rows;
+	private double[] light;
 
 	@Setup
 	public void setUp() {
@@ -85,6 +88,8 @@ public class FitKernelBenchmark {
 				n++;
 			}
 		pixels = new FitPixels(xs, ys, values, fixed, n, cx, cy, radius);
+		rows = RowRuns.of(xs, ys, n);
+		light = new double[n];
 		p[0] = cx + 0.3;
 		p[1] = cy - 0.2;
 		p[2] = 1;
@@ -96,6 +101,18 @@ public class FitKernelBenchmark {
 	@Benchmark
 	public double normalEquations() {
 		return passes.accumulate(pixels, p, 1, profile, jtj, jtr, noise, null);
+	}
+
+	/**
+	 * @return a touching neighbour's light (30 px to the right, its profile reaching all 1,257 pixels' half) drawn on
+	 *         the member's pixels, and taken out again
+	 */
+	@Benchmark
+	public double neighbourLight() {
+		final EmpiricalProfile ringed = profile[0];
+		rows.draw(light, 70.3, 39.6, 1.02, 1.1, ringed.radius() * 1.02, ringed);
+		rows.draw(light, 70.3, 39.6, 1.02, -1.1, ringed.radius() * 1.02, ringed);
+		return light[light.length / 2];
 	}
 
 	/** @return the pass that evaluates a step: J^T r and the residuals alone */

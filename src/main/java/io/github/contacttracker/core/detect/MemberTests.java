@@ -159,8 +159,9 @@ final class MemberTests {
 		double drop = 0;
 		for (int y = y0; y <= y1; y++) {
 			final double dy = y - e.y();
-			for (int x = x0; x <= x1; x++) {
-				final double dx = x - e.x();
+			double xd = x0; // (x counted as a double too, exactly: RowRuns#row says why)
+			for (int x = x0; x <= x1; x++, xd++) {
+				final double dx = xd - e.x();
 				final double m = a * p.lookup(Math.sqrt(dx * dx + dy * dy) / s);
 				drop += m * m + 2 * (residual[y * w + x] - r0) * m;
 			}
@@ -203,12 +204,15 @@ final class MemberTests {
 				n++;
 			}
 		r0 /= Math.max(1, n); // the residuals' local mean: the background the fit would have taken
-		for (int y = y0; y <= y1; y++)
-			for (int x = x0; x <= x1; x++) {
-				final double v = p.lookup(dist(x - cx, y - cy));
+		for (int y = y0; y <= y1; y++) {
+			final double yd = y;
+			double xd = x0; // (x counted as a double too, exactly: RowRuns#row says why)
+			for (int x = x0; x <= x1; x++, xd++) {
+				final double v = p.lookup(dist(xd - cx, yd - cy));
 				rp += (residual[y * w + x] - r0) * v;
 				pp += v * v;
 			}
+		}
 		if (!(pp > 0) || !(rp > 0)) return 0;
 		final double drop = rp * rp / pp;
 		return noise > 0 ? Math.sqrt(drop) / noise : Double.POSITIVE_INFINITY;

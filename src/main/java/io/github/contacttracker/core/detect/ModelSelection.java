@@ -508,8 +508,9 @@ public final class ModelSelection {
 		final int y0 = Math.max(0, (int) Math.floor(e.y() - reach)), y1 = Math.min(h - 1, (int) Math.ceil(e.y() + reach));
 		for (int y = y0; y <= y1; y++) {
 			final double dy = y - e.y();
-			for (int x = x0; x <= x1; x++) {
-				final double dx = x - e.x();
+			double xd = x0; // (x counted as a double too, exactly: RowRuns#row says why)
+			for (int x = x0; x <= x1; x++, xd++) {
+				final double dx = xd - e.x();
 				image[y * w + x] += (float) (a * p.lookup(Math.sqrt(dx * dx + dy * dy) / s));
 			}
 		}

@@ -189,9 +189,11 @@ final class ProfileMatch {
 		final int y0 = Math.max(0, (int) Math.floor(y - reach)), y1 = Math.min(h - 1, (int) Math.ceil(y + reach));
 		double sp = 0, si = 0, spi = 0, spp = 0, sii = 0;
 		int n = 0;
-		for (int yy = y0; yy <= y1; yy++)
-			for (int xx = x0; xx <= x1; xx++) {
-				final double r = MemberTests.dist(xx - x, yy - y);
+		for (int yy = y0; yy <= y1; yy++) {
+			final double dy = yy - y;
+			double xd = x0; // (x counted as a double too, exactly: RowRuns#row says why)
+			for (int xx = x0; xx <= x1; xx++, xd++) {
+				final double r = MemberTests.dist(xd - x, dy);
 				if (r > reach) continue;
 				final double v = p.lookup(r / scale), im = data[yy * w + xx] + added * v;
 				sp += v;
@@ -201,6 +203,7 @@ final class ProfileMatch {
 				sii += im * im;
 				n++;
 			}
+		}
 		return new double[] { sp, si, spi, spp, sii, n };
 	}
 

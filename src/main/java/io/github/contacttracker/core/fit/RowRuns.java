@@ -121,8 +121,13 @@ final class RowRuns {
 		final double dy2, final double perStep, final double ka, final double[] table)
 	{
 		final int last = table.length - 1;
-		for (int x = a; x <= b; x++) {
-			final double dx = x - kx, d2 = dx * dx + dy2;
+		// x also counted as a double, exactly (any pixel index is): the server compiler of Java 17 converts an int to
+		// a double by writing half a register, which made each pixel wait for the last one's root, and this loop five
+		// times slower (24 against 4.5 ns a pixel; Java 25's compiler does not). Every pixel loop that takes a root
+		// counts so.
+		double xd = a;
+		for (int x = a; x <= b; x++, xd++) {
+			final double dx = xd - kx, d2 = dx * dx + dy2;
 			final double t = Math.sqrt(d2) * perStep;
 			final int k = (int) t;
 			if (k < last) light[offset + x] += ka * (table[k] + (t - k) * (table[k + 1] - table[k]));

@@ -296,6 +296,7 @@ public final class ProfileEstimator {
 		final int[] first = new int[w + 1], at = new int[w];
 		int[] covering = new int[4 * w];
 		for (int y = 0; y < h; y++) {
+			final double yd = y;
 			plane.read(0, w - 1, y, y, values, 0);
 			java.util.Arrays.fill(first, 0);
 			int nn = 0;
@@ -319,7 +320,10 @@ public final class ProfileEstimator {
 			for (int q = 0; q < nn; q++)
 				for (int x = spanFrom[q]; x <= spanTo[q]; x++)
 					covering[at[x]++] = near[q];
+			// (x counted as a double too, exactly: RowRuns#row says why)
+			double xd = -1;
 			for (int x = 0; x < w; x++) {
+				xd++;
 				final double v = values[x];
 				if (v >= saturation || v <= floor && !countsFloor) continue;
 				int len = 0, reached = 0;
@@ -327,7 +331,7 @@ public final class ProfileEstimator {
 				if (kinds > 1) java.util.Arrays.fill(reachedKind, false);
 				for (int q = first[x]; q < first[x + 1] && !skip; q++) {
 					final int k = covering[q];
-					final double dx = x - cx[k], dy = y - cy[k], d2 = dx * dx + dy * dy, reach = radius * scale[k];
+					final double dx = xd - cx[k], dy = yd - cy[k], d2 = dx * dx + dy * dy, reach = radius * scale[k];
 					if (d2 >= reach * reach) continue;
 					if (masked[k]) {
 						skip = true;
@@ -366,9 +370,9 @@ public final class ProfileEstimator {
 				idx[len] = bIndex;
 				val[len++] = 1;
 				idx[len] = bIndex + 1;
-				val[len++] = (x - mx) / RAMP_UNIT;
+				val[len++] = (xd - mx) / RAMP_UNIT;
 				idx[len] = bIndex + 2;
-				val[len++] = (y - my) / RAMP_UNIT;
+				val[len++] = (yd - my) / RAMP_UNIT;
 				samples++;
 				if (len > 3) profileSamples++;
 				if (from != null) {
