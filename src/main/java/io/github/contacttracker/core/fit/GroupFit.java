@@ -280,50 +280,11 @@ public final class GroupFit {
 		// per member, the residuals' variance where its centre's information lies (see accumulate): every pass at p
 		// sums it, so that the standard errors always come from it, whichever pass the fit ends on
 		final double[] startNoise = new double[PER_PARTICLE * n];
-		Evaluated initial = null;
-		double rss;
-		FitPixels pixels = candidates;
-		if (frozen) {
-			pixels = candidates.subset(use);
-			if (pixels != candidates) { // kept from now on: only the pixels chosen are lit again and passed over
-				kept.candidates = pixels = pixels.asCandidates();
-				kept.use = new boolean[pixels.count()];
-				java.util.Arrays.fill(kept.use, true);
-			}
-		}
-		if (previous != null) {
-			for (int a = 0; a < np; a++)
-				System.arraycopy(previous[a], 0, jtj[a], 0, np);
-			rss = passes.accumulate(pixels, p, n, members, null, jtr, startNoise, null);
-		}
-		else if (frozen) rss = passes.accumulate(pixels, p, n, members, jtj, jtr, startNoise, null);
-		else if (use == null || FitPixels.allUsable(candidates, p, n, members, censoring, use))
-			rss = passes.accumulate(candidates, p, n, members, jtj, jtr, startNoise, null);
-		else {
-			// The first pass over every candidate chooses the pixels from the model it computes, and the pixels left
-			// out are then taken out of its sums (a pass over them alone): one pass, not a choice and a pass.
-			final double[] models = new double[candidates.count()];
-			rss = passes.accumulate(candidates, p, n, members, jtj, jtr, startNoise, models);
-			initial = new Evaluated(candidates, p.clone(), models);
-			final boolean[] out = new boolean[use.length];
-			for (int i = 0; i < use.length; i++) {
-				use[i] = censoring.usable(models[i]);
-				out[i] = !use[i];
-			}
-			pixels = candidates.subset(use);
-			if (pixels != candidates) {
-				final double[][] outJtj = new double[np][np];
-				final double[] outJtr = new double[np], outNoise = new double[startNoise.length];
-				rss -= passes.accumulate(candidates.subset(out), p, n, members, outJtj, outJtr, outNoise, null);
-				for (int i = 0; i < startNoise.length; i++)
-					startNoise[i] -= outNoise[i];
-				for (int a = 0; a < np; a++) {
-					jtr[a] -= outJtr[a];
-					for (int b = 0; b < np; b++)
-						jtj[a][b] -= outJtj[a][b];
-				}
-			}
-		}
+		final Start start = firstPass(candidates, use, frozen, previous, kept, passes, p, n, members, jtj, jtr, startNoise,
+			censoring);
+		final Evaluated initial = start.initial();
+		double rss = start.rss();
+		FitPixels pixels = start.pixels();
 		if (pixels.count() <= np) return 0;
 		if (heldBackground) hold(jtj, jtr, np);
 		final double tolerance = Double.isNaN(budget.tolerance()) ? ownTolerance(jtj, rss, pixels.count(), n) : budget
@@ -433,6 +394,81 @@ public final class GroupFit {
 			}
 			else mu *= 10;
 		}
+		return store(e, group, p, jtj, jtr, heldBackground, kept, pixels.count(), rss, latest.noise, converged ? it : -it);
+	}
+
+	/** Where a fit starts: its pixels, the residual sum of squares at its start and the model there (where chosen). */
+	private record Start(FitPixels pixels, double rss, Evaluated initial) {}
+
+	/**
+	 * A fit's first pass at its start {@code p}: J^T J (or a later sweep's, kept), J^T r and the residuals' variances
+	 * into {@code jtj}, {@code jtr} and {@code startNoise}; where the pixel type clips, the pixels chosen from the
+	 * model it computes ({@code use}, {@code kept}).
+	 */
+	private static Start firstPass(final FitPixels candidates, final boolean[] use, final boolean frozen,
+		final double[][] previous, final Kept kept, final NormalEquations passes, final double[] p, final int n,
+		final EmpiricalProfile[] members, final double[][] jtj, final double[] jtr, final double[] startNoise,
+		final Censoring censoring)
+	{
+		final int np = p.length;
+		Evaluated initial = null;
+		double rss;
+		FitPixels pixels = candidates;
+		if (frozen) {
+			pixels = candidates.subset(use);
+			if (pixels != candidates) { // kept from now on: only the pixels chosen are lit again and passed over
+				kept.candidates = pixels = pixels.asCandidates();
+				kept.use = new boolean[pixels.count()];
+				java.util.Arrays.fill(kept.use, true);
+			}
+		}
+		if (previous != null) {
+			for (int a = 0; a < np; a++)
+				System.arraycopy(previous[a], 0, jtj[a], 0, np);
+			rss = passes.accumulate(pixels, p, n, members, null, jtr, startNoise, null);
+		}
+		else if (frozen) rss = passes.accumulate(pixels, p, n, members, jtj, jtr, startNoise, null);
+		else if (use == null || FitPixels.allUsable(candidates, p, n, members, censoring, use))
+			rss = passes.accumulate(candidates, p, n, members, jtj, jtr, startNoise, null);
+		else {
+			// The first pass over every candidate chooses the pixels from the model it computes, and the pixels left
+			// out are then taken out of its sums (a pass over them alone): one pass, not a choice and a pass.
+			final double[] models = new double[candidates.count()];
+			rss = passes.accumulate(candidates, p, n, members, jtj, jtr, startNoise, models);
+			initial = new Evaluated(candidates, p.clone(), models);
+			final boolean[] out = new boolean[use.length];
+			for (int i = 0; i < use.length; i++) {
+				use[i] = censoring.usable(models[i]);
+				out[i] = !use[i];
+			}
+			pixels = candidates.subset(use);
+			if (pixels != candidates) {
+				final double[][] outJtj = new double[np][np];
+				final double[] outJtr = new double[np], outNoise = new double[startNoise.length];
+				rss -= passes.accumulate(candidates.subset(out), p, n, members, outJtj, outJtr, outNoise, null);
+				for (int i = 0; i < startNoise.length; i++)
+					startNoise[i] -= outNoise[i];
+				for (int a = 0; a < np; a++) {
+					jtr[a] -= outJtr[a];
+					for (int b = 0; b < np; b++)
+						jtj[a][b] -= outJtj[a][b];
+				}
+			}
+		}
+		return new Start(pixels, rss, initial);
+	}
+
+	/**
+	 * The end of a fit at {@code p}: J^T J inverted for the centres' standard errors (from each member's residuals'
+	 * {@code noise}, see {@link NormalEquations#accumulate}) and the members' estimates replaced in {@code e}; returns
+	 * {@code iterations}. A singular J^T J replaces none (a member that {@link #VANISHED vanished} gets the amplitude it
+	 * was fitted) and returns 0.
+	 */
+	private static int store(final Estimate[] e, final int[] group, final double[] p, final double[][] jtj,
+		final double[] jtr, final boolean heldBackground, final Kept kept, final int pixels, final double rss,
+		final double[] noise, final int iterations)
+	{
+		final int n = group.length, np = p.length;
 		if (heldBackground) hold(jtj, jtr, np);
 		final double[][] inv = SymmetricSolver.invert(jtj);
 		if (inv == null) {
@@ -443,17 +479,16 @@ public final class GroupFit {
 			return 0;
 		}
 		if (kept != null) kept.jtj = jtj;
-		final double dof = pixels.count() / (double) (pixels.count() - np), s2 = rss / (pixels.count() - np);
+		final double dof = pixels / (double) (pixels - np), s2 = rss / (pixels - np);
 		for (int q = 0; q < n; q++) {
 			final Estimate old = e[group[q]];
 			final int b = PER_PARTICLE * q;
-			final double[] noise = latest.noise;
 			final double vx = noise[b] > 0 ? dof * noise[b + 1] / noise[b] : s2;
 			final double vy = noise[b + 2] > 0 ? dof * noise[b + 3] / noise[b + 2] : s2;
 			e[group[q]] = new Estimate(p[b], p[b + 1], old.flags(), old.secondArea(), old.iterations(), old.solve(), Math
 				.sqrt(vx * inv[b][b]), Math.sqrt(vy * inv[b + 1][b + 1]), p[b + 2], p[b + 3]);
 		}
-		return converged ? it : -it;
+		return iterations;
 	}
 
 	/**
