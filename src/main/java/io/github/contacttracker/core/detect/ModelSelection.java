@@ -257,11 +257,15 @@ public final class ModelSelection {
 				match[k] = !ProfileMatch.weak(dataBp(plane, scale, data, w, h, cache), w, h, e[k].x(), e[k].y(), strong) ? 1 : drawn(e[k]) ? ProfileMatch
 					.shapeOwn(residual, w, h, e[k], of[k], noise) : ProfileMatch.matched(data, w, h, e[k].x(), e[k].y(),
 						of[k], noise);
+			// (on a background textured at the particles' scale, a member must stand out of the texture's bumps)
+			final float[] framed = dataBp(plane, scale, data, w, h, cache);
+			final double texture = BackgroundTexture.factor(framed, w, h, e, of, ImageDetection.unit(scale.noise(noise),
+				framed), seeds.typicalHeight());
 			final boolean[] keep = new boolean[e.length];
 			int kept = 0;
 			for (int k = 0; k < e.length; k++) {
 				keep[k] = !(e[k].amplitude() <= (given != null ? FAINT : 0)) && !(e[k].scale() <= PINNED_LOW) && !pinned(e[k]) && !(significance[
-					k] < SIGNIFICANCE) && !(match[k] < ProfileMatch.MATCH);
+					k] < SIGNIFICANCE * texture) && !(match[k] < ProfileMatch.MATCH);
 				for (int j = 0; j < k && keep[k]; j++)
 					if (keep[j] && e[j].closerThan(e[k], d / 4)) {
 						// two members on one particle: the weaker goes
@@ -518,7 +522,7 @@ public final class ModelSelection {
 
 
 	/** @return which pixels lie within reach of a drawn member's light (its profile's radius times its scale) */
-	private static boolean[] near(final int w, final int h, final Estimate[] e, final EmpiricalProfile[] of) {
+	static boolean[] near(final int w, final int h, final Estimate[] e, final EmpiricalProfile[] of) {
 		final boolean[] near = new boolean[w * h];
 		for (int k = 0; k < e.length; k++) {
 			if (!drawn(e[k])) continue;
