@@ -252,13 +252,13 @@ public final class ModelSelection {
 					e[k], of[k], noise);
 			if (round == ROUNDS || !grow) break;
 			// remove
+			final float[] framed = dataBp(plane, scale, data, w, h, cache);
 			final double[] match = new double[e.length];
 			for (int k = 0; k < e.length; k++)
-				match[k] = !ProfileMatch.weak(dataBp(plane, scale, data, w, h, cache), w, h, e[k].x(), e[k].y(), strong) ? 1 : drawn(e[k]) ? ProfileMatch
+				match[k] = !ProfileMatch.weak(framed, w, h, e[k].x(), e[k].y(), strong) ? 1 : drawn(e[k]) ? ProfileMatch
 					.shapeOwn(residual, w, h, e[k], of[k], noise) : ProfileMatch.matched(data, w, h, e[k].x(), e[k].y(),
 						of[k], noise);
 			// (on a background textured at the particles' scale, a member must stand out of the texture's bumps)
-			final float[] framed = dataBp(plane, scale, data, w, h, cache);
 			final double texture = BackgroundTexture.factor(framed, w, h, e, of, ImageDetection.unit(scale.noise(noise),
 				framed), seeds.typicalHeight());
 			final boolean[] keep = new boolean[e.length];
