@@ -31,7 +31,6 @@ import org.junit.jupiter.api.Test;
 import io.github.contacttracker.core.TestImages;
 import io.github.contacttracker.core.image.Plane;
 import io.github.contacttracker.core.profile.EmpiricalProfile;
-import io.github.contacttracker.core.profile.ProfileEstimator;
 import io.github.contacttracker.core.radial.Estimate;
 
 /**
@@ -58,7 +57,7 @@ class ProfileMatchTest {
 			RADIUS), 2), NOISE, 0, 255, 5);
 		final Plane plane = Plane.of(TestImages.bytes(pixels, W, H));
 		// the exact profile, measured at the true centres
-		final EmpiricalProfile profile = measured(plane, truth, 1.5 * s);
+		final EmpiricalProfile profile = Scenes.measured(plane, truth, 1.5 * s);
 		final int n = truth.size();
 		final double[] x = new double[n], y = new double[n];
 		for (int k = 0; k < n; k++) {
@@ -107,7 +106,7 @@ class ProfileMatchTest {
 			bright.add(new Scenes.Truth(t.x(), t.y(), 100 * noise, 1));
 		final Plane clear = Plane.of(TestImages.floats(Scenes.noisy(Scenes.render(w, h, (x, y) -> 100, bright, spot, 6),
 			noise, 0, 1e9, 3), w, h));
-		final EmpiricalProfile profile = measured(clear, bright, 6);
+		final EmpiricalProfile profile = Scenes.measured(clear, bright, 6);
 		final double typical = profile.lookup(0) - profile.background();
 		int correlated = 0, kept = 0;
 		for (long seed = 1; seed <= 4; seed++) {
@@ -137,19 +136,5 @@ class ProfileMatchTest {
 		ModelSelection.draw(residual, w, h, middle, profile, -1);
 		final double shape = ProfileMatch.shapeOwn(residual, w, h, middle, profile, noise);
 		assertTrue(shape < ProfileMatch.MATCH, "two spots drawn as one: " + shape);
-	}
-
-	/** @return the profile measured on the frame at the particles' true centres, out to {@code reach} px */
-	private static EmpiricalProfile measured(final Plane plane, final List<Scenes.Truth> truth, final double reach) {
-		final int n = truth.size();
-		final double[] x = new double[n], y = new double[n], ones = new double[n];
-		for (int k = 0; k < n; k++) {
-			x[k] = truth.get(k).x();
-			y[k] = truth.get(k).y();
-			ones[k] = 1;
-		}
-		final ProfileEstimator estimator = new ProfileEstimator(reach, 1, null);
-		estimator.add(plane, x, y, ones, ones, new boolean[n], null);
-		return estimator.solve().profiles()[0];
 	}
 }

@@ -28,6 +28,9 @@ import java.util.function.DoubleUnaryOperator;
 
 import io.github.contacttracker.core.Flag;
 import io.github.contacttracker.core.Localization;
+import io.github.contacttracker.core.image.Plane;
+import io.github.contacttracker.core.profile.EmpiricalProfile;
+import io.github.contacttracker.core.profile.ProfileEstimator;
 
 /**
  * Simulated frames with ground truth for detection by the image: the kinds of footage a threshold cannot cut into
@@ -213,5 +216,19 @@ final class Scenes {
 		final double y = t * (0.254829592 + t * (-0.284496736 + t * (1.421413741 + t * (-1.453152027 + t *
 			1.061405429)))) * Math.exp(-z * z);
 		return x >= 0 ? y : 2 - y;
+	}
+
+	/** @return the profile measured on the frame at the particles' true centres, out to {@code reach} px */
+	static EmpiricalProfile measured(final Plane plane, final List<Truth> truth, final double reach) {
+		final int n = truth.size();
+		final double[] x = new double[n], y = new double[n], ones = new double[n];
+		for (int k = 0; k < n; k++) {
+			x[k] = truth.get(k).x();
+			y[k] = truth.get(k).y();
+			ones[k] = 1;
+		}
+		final ProfileEstimator estimator = new ProfileEstimator(reach, 1, null);
+		estimator.add(plane, x, y, ones, ones, new boolean[n], null);
+		return estimator.solve().profiles()[0];
 	}
 }
