@@ -61,8 +61,9 @@ public enum Flag {
 	 */
 	NOT_CONVERGED("not converged"),
 	/**
-	 * The profile methods: a particle whose light reaches this spot's pixels was not modelled (a suspected merge, or
-	 * a first pass without a centre), so its light tilts this centre by an unknown amount.
+	 * The profile methods: a particle whose light reaches this spot's pixels was not modelled (a suspected merge, a
+	 * first pass without a centre, or a particle cut by the frame's edge that no fit of what is left of it matched), so
+	 * its light tilts this centre by an unknown amount.
 	 */
 	UNMODELLED_NEIGHBOUR("neighbour not modelled");
 

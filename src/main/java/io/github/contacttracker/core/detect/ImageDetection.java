@@ -140,6 +140,17 @@ public final class ImageDetection {
 	public static Particle[] particles(final Plane plane, final double[] x, final double[] y, final double radius,
 		final double margin)
 	{
+		return particles(plane, x, y, radius, margin, null);
+	}
+
+	/**
+	 * As {@link #particles(Plane, double[], double[], double, double)}, with the seed each particle stands at.
+	 *
+	 * @param seedOf null, or filled with each particle's seed's index (its length at least the seeds')
+	 */
+	static Particle[] particles(final Plane plane, final double[] x, final double[] y, final double radius,
+		final double margin, final int[] seedOf)
+	{
 		final int w = plane.width(), h = plane.height(), n = x.length;
 		final int[] owner = new int[w * h];
 		final float[] best = new float[w * h];
@@ -171,7 +182,9 @@ public final class ImageDetection {
 			final Region region = runs.toRegion();
 			final boolean atBorder = x[k] < margin || y[k] < margin || x[k] > w - 1 - margin || y[k] > h - 1 - margin;
 			final Particle p = Particle.atSeed(plane, region, x[k], y[k], atBorder);
-			if (p != null) out[found++] = p;
+			if (p == null) continue;
+			if (seedOf != null) seedOf[found] = k;
+			out[found++] = p;
 		}
 		return Arrays.copyOf(out, found);
 	}

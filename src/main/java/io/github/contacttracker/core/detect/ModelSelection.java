@@ -232,13 +232,16 @@ public final class ModelSelection {
 			if (given == null || !(ProfileMatch.amplitudeAny(data, w, h, seeds.x()[i], seeds.y()[i], given) < FAINT)) start
 				.add(seeds.x()[i], seeds.y()[i]);
 			else removed++;
-		Particle[] ps = ImageDetection.particles(plane, start.x(), start.y(), ImageDetection.radius(d), ImageDetection
-			.margin(d));
+		// where each particle was seeded (see the moves: a member cut by the edge is seeded there again)
+		final double[][] seeded = new double[2][];
+		Particle[] ps = seededAt(plane, start.x(), start.y(), d, seeded);
 		ProfileRefinement.Fitted fitted = refinement.fit(plane, ps, params, given, noise, false);
 		final KindProfiles profiles = fitted.profiles();
 		double[] significance = new double[ps.length];
 		Arrays.fill(significance, Double.NaN);
 		if (profiles == null) return new Result(ps, fitted.outcome(), significance, removed);
+		// members removed whose light the fit needed: particles cut by the frame's edge (see unmodelled)
+		final java.util.List<Unmodelled> unmodelled = new java.util.ArrayList<>();
 		for (int round = 0; round <= ROUNDS; round++) {
 			final Estimate[] e = fitted.outcome().estimates();
 			final int[] kinds = fitted.outcome().kinds() != null ? fitted.outcome().kinds() : new int[e.length];
@@ -274,6 +277,11 @@ public final class ModelSelection {
 					}
 			}
 			MemberTests.overlapTest(data, w, h, e, of, keep, significance, d, noise);
+			// (removed for its own fit, not because another member draws its light)
+			for (int k = 0; k < e.length; k++)
+				if (!keep[k] && drawn(e[k]) && e[k].has(Flag.AT_BORDER) && significance[k] >= SIGNIFICANCE * texture &&
+					(match[k] < ProfileMatch.MATCH || pinned(e[k]) || e[k].scale() <= PINNED_LOW)) unmodelled.add(
+						new Unmodelled(e[k].x(), e[k].y(), of[k].radius() * e[k].scale()));
 			for (final boolean b : keep)
 				if (b) kept++;
 			// split and add
@@ -287,11 +295,22 @@ public final class ModelSelection {
 			final Peaks more = Peaks.find(bp, w, h, 0, Math.max((faintAdds ? FAINT_LEVEL : ADD_LEVEL) * unit, least),
 				ImageDetection.PROMINENCE * unit);
 			final Moves moves = new Moves(e.length + 2 * more.count() + e.length);
+			// a kept member's seed for the next round: its fitted centre, or, where the frame's edge cuts it, where it
+			// was seeded (what is left of its image hardly tells its centre from its scale, and the fit leaves it
+			// anywhere along that valley: seeded again at its fitted centre, it slid further each round, 2 to 5 px
+			// off the frame on a packed monolayer, until it no longer matched its profile and was removed, its light
+			// left to pull its neighbours)
+			final double[] nextX = new double[e.length], nextY = new double[e.length];
+			for (int k = 0; k < e.length; k++) {
+				final boolean cut = e[k].has(Flag.AT_BORDER);
+				nextX[k] = cut ? seeded[0][k] : e[k].x();
+				nextY[k] = cut ? seeded[1][k] : e[k].y();
+			}
 			final boolean[] split = new boolean[e.length];
 			for (int k = 0; k < e.length; k++)
 				if (keep[k] && round == 0 && (given == null || e[k].scale() >= WIDE) && significance[k] >= SIGNIFICANCE &&
 					split(dataBp(plane, scale, data, w, h, cache), w, h, e, k, d, PAIR, moves)) split[k] = true;
-				else if (keep[k]) moves.add(e[k].x(), e[k].y());
+				else if (keep[k]) moves.add(nextX[k], nextY[k]);
 				else if (pinned(e[k]) && significance[k] >= SIGNIFICANCE) {
 					// a blob too large for one particle of its kind: two if it is elongated, else kept as it is
 					if (split(dataBp(plane, scale, data, w, h, cache), w, h, e, k, d, 0.125, moves)) split[k] = true;
@@ -325,7 +344,7 @@ public final class ModelSelection {
 				else if (!apart && !split[nearest]) {
 					// a peak beside a member: the member held two particles; it splits along the peak's direction
 					split[nearest] = true;
-					moves.replace(e[nearest].x(), e[nearest].y(), e[nearest].x() + 0.5 * (px - e[nearest].x()),
+					moves.replace(nextX[nearest], nextY[nearest], e[nearest].x() + 0.5 * (px - e[nearest].x()),
 						e[nearest].y() + 0.5 * (py - e[nearest].y()), e[nearest].x() - 0.5 * (px - e[nearest].x()),
 						e[nearest].y() - 0.5 * (py - e[nearest].y()));
 				}
@@ -336,10 +355,65 @@ public final class ModelSelection {
 			final int added = moves.size() - kept;
 			if (kept == e.length && added == 0 && splits == 0) break;
 			removed += Math.max(0, e.length - moves.size());
-			ps = ImageDetection.particles(plane, moves.x(), moves.y(), ImageDetection.radius(d), ImageDetection.margin(d));
+			ps = seededAt(plane, moves.x(), moves.y(), d, seeded);
 			fitted = refinement.fit(plane, ps, params, profiles, noise, false);
 		}
-		return new Result(ps, fitted.outcome(), significance, removed);
+		return new Result(ps, flagNear(unmodelled, fitted.outcome(), profiles, d), significance, removed);
+	}
+
+	/**
+	 * A member removed for its own fit (its shape, or its scale pressed against a limit) although its light lowered the
+	 * residuals as a particle's must: one cut by the frame's edge, whose
+	 * fit what is left of its image does not determine (its scale and its centre along the edge's normal slide
+	 * together, 2 to 5 px off the frame at 1.3 to 2 times its scale on a packed monolayer), so that its light no longer
+	 * matches its profile. That light stays in the frame, drawn by no member, and pulls the members it reaches (their
+	 * centres 0.2 to 1.9 px off on that monolayer).
+	 *
+	 * @param reach how far its light reached (px)
+	 */
+	private record Unmodelled(double x, double y, double reach) {}
+
+	/**
+	 * @return the outcome with every member that the light of an {@link Unmodelled} one reaches flagged
+	 *         {@code UNMODELLED_NEIGHBOUR} (unless cut by the edge itself); one that a later round found again (a
+	 *         member within a quarter diameter) reaches none
+	 */
+	private static Refinement.Outcome flagNear(final java.util.List<Unmodelled> unmodelled,
+		final Refinement.Outcome outcome, final KindProfiles profiles, final double d)
+	{
+		if (unmodelled.isEmpty()) return outcome;
+		final Estimate[] e = outcome.estimates().clone();
+		final EmpiricalProfile[] of = profiles.byParticle(outcome.kinds() != null ? outcome.kinds() : new int[e.length]);
+		for (final Unmodelled u : unmodelled) {
+			boolean foundAgain = false;
+			for (final Estimate m : e)
+				foundAgain |= MemberTests.dist(m.x() - u.x(), m.y() - u.y()) < d / 4;
+			if (foundAgain) continue;
+			for (int k = 0; k < e.length; k++)
+				if (!e[k].has(Flag.AT_BORDER) && MemberTests.dist(e[k].x() - u.x(), e[k].y() - u.y()) < u.reach() +
+					of[k].radius() * (e[k].scale() > 0 ? e[k].scale() : 1)) e[k] = e[k].withFlags(e[k].flags() |
+						Flag.UNMODELLED_NEIGHBOUR.bit());
+		}
+		return new Refinement.Outcome(e, outcome.discs(), outcome.kinds());
+	}
+
+	/**
+	 * @return the particles at seeds {@code (x, y)} ({@link ImageDetection#particles}), each one's seed into
+	 *         {@code seeded[0]} and {@code seeded[1]}
+	 */
+	private static Particle[] seededAt(final Plane plane, final double[] x, final double[] y, final double d,
+		final double[][] seeded)
+	{
+		final int[] seedOf = new int[x.length];
+		final Particle[] ps = ImageDetection.particles(plane, x, y, ImageDetection.radius(d), ImageDetection.margin(d),
+			seedOf);
+		seeded[0] = new double[ps.length];
+		seeded[1] = new double[ps.length];
+		for (int k = 0; k < ps.length; k++) {
+			seeded[0][k] = x[seedOf[k]];
+			seeded[1][k] = y[seedOf[k]];
+		}
+		return ps;
 	}
 
 	/** The seeds of the next round: kept members' centres, children of split members, added particles. */
