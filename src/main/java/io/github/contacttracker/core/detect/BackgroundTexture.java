@@ -87,14 +87,14 @@ final class BackgroundTexture {
 				bright[b] = e[k];
 				theirs[b++] = of[k];
 			}
-		final boolean[] clear = ModelSelection.near(w, h, Arrays.copyOf(bright, b), Arrays.copyOf(theirs, b));
+		final boolean[] clear = DrawnModel.near(w, h, Arrays.copyOf(bright, b), Arrays.copyOf(theirs, b));
 		int count = 0;
 		for (int i = 0; i < clear.length; i++) {
 			clear[i] = !clear[i];
 			if (clear[i]) count++;
 		}
 		if (count < CLEAR * clear.length) return 1;
-		final double spread = ModelSelection.robustSpread(bp, clear);
+		final double spread = DrawnModel.robustSpread(bp, clear);
 		return spread >= TEXTURE * noiseUnit && ImageDetection.LEVEL * spread <= PARTICLE * typical ? spread / noiseUnit
 			: 1;
 	}

@@ -56,17 +56,17 @@ final class MemberTests {
 		java.util.Arrays.sort(order, (a, b) -> Double.compare(significance[a], significance[b]));
 		final boolean[] touched = new boolean[e.length];
 		for (final int m : order) {
-			if (!keep[m] || touched[m] || !ModelSelection.drawn(e[m])) continue;
+			if (!keep[m] || touched[m] || !DrawnModel.drawn(e[m])) continue;
 			boolean overlaps = false;
 			for (int j = 0; j < e.length && !overlaps; j++)
-				overlaps = j != m && keep[j] && ModelSelection.drawn(e[j]) && e[j].closerThan(e[m], d);
+				overlaps = j != m && keep[j] && DrawnModel.drawn(e[j]) && e[j].closerThan(e[m], d);
 			if (!overlaps) continue;
 			// the member's pixels: those holding the information on it (its light beyond adds little to the decision)
 			final double reach = of[m].informationRadius(ProfileMatch.MATCHED_INFORMATION) * e[m].scale();
 			int[] involved = new int[8];
 			int n = 0;
 			for (int j = 0; j < e.length; j++)
-				if (j != m && keep[j] && ModelSelection.drawn(e[j]) && e[j].closerThan(e[m], reach + of[j].radius() *
+				if (j != m && keep[j] && DrawnModel.drawn(e[j]) && e[j].closerThan(e[m], reach + of[j].radius() *
 					e[j].scale())) {
 					if (n == involved.length) involved = Arrays.copyOf(involved, 2 * n);
 					involved[n++] = j;

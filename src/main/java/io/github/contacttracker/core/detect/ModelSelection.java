@@ -28,7 +28,6 @@ import io.github.contacttracker.core.TrackerParameters;
 import io.github.contacttracker.core.fit.ProfileRefinement;
 import io.github.contacttracker.core.image.Plane;
 import io.github.contacttracker.core.kind.KindProfiles;
-import io.github.contacttracker.core.math.Statistics;
 import io.github.contacttracker.core.profile.EmpiricalProfile;
 import io.github.contacttracker.core.radial.Estimate;
 import io.github.contacttracker.core.radial.Particle;
@@ -248,17 +247,17 @@ public final class ModelSelection {
 			final EmpiricalProfile[] of = profiles.byParticle(kinds);
 			final float[] residual = data.clone();
 			for (int k = 0; k < e.length; k++)
-				if (drawn(e[k])) draw(residual, w, h, e[k], of[k], -1);
+				if (DrawnModel.drawn(e[k])) DrawnModel.draw(residual, w, h, e[k], of[k], -1);
 			significance = new double[e.length];
 			for (int k = 0; k < e.length; k++)
-				significance[k] = drawn(e[k]) ? MemberTests.significance(residual, w, h, e[k], of[k], noise) : MemberTests.undrawn(residual, w, h,
-					e[k], of[k], noise);
+				significance[k] = DrawnModel.drawn(e[k]) ? MemberTests.significance(residual, w, h, e[k], of[k], noise)
+					: MemberTests.undrawn(residual, w, h, e[k], of[k], noise);
 			if (round == ROUNDS || !grow) break;
 			// remove
 			final float[] framed = dataBp(plane, scale, data, w, h, cache);
 			final double[] match = new double[e.length];
 			for (int k = 0; k < e.length; k++)
-				match[k] = !ProfileMatch.weak(framed, w, h, e[k].x(), e[k].y(), strong) ? 1 : drawn(e[k]) ? ProfileMatch
+				match[k] = !ProfileMatch.weak(framed, w, h, e[k].x(), e[k].y(), strong) ? 1 : DrawnModel.drawn(e[k]) ? ProfileMatch
 					.shapeOwn(residual, w, h, e[k], of[k], noise) : ProfileMatch.matched(data, w, h, e[k].x(), e[k].y(),
 						of[k], noise);
 			// (on a background textured at the particles' scale, a member must stand out of the texture's bumps)
@@ -279,7 +278,7 @@ public final class ModelSelection {
 			MemberTests.overlapTest(data, w, h, e, of, keep, significance, d, noise);
 			// (removed for its own fit, not because another member draws its light)
 			for (int k = 0; k < e.length; k++)
-				if (!keep[k] && drawn(e[k]) && e[k].has(Flag.AT_BORDER) && significance[k] >= SIGNIFICANCE * texture &&
+				if (!keep[k] && DrawnModel.drawn(e[k]) && e[k].has(Flag.AT_BORDER) && significance[k] >= SIGNIFICANCE * texture &&
 					(match[k] < ProfileMatch.MATCH || pinned(e[k]) || e[k].scale() <= PINNED_LOW)) unmodelled.add(
 						new Unmodelled(e[k].x(), e[k].y(), of[k].radius() * e[k].scale()));
 			for (final boolean b : keep)
@@ -287,7 +286,7 @@ public final class ModelSelection {
 			// split and add
 			final float[] bp = BandPass.of(residual, w, h, scale.sigma(), scale.halfWidth());
 			final double noiseUnit = ImageDetection.unit(scale.noise(noise), bp);
-			final double unit = Math.max(noiseUnit, robustSpread(bp, near(w, h, e, of)));
+			final double unit = Math.max(noiseUnit, DrawnModel.robustSpread(bp, DrawnModel.near(w, h, e, of)));
 			// faint peaks add particles only where the model matches them as closely as the noise allows; the
 			// residuals' noise there counts what misfit is left
 			final boolean faintAdds = unit <= FAINT_MISFIT * noiseUnit;
@@ -524,7 +523,7 @@ public final class ModelSelection {
 		final int[] others = new int[members.length];
 		int count = 0;
 		for (int j = 0; j < members.length; j++)
-			if (j != member && drawn(members[j]) && members[j].closerThan(e, 2 * d)) others[count++] = j;
+			if (j != member && DrawnModel.drawn(members[j]) && members[j].closerThan(e, 2 * d)) others[count++] = j;
 		final int x0 = Math.max(0, (int) Math.floor(cx - d)), x1 = Math.min(w - 1, (int) Math.ceil(cx + d));
 		final int y0 = Math.max(0, (int) Math.floor(cy - d)), y1 = Math.min(h - 1, (int) Math.ceil(cy + d));
 		double s = 0, sx = 0, sy = 0, sxx = 0, syy = 0, sxy = 0;
@@ -569,71 +568,5 @@ public final class ModelSelection {
 		for (int i = 0; i < count; i++)
 			if (MemberTests.dist(x - members[others[i]].x(), y - members[others[i]].y()) < own) return true;
 		return false;
-	}
-
-	/** @return whether a fitted estimate is drawn in the model (a finite amplitude and a positive scale) */
-	static boolean drawn(final Estimate e) {
-		return Double.isFinite(e.amplitude()) && e.scale() > 0 && Double.isFinite(e.x()) && Double.isFinite(e.y()) &&
-			!e.has(Flag.MERGED);
-	}
-
-	/** Adds {@code sign} times the particle's light, {@code a P(r / s)}, to the image (within its profile's radius). */
-	static void draw(final float[] image, final int w, final int h, final Estimate e, final EmpiricalProfile p,
-		final int sign)
-	{
-		final double s = e.scale(), a = sign * e.amplitude(), reach = p.radius() * s;
-		final int x0 = Math.max(0, (int) Math.floor(e.x() - reach)), x1 = Math.min(w - 1, (int) Math.ceil(e.x() + reach));
-		final int y0 = Math.max(0, (int) Math.floor(e.y() - reach)), y1 = Math.min(h - 1, (int) Math.ceil(e.y() + reach));
-		for (int y = y0; y <= y1; y++) {
-			final double dy = y - e.y();
-			double xd = x0; // (x counted as a double too, exactly: RowRuns#row says why)
-			for (int x = x0; x <= x1; x++, xd++) {
-				final double dx = xd - e.x();
-				image[y * w + x] += (float) (a * p.lookup(Math.sqrt(dx * dx + dy * dy) / s));
-			}
-		}
-	}
-
-
-	/** @return which pixels lie within reach of a drawn member's light (its profile's radius times its scale) */
-	static boolean[] near(final int w, final int h, final Estimate[] e, final EmpiricalProfile[] of) {
-		final boolean[] near = new boolean[w * h];
-		for (int k = 0; k < e.length; k++) {
-			if (!drawn(e[k])) continue;
-			final double reach = of[k].radius() * e[k].scale();
-			final int x0 = Math.max(0, (int) Math.floor(e[k].x() - reach)), x1 = Math.min(w - 1, (int) Math.ceil(e[k].x() +
-				reach));
-			final int y0 = Math.max(0, (int) Math.floor(e[k].y() - reach)), y1 = Math.min(h - 1, (int) Math.ceil(e[k].y() +
-				reach));
-			for (int y = y0; y <= y1; y++)
-				for (int x = x0; x <= x1; x++)
-					if (MemberTests.dist(x - e[k].x(), y - e[k].y()) <= reach) near[y * w + x] = true;
-		}
-		return near;
-	}
-
-	/**
-	 * @return {@link Statistics#MAD_TO_SIGMA} times the median absolute deviation from the median of the values where
-	 *         {@code where} holds (all when none does), on a sample of at most 65536 of them: the spread of the
-	 *         residuals where the model draws particles, which its mismatch with real particles raises
-	 */
-	static double robustSpread(final float[] v, final boolean[] where) {
-		int count = 0;
-		for (final boolean b : where)
-			if (b) count++;
-		final boolean all = count == 0;
-		if (all) count = v.length;
-		final int step = Math.max(1, count / 65536);
-		final int n = (count + step - 1) / step;
-		if (n == 0) return 0;
-		final double[] s = new double[n];
-		for (int i = 0, seen = 0, j = 0; i < v.length && j < n; i++)
-			if (all || where[i]) {
-				if (seen++ % step == 0) s[j++] = v[i];
-			}
-		final double median = Statistics.median(s);
-		for (int j = 0; j < n; j++)
-			s[j] = Math.abs(s[j] - median);
-		return Statistics.MAD_TO_SIGMA * Statistics.median(s);
 	}
 }

@@ -70,7 +70,7 @@ class ProfileMatchTest {
 		int middle = 0;
 		for (int k = 0; k < n; k++) {
 			members[k] = new Estimate(x[k], y[k], 0, 0, 0, null, Double.NaN, Double.NaN, 1, 1);
-			ModelSelection.draw(residual, W, H, members[k], profile, -1);
+			DrawnModel.draw(residual, W, H, members[k], profile, -1);
 			if (Math.hypot(x[k] - cx, y[k] - cy) < 1) middle = k;
 		}
 		final double onFrame = ProfileMatch.matched(data, W, H, x[middle], y[middle], profile, NOISE);
@@ -117,7 +117,7 @@ class ProfileMatchTest {
 				final Estimate e = new Estimate(t.x(), t.y(), 0, 0, 0, null, Double.NaN, Double.NaN, t.amplitude() /
 					typical, 1);
 				final float[] residual = data.clone();
-				ModelSelection.draw(residual, w, h, e, profile, -1);
+				DrawnModel.draw(residual, w, h, e, profile, -1);
 				if (ProfileMatch.matchedOwn(residual, w, h, e, profile, noise) >= ProfileMatch.MATCH) correlated++;
 				if (ProfileMatch.shapeOwn(residual, w, h, e, profile, noise) >= ProfileMatch.MATCH) kept++;
 			}
@@ -133,7 +133,7 @@ class ProfileMatchTest {
 		final Estimate middle = new Estimate(101.5, 100.4, 0, 0, 0, null, Double.NaN, Double.NaN, 30 * noise /
 			typical, 1);
 		final float[] residual = data.clone();
-		ModelSelection.draw(residual, w, h, middle, profile, -1);
+		DrawnModel.draw(residual, w, h, middle, profile, -1);
 		final double shape = ProfileMatch.shapeOwn(residual, w, h, middle, profile, noise);
 		assertTrue(shape < ProfileMatch.MATCH, "two spots drawn as one: " + shape);
 	}
