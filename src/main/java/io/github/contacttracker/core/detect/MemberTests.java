@@ -24,6 +24,7 @@ package io.github.contacttracker.core.detect;
 import java.util.Arrays;
 
 import io.github.contacttracker.core.kind.KindProfiles;
+import io.github.contacttracker.core.math.SymmetricSolver;
 import io.github.contacttracker.core.profile.EmpiricalProfile;
 import io.github.contacttracker.core.radial.Estimate;
 
@@ -84,7 +85,9 @@ final class MemberTests {
 	/**
 	 * @return the least residual sum of squares, over the pixels within {@code reach} of member {@code m}, of a
 	 *         background plane plus the light of members {@code involved[0..n)} (and of {@code m} if {@code withM})
-	 *         at their fitted centres and scales, with free amplitudes
+	 *         at their fitted centres and scales, with free amplitudes; a column that adds nothing is left out (a
+	 *         neighbour whose light ends before these pixels, all 0s: solved as it was, the system was singular and its
+	 *         NaN verdict removed real touching particles; or {@code m}'s own light, where it is that of the others)
 	 */
 	static double rss(final float[] data, final int w, final int h, final Estimate[] e,
 		final EmpiricalProfile[] of, final int m, final int[] involved, final int n, final boolean withM,
@@ -117,44 +120,8 @@ final class MemberTests {
 		for (int i = 0; i < np; i++)
 			for (int j = i + 1; j < np; j++)
 				a[i][j] = a[j][i];
-		return yy - explained(a, b, np);
+		return yy - SymmetricSolver.explained(a, b, np);
 	}
-
-	/**
-	 * @return {@code b . A^-1 b} over the columns of {@code A} (a Gram matrix, order {@code np}) that are independent
-	 *         of those before them: the sum of squares a least-squares fit explains. A column that adds nothing, such
-	 *         as a neighbour whose light ends before these pixels (all 0s) or a member on the very light of others
-	 *         (the last column, collinear with theirs), is left out, where a plain solve would find the system singular.
-	 */
-	static double explained(final double[][] a, final double[] b, final int np) {
-		// Cholesky factor, row by row; a pivot that is (to rounding) 0 marks a column that depends on the earlier ones
-		final double[][] l = new double[np][np];
-		final double[] z = new double[np];
-		double explained = 0;
-		for (int i = 0; i < np; i++) {
-			double pivot = a[i][i];
-			for (int k = 0; k < i; k++)
-				pivot -= l[i][k] * l[i][k];
-			if (!(pivot > DEPENDENT * a[i][i])) continue; // (its row of l stays 0: left out)
-			final double root = Math.sqrt(pivot);
-			l[i][i] = root;
-			for (int j = i + 1; j < np; j++) {
-				double v = a[j][i];
-				for (int k = 0; k < i; k++)
-					v -= l[j][k] * l[i][k];
-				l[j][i] = v / root;
-			}
-			double zi = b[i];
-			for (int k = 0; k < i; k++)
-				zi -= l[i][k] * z[k];
-			z[i] = zi / root;
-			explained += z[i] * z[i];
-		}
-		return explained;
-	}
-
-	/** A column whose Cholesky pivot is below this share of its diagonal depends on the earlier columns. */
-	private static final double DEPENDENT = 1e-9;
 
 	/** @return the length of (dx, dy) (not {@code Math.hypot}, whose care for overflow costs in the pixel loops) */
 	static double dist(final double dx, final double dy) {

@@ -26,7 +26,7 @@ package io.github.contacttracker.core.math;
  * {@link #solve(double[][], double[])} and {@link #invert}, a factor-then-solve pair on a caller's flat work arrays
  * ({@link #factor}, {@link #solveFactored}) serves an iteration that solves one such system per step (a
  * Levenberg-Marquardt fit) without allocating: the same arithmetic in the same order, so the same results to the last
- * bit.
+ * bit. {@link #explained} gives the sum of squares a least squares explains, leaving out columns that add nothing.
  */
 public final class SymmetricSolver {
 
@@ -111,4 +111,40 @@ public final class SymmetricSolver {
 			x[i] = s / l[i * n + i];
 		}
 	}
+
+	/**
+	 * @return {@code b . A^-1 b} over the columns of {@code A} (a Gram matrix {@code F^T F}, order {@code np}, with
+	 *         {@code b = F^T y}) that are independent of those before them: the sum of squares a least-squares fit of
+	 *         {@code y} explains. A column that adds nothing (all 0s, or a combination of earlier ones) is left out,
+	 *         where {@link #solve} would find the system singular.
+	 */
+	public static double explained(final double[][] a, final double[] b, final int np) {
+		// Cholesky factor, column by column; a pivot that is (to rounding) 0 marks a column that depends on the earlier ones
+		final double[][] l = new double[np][np];
+		final double[] z = new double[np];
+		double explained = 0;
+		for (int i = 0; i < np; i++) {
+			double pivot = a[i][i];
+			for (int k = 0; k < i; k++)
+				pivot -= l[i][k] * l[i][k];
+			if (!(pivot > DEPENDENT * a[i][i])) continue; // (its column of l stays 0: left out)
+			final double root = Math.sqrt(pivot);
+			l[i][i] = root;
+			for (int j = i + 1; j < np; j++) {
+				double v = a[j][i];
+				for (int k = 0; k < i; k++)
+					v -= l[j][k] * l[i][k];
+				l[j][i] = v / root;
+			}
+			double zi = b[i];
+			for (int k = 0; k < i; k++)
+				zi -= l[i][k] * z[k];
+			z[i] = zi / root;
+			explained += z[i] * z[i];
+		}
+		return explained;
+	}
+
+	/** A column whose Cholesky pivot is below this share of its diagonal depends on the earlier columns. */
+	private static final double DEPENDENT = 1e-9;
 }

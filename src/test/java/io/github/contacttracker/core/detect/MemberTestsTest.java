@@ -21,7 +21,6 @@
  */
 package io.github.contacttracker.core.detect;
 
-import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -80,54 +79,5 @@ class MemberTestsTest {
 		// the next round, that member gone: the pair is tested, the far particle among the first's neighbours
 		MemberTests.overlapTest(data, W, H, members, of, keep, significance, d, NOISE);
 		assertTrue(keep[0] && keep[1] && keep[2], "the particles kept: " + keep[0] + ", " + keep[1] + ", " + keep[2]);
-	}
-
-	/**
-	 * The sum of squares a least-squares fit explains is that of the columns that add something: a column of 0s (a
-	 * neighbour whose light does not reach) and a column equal to another's (a member on the very light of another)
-	 * leave it as it is, where a plain solve finds the system singular; an independent column raises it.
-	 */
-	@Test
-	void aColumnThatAddsNothingLeavesTheExplainedSumAsItIs() {
-		final java.util.Random random = new java.util.Random(3);
-		final int pixels = 50;
-		final double[][] f = new double[pixels][4];
-		final double[] y = new double[pixels];
-		for (int i = 0; i < pixels; i++) {
-			f[i][0] = 1;
-			f[i][1] = random.nextGaussian();
-			f[i][2] = 0; // a column of 0s
-			f[i][3] = f[i][1]; // a column equal to another
-			y[i] = 2 + 3 * f[i][1] + random.nextGaussian();
-		}
-		final double two = explained(f, y, new int[] { 0, 1 });
-		assertEquals(two, explained(f, y, new int[] { 0, 1, 2 }), 1e-9 * two, "with a column of 0s");
-		assertEquals(two, explained(f, y, new int[] { 0, 1, 3 }), 1e-9 * two, "with a column equal to another");
-		// the explained sum of two columns, by the normal equations solved by hand (2 x 2)
-		double n = 0, sx = 0, sxx = 0, sy = 0, sxy = 0;
-		for (int i = 0; i < pixels; i++) {
-			n++;
-			sx += f[i][1];
-			sxx += f[i][1] * f[i][1];
-			sy += y[i];
-			sxy += f[i][1] * y[i];
-		}
-		final double det = n * sxx - sx * sx;
-		final double p0 = (sxx * sy - sx * sxy) / det, p1 = (n * sxy - sx * sy) / det;
-		assertEquals(p0 * sy + p1 * sxy, two, 1e-9 * two, "two independent columns");
-	}
-
-	/** @return {@link MemberTests#explained} of columns {@code use} of {@code f} against {@code y} */
-	private static double explained(final double[][] f, final double[] y, final int[] use) {
-		final int np = use.length;
-		final double[][] a = new double[np][np];
-		final double[] b = new double[np];
-		for (int i = 0; i < f.length; i++)
-			for (int r = 0; r < np; r++) {
-				b[r] += f[i][use[r]] * y[i];
-				for (int c = 0; c < np; c++)
-					a[r][c] += f[i][use[r]] * f[i][use[c]];
-			}
-		return MemberTests.explained(a, b, np);
 	}
 }
