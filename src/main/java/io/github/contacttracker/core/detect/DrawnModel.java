@@ -58,7 +58,6 @@ final class DrawnModel {
 		}
 	}
 
-
 	/** @return which pixels lie within reach of a drawn member's light (its profile's radius times its scale) */
 	static boolean[] near(final int w, final int h, final Estimate[] e, final EmpiricalProfile[] of) {
 		final boolean[] near = new boolean[w * h];

@@ -264,10 +264,14 @@ public final class ModelSelection {
 			final double texture = BackgroundTexture.factor(framed, w, h, e, of, ImageDetection.unit(scale.noise(noise),
 				framed), seeds.typicalHeight());
 			final boolean[] keep = new boolean[e.length];
+			// (a member whose own fit is no particle of its kind: its scale pressed against a limit, or its light not
+			// matching its profile)
+			final boolean[] misfit = new boolean[e.length];
 			int kept = 0;
 			for (int k = 0; k < e.length; k++) {
-				keep[k] = !(e[k].amplitude() <= (given != null ? FAINT : 0)) && !(e[k].scale() <= PINNED_LOW) && !pinned(e[k]) && !(significance[
-					k] < SIGNIFICANCE * texture) && !(match[k] < ProfileMatch.MATCH);
+				misfit[k] = e[k].scale() <= PINNED_LOW || pinned(e[k]) || match[k] < ProfileMatch.MATCH;
+				keep[k] = !(e[k].amplitude() <= (given != null ? FAINT : 0)) && !misfit[k] && !(significance[k] <
+					SIGNIFICANCE * texture);
 				for (int j = 0; j < k && keep[k]; j++)
 					if (keep[j] && e[j].closerThan(e[k], d / 4)) {
 						// two members on one particle: the weaker goes
@@ -278,9 +282,8 @@ public final class ModelSelection {
 			MemberTests.overlapTest(data, w, h, e, of, keep, significance, d, noise);
 			// (removed for its own fit, not because another member draws its light)
 			for (int k = 0; k < e.length; k++)
-				if (!keep[k] && DrawnModel.drawn(e[k]) && e[k].has(Flag.AT_BORDER) && significance[k] >= SIGNIFICANCE * texture &&
-					(match[k] < ProfileMatch.MATCH || pinned(e[k]) || e[k].scale() <= PINNED_LOW)) unmodelled.add(
-						new Unmodelled(e[k].x(), e[k].y(), of[k].radius() * e[k].scale()));
+				if (misfit[k] && DrawnModel.drawn(e[k]) && e[k].has(Flag.AT_BORDER) && significance[k] >=
+					SIGNIFICANCE * texture) unmodelled.add(new Unmodelled(e[k].x(), e[k].y(), of[k].radius() * e[k].scale()));
 			for (final boolean b : keep)
 				if (b) kept++;
 			// split and add
