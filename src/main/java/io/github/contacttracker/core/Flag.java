@@ -34,7 +34,9 @@ public enum Flag {
 	/**
 	 * The second pass was needed (a neighbour's disc overlaps the active area) but could not be done: too few
 	 * pixels were left ({@code min_second_area}) or the remaining lines were degenerate. The spot keeps its
-	 * first-pass centre, which is biased towards the neighbour.
+	 * first-pass centre, which is biased towards the neighbour. The profile methods set it too where their own step
+	 * gave no centre (a group's fit that could not be done, a deblend solve whose lines meet off its disc): the spot
+	 * keeps its centre from before.
 	 */
 	FELL_BACK("fell back to first pass"),
 	/**

@@ -63,6 +63,8 @@ final class Deblender {
 		final Estimate[] e = start.clone();
 		final int margin = (int) Math.ceil(discRadius) + GradientOperator.MARGIN + 1;
 		final double[] cx = new double[n], cy = new double[n];
+		// whether a particle's latest solve gave no centre on its disc (it keeps its previous one, flagged)
+		final boolean[] fell = new boolean[n];
 		for (int it = 1; it <= MAX_ITERATIONS; it++) {
 			for (int k = 0; k < n; k++) {
 				cx[k] = e[k].x();
@@ -96,17 +98,28 @@ final class Deblender {
 				final Region disc = disc(cx[k] - x0, cy[k] - y0, discRadius, w, h);
 				final GradientField field = GradientField.compute(local, disc);
 				final Solve s = Solve.on(field, null, cx[k] - x0, cy[k] - y0, x0, y0);
-				if (!s.ok()) continue; // keeps its previous centre
+				// Lines that meet off the disc they were drawn on describe no particle there: a seed on no particle (on
+				// a ramp their directions hardly differ, and they meet hundreds of pixels away, where the next
+				// iteration's window would be empty). The particle keeps its previous centre, flagged.
+				fell[k] = !s.ok() || !(Math.hypot(s.solution().x() - cx[k], s.solution().y() - cy[k]) <= discRadius);
+				if (fell[k]) continue;
 				e[k] = new Estimate(s.solution().x(), s.solution().y(), e[k].flags(), e[k].secondArea(), e[k].iterations(),
 					s, e[k].sigmaX(), e[k].sigmaY());
 				move = Math.max(move, Math.hypot(e[k].x() - cx[k], e[k].y() - cy[k]));
 			}
-			if (move < TOLERANCE) return new ProfileRefinement.Refined(e, it);
+			if (move < TOLERANCE) return new ProfileRefinement.Refined(fellBack(e, fell), it);
 		}
 		// the centres move together, so none of them has settled
 		for (int k = 0; k < e.length; k++)
 			e[k] = e[k].withFlags(e[k].flags() | Flag.NOT_CONVERGED.bit());
-		return new ProfileRefinement.Refined(e, -MAX_ITERATIONS);
+		return new ProfileRefinement.Refined(fellBack(e, fell), -MAX_ITERATIONS);
+	}
+
+	/** @return the estimates, those whose latest solve gave no centre on their disc flagged {@code FELL_BACK} */
+	private static Estimate[] fellBack(final Estimate[] e, final boolean[] fell) {
+		for (int k = 0; k < e.length; k++)
+			if (fell[k]) e[k] = e[k].withFlags(e[k].flags() | Flag.FELL_BACK.bit());
+		return e;
 	}
 
 	/** Pixels whose centres lie within {@code r} of (cx, cy), clipped to a w x h window. */
