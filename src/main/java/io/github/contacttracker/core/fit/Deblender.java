@@ -101,11 +101,12 @@ final class Deblender {
 				// Lines that meet off the disc they were drawn on describe no particle there: a seed on no particle (on
 				// a ramp their directions hardly differ, and they meet hundreds of pixels away, where the next
 				// iteration's window would be empty). The particle keeps its previous centre, flagged.
-				fell[k] = !s.ok() || !(Math.hypot(s.solution().x() - cx[k], s.solution().y() - cy[k]) <= discRadius);
+				final double jump = s.ok() ? Math.hypot(s.solution().x() - cx[k], s.solution().y() - cy[k]) : Double.NaN;
+				fell[k] = !(jump <= discRadius);
 				if (fell[k]) continue;
 				e[k] = new Estimate(s.solution().x(), s.solution().y(), e[k].flags(), e[k].secondArea(), e[k].iterations(),
 					s, e[k].sigmaX(), e[k].sigmaY());
-				move = Math.max(move, Math.hypot(e[k].x() - cx[k], e[k].y() - cy[k]));
+				move = Math.max(move, jump);
 			}
 			if (move < TOLERANCE) return new ProfileRefinement.Refined(fellBack(e, fell), it);
 		}
