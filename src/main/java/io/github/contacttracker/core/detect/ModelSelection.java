@@ -232,13 +232,12 @@ public final class ModelSelection {
 				.add(seeds.x()[i], seeds.y()[i]);
 			else removed++;
 		// where each particle was seeded (see the moves: a member cut by the edge is seeded there again)
-		final double[][] seeded = new double[2][];
-		Particle[] ps = seededAt(plane, start.x(), start.y(), d, seeded);
-		ProfileRefinement.Fitted fitted = refinement.fit(plane, ps, params, given, noise, false);
+		Seeded seeded = Seeded.at(plane, start.x(), start.y(), d);
+		ProfileRefinement.Fitted fitted = refinement.fit(plane, seeded.particles(), params, given, noise, false);
 		final KindProfiles profiles = fitted.profiles();
-		double[] significance = new double[ps.length];
+		double[] significance = new double[seeded.particles().length];
 		Arrays.fill(significance, Double.NaN);
-		if (profiles == null) return new Result(ps, fitted.outcome(), significance, removed);
+		if (profiles == null) return new Result(seeded.particles(), fitted.outcome(), significance, removed);
 		// members removed whose light the fit needed: particles cut by the frame's edge (see unmodelled)
 		final java.util.List<Unmodelled> unmodelled = new java.util.ArrayList<>();
 		for (int round = 0; round <= ROUNDS; round++) {
@@ -305,8 +304,8 @@ public final class ModelSelection {
 			final double[] nextX = new double[e.length], nextY = new double[e.length];
 			for (int k = 0; k < e.length; k++) {
 				final boolean cut = e[k].has(Flag.AT_BORDER);
-				nextX[k] = cut ? seeded[0][k] : e[k].x();
-				nextY[k] = cut ? seeded[1][k] : e[k].y();
+				nextX[k] = cut ? seeded.x()[k] : e[k].x();
+				nextY[k] = cut ? seeded.y()[k] : e[k].y();
 			}
 			final boolean[] split = new boolean[e.length];
 			for (int k = 0; k < e.length; k++)
@@ -357,10 +356,11 @@ public final class ModelSelection {
 			final int added = moves.size() - kept;
 			if (kept == e.length && added == 0 && splits == 0) break;
 			removed += Math.max(0, e.length - moves.size());
-			ps = seededAt(plane, moves.x(), moves.y(), d, seeded);
-			fitted = refinement.fit(plane, ps, params, profiles, noise, false);
+			seeded = Seeded.at(plane, moves.x(), moves.y(), d);
+			fitted = refinement.fit(plane, seeded.particles(), params, profiles, noise, false);
 		}
-		return new Result(ps, flagNear(unmodelled, fitted.outcome(), profiles, d), significance, removed);
+		return new Result(seeded.particles(), flagNear(unmodelled, fitted.outcome(), profiles, d), significance,
+			removed);
 	}
 
 	/**
@@ -400,22 +400,25 @@ public final class ModelSelection {
 	}
 
 	/**
-	 * @return the particles at seeds {@code (x, y)} ({@link ImageDetection#particles}), each one's seed into
-	 *         {@code seeded[0]} and {@code seeded[1]}
+	 * The particles at seeds ({@link ImageDetection#particles}), each with the seed it stands at.
+	 *
+	 * @param particles the particles
+	 * @param x each particle's seed, x
+	 * @param y each particle's seed, y
 	 */
-	private static Particle[] seededAt(final Plane plane, final double[] x, final double[] y, final double d,
-		final double[][] seeded)
-	{
-		final int[] seedOf = new int[x.length];
-		final Particle[] ps = ImageDetection.particles(plane, x, y, ImageDetection.radius(d), ImageDetection.margin(d),
-			seedOf);
-		seeded[0] = new double[ps.length];
-		seeded[1] = new double[ps.length];
-		for (int k = 0; k < ps.length; k++) {
-			seeded[0][k] = x[seedOf[k]];
-			seeded[1][k] = y[seedOf[k]];
+	private record Seeded(Particle[] particles, double[] x, double[] y) {
+
+		static Seeded at(final Plane plane, final double[] x, final double[] y, final double d) {
+			final int[] seedOf = new int[x.length];
+			final Particle[] ps = ImageDetection.particles(plane, x, y, ImageDetection.radius(d), ImageDetection.margin(
+				d), seedOf);
+			final double[] sx = new double[ps.length], sy = new double[ps.length];
+			for (int k = 0; k < ps.length; k++) {
+				sx[k] = x[seedOf[k]];
+				sy[k] = y[seedOf[k]];
+			}
+			return new Seeded(ps, sx, sy);
 		}
-		return ps;
 	}
 
 	/** The seeds of the next round: kept members' centres, children of split members, added particles. */
