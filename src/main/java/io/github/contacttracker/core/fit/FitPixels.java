@@ -153,6 +153,25 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 	 *         passes read them (their separate arrays null until {@link #asCandidates})
 	 */
 	FitPixels subset(final boolean[] keep) {
+		final FitPixels s = subsetToPass(keep);
+		if (s == this) return this;
+		final double[] summary = summary(s.packed, s.count);
+		return new FitPixels(null, null, null, null, s.count, null, null, java.util.Arrays.copyOf(summary, 9), java.util
+			.Arrays.copyOfRange(summary, 9, 15), s.candidates, s.packed);
+	}
+
+	/**
+	 * The background's block of J^T J in a subset only passed over with the background held: {@link GroupFit}'s
+	 * hold replaces that block with the identity's, so that what it holds is never read.
+	 */
+	private static final double[] HELD_BLOCK = new double[9];
+
+	/**
+	 * @return the subset of these pixels that {@code keep} says, as {@link #subset}, for a fit with the background held
+	 *         that only passes over it: without the background's block of J^T J or the {@link #extent} (a pass over its
+	 *         pixels each), which such a fit never reads; never made candidates ({@link #asCandidates}) or lit again
+	 */
+	FitPixels subsetToPass(final boolean[] keep) {
 		int m = 0;
 		for (int i = 0; i < count; i++)
 			if (keep[i]) m++;
@@ -165,9 +184,7 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 			System.arraycopy(packed, PACKED * i, sp, PACKED * j, PACKED);
 			j++;
 		}
-		final double[] summary = summary(sp, m);
-		return new FitPixels(null, null, null, null, m, null, null, java.util.Arrays.copyOf(summary, 9), java.util
-			.Arrays.copyOfRange(summary, 9, 15), from, sp);
+		return new FitPixels(null, null, null, null, m, null, null, HELD_BLOCK, null, from, sp);
 	}
 
 	private static double[] planeCoordinate(final int[] c, final int count, final double origin, final double unit) {

@@ -281,7 +281,7 @@ public final class GroupFit {
 		// sums it, so that the standard errors always come from it, whichever pass the fit ends on
 		final double[] startNoise = new double[PER_PARTICLE * n];
 		final Start start = firstPass(candidates, use, frozen, previous, kept, passes, p, n, members, jtj, jtr, startNoise,
-			censoring);
+			censoring, heldBackground);
 		final Evaluated initial = start.initial();
 		double rss = start.rss();
 		FitPixels pixels = start.pixels();
@@ -344,7 +344,7 @@ public final class GroupFit {
 					members, censoring, use, null, null) : FitPixels.select(candidates, evaluated.p(), n, members, censoring,
 						use, evaluated.pixels(), evaluated.models()))) {
 					selections++;
-					final FitPixels chosen = candidates.subset(use);
+					final FitPixels chosen = heldBackground ? candidates.subsetToPass(use) : candidates.subset(use);
 					if (chosen.count() <= np) break;
 					pixels = chosen;
 					rss = passes.accumulate(pixels, p, n, members, jtj, jtr, latest.clearedNoise(), latest.models);
@@ -403,12 +403,13 @@ public final class GroupFit {
 	/**
 	 * A fit's first pass at its start {@code p}: J^T J (or a later sweep's, kept), J^T r and the residuals' variances
 	 * into {@code jtj}, {@code jtr} and {@code startNoise}; where the pixel type clips, the pixels chosen from the
-	 * model it computes ({@code use}, {@code kept}).
+	 * model it computes ({@code use}, {@code kept}). With the background {@code held}, its rows and columns of J^T J are
+	 * not made here (the caller holds them).
 	 */
 	private static Start firstPass(final FitPixels candidates, final boolean[] use, final boolean frozen,
 		final double[][] previous, final Kept kept, final NormalEquations passes, final double[] p, final int n,
 		final EmpiricalProfile[] members, final double[][] jtj, final double[] jtr, final double[] startNoise,
-		final Censoring censoring)
+		final Censoring censoring, final boolean held)
 	{
 		final int np = p.length;
 		Evaluated initial = null;
@@ -441,11 +442,12 @@ public final class GroupFit {
 				use[i] = censoring.usable(models[i]);
 				out[i] = !use[i];
 			}
-			pixels = candidates.subset(use);
+			pixels = held ? candidates.subsetToPass(use) : candidates.subset(use);
 			if (pixels != candidates) {
 				final double[][] outJtj = new double[np][np];
 				final double[] outJtr = new double[np], outNoise = new double[startNoise.length];
-				rss -= passes.accumulate(candidates.subset(out), p, n, members, outJtj, outJtr, outNoise, null);
+				rss -= passes.accumulate(held ? candidates.subsetToPass(out) : candidates.subset(out), p, n, members, outJtj,
+					outJtr, outNoise, null);
 				for (int i = 0; i < startNoise.length; i++)
 					startNoise[i] -= outNoise[i];
 				for (int a = 0; a < np; a++) {
