@@ -120,7 +120,7 @@ final class DetectionScenesRun {
 			"%.2f s per movie%n", r.key(), r.description(), r.movies(), r.framesPerMovie(), String.join(", ", r
 				.detections()), range(r.diameterMin(), r.diameterMax()), r.trueDiameter(), r.seconds());
 		out.println("  band        | recall  false dupl | unflagged | bias x    bias y    away     (px) | spread (px) | " +
-			"CRB (px) | spread/CRB | main flag");
+			"CRB (px) | spread/CRB | error/σ | main flag");
 		for (final DetectionStudy.Row row : r.bands())
 			out.println(line(row));
 		if (r.bands().size() > 1) out.println(line(r.total()));
@@ -134,9 +134,10 @@ final class DetectionScenesRun {
 	}
 
 	private static String line(final DetectionStudy.Row row) {
-		return String.format(Locale.ROOT, "  %-11s | %6.1f%% %5d %4d | %8.1f%% | %+8.4f %+8.4f %+8.4f      | %11.4f | %8.4f | %10.2f | %s",
+		return String.format(Locale.ROOT, "  %-11s | %6.1f%% %5d %4d | %8.1f%% | %+8.4f %+8.4f %+8.4f      | %11.4f | %8.4f | %10.2f | %7.2f | %s",
 			row.band(), 100 * row.recall(), row.falseSpots(), row.duplicates(), 100 * row.unflaggedShare(), row.biasX(),
-			row.biasY(), row.biasAway(), row.spread(), row.bound(), row.spreadOverBound(), row.mainFlag());
+			row.biasY(), row.biasAway(), row.spread(), row.bound(), row.spreadOverBound(), row.errorOverReported(), row
+				.mainFlag());
 	}
 
 	private static String range(final double lo, final double hi) {
@@ -157,7 +158,10 @@ final class DetectionScenesRun {
 				"spread are over the found, unflagged spots wholly inside the frame: the mean error along x, y and " +
 				"along the line from the nearest other particle (positive: pushed away from it), and the root mean " +
 				"square error about the mean per axis, against the root mean square Cramér-Rao bound (CRB) per axis " +
-				"where the scene has one. Pixels are 84.7 nm: 0.012 px is 1 nm." + (trueDiameter ? " Here, as a control, " +
+				"where the scene has one. Reported σ: the root mean square of the standard errors the tracker gave " +
+				"those spots (`SIGMA_X`, `SIGMA_Y`); error / σ: the root mean square of each error over its own " +
+				"standard error, 1 where the reported errors are the centres' true errors, above 1 where they " +
+				"understate them. Pixels are 84.7 nm: 0.012 px is 1 nm." + (trueDiameter ? " Here, as a control, " +
 					"the scene's true diameter is given (`--diameter`); the rest is measured as without it." : ""));
 		final List<List<String>> goals = new ArrayList<>();
 		for (final SceneResult r : results)
@@ -200,14 +204,14 @@ final class DetectionScenesRun {
 
 	private static final List<String> HEADER = List.of("band", "particles", "recall", "false", "duplicates",
 		"unflagged", "main flag", "bias x (px)", "bias y (px)", "bias away (px)", "spread (px)", "spread (nm)",
-		"CRB (px)", "spread / CRB");
+		"CRB (px)", "spread / CRB", "reported σ (px)", "error / σ");
 
 	private static List<String> cells(final DetectionStudy.Row row) {
 		final double nm = DetectionScenes.PIXEL_NM;
 		return List.of(row.band(), Integer.toString(row.particles()), percent(row.recall()), Integer.toString(row
 			.falseSpots()), Integer.toString(row.duplicates()), percent(row.unflaggedShare()), row.mainFlag(), signed(row
 				.biasX()), signed(row.biasY()), signed(row.biasAway()), four(row.spread()), two(row.spread() * nm), four(
-					row.bound()), two(row.spreadOverBound()));
+					row.bound()), two(row.spreadOverBound()), four(row.reported()), two(row.errorOverReported()));
 	}
 
 	private static List<String> goalRow(final String key, final DetectionStudy.Row row) {

@@ -94,12 +94,16 @@ public final class DetectionStudy {
 	 * @param biasAway mean error along the line from the nearest other particle (px; positive: away from it)
 	 * @param spread root mean square error about the mean, per axis (px)
 	 * @param bound root mean square Cramer-Rao bound per axis (px), NaN where the scene has none
+	 * @param reported root mean square of the standard errors the tracker reported per axis ({@code SIGMA_X},
+	 *        {@code SIGMA_Y}; px), over the measured spots that reported one
+	 * @param errorOverReported root mean square of each error over its own reported standard error, per axis: 1 where
+	 *        the reported errors are what the centres' errors are, above 1 where they understate them
 	 * @param mainFlag the warning flag most of the flagged spots inside the frame carry, with how many of them do
 	 *        ({@code AT_BORDER 12/14}); empty where none is flagged
 	 */
 	public record Row(String scene, String band, int particles, int found, int spots, int falseSpots, int duplicates,
 		int inside, int unflagged, int measured, double biasX, double biasY, double biasAway, double spread,
-		double bound, String mainFlag)
+		double bound, double reported, double errorOverReported, String mainFlag)
 	{
 
 		/** @return the share of particles found */
@@ -130,8 +134,8 @@ public final class DetectionStudy {
 
 	/** Sums of one band: counts, then the errors' sums and sums of squares, and the bound's mean square. */
 	private static final class Tally {
-		int particles, found, spots, falseSpots, duplicates, inside, unflagged, measured, bounded;
-		double sx, sy, sa, sxx, syy, bound2;
+		int particles, found, spots, falseSpots, duplicates, inside, unflagged, measured, bounded, sigmas;
+		double sx, sy, sa, sxx, syy, bound2, sigma2, z2;
 		/** Per flag, the flagged spots inside the frame that carry it. */
 		final int[] flags = new int[Flag.values().length];
 
@@ -151,6 +155,9 @@ public final class DetectionStudy {
 			sxx += t.sxx;
 			syy += t.syy;
 			bound2 += t.bound2;
+			sigmas += t.sigmas;
+			sigma2 += t.sigma2;
+			z2 += t.z2;
 			for (int f = 0; f < flags.length; f++)
 				flags[f] += t.flags[f];
 		}
@@ -168,7 +175,8 @@ public final class DetectionStudy {
 			final double spread = n < 2 ? Double.NaN : Math.sqrt(Math.max(0, (sxx - n * bx * bx + syy - n * by * by) / (2 *
 				(n - 1))));
 			return new Row(scene, band, particles, found, spots, falseSpots, duplicates, inside, unflagged, measured, bx,
-				by, sa / n, spread, bounded == 0 ? Double.NaN : Math.sqrt(bound2 / bounded), mainFlag());
+				by, sa / n, spread, bounded == 0 ? Double.NaN : Math.sqrt(bound2 / bounded), sigmas == 0 ? Double.NaN : Math
+					.sqrt(sigma2 / sigmas), sigmas == 0 ? Double.NaN : Math.sqrt(z2 / sigmas), mainFlag());
 		}
 	}
 
@@ -272,6 +280,11 @@ public final class DetectionStudy {
 			tally.sxx += dx * dx;
 			tally.syy += dy * dy;
 			tally.sa += away(truth, k, dx, dy);
+			if (l.sigmaX() > 0 && l.sigmaY() > 0) { // (NaN: none reported)
+				tally.sigmas++;
+				tally.sigma2 += 0.5 * (l.sigmaX() * l.sigmaX() + l.sigmaY() * l.sigmaY());
+				tally.z2 += 0.5 * (dx * dx / (l.sigmaX() * l.sigmaX()) + dy * dy / (l.sigmaY() * l.sigmaY()));
+			}
 			if (bound != null) {
 				final double bx = bound.position(k, 0), by = bound.position(k, 1);
 				if (Double.isFinite(bx) && Double.isFinite(by)) {

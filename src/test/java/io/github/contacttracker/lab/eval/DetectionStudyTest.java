@@ -38,7 +38,12 @@ import io.github.contacttracker.lab.sim.DetectionScenes;
 class DetectionStudyTest {
 
 	private static Localization spot(final double x, final double y, final int flags) {
-		return new Localization(0, x, y, x, y, 100, 100, 1, 6, flags, 1, 0.01, 0.01, Double.NaN, Double.NaN, 0);
+		return spot(x, y, flags, 0.01);
+	}
+
+	/** @param sigma the standard error the spot reports on x and y (NaN: none) */
+	private static Localization spot(final double x, final double y, final int flags, final double sigma) {
+		return new Localization(0, x, y, x, y, 100, 100, 1, 6, flags, 1, sigma, sigma, Double.NaN, Double.NaN, 0);
 	}
 
 	private static DetectionStudy.Tracked tracked(final List<List<Localization>> spots) {
@@ -65,9 +70,37 @@ class DetectionStudyTest {
 		assertEquals(0.01, all.biasX(), 1e-9);
 		assertEquals(0, all.biasY(), 1e-9);
 		assertEquals(0, all.spread(), 1e-9);
+		assertEquals(Math.sqrt(0.5), all.errorOverReported(), 1e-9); // 0.01 px off along x, at a reported 0.01
 		assertTrue(all.bound() > 0.005 && all.bound() < 0.05, "bound " + all.bound());
 		assertEquals(4, study.labels().size());
 		assertTrue(Double.isNaN(DetectionStudy.failsAt(study.labels())));
+	}
+
+	/**
+	 * Spots off their particles by 0.03 px along x and 0.04 along y, each reporting 0.01 px on both: the reported error
+	 * is 0.01 px, and the errors are 3 and 4 times it, so that error / σ is the root of (9 + 16) / 2. A spot that
+	 * reports no error (NaN) counts in the bias and spread but not in these two.
+	 */
+	@Test
+	void theReportedErrorsAreComparedWithTheErrors() {
+		final DetectionScene scene = DetectionScenes.pairSweep(2, 5);
+		final List<List<Localization>> spots = new ArrayList<>();
+		for (final List<double[]> t : scene.truth())
+			spots.add(List.of(spot(t.get(0)[0] + 0.03, t.get(0)[1] + 0.04, 0), spot(t.get(1)[0] + 0.03, t.get(1)[1] +
+				0.04, 0, Double.NaN)));
+		final DetectionStudy study = new DetectionStudy();
+		study.add(scene, tracked(spots));
+		final DetectionStudy.Row all = study.total();
+		assertEquals(4, all.measured());
+		assertEquals(0.01, all.reported(), 1e-12);
+		assertEquals(Math.sqrt((9 + 16) / 2.0), all.errorOverReported(), 1e-9);
+		final List<List<Localization>> none = new ArrayList<>();
+		for (final List<double[]> t : scene.truth())
+			none.add(List.of(spot(t.get(0)[0], t.get(0)[1], 0, Double.NaN), spot(t.get(1)[0], t.get(1)[1], 0,
+				Double.NaN)));
+		final DetectionStudy without = new DetectionStudy();
+		without.add(scene, tracked(none));
+		assertTrue(Double.isNaN(without.total().reported()) && Double.isNaN(without.total().errorOverReported()));
 	}
 
 	/**
