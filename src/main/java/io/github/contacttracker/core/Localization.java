@@ -52,11 +52,35 @@ import java.util.Set;
  * @param scale the {@code fit} method's radial scale of the particle relative to the measured profile (1.2: its
  *        image is 1.2 times larger), NaN for the other methods
  * @param kind the particle's kind, 1, 2, ... in order of size ({@code core.kind.Kinds}), 0 when not classified
+ * @param fitSigmaX the {@code fit} method's standard error of x with the neighbours whose light it held taken as
+ *        exact (a member of a packed field fitted in turn), where {@code sigmaX} adds their uncertainty: the scale
+ *        by which the tracker's rounds judge a centre settled; NaN: {@code sigmaX}
+ * @param fitSigmaY likewise along y
  */
 public record Localization(int frame, double x, double y, double firstX, double firstY, int activeArea,
 	int secondArea, double quality, double radius, int flags, int iterations, double sigmaX, double sigmaY,
-	double amplitude, double scale, int kind) implements Serializable
+	double amplitude, double scale, int kind, double fitSigmaX, double fitSigmaY) implements Serializable
 {
+
+	/** A localization whose standard errors are those its rounds settle by. */
+	public Localization(final int frame, final double x, final double y, final double firstX, final double firstY,
+		final int activeArea, final int secondArea, final double quality, final double radius, final int flags,
+		final int iterations, final double sigmaX, final double sigmaY, final double amplitude, final double scale,
+		final int kind)
+	{
+		this(frame, x, y, firstX, firstY, activeArea, secondArea, quality, radius, flags, iterations, sigmaX, sigmaY,
+			amplitude, scale, kind, Double.NaN, Double.NaN);
+	}
+
+	/** @return the standard error of x the tracker's rounds settle by: {@link #fitSigmaX} where known, else sigmaX */
+	public double settlingSigmaX() {
+		return Double.isNaN(fitSigmaX) ? sigmaX : fitSigmaX;
+	}
+
+	/** @return likewise along y */
+	public double settlingSigmaY() {
+		return Double.isNaN(fitSigmaY) ? sigmaY : fitSigmaY;
+	}
 
 	/** @return whether {@code flag} is set */
 	public boolean has(final Flag flag) {
@@ -78,24 +102,24 @@ public record Localization(int frame, double x, double y, double firstX, double 
 	/** @return a copy with another frame index */
 	public Localization withFrame(final int newFrame) {
 		return new Localization(newFrame, x, y, firstX, firstY, activeArea, secondArea, quality, radius, flags,
-			iterations, sigmaX, sigmaY, amplitude, scale, kind);
+			iterations, sigmaX, sigmaY, amplitude, scale, kind, fitSigmaX, fitSigmaY);
 	}
 
 	/** @return a copy with other flags */
 	public Localization withFlags(final int newFlags) {
 		return new Localization(frame, x, y, firstX, firstY, activeArea, secondArea, quality, radius, newFlags,
-			iterations, sigmaX, sigmaY, amplitude, scale, kind);
+			iterations, sigmaX, sigmaY, amplitude, scale, kind, fitSigmaX, fitSigmaY);
 	}
 
 	/** @return a copy with another radius (px), e.g. half the particle diameter the user gave */
 	public Localization withRadius(final double newRadius) {
 		return new Localization(frame, x, y, firstX, firstY, activeArea, secondArea, quality, newRadius, flags,
-			iterations, sigmaX, sigmaY, amplitude, scale, kind);
+			iterations, sigmaX, sigmaY, amplitude, scale, kind, fitSigmaX, fitSigmaY);
 	}
 
 	/** @return a copy of another kind (0: not classified) */
 	public Localization withKind(final int newKind) {
 		return new Localization(frame, x, y, firstX, firstY, activeArea, secondArea, quality, radius, flags,
-			iterations, sigmaX, sigmaY, amplitude, scale, newKind);
+			iterations, sigmaX, sigmaY, amplitude, scale, newKind, fitSigmaX, fitSigmaY);
 	}
 }

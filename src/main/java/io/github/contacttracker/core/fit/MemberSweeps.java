@@ -170,6 +170,7 @@ final class MemberSweeps {
 				any |= active[q];
 			}
 		}
+		Coupling.widen(e, group, profile, kept, memberWindow, nearby, memberOf);
 		for (int q = 0; q < n; q++) {
 			final int k = group[q];
 			e[k] = e[k].withIterations(solves[q]);

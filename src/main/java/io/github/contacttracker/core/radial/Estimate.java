@@ -37,10 +37,21 @@ import io.github.contacttracker.core.Flag;
  * @param sigmaY likewise along y
  * @param amplitude the joint fit's amplitude relative to the profile, NaN if none
  * @param scale the joint fit's radial scale relative to the profile, NaN if none
+ * @param coupledX the standard error along x with the uncertainty of the neighbours whose light the fit held (a
+ *        member fitted in turn), where it differs from {@code sigmaX}: the error to report; NaN: {@code sigmaX}. The
+ *        fit's own {@code sigmaX} stays the scale its iterations and rounds settle by.
+ * @param coupledY likewise along y
  */
 public record Estimate(double x, double y, int flags, int secondArea, int iterations, Solve solve, double sigmaX,
-	double sigmaY, double amplitude, double scale)
+	double sigmaY, double amplitude, double scale, double coupledX, double coupledY)
 {
+	/** An estimate whose errors are its own fit's. */
+	public Estimate(final double x, final double y, final int flags, final int secondArea, final int iterations,
+		final Solve solve, final double sigmaX, final double sigmaY, final double amplitude, final double scale)
+	{
+		this(x, y, flags, secondArea, iterations, solve, sigmaX, sigmaY, amplitude, scale, Double.NaN, Double.NaN);
+	}
+
 	/** An estimate without amplitude and scale. */
 	public Estimate(final double x, final double y, final int flags, final int secondArea, final int iterations,
 		final Solve solve, final double sigmaX, final double sigmaY)
@@ -54,16 +65,34 @@ public record Estimate(double x, double y, int flags, int secondArea, int iterat
 	}
 
 	public Estimate withFlags(final int newFlags) {
-		return new Estimate(x, y, newFlags, secondArea, iterations, solve, sigmaX, sigmaY, amplitude, scale);
+		return new Estimate(x, y, newFlags, secondArea, iterations, solve, sigmaX, sigmaY, amplitude, scale, coupledX,
+			coupledY);
 	}
 
 	/** @return this estimate with the amplitude {@code newAmplitude} (a fit's, where the rest is its start) */
 	public Estimate withAmplitude(final double newAmplitude) {
-		return new Estimate(x, y, flags, secondArea, iterations, solve, sigmaX, sigmaY, newAmplitude, scale);
+		return new Estimate(x, y, flags, secondArea, iterations, solve, sigmaX, sigmaY, newAmplitude, scale, coupledX,
+			coupledY);
 	}
 
 	public Estimate withIterations(final int newIterations) {
-		return new Estimate(x, y, flags, secondArea, newIterations, solve, sigmaX, sigmaY, amplitude, scale);
+		return new Estimate(x, y, flags, secondArea, newIterations, solve, sigmaX, sigmaY, amplitude, scale, coupledX,
+			coupledY);
+	}
+
+	/** @return this estimate with the errors to report {@code errorX}, {@code errorY} ({@link #coupledX}) */
+	public Estimate withCoupled(final double errorX, final double errorY) {
+		return new Estimate(x, y, flags, secondArea, iterations, solve, sigmaX, sigmaY, amplitude, scale, errorX, errorY);
+	}
+
+	/** @return the standard error along x to report: {@link #coupledX} where known, else {@link #sigmaX} */
+	public double reportedX() {
+		return Double.isNaN(coupledX) ? sigmaX : coupledX;
+	}
+
+	/** @return the standard error along y to report: {@link #coupledY} where known, else {@link #sigmaY} */
+	public double reportedY() {
+		return Double.isNaN(coupledY) ? sigmaY : coupledY;
 	}
 
 	public boolean has(final Flag flag) {

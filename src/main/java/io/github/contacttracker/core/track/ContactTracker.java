@@ -180,7 +180,7 @@ public final class ContactTracker {
 		for (int k = 0; k < ps.length; k++) {
 			final Particle p = ps[k];
 			final Estimate e = est[k];
-			double sx = e.sigmaX(), sy = e.sigmaY();
+			double sx = e.reportedX(), sy = e.reportedY();
 			if (Double.isNaN(sx) && e.solve() != null) {
 				final Solve c = e.solve();
 				final double[] cov = CentreUncertainty.covariancePerUnitNoise(c.field(), c.used(), e.x() - c.originX(),
@@ -192,7 +192,7 @@ public final class ContactTracker {
 				.area(), noise);
 			spots.add(new Localization(frameIndex, e.x() + dx, e.y() + dy, p.first().x() + dx, p.first().y() + dy,
 				p.region().area(), e.secondArea(), quality, Math.sqrt(p.region().area() / Math.PI), e.flags(),
-				e.iterations(), sx, sy, e.amplitude(), e.scale(), kinds == null ? 0 : kinds[k]));
+				e.iterations(), sx, sy, e.amplitude(), e.scale(), kinds == null ? 0 : kinds[k], e.sigmaX(), e.sigmaY()));
 			if (keepRegions) {
 				active.add(p.region().translate(dx, dy));
 				second.add(SecondPass.secondRegion(p.region(), k, outcome.discs(), params.exclusionRadius()).translate(dx, dy));

@@ -90,7 +90,7 @@ record Misfit(double typical) implements Serializable {
 
 	/** @return a spot's centre error (the larger of x and y) times the square root of its significance; NaN if unknown */
 	static double product(final Localization l) {
-		final double s = Math.max(l.sigmaX(), l.sigmaY()), q = l.quality();
+		final double s = Math.max(l.settlingSigmaX(), l.settlingSigmaY()), q = l.quality();
 		return s > 0 && q > 0 && Double.isFinite(s) && Double.isFinite(q) ? s * Math.sqrt(q) : Double.NaN;
 	}
 }

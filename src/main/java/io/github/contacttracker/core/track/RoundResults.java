@@ -179,7 +179,7 @@ final class RoundResults {
 			for (int k = 0; k < b.size(); k++, i++) {
 				final Localization now = b.get(k), then = same && near(a.get(k), now) ? a.get(k) : nearest(a, now);
 				moves[i] = fitted(now) && then != null ? Math.hypot(then.x() - now.x(), then.y() - now.y()) / GroupFit
-					.settled(now.sigmaX(), now.sigmaY()) : Double.NaN;
+					.settled(now.settlingSigmaX(), now.settlingSigmaY()) : Double.NaN;
 			}
 		}
 		return moves;
