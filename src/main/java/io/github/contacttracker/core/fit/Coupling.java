@@ -34,7 +34,7 @@ import io.github.contacttracker.core.radial.Estimate;
  * neighbour deep: the member's information less what each neighbour's own uncertainty takes of it (the Schur
  * complement {@code A_qq - sum_j A_qj A_jj^-1 A_jq}, with {@code A_qj} summed over the member's pixels and
  * {@code A_jj} the neighbour's own J^T J). On the detection study's packed monolayers the centres' errors were 1.3
- * to 1.5 times the errors that the members' own fits reported, and 1.09 to 1.22 times those widened (what is left:
+ * to 1.5 times the errors that the members' own fits reported, and 1.08 to 1.32 times those widened (what is left:
  * the neighbours' neighbours). The positions and flags do not change: the fit's own error stays the scale by which
  * the iterations and rounds judge a centre settled ({@link Estimate#coupledX}).
  */
