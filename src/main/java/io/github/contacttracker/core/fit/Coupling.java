@@ -94,8 +94,8 @@ final class Coupling {
 		}
 		for (int q = 0; q < n; q++) {
 			final Estimate s = e[group[q]];
-			if (factorX[q] != 1 || factorY[q] != 1) e[group[q]] = s.withCoupled(s.sigmaX() * factorX[q], s.sigmaY() *
-				factorY[q]);
+			if (factorX[q] != 1 || factorY[q] != 1) e[group[q]] = s.withCoupled(s.reportedX() * factorX[q], s
+				.reportedY() * factorY[q]);
 		}
 	}
 
@@ -174,8 +174,14 @@ final class Coupling {
 	private static boolean gradient(final double x, final double y, final Estimate est, final EmpiricalProfile profile,
 		final double[] g)
 	{
-		final double sc = GroupFit.scaleOf(est), a = GroupFit.amplitudeOf(est);
-		final double dx = x - est.x(), dy = y - est.y(), r = Math.sqrt(dx * dx + dy * dy), rs = r / sc;
+		return gradient(x, y, est.x(), est.y(), GroupFit.amplitudeOf(est), GroupFit.scaleOf(est), profile, g);
+	}
+
+	/** {@link #gradient(double, double, Estimate, EmpiricalProfile, double[])} of a particle at these parameters */
+	static boolean gradient(final double x, final double y, final double cx, final double cy, final double a,
+		final double sc, final EmpiricalProfile profile, final double[] g)
+	{
+		final double dx = x - cx, dy = y - cy, r = Math.sqrt(dx * dx + dy * dy), rs = r / sc;
 		if (!(rs < profile.radius())) return false;
 		final double[] tv = profile.valueTable(), td = profile.derivativeTable();
 		final double t = rs / EmpiricalProfile.TABLE_STEP;

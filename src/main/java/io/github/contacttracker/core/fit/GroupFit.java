@@ -394,7 +394,8 @@ public final class GroupFit {
 			}
 			else mu *= 10;
 		}
-		return store(e, group, p, jtj, jtr, heldBackground, kept, pixels.count(), rss, latest.noise, converged ? it : -it);
+		return store(e, group, p, jtj, jtr, heldBackground, kept, pixels, members, rss, latest.noise, converged ? it
+			: -it);
 	}
 
 	/** Where a fit starts: its pixels, the residual sum of squares at its start and the model there (where chosen). */
@@ -467,9 +468,10 @@ public final class GroupFit {
 	 * was fitted) and returns 0.
 	 */
 	private static int store(final Estimate[] e, final int[] group, final double[] p, final double[][] jtj,
-		final double[] jtr, final boolean heldBackground, final Kept kept, final int pixels, final double rss,
-		final double[] noise, final int iterations)
+		final double[] jtr, final boolean heldBackground, final Kept kept, final FitPixels fitted,
+		final EmpiricalProfile[] members, final double rss, final double[] noise, final int iterations)
 	{
+		final int pixels = fitted.count();
 		final int n = group.length, np = p.length;
 		if (heldBackground) hold(jtj, jtr, np);
 		final double[][] inv = SymmetricSolver.invert(jtj);
@@ -482,13 +484,18 @@ public final class GroupFit {
 		}
 		if (kept != null) kept.jtj = jtj;
 		final double dof = pixels / (double) (pixels - np), s2 = rss / (pixels - np);
+		// the errors to report: the residuals' variance corrected for what the fit took up of the noise (the fit's own
+		// errors, below, stay the scale its iterations and rounds settle by)
+		final double[] leverage = Leverage.factors(fitted.packed(), pixels, p, n, members, inv, heldBackground, dof);
 		for (int q = 0; q < n; q++) {
 			final Estimate old = e[group[q]];
 			final int b = PER_PARTICLE * q;
 			final double vx = noise[b] > 0 ? dof * noise[b + 1] / noise[b] : s2;
 			final double vy = noise[b + 2] > 0 ? dof * noise[b + 3] / noise[b + 2] : s2;
-			e[group[q]] = new Estimate(p[b], p[b + 1], old.flags(), old.secondArea(), old.iterations(), old.solve(), Math
-				.sqrt(vx * inv[b][b]), Math.sqrt(vy * inv[b + 1][b + 1]), p[b + 2], p[b + 3]);
+			final double sx = Math.sqrt(vx * inv[b][b]), sy = Math.sqrt(vy * inv[b + 1][b + 1]);
+			final double fx = leverage[2 * q], fy = leverage[2 * q + 1];
+			e[group[q]] = new Estimate(p[b], p[b + 1], old.flags(), old.secondArea(), old.iterations(), old.solve(), sx,
+				sy, p[b + 2], p[b + 3], fx > 1 ? sx * fx : Double.NaN, fy > 1 ? sy * fy : Double.NaN);
 		}
 		return iterations;
 	}
