@@ -33,8 +33,8 @@ import io.github.contacttracker.core.profile.EmpiricalProfile;
  * sum of squared residuals by {@code sum w (1 - h)} instead of {@code sum w} undoes that (the
  * heteroscedasticity-consistent "HC2" correction), in the errors reported ({@code Estimate#coupledX}): the fit's own
  * stay the scale its iterations and rounds settle by. On the detection study's dim spots (a peak signal to noise of 3
- * to 5) the reported errors grew from 0.85 to 0.95 of the Cramer-Rao bound, the errors over them from 1.64-1.69 to
- * 1.49-1.50 (the rest: the spread itself 1.1 times the bound, and a few spots far off); over large particles the
+ * to 5) the reported errors grew from 0.85 to 0.92 of the Cramer-Rao bound, the errors over them from 1.64-1.69 to
+ * 1.46-1.48 (the rest: the spread itself 1.13 times the bound, and a few spots far off); over large particles the
  * leverages are tiny and nothing changes.
  */
 final class Leverage {

@@ -100,7 +100,7 @@ class SceneAccuracyTest {
 	 * The same on a cluster too large to fit jointly ({@code hex37}, twice as bright, photon noise): its members are
 	 * fitted in turn, and their reported sigma must follow the observed spread as a joint fit's does. Most members
 	 * end on a refit that settles at its first step, and that path had reported one variance for all pixels: 0.53 to
-	 * 0.94 of the spread here (now 0.76 to 1.34).
+	 * 0.94 of the spread here (now within 1.5 either way).
 	 */
 	@Test
 	void reportedSigmaFollowsPhotonNoiseWhenFittedInTurn() {
