@@ -67,10 +67,9 @@ final class Coupling {
 		final GroupFit.Kept[] kept, final double[] window, final Nearby nearby, final int[] memberOf)
 	{
 		final int n = group.length;
-		final double[] factorX = new double[n], factorY = new double[n];
 		final int[] near = new int[n];
+		// (a member's widened error is read by no other's: each is replaced as soon as it is known)
 		for (int q = 0; q < n; q++) {
-			factorX[q] = factorY[q] = 1;
 			final GroupFit.Kept own = kept[q];
 			if (own.candidates == null || own.jtj == null || own.candidates.count() == 0) continue;
 			final Estimate eq = e[group[q]];
@@ -87,15 +86,8 @@ final class Coupling {
 			}
 			if (m == 0) continue;
 			final double[] f = widened(e, group, profile, kept, window, q, near, m);
-			if (f != null) {
-				factorX[q] = f[0];
-				factorY[q] = f[1];
-			}
-		}
-		for (int q = 0; q < n; q++) {
-			final Estimate s = e[group[q]];
-			if (factorX[q] != 1 || factorY[q] != 1) e[group[q]] = s.withCoupled(s.reportedX() * factorX[q], s
-				.reportedY() * factorY[q]);
+			if (f != null && (f[0] != 1 || f[1] != 1)) e[group[q]] = eq.withCoupled(eq.reportedX() * f[0], eq.reportedY() *
+				f[1]);
 		}
 	}
 
@@ -183,15 +175,10 @@ final class Coupling {
 	{
 		final double dx = x - cx, dy = y - cy, r = Math.sqrt(dx * dx + dy * dy), rs = r / sc;
 		if (!(rs < profile.radius())) return false;
-		final double[] tv = profile.valueTable(), td = profile.derivativeTable();
-		final double t = rs / EmpiricalProfile.TABLE_STEP;
-		final int k = (int) t;
-		if (k + 1 >= tv.length) return false;
-		final double f = t - k, val = tv[k] + f * (tv[k + 1] - tv[k]), d = a * (td[k] + f * (td[k + 1] - td[k])) / sc;
-		final double radial = r > 1e-12 ? -d / r : 0;
+		final double d = a * profile.slope(rs) / sc, radial = r > 1e-12 ? -d / r : 0;
 		g[0] = radial * dx;
 		g[1] = radial * dy;
-		g[2] = val;
+		g[2] = profile.lookup(rs);
 		g[3] = -d * rs;
 		return true;
 	}

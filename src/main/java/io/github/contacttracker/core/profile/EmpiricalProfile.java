@@ -81,6 +81,11 @@ public final class EmpiricalProfile implements Serializable {
 		return interpolated(tableValue, r);
 	}
 
+	/** P'(r) from the table (linear interpolation); 0 beyond the radius. */
+	public double slope(final double r) {
+		return interpolated(tableDerivative, r);
+	}
+
 	/** A table at {@link #TABLE_STEP} read at {@code r} (linear interpolation); 0 beyond its end. */
 	private static double interpolated(final double[] table, final double r) {
 		final double u = r / TABLE_STEP;
