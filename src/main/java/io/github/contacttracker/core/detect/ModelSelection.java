@@ -180,13 +180,40 @@ public final class ModelSelection {
 					// it keeps more particles and leaves out almost no seed, as on a field of particles (that
 					// monolayer: 259 kept, 3 left out). Seeds on a textured background fit no one profile: there
 					// it leaves out a tenth to nine tenths of them (DeepTrack's focal planes), and the areas' stands.
-					final Result own = select(plane, params, refinement, null, noise, null, null);
+					final Result own = ownProfile(plane, params, refinement, noise);
 					return own.particles().length > taught.particles().length && own.removed() <= OWN_LEFT_OUT * own
 						.particles().length ? own : taught;
 				}
 			}
 		}
-		return select(plane, params, refinement, given, noise, null, null);
+		return given != null ? select(plane, params, refinement, given, noise, null, null) : ownProfile(plane, params,
+			refinement, noise);
+	}
+
+	/**
+	 * The moves of {@link #track} from the image's seeds with the frame's own profile. Where the highest seeds stand
+	 * apart, {@code 1 / }{@link ImageDetection#RELATIVE} times as high as every other, the profile is measured on
+	 * them alone, and every seed is fitted with it as with a profile given (a seed that it matches at less than
+	 * {@link #FAINT} of its amplitude is no particle of it): in a tweezer's small field of view a particle a third of
+	 * the frame across stands among bumps of the background (its uneven illumination, dust) that the band-pass at
+	 * its scale leaves 15 to 40 times lower, which the noise does not part from particles, and whose reach, cut by the
+	 * frame's edge, masked every pixel the profile could be measured on (an optical-tweezer stack of one bead 62 px
+	 * across in 184 x 181 px: no spot fitted, every one flagged). Else, and where that profile cannot be measured,
+	 * the profile is measured on every seed.
+	 */
+	private static Result ownProfile(final Plane plane, final TrackerParameters params,
+		final ProfileRefinement refinement, final double noise)
+	{
+		final double d = params.diameter();
+		final Peaks seeds = ImageDetection.seeds(plane, d, noise);
+		final int strong = seeds.standingApart(1 / ImageDetection.RELATIVE);
+		if (strong < seeds.count()) {
+			final Particle[] teaching = ImageDetection.particles(plane, Arrays.copyOf(seeds.x(), strong),
+				Arrays.copyOf(seeds.y(), strong), ImageDetection.radius(d), ImageDetection.margin(d));
+			final KindProfiles measured = refinement.fit(plane, teaching, params, null, noise).profiles();
+			if (measured != null) return select(plane, params, refinement, measured, noise, null, null);
+		}
+		return select(plane, params, refinement, null, noise, null, null);
 	}
 
 	/**

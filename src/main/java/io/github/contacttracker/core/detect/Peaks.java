@@ -102,6 +102,18 @@ public record Peaks(double[] x, double[] y, double[] height, double[] prominence
 		return Statistics.quantile(nearest, quantile);
 	}
 
+	/**
+	 * @param ratio how many times higher the strong peaks stand than every other ({@code > 1})
+	 * @return how many of the highest peaks stand at least {@code ratio} times as high as each lower one (the
+	 *         peaks being highest first): where the heights fall by that factor from one peak to the next, the count
+	 *         above the first such fall; every peak where none falls that far
+	 */
+	public int standingApart(final double ratio) {
+		for (int i = 1; i < height.length; i++)
+			if (height[i - 1] > ratio * height[i]) return i;
+		return height.length;
+	}
+
 	/** @return the number of peaks */
 	public int count() {
 		return x.length;
