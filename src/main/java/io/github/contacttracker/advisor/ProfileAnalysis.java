@@ -285,6 +285,13 @@ public final class ProfileAnalysis {
 		return run(frame, null, diameter, maxRadius, kindFrames);
 	}
 
+	/** @return the radius of the profile's innermost ring that holds pixels (px); NaN if none does */
+	private static double innermost(final PooledProfile pooled) {
+		for (int k = 0; k < pooled.count().length; k++)
+			if (pooled.count()[k] > 0) return pooled.radius()[k];
+		return Double.NaN;
+	}
+
 	private static <T extends RealType<T>> Result run(final RandomAccessibleInterval<T> frame, final double[] point,
 		final double diameterGiven, final double maxRadiusGiven,
 		final List<? extends RandomAccessibleInterval<T>> kindFrames)
@@ -304,6 +311,16 @@ public final class ProfileAnalysis {
 		final ProfiledParticles m = sized.measured();
 		final PooledProfile pooled = m.pooled();
 		final double[] centre = m.centres().get(0), subject = m.at() != null ? m.at() : centre;
+		// a profile that starts beyond the particle's radius measured the space around something else (its pixels
+		// masked by neighbours nearer than the particle is wide: a tweezer's bead, its texture and the dust around
+		// it found as particles of their own), and its r_out and threshold would be made up
+		// (a pixel's width of margin: the rings of a particle a few pixels across start near a pixel out)
+		final double innermost = innermost(pooled);
+		if (!(innermost <= diameter / 2 + 1)) throw new InvalidInputException(String.format(Locale.ROOT, "the profile " +
+			"around (%.1f, %.1f) holds no pixel within the particle's radius (%.1f px) of its centre, its first at " +
+			"%.1f px: the spots found there lie closer than a particle is wide; give a point on a particle%s",
+			subject[0] + plane.minX(), subject[1] + plane.minY(), diameter / 2, innermost, diameterGiven > 0 ? ""
+				: ", or its diameter"));
 		final double rOut = m.reach() + Margins.R_OUT_MARGIN_PX;
 		final double[] level = levels(pooled);
 		final Threshold t = threshold(plane, pooled, level, diameter, m.reach(), centre, findings);

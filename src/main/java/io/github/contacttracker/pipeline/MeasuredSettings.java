@@ -164,7 +164,7 @@ public final class MeasuredSettings {
 		catch (final InvalidInputException e) {
 			if (!fallBack) throw e;
 			final Seen frame = new Seen(seen);
-			final boolean otherContrast = autoSeesOtherContrast(v, frame);
+			final boolean otherContrast = !(particlesGiven && diameter) && autoSeesOtherContrast(v, frame);
 			if (imageCanTake(v) && !(auto(v) && (thresholdGiven && rOutGiven || otherContrast))) return byImage(name,
 				frame, v, thresholdGiven, rOutGiven, said, false, e, words);
 			if (thresholdGiven && rOutGiven) return new Result(settings, "contact-tracker: " + name + ": the diameter " +
@@ -191,7 +191,9 @@ public final class MeasuredSettings {
 			if (above || t < range[0]) {
 				final String side = above ? "above" : "below";
 				final Seen frame = new Seen(seen);
-				if (fallBack && imageCanTake(settings) && !(above && autoSeesOtherContrast(settings, frame))) {
+				if (fallBack && imageCanTake(settings) && !(above && !(particlesGiven && diameter) && autoSeesOtherContrast(
+					settings, frame)))
+				{
 					// isolated blurred spheres whose rim the helper measured (only no threshold keeps two apart at
 					// contact): its diameter and r_out stand
 					final boolean rim = r.findings().stream().anyMatch(f -> f instanceof Finding.DiameterFromHalfHeight);
@@ -287,7 +289,9 @@ public final class MeasuredSettings {
 	/**
 	 * @return whether the detection is auto and the frame looks like dark cores in bright rings rather than bright
 	 *         particles packed edge to edge ({@link DetectionChoice#otherContrastStronger}): auto then refuses, with
-	 *         what to try, as the threshold does, instead of tracking the rings by their image
+	 *         what to try, as the threshold does, instead of tracking the rings by their image (not asked where both
+	 *         the particles' contrast and their diameter were given: the user has said what the particles are, such as
+	 *         a tweezer's bead dark inside a bright rim, whose rim's pieces the frame's other contrast shows as blobs)
 	 */
 	@SuppressWarnings({ "rawtypes", "unchecked" })
 	private static boolean autoSeesOtherContrast(final SettingValues v, final Seen seen) {

@@ -107,6 +107,27 @@ class MeasuredSettingsTest {
 	}
 
 	/**
+	 * The same frame, dark cores in bright rings, where the user says what the particles are: bright, of a diameter
+	 * given. The inverted frame's blobs stand out more, which with nothing said refuses the run (above); told both the
+	 * contrast and the diameter, the run is tracked as told, by the particles' image (a tweezer's bead, dark inside a
+	 * bright rim, given --particles dark and its diameter, was refused because its rim's pieces stood out more). Told the
+	 * contrast alone, it is still refused.
+	 */
+	@Test
+	void theContrastAndDiameterGivenAreTrackedAsTold() {
+		final RandomAccessibleInterval<UnsignedByteType> dark = inverted(brightField());
+		final SettingValues bright = SettingValues.defaults().withText(TrackingSettings.PARTICLES, "bright");
+		assertThrows(InvalidInputException.class, () -> MeasuredSettings.of("bf.tif", dark, true, bright, Set.of(
+			TrackingSettings.PARTICLES), FrontEnd.COMMAND_LINE));
+		final MeasuredSettings.Result told = MeasuredSettings.of("bf.tif", dark, true, bright.with(
+			TrackingSettings.DIAMETER, 24.0), Set.of(TrackingSettings.PARTICLES, TrackingSettings.DIAMETER),
+			FrontEnd.COMMAND_LINE);
+		assertEquals(TrackingSettings.IMAGE, told.settings().get(TrackingSettings.DETECTION), told.notice());
+		assertEquals(24.0, told.settings().diameter(), told.notice());
+		assertTrue(told.notice().contains("tracked by the particles' image"), told.notice());
+	}
+
+	/**
 	 * What the helper says, where it measures and where it cannot, is said in the words of the front end it runs in: a
 	 * Fiji user is pointed to the dialog's fields and their macro keys, and to the Profile command, never to an
 	 * option of the command line; a TrackMate user to the panel's fields. The command line's words are its options.
