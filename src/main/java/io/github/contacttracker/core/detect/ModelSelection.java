@@ -327,7 +327,7 @@ public final class ModelSelection {
 			// was seeded (what is left of its image hardly tells its centre from its scale, and the fit leaves it
 			// anywhere along that valley: seeded again at its fitted centre, it slid further each round, 2 to 5 px
 			// off the frame on a packed monolayer, until it no longer matched its profile and was removed, its light
-			// left to pull its neighbours)
+			// left to pull its neighbours); its fit starts from where this one ended, unless cut (ProfileRefinement#fit)
 			final double[] nextX = new double[e.length], nextY = new double[e.length];
 			for (int k = 0; k < e.length; k++) {
 				final boolean cut = e[k].has(Flag.AT_BORDER);
@@ -338,7 +338,7 @@ public final class ModelSelection {
 			for (int k = 0; k < e.length; k++)
 				if (keep[k] && round == 0 && (given == null || e[k].scale() >= WIDE) && significance[k] >= SIGNIFICANCE &&
 					split(dataBp(plane, scale, data, w, h, cache), w, h, e, k, d, PAIR, moves)) split[k] = true;
-				else if (keep[k]) moves.add(nextX[k], nextY[k]);
+				else if (keep[k]) moves.add(nextX[k], nextY[k], e[k].has(Flag.AT_BORDER) ? null : e[k]);
 				else if (pinned(e[k]) && significance[k] >= SIGNIFICANCE) {
 					// a blob too large for one particle of its kind: two if it is elongated, else kept as it is
 					if (split(dataBp(plane, scale, data, w, h, cache), w, h, e, k, d, 0.125, moves)) split[k] = true;
@@ -383,8 +383,8 @@ public final class ModelSelection {
 			final int added = moves.size() - kept;
 			if (kept == e.length && added == 0 && splits == 0) break;
 			removed += Math.max(0, e.length - moves.size());
-			seeded = Seeded.at(plane, moves.x(), moves.y(), d);
-			fitted = refinement.fit(plane, seeded.particles(), params, profiles, noise, false);
+			seeded = Seeded.at(plane, moves.x(), moves.y(), moves.warm(), d);
+			fitted = refinement.fit(plane, seeded.particles(), params, profiles, noise, seeded.warm());
 		}
 		return new Result(seeded.particles(), flagNear(unmodelled, fitted.outcome(), profiles, d), significance,
 			removed);
@@ -424,81 +424,6 @@ public final class ModelSelection {
 						Flag.UNMODELLED_NEIGHBOUR.bit());
 		}
 		return new Refinement.Outcome(e, outcome.discs(), outcome.kinds());
-	}
-
-	/**
-	 * The particles at seeds ({@link ImageDetection#particles}), each with the seed it stands at.
-	 *
-	 * @param particles the particles
-	 * @param x each particle's seed, x
-	 * @param y each particle's seed, y
-	 */
-	private record Seeded(Particle[] particles, double[] x, double[] y) {
-
-		static Seeded at(final Plane plane, final double[] x, final double[] y, final double d) {
-			final int[] seedOf = new int[x.length];
-			final Particle[] ps = ImageDetection.particles(plane, x, y, ImageDetection.radius(d), ImageDetection.margin(
-				d), seedOf);
-			final double[] sx = new double[ps.length], sy = new double[ps.length];
-			for (int k = 0; k < ps.length; k++) {
-				sx[k] = x[seedOf[k]];
-				sy[k] = y[seedOf[k]];
-			}
-			return new Seeded(ps, sx, sy);
-		}
-	}
-
-	/** The seeds of the next round: kept members' centres, children of split members, added particles. */
-	private static final class Moves {
-		double[] x, y;
-		int n;
-
-		Moves(final int capacity) {
-			x = new double[Math.max(1, capacity)];
-			y = new double[x.length];
-		}
-
-		void add(final double px, final double py) {
-			if (n == x.length) {
-				x = Arrays.copyOf(x, 2 * n);
-				y = Arrays.copyOf(y, 2 * n);
-			}
-			x[n] = px;
-			y[n++] = py;
-		}
-
-		/** Replaces the seed at (ox, oy), if there, by two; adds both otherwise. */
-		void replace(final double ox, final double oy, final double x1, final double y1, final double x2,
-			final double y2)
-		{
-			for (int i = 0; i < n; i++)
-				if (x[i] == ox && y[i] == oy) {
-					x[i] = x1;
-					y[i] = y1;
-					add(x2, y2);
-					return;
-				}
-			add(x1, y1);
-			add(x2, y2);
-		}
-
-		boolean near(final double px, final double py, final double within) {
-			for (int i = 0; i < n; i++)
-				if (MemberTests.dist(x[i] - px, y[i] - py) < within) return true;
-			return false;
-		}
-
-		int size() {
-			return n;
-		}
-
-		double[] x() {
-			return Arrays.copyOf(x, n);
-		}
-
-		double[] y() {
-			return Arrays.copyOf(y, n);
-		}
 	}
 
 	/**

@@ -112,9 +112,37 @@ public final class ProfileRefinement implements Refinement {
 	public Fitted fit(final Plane plane, final Particle[] ps, final TrackerParameters params,
 		final KindProfiles given, final double noise, final boolean iterate)
 	{
+		return fit(plane, ps, params, given, noise, iterate, null);
+	}
+
+	/**
+	 * As {@link #fit(Plane, Particle[], TrackerParameters, KindProfiles, double, boolean)} from the first pass, each
+	 * particle's fit started from {@code warm[k]} where given (its centre, amplitude and scale): a refit of particles
+	 * an earlier fit with the same profiles found, most of whose members it leaves where they were. Started from
+	 * their first passes, every member of a packed field moved, and moved its neighbours, for ten sweeps and more (a
+	 * simulated bidisperse monolayer of 1,560 particles: 19,500 member fits a refit; warm, 8,000 to 10,000), and the
+	 * members that had not settled in one fit's sweeps started over in the next (warm, they go on where they stopped:
+	 * on the detection study's bidisperse monolayer, 442 spots flagged in 15,780 instead of 956, most NOT_CONVERGED).
+	 *
+	 * @param warm each particle's start (null, or null entries: its first pass); its flags are the first pass's
+	 */
+	public Fitted fit(final Plane plane, final Particle[] ps, final TrackerParameters params,
+		final KindProfiles given, final double noise, final Estimate[] warm)
+	{
+		return fit(plane, ps, params, given, noise, false, warm);
+	}
+
+	private Fitted fit(final Plane plane, final Particle[] ps, final TrackerParameters params,
+		final KindProfiles given, final double noise, final boolean iterate, final Estimate[] warm)
+	{
 		final Outcome iterative = iterate ? SecondPass.iterate(ps, params) : Refinement.FIRST_PASS.refine(plane, ps,
 			params, null, noise);
 		Estimate[] e = iterative.estimates();
+		if (warm != null) {
+			e = e.clone();
+			for (int k = 0; k < e.length; k++)
+				if (warm[k] != null) e[k] = warm[k].withFlags(e[k].flags());
+		}
 		if (ps.length == 0) return new Fitted(iterative, given);
 		// each particle's kind, among the movie's kinds or this frame's
 		final Kinds kinds;

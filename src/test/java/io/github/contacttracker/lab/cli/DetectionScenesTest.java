@@ -220,14 +220,22 @@ class DetectionScenesTest {
 			study.add(scene, tracker.track(scene));
 		}
 		final DetectionStudy.Row all = study.total();
+		assertFoundAndCentred(all);
+		assertTrue(all.errorOverReported() > 0.8 && all.errorOverReported() < 1.2, "error / reported error " + all
+			.errorOverReported());
+	}
+
+	/**
+	 * At least 99% of the particles found, under 1% of the spots false or duplicate, at least 95% of the spots inside
+	 * the frame unflagged, their centres unbiased within 0.005 px and spread by less than 0.035 px.
+	 */
+	private static void assertFoundAndCentred(final DetectionStudy.Row all) {
 		assertTrue(all.recall() >= 0.99, "recall " + all.recall());
 		assertTrue(all.falseSpots() + all.duplicates() <= 0.01 * all.particles(), all.falseSpots() + " false spots, " +
 			all.duplicates() + " duplicates");
 		assertTrue(all.unflaggedShare() >= 0.95, "unflagged " + all.unflaggedShare() + ", mostly " + all.mainFlag());
 		assertTrue(all.worstBias() < 0.005, "bias " + all.worstBias() + " px");
 		assertTrue(all.spread() < 0.035, "spread " + all.spread() + " px");
-		assertTrue(all.errorOverReported() > 0.8 && all.errorOverReported() < 1.2, "error / reported error " + all
-			.errorOverReported());
 	}
 
 	/**
@@ -241,6 +249,23 @@ class DetectionScenesTest {
 	@Test
 	void aPackedMonolayerWhoseAreasLookSingleIsFoundToo() {
 		assertPackedMonolayersFoundAndCentred(2001, 2003);
+	}
+
+	/**
+	 * A packed monolayer of two sizes (the study's {@code dense-bidisperse}: 1,578 discs of D 10 and 14 px at an area
+	 * fraction of 0.7, none alone, 512 x 512 px), two frames tracked with no value given: at least 99% of the
+	 * particles found, under 1% of the spots false or duplicate, at least 95% of the spots inside the frame unflagged,
+	 * their centres unbiased within 0.005 px and spread by less than 0.035 px. Each round of the model's moves refits
+	 * the frame from the fit before; from their first passes, the members that had not settled in one fit's sweeps
+	 * started over in the next, and this layout (the study's second movie) had 92.9% of its spots unflagged (98.1%
+	 * now; the study's 5 movies: 89% to 96%, now 96% to 98%).
+	 */
+	@Test
+	void aPackedMonolayerOfTwoSizesIsFoundAndCentred() {
+		final DetectionStudy study = new DetectionStudy();
+		final DetectionScene scene = DetectionScenes.denseBidisperse(2, 6001);
+		study.add(scene, new NewUserTracker(2).track(scene));
+		assertFoundAndCentred(study.total());
 	}
 
 	/**
