@@ -32,11 +32,14 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 
 import ij.ImagePlus;
 import io.github.contacttracker.core.InvalidInputException;
+import io.github.contacttracker.core.Numbers;
 import io.github.contacttracker.ij.ImagePlusFrames;
+import io.github.contacttracker.io.Calibration;
 import io.github.contacttracker.io.ImageFiles;
 import io.github.contacttracker.io.ImageSource;
 import io.github.contacttracker.io.SpotCsvWriter;
@@ -170,6 +173,8 @@ final class TrackCommand extends ContactTrackerCli.Subcommand {
 			? settings.channel() : 0);
 		final StringBuilder notice = new StringBuilder();
 		if (!frames.colourChoice().isEmpty()) notice.append("contact-tracker: ").append(frames.colourChoice());
+		final String calibrated = calibrated(input, frames.calibration());
+		if (!calibrated.isEmpty()) notice.append(notice.length() > 0 ? "\n" : "").append(calibrated);
 		final SettingValues used = measured(input, imp, frames, settings, notice);
 		final Outputs files = new Outputs(outputs.csv(), outputs.trackMateXml(), outputs.trackMateXml() == null ? null
 			: ImageSource.of(input, frames.width(), frames.height(), frames.frameCount()));
@@ -205,6 +210,23 @@ final class TrackCommand extends ContactTrackerCli.Subcommand {
 		notice.append(r.notice());
 		return r.settings();
 	}
+
+	/**
+	 * @return where the file's calibration is a printer's resolution, in inches or centimetres, a line that says the
+	 *         spots' positions and sizes are in that unit: a TIFF saved by a camera program or a screenshot tool at 96
+	 *         pixels per inch gives positions of a few inches across a whole frame, which read as a tracker gone wrong
+	 *         (two public tweezer snapshots: every spot within 13 units of the corner). A microscope's calibration (µm,
+	 *         nm) is what TrackMate's tables use, and is not said. Empty otherwise.
+	 */
+	static String calibrated(final Path input, final Calibration c) {
+		if (!PRINTER_UNITS.contains(c.unit().toLowerCase(Locale.ROOT))) return "";
+		return String.format(Locale.ROOT, "contact-tracker: %s is calibrated: the spots' positions and sizes are in %s, " +
+			"a pixel %s x %s %s (the file's own calibration, as ImageJ reads it)", input.getFileName(), c.unit(), Numbers
+				.fmt(c.pixelWidth(), 6), Numbers.fmt(c.pixelHeight(), 6), c.unit());
+	}
+
+	/** Units of a printer's resolution, as ImageJ names them from a TIFF's resolution tags. */
+	private static final List<String> PRINTER_UNITS = List.of("inch", "in", "cm", "centimeter", "centimetre");
 
 	/** @return a movie's name for its CSV: the file name without its extension (a folder's name as it is) */
 	static String name(final Path movie) {

@@ -326,6 +326,31 @@ class MovieInputTest {
 		assertTrue(((String) bad[2]).contains("OME-TIFF with planes in XYTCZ order"), (String) bad[2]);
 	}
 
+	/**
+	 * A TIFF saved at 96 pixels per inch (a camera program's or a screenshot's resolution tags): ImageJ reads it in
+	 * inches, and so are the spots' positions; the run says so. A movie in pixels or in microns says nothing.
+	 */
+	@Test
+	void aMovieCalibratedInInchesSaysThePositionsAreInInches() throws IOException {
+		final ImagePlus particles = ProfileScenes.particles("particles", 2, io.github.contacttracker.io.Calibration.PIXELS);
+		final Path pixels = dir.resolve("pixels.tif"), inches = dir.resolve("inches.tif");
+		new FileSaver(particles).saveAsTiffStack(pixels.toString());
+		final ij.measure.Calibration dpi = particles.getCalibration().copy();
+		dpi.setUnit("inch");
+		dpi.pixelWidth = dpi.pixelHeight = 1 / 96.0;
+		particles.setCalibration(dpi);
+		new FileSaver(particles).saveAsTiffStack(inches.toString());
+		final Object[] inPixels = ContactTrackerCliTest.run("track", pixels.toString());
+		final Object[] inInches = ContactTrackerCliTest.run("track", inches.toString());
+		assertEquals(0, inInches[0], (String) inInches[2]);
+		assertFalse(((String) inPixels[2]).contains("is calibrated"), (String) inPixels[2]);
+		assertTrue(((String) inInches[2]).contains("inches.tif is calibrated: the spots' positions and sizes are in " +
+			"inch, a pixel 0.010417 x 0.010417 inch"), (String) inInches[2]);
+		final String[] first = ((String) inPixels[1]).lines().skip(1).findFirst().orElseThrow().split(",");
+		final String[] firstInches = ((String) inInches[1]).lines().skip(1).findFirst().orElseThrow().split(",");
+		assertEquals(Double.parseDouble(first[2]) / 96, Double.parseDouble(firstInches[2]), 1e-9);
+	}
+
 	@Test
 	void anUnreadableMovieIsOneLineNamingTheFileAndTheReason() throws IOException {
 		final Path avi = dir.resolve("broken.avi");
