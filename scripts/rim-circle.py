@@ -71,7 +71,11 @@ def main():
     m = pd.DataFrame(rows, columns=['frame', 'x', 'y', 'rim_x', 'rim_y', 'rim_r'])
     dx, dy = m.x - m.rim_x, m.y - m.rim_y
     print(f'{len(m)} spots; rim radius {m.rim_r.mean():.2f} px')
-    print(f'spot - rim centre: mean {dx.mean():+.3f} {dy.mean():+.3f} px, rms about it {dx.std():.3f} {dy.std():.3f} px')
+    print(f'spot - rim centre: mean {dx.mean():+.3f} {dy.mean():+.3f} px', end='')
+    if len(m) < 3:
+        print()
+        return
+    print(f', rms about it {dx.std():.3f} {dy.std():.3f} px')
     print(f'frame-to-frame motion (rms): spots {np.diff(m.x).std():.3f} {np.diff(m.y).std():.3f} px, rim centres '
           f'{np.diff(m.rim_x).std():.3f} {np.diff(m.rim_y).std():.3f} px')
 
