@@ -147,6 +147,8 @@ public final class MeasuredSettings {
 		final boolean thresholdGiven = given.contains(TrackingSettings.THRESHOLD), rOutGiven = given.contains(
 			TrackingSettings.R_OUT), particlesGiven = given.contains(TrackingSettings.PARTICLES);
 		final boolean diameter = settings.diameter() > 0;
+		// the user said what the particles are: their contrast and their size (see autoSeesOtherContrast)
+		final boolean told = particlesGiven && diameter;
 		if (thresholdGiven && rOutGiven && diameter) return new Result(settings, "");
 		SettingValues v = settings;
 		final Said said = new Said();
@@ -164,7 +166,7 @@ public final class MeasuredSettings {
 		catch (final InvalidInputException e) {
 			if (!fallBack) throw e;
 			final Seen frame = new Seen(seen);
-			final boolean otherContrast = !(particlesGiven && diameter) && autoSeesOtherContrast(v, frame);
+			final boolean otherContrast = !told && autoSeesOtherContrast(v, frame);
 			if (imageCanTake(v) && !(auto(v) && (thresholdGiven && rOutGiven || otherContrast))) return byImage(name,
 				frame, v, thresholdGiven, rOutGiven, said, false, e, words);
 			if (thresholdGiven && rOutGiven) return new Result(settings, "contact-tracker: " + name + ": the diameter " +
@@ -191,9 +193,7 @@ public final class MeasuredSettings {
 			if (above || t < range[0]) {
 				final String side = above ? "above" : "below";
 				final Seen frame = new Seen(seen);
-				if (fallBack && imageCanTake(settings) && !(above && !(particlesGiven && diameter) && autoSeesOtherContrast(
-					settings, frame)))
-				{
+				if (fallBack && imageCanTake(settings) && !(above && !told && autoSeesOtherContrast(settings, frame))) {
 					// isolated blurred spheres whose rim the helper measured (only no threshold keeps two apart at
 					// contact): its diameter and r_out stand
 					final boolean rim = r.findings().stream().anyMatch(f -> f instanceof Finding.DiameterFromHalfHeight);
