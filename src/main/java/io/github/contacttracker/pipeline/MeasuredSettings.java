@@ -147,8 +147,6 @@ public final class MeasuredSettings {
 		final boolean thresholdGiven = given.contains(TrackingSettings.THRESHOLD), rOutGiven = given.contains(
 			TrackingSettings.R_OUT), particlesGiven = given.contains(TrackingSettings.PARTICLES);
 		final boolean diameter = settings.diameter() > 0;
-		// the user said what the particles are: their contrast and their size (see autoSeesOtherContrast)
-		final boolean told = particlesGiven && diameter;
 		if (thresholdGiven && rOutGiven && diameter) return new Result(settings, "");
 		SettingValues v = settings;
 		final Said said = new Said();
@@ -166,7 +164,7 @@ public final class MeasuredSettings {
 		catch (final InvalidInputException e) {
 			if (!fallBack) throw e;
 			final Seen frame = new Seen(seen);
-			final boolean otherContrast = !told && autoSeesOtherContrast(v, frame);
+			final boolean otherContrast = autoSeesOtherContrast(v, frame, particlesGiven);
 			if (imageCanTake(v) && !(auto(v) && (thresholdGiven && rOutGiven || otherContrast))) return byImage(name,
 				frame, v, thresholdGiven, rOutGiven, said, false, e, words);
 			if (thresholdGiven && rOutGiven) return new Result(settings, "contact-tracker: " + name + ": the diameter " +
@@ -193,7 +191,9 @@ public final class MeasuredSettings {
 			if (above || t < range[0]) {
 				final String side = above ? "above" : "below";
 				final Seen frame = new Seen(seen);
-				if (fallBack && imageCanTake(settings) && !(above && !told && autoSeesOtherContrast(settings, frame))) {
+				if (fallBack && imageCanTake(settings) && !(above && autoSeesOtherContrast(settings, frame,
+					particlesGiven)))
+				{
 					// isolated blurred spheres whose rim the helper measured (only no threshold keeps two apart at
 					// contact): its diameter and r_out stand
 					final boolean rim = r.findings().stream().anyMatch(f -> f instanceof Finding.DiameterFromHalfHeight);
@@ -289,13 +289,14 @@ public final class MeasuredSettings {
 	/**
 	 * @return whether the detection is auto and the frame looks like dark cores in bright rings rather than bright
 	 *         particles packed edge to edge ({@link DetectionChoice#otherContrastStronger}): auto then refuses, with
-	 *         what to try, as the threshold does, instead of tracking the rings by their image (not asked where both
-	 *         the particles' contrast and their diameter were given: the user has said what the particles are, such as
-	 *         a tweezer's bead dark inside a bright rim, whose rim's pieces the frame's other contrast shows as blobs)
+	 *         what to try, as the threshold does, instead of tracking the rings by their image; not where both the
+	 *         particles' contrast and their diameter were given: the user has said what the particles are, such as a
+	 *         tweezer's bead dark inside a bright rim, whose rim's pieces the frame's other contrast shows as blobs
+	 * @param particlesGiven whether the particles' contrast was given
 	 */
 	@SuppressWarnings({ "rawtypes", "unchecked" })
-	private static boolean autoSeesOtherContrast(final SettingValues v, final Seen seen) {
-		if (!auto(v)) return false;
+	private static boolean autoSeesOtherContrast(final SettingValues v, final Seen seen, final boolean particlesGiven) {
+		if (!auto(v) || particlesGiven && v.diameter() > 0) return false;
 		final double d = v.diameter() > 0 ? v.diameter() : seen.blobs();
 		return d > 0 && DetectionChoice.otherContrastStronger(seen.plane(), Plane.of(Inversion.of(seen.frame)), d);
 	}

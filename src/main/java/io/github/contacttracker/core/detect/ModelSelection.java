@@ -208,8 +208,8 @@ public final class ModelSelection {
 		final Peaks seeds = ImageDetection.seeds(plane, d, noise);
 		final int strong = seeds.standingApart(1 / ImageDetection.RELATIVE);
 		if (strong < seeds.count()) {
-			final Particle[] teaching = ImageDetection.particles(plane, Arrays.copyOf(seeds.x(), strong),
-				Arrays.copyOf(seeds.y(), strong), ImageDetection.radius(d), ImageDetection.margin(d));
+			final Particle[] teaching = Seeded.at(plane, Arrays.copyOf(seeds.x(), strong), Arrays.copyOf(seeds.y(),
+				strong), d).particles();
 			final KindProfiles measured = refinement.fit(plane, teaching, params, null, noise).profiles();
 			if (measured != null) return select(plane, params, refinement, measured, noise, null, null);
 		}
@@ -329,16 +329,18 @@ public final class ModelSelection {
 			// off the frame on a packed monolayer, until it no longer matched its profile and was removed, its light
 			// left to pull its neighbours); its fit starts from where this one ended, unless cut (ProfileRefinement#fit)
 			final double[] nextX = new double[e.length], nextY = new double[e.length];
+			final Estimate[] nextStart = new Estimate[e.length];
 			for (int k = 0; k < e.length; k++) {
 				final boolean cut = e[k].has(Flag.AT_BORDER);
 				nextX[k] = cut ? seeded.x()[k] : e[k].x();
 				nextY[k] = cut ? seeded.y()[k] : e[k].y();
+				nextStart[k] = cut ? null : e[k];
 			}
 			final boolean[] split = new boolean[e.length];
 			for (int k = 0; k < e.length; k++)
 				if (keep[k] && round == 0 && (given == null || e[k].scale() >= WIDE) && significance[k] >= SIGNIFICANCE &&
 					split(dataBp(plane, scale, data, w, h, cache), w, h, e, k, d, PAIR, moves)) split[k] = true;
-				else if (keep[k]) moves.add(nextX[k], nextY[k], e[k].has(Flag.AT_BORDER) ? null : e[k]);
+				else if (keep[k]) moves.add(nextX[k], nextY[k], nextStart[k]);
 				else if (pinned(e[k]) && significance[k] >= SIGNIFICANCE) {
 					// a blob too large for one particle of its kind: two if it is elongated, else kept as it is
 					if (split(dataBp(plane, scale, data, w, h, cache), w, h, e, k, d, 0.125, moves)) split[k] = true;
