@@ -23,6 +23,7 @@ package io.github.contacttracker.core.detect;
 
 import java.util.Arrays;
 
+import io.github.contacttracker.core.image.NoiseEstimate;
 import io.github.contacttracker.core.image.Plane;
 import io.github.contacttracker.core.math.Statistics;
 
@@ -35,6 +36,13 @@ import io.github.contacttracker.core.math.Statistics;
  * and scale together; the diameter is {@code 2 sqrt 2} times the median scale of the strong ones (at least half as
  * strong as the 90th percentile), so that a dense monolayer, a cluster and a sparse field are all measured the same
  * way, and the noise's small maxima do not count.
+ * <p>
+ * Where the pixel noise is strong against the particles (a confocal slice, whose photon noise makes a speckle inside
+ * every particle), the speckle's small blobs answer as strongly as the particles: on a stack of polydisperse spheres
+ * 12 px apart, 120 of 200 blobs were 2-6 px across, and the median 5.7 px. So the blobs counted are those that stand
+ * out from the noise ({@value #SIGNIFICANT} times the response white noise of the frame's {@link NoiseEstimate sigma}
+ * gives at their scale, {@code sigma_n / (s sqrt(2 pi))}), where any does; that stack's blobs then measure 8 px, the
+ * spheres' bright cores. Frames whose noise is faint against their particles lose no blob by it.
  * <p>
  * Large scales are computed on the frame averaged down by powers of two (the blur at each scale is then at most a
  * few pixels wide), so that the cost stays a few passes over the frame.
@@ -51,6 +59,11 @@ public final class ParticleScale {
 	static final int CROP = 512;
 	/** A blob counts when its response is at least this share of the strong blobs' (90th percentile). */
 	static final double STRONG = 0.5;
+	/**
+	 * A blob stands out from the noise when its response is at least this many times the standard deviation of white
+	 * noise's at its scale.
+	 */
+	static final double SIGNIFICANT = 5;
 
 	/**
 	 * @param plane a frame of bright particles (a frame of dark ones inverted first)
@@ -109,6 +122,7 @@ public final class ParticleScale {
 			at = above;
 		}
 		if (n == 0) return Double.NaN;
+		n = significant(found, strength, weight, n, NoiseEstimate.sigma(plane));
 		final double least = STRONG * Statistics.weightedQuantile(strength, weight, n, 0.9);
 		final double[] scales = new double[n], weights = new double[n];
 		int m = 0;
@@ -118,6 +132,26 @@ public final class ParticleScale {
 				weights[m++] = weight[i];
 			}
 		return 2 * Math.sqrt(2) * Statistics.weightedQuantile(scales, weights, m, 0.5);
+	}
+
+	/**
+	 * Moves the blobs that stand out from the noise ({@link #SIGNIFICANT}) to the front of the arrays, in their order.
+	 *
+	 * @param noise the frame's pixel noise (standard deviation)
+	 * @return how many stand out, or {@code n} (all kept) where none does or the noise is not known
+	 */
+	static int significant(final double[] scale, final double[] strength, final double[] weight, final int n,
+		final double noise)
+	{
+		if (!(noise > 0)) return n;
+		int m = 0;
+		for (int i = 0; i < n; i++)
+			if (strength[i] * scale[i] * Math.sqrt(2 * Math.PI) >= SIGNIFICANT * noise) {
+				scale[m] = scale[i];
+				strength[m] = strength[i];
+				weight[m++] = weight[i];
+			}
+		return m == 0 ? n : m;
 	}
 
 	/** @return the factor the frame is averaged down by for scale {@code sigma} (see {@link #response}) */

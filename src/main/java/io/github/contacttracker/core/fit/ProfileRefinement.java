@@ -205,7 +205,8 @@ public final class ProfileRefinement implements Refinement {
 					.distanceTo(e[k]) / GroupFit.settled(next[k].sigmaX(), next[k].sigmaY()) : Double.NaN;
 			e = next;
 			// (the first round's moves are from the iterative centres; a verdict needs a round on a measured profile)
-			final Rounds.Verdict verdict = round == 0 ? Rounds.Verdict.GOING_ON : settling.next(moves);
+			Rounds.Verdict verdict = round == 0 ? Rounds.Verdict.GOING_ON : settling.next(moves);
+			if (verdict == Rounds.Verdict.GOING_ON && round > 0 && round == rounds - 1) verdict = settling.atLimit();
 			if (verdict == Rounds.Verdict.GOING_ON) continue;
 			if (verdict == Rounds.Verdict.STALLED) break; // (no fixed point: flagged below)
 			if (verdict == Rounds.Verdict.CYCLING) for (int k = 0; k < e.length; k++)

@@ -46,6 +46,8 @@ import io.github.contacttracker.core.math.Statistics;
  * rounds stop as at their limit: no fixed point, every centre flagged.
  * <li>{@link Verdict#GOING_ON}: none of these.
  * </ul>
+ * Rounds that reach their limit still going on end as {@link #atLimit} says: cycling where the centres as a whole
+ * have settled, else with no fixed point.
  */
 public final class Rounds {
 
@@ -82,6 +84,8 @@ public final class Rounds {
 	/** the median move of the latest round that halved the one before (the first round's), and the rounds since */
 	private double anchorMedian = Double.POSITIVE_INFINITY;
 	private int sinceShrunk;
+	/** the latest round's median move (infinite before a round had one) */
+	private double lastMedian = Double.POSITIVE_INFINITY;
 	private double[] last = new double[0];
 
 	/**
@@ -101,6 +105,7 @@ public final class Rounds {
 		maxPrevious = max;
 		if (max <= 1) return Verdict.SETTLED;
 		final double median = Statistics.median(moves.clone());
+		lastMedian = median;
 		if (median < anchorMedian / 2) {
 			anchorMedian = median;
 			sinceShrunk = 0;
@@ -108,6 +113,26 @@ public final class Rounds {
 		else sinceShrunk++;
 		if (max >= STILL * twoBack && median <= BULK) return Verdict.CYCLING;
 		return median > STALL_MEDIAN && sinceShrunk >= STALL_ROUNDS ? Verdict.STALLED : Verdict.GOING_ON;
+	}
+
+	/**
+	 * The median move (in tolerances: a tenth of the centres' standard errors) at or below which rounds that reach their
+	 * limit count as {@link Verdict#CYCLING}.
+	 */
+	static final double LIMIT_BULK = 1;
+
+	/**
+	 * The verdict of rounds that reached their limit still {@link Verdict#GOING_ON}. Where the latest median move is
+	 * at most {@value #LIMIT_BULK} tolerance, the centres as a whole, and so the profile that moves them together, are
+	 * at their fixed point to a tenth of their errors, and what still moves are single centres, as when the rounds
+	 * cycle: {@link Verdict#CYCLING}, those centres flagged ({@link #stillMoving}). A field whose particles the one
+	 * profile describes only roughly (a confocal stack of polydisperse spheres: the median move down from 14 to 0.5-0.9
+	 * tolerances over the rounds, a tenth of the centres jumping 2 standard errors every round, the largest move never
+	 * shrinking for two rounds at a median below half a tolerance) otherwise ends with every spot flagged, those that
+	 * no longer move with them. Else {@link Verdict#GOING_ON}: no fixed point.
+	 */
+	public Verdict atLimit() {
+		return lastMedian <= LIMIT_BULK ? Verdict.CYCLING : Verdict.GOING_ON;
 	}
 
 	/**

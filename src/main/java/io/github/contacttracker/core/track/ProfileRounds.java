@@ -174,6 +174,7 @@ final class ProfileRounds {
 			refitted |= refit;
 			verdict = rounds.next(RoundResults.moves(previous, round));
 		}
+		if (verdict == Rounds.Verdict.GOING_ON) verdict = rounds.atLimit(); // (the rounds' limit)
 		// no fixed point within the rounds, or rounds that stalled far from one: every centre rests on a profile that
 		// was still moving. Settled: the
 		// profile of the last round is the fixed point's (to within the tolerance), and the sample frames were just

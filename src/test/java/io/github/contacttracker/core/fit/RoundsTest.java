@@ -111,4 +111,24 @@ class RoundsTest {
 				? ", one 16" : ""));
 		}
 	}
+
+	/**
+	 * Rounds that reach their limit with the centres as a whole settled (a median move of a tolerance or less: a
+	 * confocal stack of polydisperse spheres, a tenth of its centres jumping two standard errors every round) end as
+	 * cycling, the centres still jumping flagged; with the median above a tolerance, with no fixed point.
+	 */
+	@Test
+	void atTheLimitTheBulkDecides() {
+		for (final double last : new double[] { 0.7, 1.4 }) {
+			final Rounds r = new Rounds();
+			for (final double[] m : new double[][] { round(14, 180), round(4.7, 170), round(1.9, 200), round(1.2, 280),
+				round(0.9, 190), round(last, 230) })
+				assertEquals(Verdict.GOING_ON, r.next(m));
+			assertEquals(last <= 1 ? Verdict.CYCLING : Verdict.GOING_ON, r.atLimit(), "median " + last);
+			int flagged = 0;
+			for (int i = 0; i < 101; i++)
+				if (r.stillMoving(i)) flagged++;
+			assertEquals(50, flagged, "the 50 centres that moved 230 tolerances");
+		}
+	}
 }
