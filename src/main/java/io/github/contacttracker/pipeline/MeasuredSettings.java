@@ -157,7 +157,7 @@ public final class MeasuredSettings {
 			said.add(TrackingSettings.PARTICLES, TrackingSettings.DARK);
 		}
 		final RandomAccessibleInterval seen = v.dark() ? Inversion.of((RandomAccessibleInterval) first) : first;
-		final ProfileAnalysis.Result r;
+		ProfileAnalysis.Result r;
 		try {
 			r = ProfileAnalysis.analyse(seen, v.diameter(), 0);
 		}
@@ -179,10 +179,24 @@ public final class MeasuredSettings {
 						TrackingSettings.DARK) : "") + byImageHint(frame, v, words) + "; or give them (" + words.measuresOne() +
 				" measures one particle)", e);
 		}
+		boolean blobs = false; // the helper measured at the frame's blobs' diameter (atTheBlobs)
 		if (!thresholdGiven) {
+			final double[] range = ImagePlusFrames.range(seen, 0);
+			final Seen frame = new Seen(seen);
+			final double own = r.suggestedThreshold(integerData);
+			// (not where the helper measured the particles' rim, whose diameter stands, nor where auto refuses the frame
+			// for its other contrast's blobs: see below)
+			if (!diameter && !within(own, range) && !measuredRim(r) && !(own > range[1] && autoSeesOtherContrast(
+				settings, frame, particlesGiven)))
+			{
+				final ProfileAnalysis.Result again = atTheBlobs(frame, range, integerData);
+				if (again != null) {
+					r = again;
+					blobs = true;
+				}
+			}
 			v = v.with(TrackingSettings.THRESHOLD, r.suggestedThreshold(integerData));
 			said.add(TrackingSettings.THRESHOLD, optionValue(v.get(TrackingSettings.THRESHOLD)));
-			final double[] range = ImagePlusFrames.range(seen, 0);
 			// outside the frame's range. Above every pixel: what the helper took for particles' cores are not (e.g. the
 			// bright rings around the dark cores of a bright-field movie, inverted). Below: the helper's background lies
 			// under the frame's darkest pixel (no dark gap between particles packed edge to edge).
@@ -190,13 +204,12 @@ public final class MeasuredSettings {
 			final boolean above = t > range[1];
 			if (above || t < range[0]) {
 				final String side = above ? "above" : "below";
-				final Seen frame = new Seen(seen);
 				if (fallBack && imageCanTake(settings) && !(above && autoSeesOtherContrast(settings, frame,
 					particlesGiven)))
 				{
 					// isolated blurred spheres whose rim the helper measured (only no threshold keeps two apart at
 					// contact): its diameter and r_out stand
-					final boolean rim = r.findings().stream().anyMatch(f -> f instanceof Finding.DiameterFromHalfHeight);
+					final boolean rim = measuredRim(r);
 					final Said kept = new Said();
 					if (!particlesGiven && v.dark()) kept.add(TrackingSettings.PARTICLES, TrackingSettings.DARK);
 					SettingValues fallen = settings.withText(TrackingSettings.PARTICLES, v.get(TrackingSettings.PARTICLES));
@@ -231,8 +244,45 @@ public final class MeasuredSettings {
 			v = v.with(TrackingSettings.MIN_AREA, minArea);
 			said.add(TrackingSettings.MIN_AREA, String.valueOf(minArea));
 		}
-		return new Result(v, "contact-tracker: " + name + ": measured on frame " + number + " by the profile helper:" + said
-			.in(words) + " (given values win; " + words.showsHow(name) + " shows how)");
+		return new Result(v, "contact-tracker: " + name + ": measured on frame " + number + " by the profile helper" + (blobs
+			? " at the diameter of the frame's blobs (its own threshold lay outside the frame's range)" : "") + ":" + said
+				.in(words) + " (given values win; " + words.showsHow(name) + (blobs ? " with " + words.value(
+					TrackingSettings.DIAMETER, optionValue(v.diameter())) : "") + " shows how)");
+	}
+
+	/** @return whether the helper measured the particles' diameter on their rim (at half height) */
+	private static boolean measuredRim(final ProfileAnalysis.Result r) {
+		return r.findings().stream().anyMatch(f -> f instanceof Finding.DiameterFromHalfHeight);
+	}
+
+	/** @return whether {@code t} lies within {@code range} (lowest, highest) */
+	private static boolean within(final double t, final double[] range) {
+		return t >= range[0] && t <= range[1];
+	}
+
+	/**
+	 * The helper again, at the diameter of the frame's blobs ({@link ParticleScale}), where at its own it suggested a
+	 * threshold outside the frame's range, no diameter was given and the helper did not measure the particles' rim
+	 * (isolated blurred discs: their rim's diameter is within 3-4% of the truth where the blobs' is 8% off, and a pair of
+	 * them tracked at the blobs' merged once at half a diameter apart). Its own diameter is where the particles' profile
+	 * returns to the background, which the photon noise of a confocal slice hides: on a stack of dense polydisperse
+	 * spheres with bright cores 8 px across it read 3.2 px, and a threshold above every pixel, where the blobs read
+	 * 8.0 px and the helper at 8 px measures a threshold and r_out that track the spheres (with the threshold's areas
+	 * or by the image, as auto then chooses), as if the user had given that diameter.
+	 *
+	 * @return the helper's result at the blobs' diameter where it suggests a threshold within {@code range}, else null
+	 */
+	@SuppressWarnings({ "rawtypes", "unchecked" })
+	private static ProfileAnalysis.Result atTheBlobs(final Seen seen, final double[] range, final boolean integerData) {
+		final double d = seen.blobs();
+		if (!(d > 0)) return null;
+		try {
+			final ProfileAnalysis.Result again = ProfileAnalysis.analyse(seen.frame, Math.round(d * 100) / 100.0, 0);
+			return within(again.suggestedThreshold(integerData), range) ? again : null;
+		}
+		catch (final InvalidInputException e) {
+			return null;
+		}
 	}
 
 	/**

@@ -50,6 +50,7 @@ import net.imglib2.RandomAccessibleInterval;
 import net.imglib2.converter.Converters;
 import net.imglib2.type.numeric.real.FloatType;
 import net.imglib2.type.numeric.integer.UnsignedByteType;
+import net.imglib2.view.Views;
 
 /** What {@code track} measures when values are not given: the polarity of the particles among them. */
 class MeasuredSettingsTest {
@@ -125,6 +126,43 @@ class MeasuredSettingsTest {
 		assertEquals(TrackingSettings.IMAGE, told.settings().get(TrackingSettings.DETECTION), told.notice());
 		assertEquals(24.0, told.settings().diameter(), told.notice());
 		assertTrue(told.notice().contains("tracked by the particles' image"), told.notice());
+	}
+
+	/**
+	 * Spheres as a dense confocal slice shows them: bright cores 8 px across, about 12 px apart, 40 grey levels above a
+	 * background of 30, under photon noise of 15.
+	 */
+	private static RandomAccessibleInterval<UnsignedByteType> noisyPacked() {
+		final RadialProfile profile = r -> 40 / (1 + Math.exp((r - 4) / 0.7));
+		final SplittableRandom rnd = new SplittableRandom(5);
+		final List<double[]> centres = new ArrayList<>();
+		for (int attempt = 0; attempt < 4000; attempt++) {
+			final double[] c = { 6 + rnd.nextDouble() * 148, 6 + rnd.nextDouble() * 148 };
+			if (centres.stream().allMatch(o -> Math.hypot(c[0] - o[0], c[1] - o[1]) > 11)) centres.add(c);
+		}
+		return Quantiser.toUnsignedBytes(new ImageSimulator(profile, 3).render(centres, 160, 160, 30), NoiseModel
+			.gaussian(15), rnd).image();
+	}
+
+	/**
+	 * Where the noise hides where the particles' profile returns to the background, the helper's own diameter is far
+	 * too small and its threshold lies above every pixel; it measures again at the diameter of the frame's blobs, and
+	 * says so (a confocal stack of polydisperse spheres: 3.2 px, then 8.0 px, and its spots 29% flagged instead of all).
+	 */
+	@Test
+	void whereTheHelpersOwnThresholdLiesOutsideTheFrameItMeasuresAtTheBlobs() {
+		final RandomAccessibleInterval<UnsignedByteType> frame = noisyPacked();
+		final double own = ProfileAnalysis.analyse(frame, 0, 0).suggestedThreshold(true);
+		int brightest = 0;
+		for (final UnsignedByteType p : Views.iterable(frame))
+			brightest = Math.max(brightest, p.get());
+		assertTrue(own > brightest, "the helper's own threshold " + own + ", the brightest pixel " + brightest);
+		final MeasuredSettings.Result r = MeasuredSettings.of("c.tif", frame, true, SettingValues.defaults(), Set.of(),
+			FrontEnd.COMMAND_LINE);
+		assertTrue(r.notice().contains("by the profile helper at the diameter of the frame's blobs"), r.notice());
+		assertEquals(8, r.settings().diameter(), 2, r.notice());
+		final double t = r.settings().get(TrackingSettings.THRESHOLD);
+		assertTrue(t > 30 && t <= brightest, "a threshold above the background, within the frame: " + r.notice());
 	}
 
 	/**
