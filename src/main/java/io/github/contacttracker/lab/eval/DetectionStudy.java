@@ -85,6 +85,8 @@ public final class DetectionStudy {
 	 * @param found particles with a spot within a quarter diameter
 	 * @param spots spots found
 	 * @param falseSpots spots without a particle within a quarter of its diameter
+	 * @param falseUnflagged of those, the spots without a warning flag: false spots a user who leaves out the flagged
+	 *        ones still keeps
 	 * @param duplicates spots left over near a particle already found
 	 * @param inside spots wholly inside the frame
 	 * @param unflagged of those, the spots without a warning flag
@@ -101,8 +103,8 @@ public final class DetectionStudy {
 	 * @param mainFlag the warning flag most of the flagged spots inside the frame carry, with how many of them do
 	 *        ({@code AT_BORDER 12/14}); empty where none is flagged
 	 */
-	public record Row(String scene, String band, int particles, int found, int spots, int falseSpots, int duplicates,
-		int inside, int unflagged, int measured, double biasX, double biasY, double biasAway, double spread,
+	public record Row(String scene, String band, int particles, int found, int spots, int falseSpots,
+		int falseUnflagged, int duplicates, int inside, int unflagged, int measured, double biasX, double biasY, double biasAway, double spread,
 		double bound, double reported, double errorOverReported, String mainFlag)
 	{
 
@@ -134,7 +136,7 @@ public final class DetectionStudy {
 
 	/** Sums of one band: counts, then the errors' sums and sums of squares, and the bound's mean square. */
 	private static final class Tally {
-		int particles, found, spots, falseSpots, duplicates, inside, unflagged, measured, bounded, sigmas;
+		int particles, found, spots, falseSpots, falseUnflagged, duplicates, inside, unflagged, measured, bounded, sigmas;
 		double sx, sy, sa, sxx, syy, bound2, sigma2, z2;
 		/** Per flag, the flagged spots inside the frame that carry it. */
 		final int[] flags = new int[Flag.values().length];
@@ -144,6 +146,7 @@ public final class DetectionStudy {
 			found += t.found;
 			spots += t.spots;
 			falseSpots += t.falseSpots;
+			falseUnflagged += t.falseUnflagged;
 			duplicates += t.duplicates;
 			inside += t.inside;
 			unflagged += t.unflagged;
@@ -174,7 +177,8 @@ public final class DetectionStudy {
 			final double bx = sx / n, by = sy / n;
 			final double spread = n < 2 ? Double.NaN : Math.sqrt(Math.max(0, (sxx - n * bx * bx + syy - n * by * by) / (2 *
 				(n - 1))));
-			return new Row(scene, band, particles, found, spots, falseSpots, duplicates, inside, unflagged, measured, bx,
+			return new Row(scene, band, particles, found, spots, falseSpots, falseUnflagged, duplicates, inside, unflagged,
+				measured, bx,
 				by, sa / n, spread, bounded == 0 ? Double.NaN : Math.sqrt(bound2 / bounded), sigmas == 0 ? Double.NaN : Math
 					.sqrt(sigma2 / sigmas), sigmas == 0 ? Double.NaN : Math.sqrt(z2 / sigmas), mainFlag());
 		}
@@ -260,7 +264,10 @@ public final class DetectionStudy {
 			tally.spots++;
 			if (k < 0) {
 				if (near[s]) tally.duplicates++;
-				else tally.falseSpots++;
+				else {
+					tally.falseSpots++;
+					if (!l.isFlagged()) tally.falseUnflagged++;
+				}
 			}
 			final double r = (k < 0 ? typical : scene.diameter(k)) / 2;
 			final boolean inside = l.x() - r >= -0.5 && l.x() + r <= w - 0.5 && l.y() - r >= -0.5 && l.y() + r <= h - 0.5;

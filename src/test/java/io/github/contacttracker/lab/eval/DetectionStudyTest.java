@@ -104,8 +104,9 @@ class DetectionStudyTest {
 	}
 
 	/**
-	 * One spot between the particles of the closest pair (a merge), flagged, and one far from any particle: one
-	 * particle found of two there, one false spot, and the band's unflagged share counts the flagged spot.
+	 * One spot between the particles of the closest pair (a merge), flagged, and two far from any particle, one of
+	 * them flagged: one particle found of two there, two false spots, one of them unflagged, and the band's unflagged
+	 * share counts the flagged spots.
 	 */
 	@Test
 	void aMergeAndAFalseSpotAreCounted() {
@@ -113,7 +114,7 @@ class DetectionStudyTest {
 		final List<double[]> far = scene.truth().get(0), near = scene.truth().get(1);
 		final List<List<Localization>> spots = List.of(List.of(spot(far.get(0)[0], far.get(0)[1], 0), spot(far.get(1)[0],
 			far.get(1)[1], 0)), List.of(spot(0.5 * (near.get(0)[0] + near.get(1)[0]) + 0.1, 0.5 * (near.get(0)[1] + near
-				.get(1)[1]), Flag.MERGED.bit()), spot(15, 15, 0)));
+				.get(1)[1]), Flag.MERGED.bit()), spot(15, 15, 0), spot(15, 40, Flag.NOT_CONVERGED.bit())));
 		final DetectionStudy study = new DetectionStudy();
 		study.add(scene, tracked(spots));
 		final List<DetectionStudy.Row> bands = study.bands();
@@ -123,8 +124,9 @@ class DetectionStudyTest {
 		assertEquals("0.5-0.75 D", close.band());
 		// at 0.5 D the pair's midpoint lies a quarter diameter from each particle: the merged spot finds one of them
 		assertEquals(0.5, close.recall());
-		assertEquals(1, close.falseSpots());
-		assertEquals(0.5, close.unflaggedShare());
+		assertEquals(2, close.falseSpots());
+		assertEquals(1, close.falseUnflagged());
+		assertEquals(1 / 3.0, close.unflaggedShare(), 1e-12);
 		assertEquals(0.5, DetectionStudy.failsAt(study.labels()), 1e-9);
 	}
 }
