@@ -42,6 +42,7 @@ import io.github.contacttracker.settings.TrackingSettings;
 import io.github.contacttracker.lab.sim.DetectionScene;
 import io.github.contacttracker.lab.sim.DetectionScenes;
 import io.github.contacttracker.lab.sim.ImageSimulator;
+import io.github.contacttracker.lab.sim.NoiseFreeImage;
 import io.github.contacttracker.lab.sim.NoiseModel;
 import io.github.contacttracker.lab.sim.Quantiser;
 import io.github.contacttracker.lab.sim.RadialProfile;
@@ -50,17 +51,19 @@ import net.imglib2.RandomAccessibleInterval;
 import net.imglib2.converter.Converters;
 import net.imglib2.type.numeric.real.FloatType;
 import net.imglib2.type.numeric.integer.UnsignedByteType;
+import net.imglib2.type.numeric.integer.UnsignedShortType;
 import net.imglib2.view.Views;
 
 /** What {@code track} measures when values are not given: the polarity of the particles among them. */
 class MeasuredSettingsTest {
 
 	/**
-	 * Bright-field-like particles as on the paper authors' 1.avi (a core saturating far above the 8-bit range, a deep
-	 * dark ring, a faint bright ring; D = 32 px), 40 in 320 x 320 px, some touching, background 136, noise 3.
+	 * Bright-field-like particles as on the paper authors' 1.avi (a core saturating far above the 8-bit range, a dark
+	 * ring reaching about as far below the background as the core above it, as 1.avi's do, a faint bright ring; D = 32
+	 * px), 40 in 320 x 320 px, some touching, background 136, noise 3.
 	 */
 	private static RandomAccessibleInterval<UnsignedByteType> brightField() {
-		final RadialProfile profile = r -> 200 * Math.exp(-r * r / 32) - 80 * Math.exp(-(r - 12) * (r - 12) / 32) + 12 *
+		final RadialProfile profile = r -> 200 * Math.exp(-r * r / 32) - 115 * Math.exp(-(r - 12) * (r - 12) / 32) + 12 *
 			Math.exp(-(r - 27) * (r - 27) / 32);
 		final SplittableRandom rnd = new SplittableRandom(3);
 		final List<double[]> centres = new ArrayList<>();
@@ -126,6 +129,41 @@ class MeasuredSettingsTest {
 		assertEquals(TrackingSettings.IMAGE, told.settings().get(TrackingSettings.DETECTION), told.notice());
 		assertEquals(24.0, told.settings().diameter(), told.notice());
 		assertTrue(told.notice().contains("tracked by the particles' image"), told.notice());
+	}
+
+	/**
+	 * Two particles dark inside a bright ring (a core 700 grey levels deep, a ring 350 high at the radius of 12 px),
+	 * two diameters apart (a tweezer pair's first frame), on a 16-bit ramp of light (3,000 to 4,500 across, 300 down), noise 80; {@code sign} -1 gives the same
+	 * particles inverted about the background: bright cores in dark rings.
+	 */
+	private static RandomAccessibleInterval<UnsignedShortType> ringsOnARamp(final double sign) {
+		final RadialProfile profile = r -> sign * (-700 * Math.exp(-r * r / (2 * 4.2 * 4.2)) + 350 * Math.exp(-(r - 12) *
+			(r - 12) / (2 * 2.2 * 2.2)));
+		final int w = 200, h = 140;
+		final NoiseFreeImage image = new ImageSimulator(profile, 3).render(List.of(new double[] { 76, 70 }, new double[] {
+			124, 70 }), w, h, 0);
+		final double[] p = image.pixels();
+		for (int y = 0; y < h; y++)
+			for (int x = 0; x < w; x++)
+				p[y * w + x] += 3000 + 1500.0 * x / w + 300.0 * y / h;
+		return Quantiser.toUnsignedShorts(image, NoiseModel.gaussian(80), new SplittableRandom(9)).image();
+	}
+
+	/**
+	 * Particles dark inside a bright ring reach further below the background than above it, 1.3 to 1.6 times as far,
+	 * and the inverted frame's blobs (their cores) stand out more: taken for dark, read relative to the light, which
+	 * on a ramp puts the frame's darkest pixel in its dark corner (the pair was taken for bright, the helper measured
+	 * noise's bumps 1.9 px across, and the run found 2 spots in 40 frames; with --particles dark, both in each).
+	 * Inverted (bright cores in dark rings, as a bright-field movie's), they stay bright.
+	 */
+	@Test
+	void darkCoresInBrightRingsOnARampAreTakenForDark() {
+		assertTrue(ProfileAnalysis.looksDark(ringsOnARamp(1)));
+		assertFalse(ProfileAnalysis.looksDark(ringsOnARamp(-1)));
+		final MeasuredSettings.Result r = MeasuredSettings.of("pair.tif", ringsOnARamp(1), true, SettingValues.defaults(),
+			Set.of(), FrontEnd.COMMAND_LINE);
+		assertTrue(r.settings().dark() && r.notice().contains("--particles dark"), r.notice());
+		assertEquals(24, r.settings().diameter(), 4, r.notice());
 	}
 
 	/**
