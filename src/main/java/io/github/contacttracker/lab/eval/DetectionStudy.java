@@ -134,6 +134,12 @@ public final class DetectionStudy {
 		}
 	}
 
+	/**
+	 * Expected values at or above this are clipped on 16 bits (before the camera's offset, at most 500 grey levels in
+	 * the scenes, far below it).
+	 */
+	static final double SIXTEEN_BIT_SATURATION = 65534.5;
+
 	/** Sums of one band: counts, then the errors' sums and sums of squares, and the bound's mean square. */
 	private static final class Tally {
 		int particles, found, spots, falseSpots, falseUnflagged, duplicates, inside, unflagged, measured, bounded, sigmas;
@@ -204,7 +210,8 @@ public final class DetectionStudy {
 			final double label = scene.labels()[t];
 			// a layout moved as a whole keeps its bound (it barely depends on the sub-pixel offset): computed once
 			if (scene.boundKnown() && (bound == null || !Double.isNaN(label))) bound = new SceneCramerRao(scene.scene(),
-				scene.truth().get(t), scene.width(), scene.height(), true);
+				scene.truth().get(t), scene.width(), scene.height(), true, scene.bitDepth() > 8 ? SIXTEEN_BIT_SATURATION
+					: SceneCramerRao.SATURATION);
 			final int frame = t;
 			final Tally byLabel = Double.isNaN(label) ? null : labels.computeIfAbsent(Math.round(label * 1e6) / 1e6,
 				l -> new Tally());

@@ -60,6 +60,16 @@ public final class SceneCramerRao {
 	public SceneCramerRao(final Scene scene, final List<double[]> centres, final int width, final int height,
 		final boolean scales)
 	{
+		this(scene, centres, width, height, scales, SATURATION);
+	}
+
+	/**
+	 * The bound of a scene whose camera clips at {@code saturation} (expected values at or above it are censored; 8-bit
+	 * scenes: {@link #SATURATION}, 16-bit ones 65534.5).
+	 */
+	public SceneCramerRao(final Scene scene, final List<double[]> centres, final int width, final int height,
+		final boolean scales, final double saturation)
+	{
 		final int n = centres.size();
 		perParticle = scales ? 4 : 3;
 		final int np = perParticle * n + 3;
@@ -92,7 +102,7 @@ public final class SceneCramerRao {
 		final double[] weight = new double[width * height];
 		for (int i = 0; i < weight.length; i++) {
 			final double v = model.pixels()[i];
-			weight[i] = v >= SATURATION || v <= FLOOR ? 0 : 1 / scene.variance(v);
+			weight[i] = v >= saturation || v <= FLOOR ? 0 : 1 / scene.variance(v);
 		}
 		final double[][] fisher = new double[np][np];
 		for (int a = 0; a < np; a++)

@@ -40,7 +40,8 @@ import net.imglib2.img.array.ArrayImg;
 public final class DetectionScenes {
 
 	/** The scenes {@link #of} knows, in order. */
-	public static final List<String> KEYS = List.of("pair-sweep", "dim", "dark", "clipped", "dense", "dense-bidisperse");
+	public static final List<String> KEYS = List.of("pair-sweep", "dim", "dark", "clipped", "dense", "dense-bidisperse",
+		"ring-pair");
 
 	/** Pixel size of every scene (nm). */
 	public static final double PIXEL_NM = 84.7;
@@ -71,6 +72,7 @@ public final class DetectionScenes {
 			case "clipped" -> clipped(frames, seed);
 			case "dense" -> dense(frames, seed);
 			case "dense-bidisperse" -> denseBidisperse(frames, seed);
+			case "ring-pair" -> ringPair(frames, seed);
 			default -> throw new InvalidInputException("--detection-scenes must be among " + String.join(",", KEYS) +
 				" or all, not '" + key + "'");
 		};
@@ -79,7 +81,7 @@ public final class DetectionScenes {
 	/** @return the frames a scene has unless told otherwise */
 	public static int defaultFrames(final String key) {
 		return switch (key.trim().toLowerCase(Locale.ROOT)) {
-			case "pair-sweep" -> SWEEP_STEPS;
+			case "pair-sweep", "ring-pair" -> SWEEP_STEPS;
 			case "dense", "dense-bidisperse" -> DENSE_FRAMES;
 			default -> FRAMES;
 		};
@@ -107,7 +109,19 @@ public final class DetectionScenes {
 			new BlurredDisc(d / 2, 1.5, 123), 37, 37 + 123 / 2.0, d, NoiseModel.gaussian(3));
 		final Scene scene = new Scene("pair-sweep", type, List.of(new Scene.Particle(-d, 0, 1, 1), new Scene.Particle(
 			d, 0, 1, 1)), 0, 0, 0, 0, type.threshold());
-		final int w = 96, h = 64;
+		return sweep(String.format(Locale.ROOT, "a pair of blurred discs (D 12 px, blur sigma 1.5 px, background 37, peak " +
+			"160, 8-bit, noise sigma 3) from %.1f D apart to %.1f D, one frame per separation", FARTHEST, CLOSEST), scene,
+			96, 64, 8, d, steps, seed);
+	}
+
+	/**
+	 * A pair of {@code scene}'s particles (diameter {@code d}) moved from {@link #FARTHEST} diameters apart to
+	 * {@link #CLOSEST} about the frame's centre (jittered by up to half a pixel), one frame per separation, along a line
+	 * tilted by 10 degrees; each frame labelled with its separation over the diameter and banded by it.
+	 */
+	private static DetectionScene sweep(final String description, final Scene scene, final int w, final int h,
+		final int bitDepth, final double d, final int steps, final long seed)
+	{
 		final SplittableRandom random = new SplittableRandom(seed);
 		final double cos = Math.cos(Math.toRadians(10)), sin = Math.sin(Math.toRadians(10));
 		final List<List<double[]>> centres = new ArrayList<>();
@@ -122,9 +136,32 @@ public final class DetectionScenes {
 			labels[i] = s;
 			bands.add(pairBand(s));
 		}
-		return movie("pair-sweep", String.format(Locale.ROOT, "a pair of blurred discs (D 12 px, blur sigma 1.5 px, " +
-			"background 37, peak 160, 8-bit, noise sigma 3) from %.1f D apart to %.1f D, one frame per separation",
-			FARTHEST, CLOSEST), scene, w, h, 8, 0, centres, labels, bands, List.of(), true, random);
+		return movie(scene.key(), description, scene, w, h, bitDepth, 0, centres, labels, bands, List.of(), true, random);
+	}
+
+	/**
+	 * A tweezer pair of particles dark inside a bright ring (microgels, or beads a little out of focus, as bright-field
+	 * tweezer footage shows them; D 24 px: a core 700 grey levels below the background, Gaussian of sigma 4.2 px, and a
+	 * ring 350 above it at the radius of 12 px, sigma 2.2 px) on a 16-bit ramp of light (3,900 at the frame's centre,
+	 * rising 7.5 grey levels a px along x and 2 along y), photon noise (2 grey levels a photon) and read noise 10,
+	 * pushed from {@link #FARTHEST} diameters apart to {@link #CLOSEST}, one frame per separation, along a line tilted
+	 * by 10 degrees; labels and bands as {@link #pairSweep}.
+	 *
+	 * @param steps separations (frames), at least 2
+	 */
+	public static DetectionScene ringPair(final int steps, final long seed) {
+		if (steps < 2) throw new InvalidInputException("a pair sweep needs at least 2 separations, not " + steps);
+		final double d = 24, background = 3900;
+		final RadialProfile ring = r -> -700 * Math.exp(-r * r / (2 * 4.2 * 4.2)) + 350 * Math.exp(-(r - 12) * (r - 12) /
+			(2 * 2.2 * 2.2));
+		final ParticleType type = new ParticleType("dark core in a bright ring D 24 px", d * PIXEL_NM / 1000, PIXEL_NM,
+			ring, background, background - 350, d, NoiseModel.gaussian(10));
+		final Scene scene = new Scene("ring-pair", type, List.of(new Scene.Particle(-d, 0, 1, 1), new Scene.Particle(d, 0,
+			1, 1)), 7.5, 2, 2, 10, type.threshold());
+		return sweep(String.format(Locale.ROOT, "a tweezer pair of particles dark inside a bright ring (D 24 px, core " +
+			"700 below the background, ring 350 above it) on a 16-bit ramp of light (7.5 and 2 grey levels a px about " +
+			"3,900), photon and read noise, from %.1f D apart to %.1f D, one frame per separation", FARTHEST, CLOSEST),
+			scene, 160, 96, 16, d, steps, seed);
 	}
 
 	/** @return the band of a pair {@code s} diameters apart */
