@@ -184,11 +184,11 @@ public final class MeasuredSettings {
 			final double[] range = ImagePlusFrames.range(seen, 0);
 			final Seen frame = new Seen(seen);
 			final double own = r.suggestedThreshold(integerData);
-			// (not where the helper measured the particles' rim, whose diameter stands, nor where auto refuses the frame
-			// for its other contrast's blobs: see below)
-			if (!diameter && !within(own, range) && !measuredRim(r) && !(own > range[1] && autoSeesOtherContrast(
-				settings, frame, particlesGiven)))
-			{
+			// auto refuses a frame whose helper's threshold lies above every pixel where its other contrast's blobs stand
+			// out more (see below): judged once, for the helper at the blobs' diameter and for the fall-back
+			final boolean otherContrast = own > range[1] && autoSeesOtherContrast(settings, frame, particlesGiven);
+			// (not where the helper measured the particles' rim, whose diameter stands)
+			if (!diameter && !within(own, range) && !measuredRim(r) && !otherContrast) {
 				final ProfileAnalysis.Result again = atTheBlobs(frame, range, integerData);
 				if (again != null) {
 					r = again;
@@ -201,12 +201,10 @@ public final class MeasuredSettings {
 			// bright rings around the dark cores of a bright-field movie, inverted). Below: the helper's background lies
 			// under the frame's darkest pixel (no dark gap between particles packed edge to edge).
 			final double t = v.get(TrackingSettings.THRESHOLD);
-			final boolean above = t > range[1];
-			if (above || t < range[0]) {
+			if (!within(t, range)) { // (the helper's own threshold, t == own: at the blobs' it lies within)
+				final boolean above = t > range[1];
 				final String side = above ? "above" : "below";
-				if (fallBack && imageCanTake(settings) && !(above && autoSeesOtherContrast(settings, frame,
-					particlesGiven)))
-				{
+				if (fallBack && imageCanTake(settings) && !otherContrast) {
 					// isolated blurred spheres whose rim the helper measured (only no threshold keeps two apart at
 					// contact): its diameter and r_out stand
 					final boolean rim = measuredRim(r);
@@ -274,10 +272,9 @@ public final class MeasuredSettings {
 	 */
 	@SuppressWarnings({ "rawtypes", "unchecked" })
 	private static ProfileAnalysis.Result atTheBlobs(final Seen seen, final double[] range, final boolean integerData) {
-		final double d = seen.blobs();
-		if (!(d > 0)) return null;
+		if (!(seen.blobs() > 0)) return null;
 		try {
-			final ProfileAnalysis.Result again = ProfileAnalysis.analyse(seen.frame, Math.round(d * 100) / 100.0, 0);
+			final ProfileAnalysis.Result again = ProfileAnalysis.analyse(seen.frame, seen.diameter(), 0);
 			return within(again.suggestedThreshold(integerData), range) ? again : null;
 		}
 		catch (final InvalidInputException e) {
@@ -392,12 +389,11 @@ public final class MeasuredSettings {
 			said.add(TrackingSettings.DETECTION, TrackingSettings.IMAGE);
 		}
 		if (!(v.diameter() > 0)) {
-			final double d = seen.blobs();
-			if (!(d > 0)) throw new InvalidInputException("cannot measure the particles on the first frame of " + name +
-				": " + InvalidInputException.oneLine(why.getMessage()) + ", and the frame holds no blob to measure " +
+			if (!(seen.blobs() > 0)) throw new InvalidInputException("cannot measure the particles on the first frame of " +
+				name + ": " + InvalidInputException.oneLine(why.getMessage()) + ", and the frame holds no blob to measure " +
 				"their diameter on; give " + words.name(TrackingSettings.DIAMETER) + " (" + words.measuresOne() + " measures " +
 				"one particle)", why);
-			v = v.with(TrackingSettings.DIAMETER, Math.round(d * 100) / 100.0);
+			v = v.with(TrackingSettings.DIAMETER, seen.diameter());
 			said.add(TrackingSettings.DIAMETER, optionValue(v.diameter()));
 		}
 		if (!thresholdGiven) {
@@ -456,6 +452,11 @@ public final class MeasuredSettings {
 		Plane plane() {
 			if (plane == null) plane = Plane.of(frame);
 			return plane;
+		}
+
+		/** @return the diameter of the frame's blobs to 0.01 px, as a value tracked with and said */
+		double diameter() {
+			return Math.round(blobs() * 100) / 100.0;
 		}
 
 		/** @return the diameter of the frame's blobs (not above 0 where it holds none) */

@@ -75,7 +75,7 @@ public final class Illumination {
 				r[i] = v[i] - surface(c, u[i], t[i]);
 				abs[i] = Math.abs(r[i]);
 			}
-			cut = OUTLIER * Statistics.MAD_TO_SIGMA * Statistics.median(abs.clone(), n);
+			cut = OUTLIER * Statistics.MAD_TO_SIGMA * Statistics.median(abs, n); // (abs is rewritten each round)
 			if (!(cut > 0)) break;
 		}
 		if (c == null) return v;

@@ -119,8 +119,8 @@ final class DetectionScenesRun {
 		out.printf(Locale.ROOT, "%n%s: %s; %d movies of %d frames, detection %s, diameter measured %s px (true %.1f), " +
 			"%.2f s per movie%n", r.key(), r.description(), r.movies(), r.framesPerMovie(), String.join(", ", r
 				.detections()), range(r.diameterMin(), r.diameterMax()), r.trueDiameter(), r.seconds());
-		out.println("  band        | recall  false (unfl) dupl | unflagged | bias x    bias y    away     (px) | spread (px) | " +
-			"CRB (px) | spread/CRB | error/σ | main flag");
+		out.println("  band        | recall  false (unfl) dupl | unflagged | bias x    bias y    away     (px) | " +
+			"spread (px) | CRB (px) | spread/CRB | error/σ | main flag");
 		for (final DetectionStudy.Row row : r.bands())
 			out.println(line(row));
 		if (r.bands().size() > 1) out.println(line(r.total()));
@@ -134,9 +134,9 @@ final class DetectionScenesRun {
 	}
 
 	private static String line(final DetectionStudy.Row row) {
-		return String.format(Locale.ROOT, "  %-11s | %6.1f%% %5d %6s %4d | %8.1f%% | %+8.4f %+8.4f %+8.4f      | %11.4f | %8.4f | %10.2f | %7.2f | %s",
-			row.band(), 100 * row.recall(), row.falseSpots(), "(" + row.falseUnflagged() + ")", row.duplicates(), 100 * row.unflaggedShare(), row.biasX(),
-			row.biasY(), row.biasAway(), row.spread(), row.bound(), row.spreadOverBound(), row.errorOverReported(), row
+		return String.format(Locale.ROOT, "  %-11s | %6.1f%% %5d %6s %4d | %8.1f%% | %+8.4f %+8.4f %+8.4f      | " +
+			"%11.4f | %8.4f | %10.2f | %7.2f | %s", row.band(), 100 * row.recall(), row.falseSpots(), "(" + row
+				.falseUnflagged() + ")", row.duplicates(), 100 * row.unflaggedShare(), row.biasX(), row.biasY(), row.biasAway(), row.spread(), row.bound(), row.spreadOverBound(), row.errorOverReported(), row
 				.mainFlag());
 	}
 
@@ -204,21 +204,22 @@ final class DetectionScenesRun {
 	}
 
 	private static final List<String> HEADER = List.of("band", "particles", "recall", "false", "false unflagged",
-		"duplicates",
-		"unflagged", "main flag", "bias x (px)", "bias y (px)", "bias away (px)", "spread (px)", "spread (nm)",
-		"CRB (px)", "spread / CRB", "reported σ (px)", "error / σ");
+		"duplicates", "unflagged", "main flag", "bias x (px)", "bias y (px)", "bias away (px)", "spread (px)",
+		"spread (nm)", "CRB (px)", "spread / CRB", "reported σ (px)", "error / σ");
 
 	private static List<String> cells(final DetectionStudy.Row row) {
 		final double nm = DetectionScenes.PIXEL_NM;
 		return List.of(row.band(), Integer.toString(row.particles()), percent(row.recall()), Integer.toString(row
-			.falseSpots()), Integer.toString(row.falseUnflagged()), Integer.toString(row.duplicates()), percent(row.unflaggedShare()), row.mainFlag(), signed(row
-				.biasX()), signed(row.biasY()), signed(row.biasAway()), four(row.spread()), two(row.spread() * nm), four(
-					row.bound()), two(row.spreadOverBound()), four(row.reported()), two(row.errorOverReported()));
+			.falseSpots()), Integer.toString(row.falseUnflagged()), Integer.toString(row.duplicates()), percent(row
+				.unflaggedShare()), row.mainFlag(), signed(row.biasX()), signed(row.biasY()), signed(row.biasAway()),
+			four(row.spread()), two(row.spread() * nm), four(row.bound()), two(row.spreadOverBound()), four(row
+				.reported()), two(row.errorOverReported()));
 	}
 
 	private static List<String> goalRow(final String key, final DetectionStudy.Row row) {
 		return List.of(key, row.band(), percent(row.recall()) + met(row.recall() >= RECALL_GOAL), row.falseSpots() +
-			(row.falseSpots() > 0 ? " (" + row.falseUnflagged() + " unflagged)" : "") + met(row.falseSpots() == 0), percent(row.unflaggedShare()) + met(row.unflaggedShare() >= UNFLAGGED_GOAL),
+			(row.falseSpots() > 0 ? " (" + row.falseUnflagged() + " unflagged)" : "") + met(row.falseSpots() == 0),
+			percent(row.unflaggedShare()) + met(row.unflaggedShare() >= UNFLAGGED_GOAL),
 			Double.isNaN(row.worstBias()) ? "none unflagged" + met(false) : four(row.worstBias()) + " ± " + four(row
 				.biasError()) + met(row.worstBias() <= BIAS_GOAL), Double.isNaN(row.bound()) ? "no bound"
 				: Report.two(row.spreadOverBound()) + met(row.spreadOverBound() <= BOUND_GOAL));

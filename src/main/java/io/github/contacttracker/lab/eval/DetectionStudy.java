@@ -104,8 +104,8 @@ public final class DetectionStudy {
 	 *        ({@code AT_BORDER 12/14}); empty where none is flagged
 	 */
 	public record Row(String scene, String band, int particles, int found, int spots, int falseSpots,
-		int falseUnflagged, int duplicates, int inside, int unflagged, int measured, double biasX, double biasY, double biasAway, double spread,
-		double bound, double reported, double errorOverReported, String mainFlag)
+		int falseUnflagged, int duplicates, int inside, int unflagged, int measured, double biasX, double biasY,
+		double biasAway, double spread, double bound, double reported, double errorOverReported, String mainFlag)
 	{
 
 		/** @return the share of particles found */
@@ -133,12 +133,6 @@ public final class DetectionStudy {
 			return spread / bound;
 		}
 	}
-
-	/**
-	 * Expected values at or above this are clipped on 16 bits (before the camera's offset, at most 500 grey levels in
-	 * the scenes, far below it).
-	 */
-	static final double SIXTEEN_BIT_SATURATION = 65534.5;
 
 	/** Sums of one band: counts, then the errors' sums and sums of squares, and the bound's mean square. */
 	private static final class Tally {
@@ -184,8 +178,7 @@ public final class DetectionStudy {
 			final double spread = n < 2 ? Double.NaN : Math.sqrt(Math.max(0, (sxx - n * bx * bx + syy - n * by * by) / (2 *
 				(n - 1))));
 			return new Row(scene, band, particles, found, spots, falseSpots, falseUnflagged, duplicates, inside, unflagged,
-				measured, bx,
-				by, sa / n, spread, bounded == 0 ? Double.NaN : Math.sqrt(bound2 / bounded), sigmas == 0 ? Double.NaN : Math
+				measured, bx, by, sa / n, spread, bounded == 0 ? Double.NaN : Math.sqrt(bound2 / bounded), sigmas == 0 ? Double.NaN : Math
 					.sqrt(sigma2 / sigmas), sigmas == 0 ? Double.NaN : Math.sqrt(z2 / sigmas), mainFlag());
 		}
 	}
@@ -210,8 +203,7 @@ public final class DetectionStudy {
 			final double label = scene.labels()[t];
 			// a layout moved as a whole keeps its bound (it barely depends on the sub-pixel offset): computed once
 			if (scene.boundKnown() && (bound == null || !Double.isNaN(label))) bound = new SceneCramerRao(scene.scene(),
-				scene.truth().get(t), scene.width(), scene.height(), true, scene.bitDepth() > 8 ? SIXTEEN_BIT_SATURATION
-					: SceneCramerRao.SATURATION);
+				scene.truth().get(t), scene.width(), scene.height(), true, SceneCramerRao.saturation(scene.bitDepth()));
 			final int frame = t;
 			final Tally byLabel = Double.isNaN(label) ? null : labels.computeIfAbsent(Math.round(label * 1e6) / 1e6,
 				l -> new Tally());

@@ -44,6 +44,14 @@ public final class SceneCramerRao {
 	static final double STEP = 1e-3;
 	/** Expected values at or above this are clipped on 8 bits: censored. */
 	public static final double SATURATION = 254.5;
+	/**
+	 * @return the expected value at or above which a camera of {@code bitDepth} bits clips: {@link #SATURATION} on 8
+	 *         bits, 65534.5 on more (the scenes' camera offset, at most 500 grey levels, far below it)
+	 */
+	public static double saturation(final int bitDepth) {
+		return bitDepth > 8 ? 65534.5 : SATURATION;
+	}
+
 	/** Expected values at or below this read 0 on 8 bits: censored. */
 	public static final double FLOOR = 0.5;
 
@@ -64,8 +72,8 @@ public final class SceneCramerRao {
 	}
 
 	/**
-	 * The bound of a scene whose camera clips at {@code saturation} (expected values at or above it are censored; 8-bit
-	 * scenes: {@link #SATURATION}, 16-bit ones 65534.5).
+	 * The bound of a scene whose camera clips at {@code saturation} (expected values at or above it are censored:
+	 * {@link #saturation(int)}).
 	 */
 	public SceneCramerRao(final Scene scene, final List<double[]> centres, final int width, final int height,
 		final boolean scales, final double saturation)

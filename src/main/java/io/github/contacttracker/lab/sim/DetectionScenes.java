@@ -103,7 +103,6 @@ public final class DetectionScenes {
 	 * @param steps separations (frames), at least 2
 	 */
 	public static DetectionScene pairSweep(final int steps, final long seed) {
-		if (steps < 2) throw new InvalidInputException("a pair sweep needs at least 2 separations, not " + steps);
 		final double d = 12;
 		final ParticleType type = new ParticleType("blurred disc D 12 px", d * PIXEL_NM / 1000, PIXEL_NM,
 			new BlurredDisc(d / 2, 1.5, 123), 37, 37 + 123 / 2.0, d, NoiseModel.gaussian(3));
@@ -122,6 +121,7 @@ public final class DetectionScenes {
 	private static DetectionScene sweep(final String description, final Scene scene, final int w, final int h,
 		final int bitDepth, final double d, final int steps, final long seed)
 	{
+		if (steps < 2) throw new InvalidInputException("a pair sweep needs at least 2 separations, not " + steps);
 		final SplittableRandom random = new SplittableRandom(seed);
 		final double cos = Math.cos(Math.toRadians(10)), sin = Math.sin(Math.toRadians(10));
 		final List<List<double[]>> centres = new ArrayList<>();
@@ -150,7 +150,6 @@ public final class DetectionScenes {
 	 * @param steps separations (frames), at least 2
 	 */
 	public static DetectionScene ringPair(final int steps, final long seed) {
-		if (steps < 2) throw new InvalidInputException("a pair sweep needs at least 2 separations, not " + steps);
 		final double d = 24, background = 3900;
 		final RadialProfile ring = r -> -700 * Math.exp(-r * r / (2 * 4.2 * 4.2)) + 350 * Math.exp(-(r - 12) * (r - 12) /
 			(2 * 2.2 * 2.2));
