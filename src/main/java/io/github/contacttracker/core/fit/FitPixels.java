@@ -181,7 +181,14 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 		for (int i = 0, j = 0; i < count; i++) {
 			if (!keep[i]) continue;
 			from[j] = candidate(i);
-			System.arraycopy(packed, PACKED * i, sp, PACKED * j, PACKED);
+			// (six numbers: copied in place, a call per pixel would cost more than the copy)
+			final int a = PACKED * i, b = PACKED * j;
+			sp[b] = packed[a];
+			sp[b + 1] = packed[a + 1];
+			sp[b + 2] = packed[a + 2];
+			sp[b + 3] = packed[a + 3];
+			sp[b + 4] = packed[a + 4];
+			sp[b + 5] = packed[a + 5];
 			j++;
 		}
 		return new FitPixels(null, null, null, null, m, null, null, HELD_BLOCK, null, from, sp);
@@ -260,8 +267,8 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 			}
 		}
 		if (count == 0) return new FitPixels(px, py, pv, new double[0], 0, mx, my, unit); // (none: not fitted)
-		return new FitPixels(px, py, pv, otherLight(px, py, count, x0, x1, ps, e, group, profile, nearby), count, mx,
-			my, unit);
+		return new FitPixels(px, py, pv, otherLight(RowRuns.of(px, py, count), count, x0, x1, py, ps, e, group, profile,
+			nearby), count, mx, my, unit);
 	}
 
 	/**
@@ -272,7 +279,7 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 	 *         or two.
 	 */
 	FitPixels relit(final Particle[] ps, final Estimate[] e, final int[] group, final EmpiricalProfile[] profile,
-		final Lit lit, final Nearby nearby)
+		final Lit lit, final Nearby nearby, final RowRuns rows)
 	{
 		final Estimate[] at = lit.at();
 		final int[] which = lit.which();
@@ -283,13 +290,12 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 		// most have moved: drawn afresh, once each rather than taken out and drawn again
 		if (2 * changed > which.length) {
 			final int[] xs = xRange();
-			light = otherLight(x, y, count, xs[0], xs[1], ps, e, group, profile, nearby);
+			light = otherLight(rows, count, xs[0], xs[1], y, ps, e, group, profile, nearby);
 			for (final int k : which)
 				at[k] = e[k];
 		}
 		else {
 			light = fixed.clone();
-			final RowRuns rows = RowRuns.of(x, y, count);
 			for (final int k : which) {
 				if (at[k] == e[k]) continue;
 				light(rows, light, at[k], -1, profile[k]);
@@ -377,14 +383,13 @@ record FitPixels(int[] x, int[] y, double[] value, double[] fixed, int count, do
 	 * The light of the reliable particles outside the group, at their current centres, amplitudes and scales, on
 	 * pixels in row order (x within {@code [x0, x1]}): each particle on the rows within its reach only.
 	 */
-	private static double[] otherLight(final int[] px, final int[] py, final int count, final int x0, final int x1,
+	private static double[] otherLight(final RowRuns rows, final int count, final int x0, final int x1, final int[] py,
 		final Particle[] ps, final Estimate[] e, final int[] group, final EmpiricalProfile[] profile,
 		final Nearby nearby)
 	{
 		final double[] fixed = new double[count];
 		if (count == 0) return fixed;
 		final int y0 = py[0], y1 = py[count - 1];
-		final RowRuns rows = RowRuns.of(px, py, count);
 		final int[] near = nearby == null ? null : nearby.near(x0, x1, y0, y1, nearby.reach() + 1);
 		final int m = near == null ? ps.length : near.length;
 		for (int i = 0; i < m; i++) {

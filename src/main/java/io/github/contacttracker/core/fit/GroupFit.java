@@ -244,7 +244,7 @@ public final class GroupFit {
 		final FitPixels candidates;
 		final Nearby nearby = kept == null ? null : kept.nearby;
 		if (kept != null && kept.candidates != null) candidates = kept.candidates.relit(ps, e, group, profile,
-			kept.lit, nearby);
+			kept.lit, nearby, kept.rows());
 		else {
 			candidates = FitPixels.gather(plane, ps, e, group, profile, window, censoring, nearby);
 			if (kept != null) kept.lit = candidates.litAt(ps, e, group, profile, nearby);
@@ -635,6 +635,18 @@ public final class GroupFit {
 		Nearby nearby;
 		/** J^T J of the member's latest fit, on the kept pixels (null: none) */
 		double[][] jtj;
+		/** the candidates' rows, and the candidates' x they were found from (the same pixels while that is) */
+		private RowRuns rows;
+		private int[] rowsOf;
+
+		/** @return the kept candidates' {@link RowRuns}, found once for each choice of them */
+		RowRuns rows() {
+			if (rowsOf != candidates.x()) {
+				rows = RowRuns.of(candidates.x(), candidates.y(), candidates.count());
+				rowsOf = candidates.x();
+			}
+			return rows;
+		}
 	}
 
 	/** The model on a fit's pixels at parameters {@code p}, as a pass over them computed it. */

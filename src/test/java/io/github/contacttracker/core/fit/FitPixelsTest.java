@@ -158,6 +158,31 @@ class FitPixelsTest {
 		assertTrue(compared > 20_000, "pixels compared: " + compared);
 	}
 
+	/**
+	 * A member's kept pixels may be none (every candidate chosen out near the clip levels): lit again after its
+	 * neighbours moved, it has none, and no light (it is then not fitted), rather than an internal error.
+	 */
+	@Test
+	void noPixelsKeptAreLitAgainAsNone() {
+		final Plane plane = frame();
+		final Particle[] ps = TrackAccess.particles(plane, TrackerParameters.of(120, 15));
+		final EmpiricalProfile[] profiles = alike(profile(), ps.length);
+		final Estimate[] e = new Estimate[ps.length];
+		for (int k = 0; k < ps.length; k++)
+			e[k] = ps[k].first();
+		final int[] group = { 0 };
+		final FitPixels gathered = FitPixels.gather(plane, ps, e, group, profiles, 20, Censoring.of(plane, 4));
+		final FitPixels.Lit lit = gathered.litAt(ps, e, group, profiles, null);
+		assertTrue(lit.which().length > 0, "neighbours light the member's pixels");
+		final FitPixels none = gathered.subset(new boolean[gathered.count()]).asCandidates();
+		assertEquals(0, none.count());
+		for (int k = 1; k < ps.length; k++) // every neighbour moved
+			e[k] = new Estimate(e[k].x() + 0.5, e[k].y(), 0, 0, 1, null, Double.NaN, Double.NaN, 1, 1);
+		final FitPixels relit = none.relit(ps, e, group, profiles, lit, null, RowRuns.of(none.x(), none.y(), 0));
+		assertEquals(0, relit.count());
+		assertEquals(0, relit.fixed().length);
+	}
+
 	@Test
 	void clippedPixelsAreLeftOut() {
 		final Plane plane = frame();
