@@ -148,7 +148,11 @@ final class NormalEquations {
 				}
 			}
 		}
-		return finish(px, np, h, jtj, jtr, r0, ru, rv, rss);
+		jtr[b0] = r0;
+		jtr[b0 + 1] = ru;
+		jtr[b0 + 2] = rv;
+		if (hessian) finish(px, np, h, jtj);
+		return rss;
 	}
 
 	/**
@@ -160,9 +164,7 @@ final class NormalEquations {
 	private double residualsOne(final FitPixels px, final double[] p, final EmpiricalProfile profile,
 		final double[] jtr, final double[] noise, final double[] models)
 	{
-		final int np = GroupFit.PER_PARTICLE + GroupFit.BACKGROUND;
-		final double rss = sumsOne(gradientsOne(px, p, profile, models), px, jtr, noise);
-		return finish(px, np, null, null, jtr, jtr[np - 3], jtr[np - 2], jtr[np - 1], rss);
+		return sumsOne(gradientsOne(px, p, profile, models), px, jtr, noise);
 	}
 
 	/**
@@ -179,7 +181,8 @@ final class NormalEquations {
 		final double rss = sumsOne(gr, px, jtr, noise);
 		final double[] h = new double[np * np]; // laid out as accumulate's flat lower triangle
 		ownBlockOne(h, np, b0, gr, px.packed(), px.count());
-		return finish(px, np, h, jtj, jtr, jtr[b0], jtr[b0 + 1], jtr[b0 + 2], rss);
+		finish(px, np, h, jtj);
+		return rss;
 	}
 
 	/**
@@ -395,15 +398,12 @@ final class NormalEquations {
 		h[row + 3] += g3 * e3;
 	}
 
-	/** The background's sums into J^T r; the background's own block and the full symmetric J^T J from {@code h}. */
-	private static double finish(final FitPixels px, final int np, final double[] h, final double[][] jtj,
-		final double[] jtr, final double r0, final double ru, final double rv, final double rss)
-	{
+	/**
+	 * The background's own block (summed once: {@link FitPixels#backgroundBlock}) and the full symmetric J^T J from
+	 * {@code h}.
+	 */
+	private static void finish(final FitPixels px, final int np, final double[] h, final double[][] jtj) {
 		final int b0 = np - GroupFit.BACKGROUND;
-		jtr[b0] = r0;
-		jtr[b0 + 1] = ru;
-		jtr[b0 + 2] = rv;
-		if (jtj == null) return rss;
 		final double[] bg = px.backgroundBlock();
 		for (int a = 0; a < GroupFit.BACKGROUND; a++)
 			for (int b = 0; b <= a; b++)
@@ -411,6 +411,5 @@ final class NormalEquations {
 		for (int a = 0; a < np; a++)
 			for (int b = 0; b <= a; b++)
 				jtj[a][b] = jtj[b][a] = h[a * np + b];
-		return rss;
 	}
 }
