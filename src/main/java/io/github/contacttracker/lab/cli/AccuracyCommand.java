@@ -75,11 +75,13 @@ final class AccuracyCommand extends ContactTrackerCli.Subcommand {
 		"Instead of the paper's protocol, the study of detection as a new user meets it: each scene tracked as " +
 			"'track MOVIE' tracks it with no value given, judged against its truth: pair-sweep (a blurred pair from 2 D " +
 			"apart to 0.5 D), dim (16-bit spots at SNR 3-5), dark (dark spheres on a bright background), clipped (a " +
-			"background clipped at 0), dense (a packed monolayer of one size), dense-bidisperse (of two sizes), or all; " +
+			"background clipped at 0), dense (a packed monolayer of one size), dense-bidisperse (of two sizes), ring-pair " +
+			"(a tweezer pair of ring-cored particles on a ramp of light), dense-polydisperse (a confocal slice of a " +
+			"packing of many sizes, background clipped at 0), or all; " +
 			"--reps is then the movies per scene (default 3)."));
 	private final Option<Integer> framesOption = options.add(Option.integer("--frames", "N", "With " +
-		"--detection-scenes: frames per movie (a pair sweep's separations). Default: 40 for pair-sweep, 2 for the " +
-		"dense monolayers, 5 for the " +
+		"--detection-scenes: frames per movie (a pair sweep's separations). Default: 40 for pair-sweep and ring-pair, " +
+		"2 for the dense scenes, 5 for the " +
 		"others."));
 	private final Option<Boolean> trueDiameterOption = options.add(Option.flag(List.of("--true-diameter"), "With " +
 		"--detection-scenes: give each scene's true diameter, as a control that tells the profile helper's diameter " +

@@ -53,14 +53,15 @@ final class DetectionScenesRun {
 	 * @param detections the detections used, each once
 	 * @param diameterMin the smallest diameter measured over the movies (px)
 	 * @param diameterMax the largest
-	 * @param trueDiameter the scene's nominal diameter (px)
+	 * @param trueMin the scene's smallest particle diameter (px)
+	 * @param trueMax its largest (the same where all are alike)
 	 * @param seconds the tracker's time per movie, measuring included, averaged
 	 * @param framesPerMovie frames of each movie
 	 * @param notices what the tracker said, each once
 	 */
 	record SceneResult(String key, String description, List<DetectionStudy.Row> bands, List<DetectionStudy.Row> labels,
-		DetectionStudy.Row total, Set<String> detections, double diameterMin, double diameterMax, double trueDiameter,
-		double seconds, int movies, int framesPerMovie, Set<String> notices)
+		DetectionStudy.Row total, Set<String> detections, double diameterMin, double diameterMax, double trueMin,
+		double trueMax, double seconds, int movies, int framesPerMovie, Set<String> notices)
 	{}
 
 	private DetectionScenesRun() {}
@@ -107,8 +108,13 @@ final class DetectionScenesRun {
 				dMax = Math.max(dMax, tracked.diameter());
 				seconds += tracked.seconds();
 			}
+			double trueMin = Double.POSITIVE_INFINITY, trueMax = 0;
+			for (int k = 0; k < scene.scene().particles().size(); k++) {
+				trueMin = Math.min(trueMin, scene.diameter(k));
+				trueMax = Math.max(trueMax, scene.diameter(k));
+			}
 			final SceneResult r = new SceneResult(key, scene.description(), study.bands(), study.labels(), study.total(),
-				detections, dMin, dMax, scene.scene().type().diameterPx(), seconds / movies, movies, n, notices);
+				detections, dMin, dMax, trueMin, trueMax, seconds / movies, movies, n, notices);
 			print(out, r);
 			results.add(r);
 		}
@@ -116,9 +122,9 @@ final class DetectionScenesRun {
 	}
 
 	private static void print(final PrintStream out, final SceneResult r) {
-		out.printf(Locale.ROOT, "%n%s: %s; %d movies of %d frames, detection %s, diameter measured %s px (true %.1f), " +
+		out.printf(Locale.ROOT, "%n%s: %s; %d movies of %d frames, detection %s, diameter measured %s px (true %s), " +
 			"%.2f s per movie%n", r.key(), r.description(), r.movies(), r.framesPerMovie(), String.join(", ", r
-				.detections()), range(r.diameterMin(), r.diameterMax()), r.trueDiameter(), r.seconds());
+				.detections()), range(r.diameterMin(), r.diameterMax()), range(r.trueMin(), r.trueMax()), r.seconds());
 		out.println("  band        | recall  false (unfl) dupl | unflagged | bias x    bias y    away     (px) | " +
 			"spread (px) | CRB (px) | spread/CRB | error/σ | main flag");
 		for (final DetectionStudy.Row row : r.bands())
@@ -176,10 +182,10 @@ final class DetectionScenesRun {
 				goals);
 		for (final SceneResult r : results) {
 			report.heading(r.key()).paragraph(String.format(Locale.ROOT, "%s. %d movies of %d frames; detection used: " +
-				"%s; diameter measured: %s px (true %.1f); %.2f s per movie (the profile helper's measuring included; " +
+				"%s; diameter measured: %s px (true %s); %.2f s per movie (the profile helper's measuring included; " +
 				"2 cores shared with another engineer's work, so noisy).", capital(r.description()), r.movies(), r
-					.framesPerMovie(), String.join(", ", r.detections()), range(r.diameterMin(), r.diameterMax()), r
-						.trueDiameter(), r.seconds()));
+					.framesPerMovie(), String.join(", ", r.detections()), range(r.diameterMin(), r.diameterMax()),
+				range(r.trueMin(), r.trueMax()), r.seconds()));
 			final List<List<String>> rows = new ArrayList<>();
 			for (final DetectionStudy.Row row : r.bands())
 				rows.add(cells(row));
@@ -189,7 +195,7 @@ final class DetectionScenesRun {
 				final double fails = DetectionStudy.failsAt(r.labels());
 				report.paragraph(Double.isNaN(fails) ? "Every particle found and no false spot at every separation."
 					: String.format(Locale.ROOT, "The first separation, from far to near, at which a particle was missed " +
-						"or a false spot found: **%.3f D** (%.1f px apart). Per separation:", fails, fails * r.trueDiameter()));
+						"or a false spot found: **%.3f D** (%.1f px apart). Per separation:", fails, fails * r.trueMin()));
 				final List<List<String>> sep = new ArrayList<>();
 				for (final DetectionStudy.Row row : r.labels())
 					sep.add(cells(row));

@@ -41,7 +41,7 @@ public final class DetectionScenes {
 
 	/** The scenes {@link #of} knows, in order. */
 	public static final List<String> KEYS = List.of("pair-sweep", "dim", "dark", "clipped", "dense", "dense-bidisperse",
-		"ring-pair");
+		"ring-pair", "dense-polydisperse");
 
 	/** Pixel size of every scene (nm). */
 	public static final double PIXEL_NM = 84.7;
@@ -72,6 +72,7 @@ public final class DetectionScenes {
 			case "clipped" -> clipped(frames, seed);
 			case "dense" -> dense(frames, seed);
 			case "dense-bidisperse" -> denseBidisperse(frames, seed);
+			case "dense-polydisperse" -> densePolydisperse(frames, seed);
 			case "ring-pair" -> ringPair(frames, seed);
 			default -> throw new InvalidInputException("--detection-scenes must be among " + String.join(",", KEYS) +
 				" or all, not '" + key + "'");
@@ -82,7 +83,7 @@ public final class DetectionScenes {
 	public static int defaultFrames(final String key) {
 		return switch (key.trim().toLowerCase(Locale.ROOT)) {
 			case "pair-sweep", "ring-pair" -> SWEEP_STEPS;
-			case "dense", "dense-bidisperse" -> DENSE_FRAMES;
+			case "dense", "dense-bidisperse", "dense-polydisperse" -> DENSE_FRAMES;
 			default -> FRAMES;
 		};
 	}
@@ -244,26 +245,73 @@ public final class DetectionScenes {
 			new BlurredDisc(d / 2, 1.2, 100), 30, 80, d, NoiseModel.gaussian(3));
 		final SplittableRandom random = new SplittableRandom(seed);
 		final int n = 2 * (int) Math.round(DENSE_AREA_FRACTION * w * h / (Math.PI / 4 * d * d * (1 + large * large)));
-		final double[] x = new double[n], y = new double[n], r = new double[n];
+		final double[] x = new double[n], y = new double[n], r = new double[n], scale = new double[n];
+		final List<String> groups = new ArrayList<>();
 		for (int i = 0; i < n; i++) {
 			x[i] = random.nextDouble(0, w - 1);
 			y[i] = random.nextDouble(0, h - 1);
-			r[i] = d / 2 * (i % 2 == 0 ? 1 : large);
-		}
-		unjam(x, y, r, w, h);
-		final List<double[]> layout = new ArrayList<>();
-		final List<Scene.Particle> ps = new ArrayList<>();
-		final List<String> groups = new ArrayList<>();
-		for (int i = 0; i < n; i++) {
-			layout.add(new double[] { x[i], y[i] });
-			ps.add(new Scene.Particle(x[i], y[i], i % 2 == 0 ? 1 : large, 1));
+			scale[i] = i % 2 == 0 ? 1 : large;
+			r[i] = d / 2 * scale[i];
 			groups.add(i % 2 == 0 ? SMALL : LARGE);
 		}
+		final List<double[]> layout = new ArrayList<>();
+		final List<Scene.Particle> ps = new ArrayList<>();
+		pack(x, y, r, scale, w, h, layout, ps);
 		final Scene scene = new Scene("dense-bidisperse", type, ps, 0, 0, 0, 0, type.threshold());
 		return still("dense-bidisperse", String.format(Locale.ROOT, "a dense monolayer of bright blurred discs, as " +
 			"many of D 10 px as of D 14 px (blur sigma 1.2 and 1.7 px, 100 above a background of 30, 8-bit, noise sigma " +
 			"3), area fraction %.1f, %d particles in 512 x 512 px, none alone", DENSE_AREA_FRACTION, n), scene, w, h, 8,
 			0, layout, groups, frames, false, random);
+	}
+
+	/** The polydisperse packing's smallest diameter (px), and its largest over its smallest. */
+	public static final double POLY_SMALLEST = 7, POLY_RANGE = 1.9;
+	/**
+	 * The polydisperse packing's discs are this share of its spheres' diameters: the confocal slice cuts each sphere
+	 * off its equator, so neighbours that touch show as discs a dark line apart.
+	 */
+	public static final double POLY_SECTION = 0.9;
+	/** The polydisperse packing's area fraction (of its spheres' equators; of its discs, {@link #POLY_SECTION} squared times it). */
+	public static final double POLY_AREA_FRACTION = 0.72;
+	/** The polydisperse packing's size bands: discs of diameter below 9 px, 9 to 11 px, and above. */
+	public static final String POLY_SMALL = "D 7-9", POLY_MEDIUM = "D 9-11", POLY_LARGE = "D 11-13.3";
+
+	/**
+	 * A confocal slice of a dense packing of spheres of many sizes, as public confocal stacks of colloidal packings show
+	 * them: bright flat discs of diameters spread evenly from {@value #POLY_SMALLEST} px to {@value #POLY_RANGE} times
+	 * that (blur sigma 0.9 px at the smallest, growing with the disc), 40 grey levels above a background of 8, 8-bit,
+	 * Gaussian pixel noise 9 (a per-pixel signal to noise of 4.4), at an area fraction of {@value #POLY_AREA_FRACTION}
+	 * in 256 x 256 px (the spheres' equators; the discs are {@value #POLY_SECTION} of them across), about 320 particles,
+	 * placed as in {@link #denseBidisperse}: none alone, most a dark line from their neighbours.
+	 */
+	public static DetectionScene densePolydisperse(final int frames, final long seed) {
+		final double d = POLY_SMALLEST;
+		final int w = 256, h = 256;
+		final ParticleType type = new ParticleType("bright flat disc D 7-13.3 px, dense", d * PIXEL_NM / 1000,
+			PIXEL_NM, new BlurredDisc(d / 2, 0.9, 40), 8, 28, d, NoiseModel.gaussian(9));
+		final SplittableRandom random = new SplittableRandom(seed);
+		// the mean equator of a sphere whose diameter is spread evenly over [D, R D]: D^2 (1 + R + R^2) / 3 times pi / 4
+		final double sphere = d / POLY_SECTION;
+		final double meanArea = Math.PI / 4 * sphere * sphere * (1 + POLY_RANGE + POLY_RANGE * POLY_RANGE) / 3;
+		final int n = (int) Math.round(POLY_AREA_FRACTION * w * h / meanArea);
+		final double[] x = new double[n], y = new double[n], r = new double[n], scale = new double[n];
+		final List<String> groups = new ArrayList<>();
+		for (int i = 0; i < n; i++) {
+			x[i] = random.nextDouble(0, w - 1);
+			y[i] = random.nextDouble(0, h - 1);
+			scale[i] = random.nextDouble(1, POLY_RANGE);
+			r[i] = d / 2 * scale[i] / POLY_SECTION;
+			final double disc = d * scale[i];
+			groups.add(disc < 9 ? POLY_SMALL : disc < 11 ? POLY_MEDIUM : POLY_LARGE);
+		}
+		final List<double[]> layout = new ArrayList<>();
+		final List<Scene.Particle> ps = new ArrayList<>();
+		pack(x, y, r, scale, w, h, layout, ps);
+		final Scene scene = new Scene("dense-polydisperse", type, ps, 0, 0, 0, 0, type.threshold());
+		return still("dense-polydisperse", String.format(Locale.ROOT, "a confocal slice of a dense packing of many " +
+			"sizes: bright flat discs of D 7 to 13.3 px spread evenly (blur sigma 0.9 px at the smallest), 40 above a " +
+			"background of 8, 8-bit, noise sigma 9, each %.2f of its sphere's diameter, spheres at area fraction %.2f, %d particles in 256 x 256 px, none alone",
+			POLY_SECTION, POLY_AREA_FRACTION, n), scene, w, h, 8, 0, layout, groups, frames, false, random);
 	}
 
 	/** The area fraction of the dense monolayer of one size. */
@@ -299,6 +347,20 @@ public final class DetectionScenes {
 			"sigma 1.7 px, 100 above a background of 30, 8-bit, noise sigma 3), area fraction %.1f, %d particles in " +
 			"256 x 256 px, none alone", DENSE_ONE_SIZE_FRACTION, n), scene, w, h, 8, 0, layout, java.util.Collections
 				.nCopies(n, TOUCHING), frames, false, random);
+	}
+
+	/**
+	 * Pushes the discs of radii {@code r} apart ({@link #unjam}) and adds each centre to {@code layout} and each
+	 * particle, of radial scale {@code scale}, to {@code ps}.
+	 */
+	private static void pack(final double[] x, final double[] y, final double[] r, final double[] scale, final int w,
+		final int h, final List<double[]> layout, final List<Scene.Particle> ps)
+	{
+		unjam(x, y, r, w, h);
+		for (int i = 0; i < x.length; i++) {
+			layout.add(new double[] { x[i], y[i] });
+			ps.add(new Scene.Particle(x[i], y[i], scale[i], 1));
+		}
 	}
 
 	/**

@@ -108,6 +108,45 @@ class DetectionScenesSimTest {
 		assertTrue(alone < 0.02 * ps.size(), alone + " of " + ps.size() + " discs more than 1 px from any other");
 	}
 
+	/**
+	 * The confocal packing of many sizes: spheres at area fraction 0.72 that never overlap, almost every one within
+	 * 1 px of touching another; each shows as a disc 0.9 of its diameter across, the discs' diameters spread evenly
+	 * from 7 to 13.3 px (each third of that range holds about a third of them), so that neighbours show a dark line
+	 * apart.
+	 */
+	@Test
+	void polydispersePackingIsPackedWithoutOverlapsOverItsRangeOfSizes() {
+		final DetectionScene s = DetectionScenes.densePolydisperse(1, 4);
+		final List<Scene.Particle> ps = s.scene().particles();
+		final List<double[]> c = s.truth().get(0);
+		double area = 0, smallest = Double.POSITIVE_INFINITY, largest = 0;
+		final int[] thirds = new int[3];
+		int alone = 0;
+		final double from = DetectionScenes.POLY_SMALLEST, to = from * DetectionScenes.POLY_RANGE;
+		for (int i = 0; i < ps.size(); i++) {
+			final double disc = s.diameter(i), sphere = disc / DetectionScenes.POLY_SECTION;
+			area += Math.PI / 4 * sphere * sphere;
+			smallest = Math.min(smallest, disc);
+			largest = Math.max(largest, disc);
+			thirds[Math.min(2, (int) (3 * (disc - from) / (to - from)))]++;
+			double gap = Double.POSITIVE_INFINITY;
+			for (int j = 0; j < ps.size(); j++) {
+				if (j == i) continue;
+				final double g = Math.hypot(c.get(i)[0] - c.get(j)[0], c.get(i)[1] - c.get(j)[1]) - 0.5 * (sphere + s
+					.diameter(j) / DetectionScenes.POLY_SECTION);
+				assertTrue(g > -0.011, "spheres " + i + " and " + j + " overlap by " + -g + " px");
+				gap = Math.min(gap, g);
+			}
+			if (gap > 1) alone++;
+		}
+		assertEquals(0.72, area / (256 * 256), 0.01);
+		assertTrue(alone < 0.02 * ps.size(), alone + " of " + ps.size() + " spheres more than 1 px from any other");
+		assertTrue(smallest >= from && smallest < from + 0.2, "smallest disc " + smallest);
+		assertTrue(largest <= to && largest > to - 0.2, "largest disc " + largest);
+		for (final int n : thirds)
+			assertTrue(n > 0.25 * ps.size() && n < 0.42 * ps.size(), java.util.Arrays.toString(thirds));
+	}
+
 	private static double[] moments(final ArrayImg<?, ?> f) {
 		final double[] v = new double[(int) (f.dimension(0) * f.dimension(1))];
 		int i = 0;
