@@ -162,6 +162,7 @@ public final class ModelSelection {
 	public static Result track(final Plane plane, final TrackerParameters params, final ProfileRefinement refinement,
 		final KindProfiles given, final double noise, final java.util.function.Supplier<Particle[]> bootstrap)
 	{
+		final Pixels pixels = new Pixels(plane, params.diameter());
 		if (given == null && bootstrap != null) {
 			final Particle[] first = bootstrap.get();
 			int reliable = 0;
@@ -171,7 +172,7 @@ public final class ModelSelection {
 			if (reliable >= MIN_BOOTSTRAP && reliable >= HEALTHY * first.length) {
 				final KindProfiles measured = refinement.fit(plane, first, params, null, noise).profiles();
 				if (measured != null) {
-					final Result taught = track(plane, params, refinement, measured, noise, null);
+					final Result taught = select(plane, pixels, params, refinement, measured, noise, null, null);
 					if (!(taught.removed() > taught.particles().length)) return taught;
 					// Most seeds left out: the areas that taught the profile were no single particles (in a packed
 					// field, areas of several that no outline tells apart teach a profile too wide, and the seeds'
@@ -180,14 +181,14 @@ public final class ModelSelection {
 					// it keeps more particles and leaves out almost no seed, as on a field of particles (that
 					// monolayer: 259 kept, 3 left out). Seeds on a textured background fit no one profile: there
 					// it leaves out a tenth to nine tenths of them (DeepTrack's focal planes), and the areas' stands.
-					final Result own = ownProfile(plane, params, refinement, noise);
+					final Result own = ownProfile(plane, pixels, params, refinement, noise);
 					return own.particles().length > taught.particles().length && own.removed() <= OWN_LEFT_OUT * own
 						.particles().length ? own : taught;
 				}
 			}
 		}
-		return given != null ? select(plane, params, refinement, given, noise, null, null) : ownProfile(plane, params,
-			refinement, noise);
+		return given != null ? select(plane, pixels, params, refinement, given, noise, null, null) : ownProfile(plane,
+			pixels, params, refinement, noise);
 	}
 
 	/**
@@ -201,19 +202,19 @@ public final class ModelSelection {
 	 * across in 184 x 181 px: no spot fitted, every one flagged). Else, and where that profile cannot be measured,
 	 * the profile is measured on every seed.
 	 */
-	private static Result ownProfile(final Plane plane, final TrackerParameters params,
+	private static Result ownProfile(final Plane plane, final Pixels pixels, final TrackerParameters params,
 		final ProfileRefinement refinement, final double noise)
 	{
 		final double d = params.diameter();
-		final Peaks seeds = ImageDetection.seeds(plane, d, noise);
+		final Peaks seeds = ImageDetection.seeds(pixels.bandPassed(), pixels.w, pixels.h, d, noise);
 		final int strong = seeds.standingApart(1 / ImageDetection.RELATIVE);
 		if (strong < seeds.count()) {
 			final Particle[] teaching = Seeded.at(plane, Arrays.copyOf(seeds.x(), strong), Arrays.copyOf(seeds.y(),
 				strong), d).particles();
 			final KindProfiles measured = refinement.fit(plane, teaching, params, null, noise).profiles();
-			if (measured != null) return select(plane, params, refinement, measured, noise, null, null);
+			if (measured != null) return select(plane, pixels, params, refinement, measured, noise, null, null);
 		}
-		return select(plane, params, refinement, null, noise, null, null);
+		return select(plane, pixels, params, refinement, null, noise, null, null);
 	}
 
 	/**
@@ -224,25 +225,24 @@ public final class ModelSelection {
 	public static Result refit(final Plane plane, final TrackerParameters params, final ProfileRefinement refinement,
 		final KindProfiles given, final double noise, final double[] x, final double[] y)
 	{
-		return select(plane, params, refinement, given, noise, x, y);
+		return select(plane, new Pixels(plane, params.diameter()), params, refinement, given, noise, x, y);
 	}
 
 	/**
 	 * The moves of {@link #track} from the image's seeds, or ({@code x} and {@code y} not null, profiles given) the
 	 * particles at {@code (x, y)} fitted, each with its significance, no move made.
 	 */
-	private static Result select(final Plane plane, final TrackerParameters params, final ProfileRefinement refinement,
-		final KindProfiles given, final double noise, final double[] x, final double[] y)
+	private static Result select(final Plane plane, final Pixels pixels, final TrackerParameters params,
+		final ProfileRefinement refinement, final KindProfiles given, final double noise, final double[] x,
+		final double[] y)
 	{
 		final boolean grow = x == null;
 		final double d = params.diameter();
-		final int w = plane.width(), h = plane.height();
-		final float[] data = BandPass.pixels(plane);
-		final ImageDetection.Scale scale = ImageDetection.Scale.of(d);
-		final float[][] cache = new float[1][];
+		final int w = pixels.w, h = pixels.h;
+		final float[] data = pixels.data;
+		final ImageDetection.Scale scale = pixels.scale;
 		// the seeds from the band-passed frame that the moves below use too
-		final Peaks seeds = grow ? ImageDetection.seeds(dataBp(plane, scale, data, w, h, cache), w, h, d, noise)
-			: Peaks.NONE;
+		final Peaks seeds = grow ? ImageDetection.seeds(pixels.bandPassed(), w, h, d, noise) : Peaks.NONE;
 		final double least = ImageDetection.RELATIVE * seeds.typicalHeight();
 		final double strong = ProfileMatch.STRONG * ProfileMatch.typicalMatching(seeds, data, w, h, given, noise);
 		// with the profiles known, no seed is fitted where the profile matches it at less than a faint particle's
@@ -280,7 +280,7 @@ public final class ModelSelection {
 					: MemberTests.undrawn(residual, w, h, e[k], of[k], noise);
 			if (round == ROUNDS || !grow) break;
 			// remove
-			final float[] framed = dataBp(plane, scale, data, w, h, cache);
+			final float[] framed = pixels.bandPassed();
 			final double[] match = new double[e.length];
 			for (int k = 0; k < e.length; k++)
 				match[k] = !ProfileMatch.weak(framed, w, h, e[k].x(), e[k].y(), strong) ? 1 : DrawnModel.drawn(e[k]) ? ProfileMatch
@@ -339,11 +339,11 @@ public final class ModelSelection {
 			final boolean[] split = new boolean[e.length];
 			for (int k = 0; k < e.length; k++)
 				if (keep[k] && round == 0 && (given == null || e[k].scale() >= WIDE) && significance[k] >= SIGNIFICANCE &&
-					split(dataBp(plane, scale, data, w, h, cache), w, h, e, k, d, PAIR, moves)) split[k] = true;
+					split(pixels.bandPassed(), w, h, e, k, d, PAIR, moves)) split[k] = true;
 				else if (keep[k]) moves.add(nextX[k], nextY[k], nextStart[k]);
 				else if (pinned(e[k]) && significance[k] >= SIGNIFICANCE) {
 					// a blob too large for one particle of its kind: two if it is elongated, else kept as it is
-					if (split(dataBp(plane, scale, data, w, h, cache), w, h, e, k, d, 0.125, moves)) split[k] = true;
+					if (split(pixels.bandPassed(), w, h, e, k, d, 0.125, moves)) split[k] = true;
 					else moves.add(e[k].x(), e[k].y());
 				}
 			for (int p = 0; p < more.count(); p++) {
@@ -459,11 +459,29 @@ public final class ModelSelection {
 	static final double WIDE = 1.2;
 
 	/** The band-passed frame, computed once per frame on first use. */
-	private static float[] dataBp(final Plane plane, final ImageDetection.Scale scale, final float[] data, final int w,
-		final int h, final float[][] cache)
-	{
-		if (cache[0] == null) cache[0] = BandPass.of(data, w, h, scale.sigma(), scale.halfWidth());
-		return cache[0];
+	/**
+	 * A frame's pixels (read only: every use copies what it changes) and its band-pass at the particles' scale, made
+	 * once when first asked: the seeds, the profile's own measurement and the moves of every {@link #select} of the
+	 * frame share them.
+	 */
+	private static final class Pixels {
+
+		final float[] data;
+		final int w, h;
+		final ImageDetection.Scale scale;
+		private float[] bandPassed;
+
+		Pixels(final Plane plane, final double diameter) {
+			data = BandPass.pixels(plane);
+			w = plane.width();
+			h = plane.height();
+			scale = ImageDetection.Scale.of(diameter);
+		}
+
+		float[] bandPassed() {
+			if (bandPassed == null) bandPassed = BandPass.of(data, w, h, scale.sigma(), scale.halfWidth());
+			return bandPassed;
+		}
 	}
 
 	/**
