@@ -329,19 +329,16 @@ public final class DetectionScenes {
 			new BlurredDisc(d / 2, 1.7, 100), 30, 80, d, NoiseModel.gaussian(3));
 		final SplittableRandom random = new SplittableRandom(seed);
 		final int n = (int) Math.round(DENSE_ONE_SIZE_FRACTION * w * h / (Math.PI / 4 * d * d));
-		final double[] x = new double[n], y = new double[n], r = new double[n];
+		final double[] x = new double[n], y = new double[n], r = new double[n], scale = new double[n];
 		for (int i = 0; i < n; i++) {
 			x[i] = random.nextDouble(0, w - 1);
 			y[i] = random.nextDouble(0, h - 1);
 			r[i] = d / 2;
+			scale[i] = 1;
 		}
-		unjam(x, y, r, w, h);
 		final List<double[]> layout = new ArrayList<>();
 		final List<Scene.Particle> ps = new ArrayList<>();
-		for (int i = 0; i < n; i++) {
-			layout.add(new double[] { x[i], y[i] });
-			ps.add(new Scene.Particle(x[i], y[i], 1, 1));
-		}
+		pack(x, y, r, scale, w, h, layout, ps);
 		final Scene scene = new Scene("dense", type, ps, 0, 0, 0, 0, type.threshold());
 		return still("dense", String.format(Locale.ROOT, "a dense monolayer of bright blurred discs of D 14 px (blur " +
 			"sigma 1.7 px, 100 above a background of 30, 8-bit, noise sigma 3), area fraction %.1f, %d particles in " +
@@ -351,7 +348,7 @@ public final class DetectionScenes {
 
 	/**
 	 * Pushes the discs of radii {@code r} apart ({@link #unjam}) and adds each centre to {@code layout} and each
-	 * particle, of radial scale {@code scale}, to {@code ps}.
+	 * particle, of radial scale {@code scale}, to {@code ps}: the packing of every dense scene.
 	 */
 	private static void pack(final double[] x, final double[] y, final double[] r, final double[] scale, final int w,
 		final int h, final List<double[]> layout, final List<Scene.Particle> ps)
