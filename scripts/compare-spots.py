@@ -24,13 +24,10 @@ def load(path):
     return frames
 
 
-def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("a")
-    ap.add_argument("b")
-    ap.add_argument("--within", type=float, default=5)
-    args = ap.parse_args()
-    a, b = load(args.a), load(args.b)
+def match(a, b, within):
+    """Matches the spots of each frame of two loaded tables nearest first, each used once, within `within`.
+
+    Returns the matched distances (sorted) and the counts of spots in a only and in b only."""
     distances, only_a, only_b = [], 0, 0
     for frame in sorted(set(a) | set(b)):
         sa, sb = a.get(frame, []), b.get(frame, [])
@@ -38,7 +35,7 @@ def main():
                        for j, q in enumerate(sb))
         used_a, used_b = set(), set()
         for d, i, j in pairs:
-            if d > args.within:
+            if d > within:
                 break
             if i in used_a or j in used_b:
                 continue
@@ -48,6 +45,16 @@ def main():
         only_a += len(sa) - len(used_a)
         only_b += len(sb) - len(used_b)
     distances.sort()
+    return distances, only_a, only_b
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("a")
+    ap.add_argument("b")
+    ap.add_argument("--within", type=float, default=5)
+    args = ap.parse_args()
+    distances, only_a, only_b = match(load(args.a), load(args.b), args.within)
     print(f"matched {len(distances)}, only in {args.a}: {only_a}, only in {args.b}: {only_b}")
     if distances:
         def q(p):
