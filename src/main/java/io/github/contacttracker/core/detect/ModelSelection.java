@@ -458,7 +458,6 @@ public final class ModelSelection {
 	 */
 	static final double WIDE = 1.2;
 
-	/** The band-passed frame, computed once per frame on first use. */
 	/**
 	 * A frame's pixels (read only: every use copies what it changes) and its band-pass at the particles' scale, made
 	 * once when first asked: the seeds, the profile's own measurement and the moves of every {@link #select} of the
