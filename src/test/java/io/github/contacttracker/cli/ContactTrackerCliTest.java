@@ -94,6 +94,45 @@ class ContactTrackerCliTest {
 	}
 
 	/**
+	 * {@code simulate --detection-scene}: the study's scene as a movie and its truth, the same particles the study
+	 * renders with that seed; a name it does not know, or a scene option beside it, is a one-line error and writes
+	 * nothing.
+	 */
+	@Test
+	void simulateWritesADetectionSceneAndItsTruth() throws IOException {
+		final Path tif = dir.resolve("clipped.tif"), truth = dir.resolve("clipped.csv");
+		final Object[] r = run("simulate", "--detection-scene", "clipped", "--frames", "2", "--seed", "7", "--out", tif
+			.toString(), "--truth", truth.toString());
+		assertEquals(0, r[0], (String) r[2]);
+		final io.github.contacttracker.lab.sim.DetectionScene scene = io.github.contacttracker.lab.sim.DetectionScenes
+			.of("clipped", 2, 7);
+		final ij.ImagePlus imp = ImageFiles.open(tif);
+		assertEquals(2, imp.getStackSize());
+		assertEquals(scene.width(), imp.getWidth());
+		final List<String> lines = Files.readAllLines(truth);
+		assertEquals("frame,particle,x_px,y_px,diameter_px,band", lines.get(0));
+		final int n = scene.scene().particles().size();
+		assertEquals(1 + 2 * n, lines.size());
+		for (int i = 1; i < lines.size(); i++) {
+			final String[] t = lines.get(i).split(",");
+			final double[] c = scene.truth().get(Integer.parseInt(t[0])).get(Integer.parseInt(t[1]));
+			assertEquals(c[0], Double.parseDouble(t[2]), 1e-6);
+			assertEquals(c[1], Double.parseDouble(t[3]), 1e-6);
+			assertEquals(scene.band(Integer.parseInt(t[0]), Integer.parseInt(t[1])), t[5]);
+		}
+		final Path other = dir.resolve("none.tif");
+		final Object[] bad = run("simulate", "--detection-scene", "crowd", "--out", other.toString(), "--truth", dir
+			.resolve("none.csv").toString());
+		assertEquals(ContactTrackerCli.EXIT_BAD_INPUT, bad[0]);
+		assertTrue(((String) bad[2]).contains("--detection-scene must be one of"), (String) bad[2]);
+		final Object[] both = run("simulate", "--detection-scene", "dim", "--scenario", "pair", "--out", other
+			.toString(), "--truth", dir.resolve("none.csv").toString());
+		assertEquals(ContactTrackerCli.EXIT_BAD_INPUT, both[0]);
+		assertTrue(((String) both[2]).contains("takes no --scenario"), (String) both[2]);
+		assertFalse(Files.exists(other));
+	}
+
+	/**
 	 * {@code --kinds N}: in the help; a value outside the core's limits, or no number, is a one-line error naming
 	 * it; a valid one reaches the core's parameters (the TrackMate file records the parameters tracked with).
 	 */

@@ -36,6 +36,8 @@ import java.util.Locale;
 import io.github.contacttracker.core.Numbers;
 import io.github.contacttracker.io.Calibration;
 import io.github.contacttracker.io.ImageFiles;
+import io.github.contacttracker.lab.sim.DetectionScene;
+import io.github.contacttracker.lab.sim.DetectionScenes;
 import io.github.contacttracker.lab.sim.PaperParticles;
 import io.github.contacttracker.lab.sim.ParticleType;
 import io.github.contacttracker.lab.sim.Scenario;
@@ -44,15 +46,23 @@ import io.github.contacttracker.settings.CommandOptions;
 import io.github.contacttracker.settings.Option;
 import io.github.contacttracker.cli.ContactTrackerCli;
 
-/** {@code simulate --scenario pair|triple --separation R --out stack.tif --truth truth.csv}. */
+/**
+ * {@code simulate --scenario pair|triple --separation R --out stack.tif --truth truth.csv}, or {@code simulate
+ * --detection-scene KEY --out movie.tif --truth truth.csv}: one of the detection study's scenes as a movie to open in
+ * Fiji or track, with its truth.
+ */
 final class SimulateCommand extends ContactTrackerCli.Subcommand {
 
 	private final Option<String> scenarioOption = options.add(Option.text("--scenario", "pair|triple", "Two " +
-		"particles, or three starting as a touching triangle.").asRequired());
+		"particles, or three starting as a touching triangle (required unless --detection-scene)."));
 	private final Option<Double> separationOption = options.add(Option.decimal("--separation", "R_OVER_D", "Centre " +
-		"distance over the diameter (1 = contact).").asRequired());
-	private final Option<Integer> framesOption = options.add(Option.integer("--frames", "N", "Frames.").withDefault(
-		"100"));
+		"distance over the diameter (1 = contact; required with --scenario)."));
+	private final Option<String> detectionSceneOption = options.add(Option.text("--detection-scene", "KEY",
+		"Instead of --scenario, one movie of a scene of 'accuracy --detection-scenes' (" + String.join(", ",
+			DetectionScenes.KEYS) + "), as the study renders it; its truth CSV holds each particle's frame, index, " +
+		"x, y (px), diameter (px) and band."));
+	private final Option<Integer> framesOption = options.add(Option.integer("--frames", "N", "Frames (with " +
+		"--detection-scene: default the study's).").withDefault("100"));
 	private final Option<Long> seedOption = options.add(Option.longInteger("--seed", "S", "Random seed.").withDefault(
 		"1"));
 	private final Option<Path> outOption = options.add(Option.path("--out", "stack.tif", "The TIFF to write.")
@@ -71,6 +81,9 @@ final class SimulateCommand extends ContactTrackerCli.Subcommand {
 
 	@Override
 	public Integer call() throws IOException {
+		if (options.given(detectionSceneOption)) return detectionScene();
+		if (!options.given(scenarioOption) || !options.given(separationOption))
+			throw new InvalidInputException("simulate needs --scenario and --separation, or --detection-scene");
 		final Scenario scenario = scenario(options.value(scenarioOption));
 		final double separation = options.value(separationOption);
 		final int frames = options.value(framesOption), bits = options.value(bitsOption);
@@ -97,6 +110,45 @@ final class SimulateCommand extends ContactTrackerCli.Subcommand {
 			"%s: %d frames %dx%d, %s of %s at r/D = %.3f; suggested --threshold %s --r-out %s; truth in %s%n",
 			stackFile, frames, stack.width(), stack.height(), scenario.name().toLowerCase(Locale.ROOT), type.name(),
 			separation, Numbers.fmt(type.threshold()), Numbers.fmt(type.rOut()), truthFile);
+		return 0;
+	}
+
+	/** Writes one movie of a detection-study scene and its truth. */
+	private int detectionScene() throws IOException {
+		final String key = options.value(detectionSceneOption).trim();
+		if (!DetectionScenes.KEYS.contains(key)) throw new InvalidInputException("--detection-scene must be one of " +
+			String.join(", ", DetectionScenes.KEYS) + ", not '" + key + "'");
+		if (options.given(scenarioOption) || options.given(separationOption) || options.given(particleOption) || options
+			.given(bitsOption)) throw new InvalidInputException("--detection-scene takes no --scenario, --separation, " +
+				"--particle or --bit-depth (the scene sets them)");
+		final int frames = options.given(framesOption) ? options.value(framesOption) : DetectionScenes.defaultFrames(
+			key);
+		if (frames < 1) throw new InvalidInputException("--frames must be at least 1");
+		final Path stackFile = ContactTrackerCli.output("--out", options.value(outOption)), truthFile = ContactTrackerCli
+			.output("--truth", options.value(truthOption));
+		final DetectionScene scene = DetectionScenes.of(key, frames, options.value(seedOption));
+		final Calibration cal = Calibration.ofPixelSize(scene.pixelSizeNm() / 1000, "micron");
+		ImageFiles.saveTiff(TimeSeries.of(stackFile.getFileName().toString(), scene.frames(), cal), stackFile);
+		try {
+			AtomicFile.write(truthFile, stream -> {
+				final BufferedWriter w = new BufferedWriter(new OutputStreamWriter(stream, StandardCharsets.UTF_8));
+				w.write("frame,particle,x_px,y_px,diameter_px,band\n");
+				for (int t = 0; t < scene.frames().size(); t++)
+					for (int k = 0; k < scene.truth().get(t).size(); k++) {
+						final double[] c = scene.truth().get(t).get(k);
+						w.write(String.format(Locale.ROOT, "%d,%d,%.6f,%.6f,%.4f,%s%n", t, k, c[0], c[1], scene.diameter(k),
+							scene.band(t, k)));
+					}
+				w.flush();
+			});
+		}
+		catch (final IOException e) {
+			Files.deleteIfExists(stackFile); // both or neither
+			throw e;
+		}
+		out.printf(Locale.ROOT, "%s: %d frames %dx%d of the detection scene %s (%d particles; %s); truth in %s%n",
+			stackFile, frames, scene.width(), scene.height(), key, scene.scene().particles().size(), scene.description(),
+			truthFile);
 		return 0;
 	}
 
