@@ -144,7 +144,7 @@ public final class GroupFit {
 		for (int q = 0; q < group.length; q++)
 			start[q] = e[group[q]];
 		final int it = fitGroup(plane, particles, e, group, profile, window, censoring, JOINT, null,
-			new NormalEquations());
+			new NormalEquations(censoring));
 		// flagged here, per group: a group that hit the limit says nothing of the frame's other groups
 		final int flag = it == 0 ? Flag.FELL_BACK.bit() : it < 0 ? Flag.NOT_CONVERGED.bit() : 0;
 		for (int q = 0; q < group.length; q++) {

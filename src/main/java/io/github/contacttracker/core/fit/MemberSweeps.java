@@ -108,7 +108,7 @@ final class MemberSweeps {
 			kept[q] = new GroupFit.Kept();
 			kept[q].nearby = nearby; // (null: every particle scanned)
 		}
-		final NormalEquations passes = new NormalEquations(); // (its work array serves every member's fits)
+		final NormalEquations passes = new NormalEquations(censoring); // (its work arrays serve every member's fits)
 		int most = 0;
 		boolean any = true;
 		long sweepStart = 0;

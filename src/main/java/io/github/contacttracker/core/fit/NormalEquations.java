@@ -21,6 +21,7 @@
  */
 package io.github.contacttracker.core.fit;
 
+import io.github.contacttracker.core.image.Censoring;
 import io.github.contacttracker.core.profile.EmpiricalProfile;
 
 /**
@@ -29,14 +30,36 @@ import io.github.contacttracker.core.profile.EmpiricalProfile;
  * pass for groups of more than one, and two for groups of one (with and without J^T J, their sums in local variables,
  * bit for bit the same): large groups are fitted member by member, so on dense footage groups of one are most of the work,
  * and sums kept in local variables spare that pass the array traffic of the general one (its speed: speed.md).
+ * <p>
+ * Where the floor is linked ({@link Censoring#mean}), a pixel whose model comes near it is fitted through the link:
+ * its residual against the clipped noise's mean, its gradient (the background plane's too) times the link's slope.
+ * The passes find those pixels as they go (a comparison a pixel; none on a frame without the link) and correct the
+ * sums over them alone, so the loops of every other pixel stay as they are.
  */
 final class NormalEquations {
 
 	/** A group of one's J^T J pass: each pixel's gradient and residual ({@value #GRADIENT} numbers), grown on demand. */
 	private double[] gradients = new double[0];
 
+	/** The link at the floor (null: none), and the model value below which a pixel goes through it. */
+	private final Censoring link;
+	private final double linkTop;
+
+	/** A group of one's pixels fitted through the link in its latest pass: their index and slope, grown on demand. */
+	private int[] linkedAt = new int[0];
+	private double[] linkedSlope = new double[0];
+	private int linked;
+
 	/** Passes with their own work array: one per fit (not shared between threads). */
-	NormalEquations() {}
+	NormalEquations() {
+		this(null);
+	}
+
+	/** Passes with the floor linked where {@code censoring} links it (null: nowhere). */
+	NormalEquations(final Censoring censoring) {
+		link = censoring != null && censoring.linked() ? censoring : null;
+		linkTop = link == null ? Double.NEGATIVE_INFINITY : link.linkTop();
+	}
 
 	/** The numbers per pixel of a group of one's first loop: the gradient's four and the residual. */
 	private static final int GRADIENT = 5;
@@ -63,7 +86,7 @@ final class NormalEquations {
 	}
 
 	/** {@link #accumulate} for a group of more than one. */
-	private static double accumulateGroup(final FitPixels px, final double[] p, final int n,
+	private double accumulateGroup(final FitPixels px, final double[] p, final int n,
 		final EmpiricalProfile[] profile, final double[][] jtj, final double[] jtr, final double[] noise,
 		final double[] models)
 	{
@@ -93,6 +116,8 @@ final class NormalEquations {
 			perScale[q] = 1 / sc;
 		}
 		double rss = 0, r0 = 0, ru = 0, rv = 0;
+		// the background's own block over the linked pixels: (s^2 - 1) times {1, u, v} x {1, u, v}, row by row
+		double[] linkedBlock = null;
 		for (int i = 0, o = 0; i < count; i++, o += FitPixels.PACKED) {
 			final double x = pixels[o], y = pixels[o + 1], u = pixels[o + 2], v = pixels[o + 3];
 			double model = pb + pu * u + pv * v + pixels[o + 5];
@@ -120,11 +145,23 @@ final class NormalEquations {
 				within[m++] = b;
 			}
 			if (models != null) models[i] = model;
-			final double res = pixels[o + 4] - model;
+			double res = pixels[o + 4] - model, one = 1, su = u, sv = v;
+			if (model < linkTop) { // through the link: the clipped noise's mean, every gradient times its slope
+				one = link.slope(model);
+				res = pixels[o + 4] - link.mean(model);
+				su = one * u;
+				sv = one * v;
+				for (int c = 0; c < GroupFit.PER_PARTICLE * m; c++)
+					g[c] *= one;
+				if (hessian) {
+					if (linkedBlock == null) linkedBlock = new double[GroupFit.BACKGROUND * GroupFit.BACKGROUND];
+					addBackgroundBlock(linkedBlock, one * one - 1, u, v);
+				}
+			}
 			rss += res * res;
-			r0 += res;
-			ru += res * u;
-			rv += res * v;
+			r0 += res * one;
+			ru += res * su;
+			rv += res * sv;
 			for (int ma = 0; ma < m; ma++) {
 				final int ba = within[ma], c = GroupFit.PER_PARTICLE * ma;
 				final double g0 = g[c], g1 = g[c + 1], g2 = g[c + 2], g3 = g[c + 3];
@@ -140,7 +177,8 @@ final class NormalEquations {
 					noise[ba + 3] += wy * r2;
 				}
 				if (!hessian) continue;
-				ownBlock(h, np, b0, ba, u, v, g0, g1, g2, g3);
+				ownBlock(h, np, b0, ba, su, sv, g0, g1, g2, g3);
+				if (one != 1) backgroundRows(h, np, b0, ba, one - 1, 0, 0, g0, g1, g2, g3);
 				// with the members before it within reach (their columns lie left of the diagonal)
 				for (int mb = 0; mb < ma; mb++) {
 					final int e = GroupFit.PER_PARTICLE * mb;
@@ -151,8 +189,32 @@ final class NormalEquations {
 		jtr[b0] = r0;
 		jtr[b0 + 1] = ru;
 		jtr[b0 + 2] = rv;
-		if (hessian) finish(px, np, h, jtj);
+		if (hessian) {
+			finish(px, np, h, jtj);
+			if (linkedBlock != null) addToBackground(jtj, b0, linkedBlock);
+		}
 		return rss;
+	}
+
+	/** Adds {@code w} times {1, u, v} x {1, u, v} to the background's 3 x 3 block {@code block}, row by row. */
+	private static void addBackgroundBlock(final double[] block, final double w, final double u, final double v) {
+		final double wu = w * u, wv = w * v;
+		block[0] += w;
+		block[1] += wu;
+		block[2] += wv;
+		block[3] += wu;
+		block[4] += wu * u;
+		block[5] += wu * v;
+		block[6] += wv;
+		block[7] += wv * u;
+		block[8] += wv * v;
+	}
+
+	/** Adds the 3 x 3 {@code block} to the background's block of the full J^T J (from row and column {@code b0}). */
+	private static void addToBackground(final double[][] jtj, final int b0, final double[] block) {
+		for (int a = 0; a < GroupFit.BACKGROUND; a++)
+			for (int b = 0; b < GroupFit.BACKGROUND; b++)
+				jtj[b0 + a][b0 + b] += block[a * GroupFit.BACKGROUND + b];
 	}
 
 	/**
@@ -164,7 +226,10 @@ final class NormalEquations {
 	private double residualsOne(final FitPixels px, final double[] p, final EmpiricalProfile profile,
 		final double[] jtr, final double[] noise, final double[] models)
 	{
-		return sumsOne(gradientsOne(px, p, profile, models), px, jtr, noise);
+		final double[] gr = gradientsOne(px, p, profile, models);
+		final double rss = sumsOne(gr, px, jtr, noise);
+		if (linked > 0) linkedOne(gr, px, jtr, null, GroupFit.PER_PARTICLE + GroupFit.BACKGROUND);
+		return rss;
 	}
 
 	/**
@@ -181,8 +246,35 @@ final class NormalEquations {
 		final double rss = sumsOne(gr, px, jtr, noise);
 		final double[] h = new double[np * np]; // laid out as accumulate's flat lower triangle
 		ownBlockOne(h, np, b0, gr, px.packed(), px.count());
+		final double[] linkedBlock = linked > 0 ? linkedOne(gr, px, jtr, h, np) : null;
 		finish(px, np, h, jtj);
+		if (linkedBlock != null) addToBackground(jtj, b0, linkedBlock);
 		return rss;
+	}
+
+	/**
+	 * A group of one's sums corrected over its pixels fitted through the link in the latest {@link #gradientsOne}
+	 * (whose gradients it scaled by the slope {@code s} already): the background plane's J^T r by {@code s - 1} times
+	 * its terms and, where {@code h} is not null, its rows against the member likewise; returns the correction of
+	 * the background's own block (null without {@code h}).
+	 */
+	private double[] linkedOne(final double[] gr, final FitPixels px, final double[] jtr, final double[] h,
+		final int np)
+	{
+		final int b0 = GroupFit.PER_PARTICLE;
+		final double[] pixels = px.packed();
+		final double[] block = h == null ? null : new double[GroupFit.BACKGROUND * GroupFit.BACKGROUND];
+		for (int j = 0; j < linked; j++) {
+			final int i = linkedAt[j], q = GRADIENT * i, o = FitPixels.PACKED * i;
+			final double s = linkedSlope[j], u = pixels[o + 2], v = pixels[o + 3], res = gr[q + 4];
+			jtr[b0] += (s - 1) * res;
+			jtr[b0 + 1] += (s - 1) * res * u;
+			jtr[b0 + 2] += (s - 1) * res * v;
+			if (h == null) continue;
+			backgroundRows(h, np, b0, 0, s - 1, (s - 1) * u, (s - 1) * v, gr[q], gr[q + 1], gr[q + 2], gr[q + 3]);
+			addBackgroundBlock(block, s * s - 1, u, v);
+		}
+		return block;
 	}
 
 	/**
@@ -203,6 +295,7 @@ final class NormalEquations {
 		final double reach2 = R * sc * (R * sc), perScale = 1 / sc;
 		if (gradients.length < GRADIENT * count) gradients = new double[GRADIENT * count];
 		final double[] gr = gradients;
+		linked = 0;
 		for (int i = 0, o = 0, q = 0; i < count; i++, o += FitPixels.PACKED, q += GRADIENT) {
 			final double u = pixels[o + 2], v = pixels[o + 3];
 			double model = pb + pu * u + pv * v + pixels[o + 5];
@@ -224,14 +317,40 @@ final class NormalEquations {
 					g3 = -d * rs;
 				}
 			}
+			if (models != null) models[i] = model;
+			if (model < linkTop) {
+				linkedPixel(gr, q, i, model, pixels[o + 4], g0, g1, g2, g3);
+				continue;
+			}
 			gr[q] = g0;
 			gr[q + 1] = g1;
 			gr[q + 2] = g2;
 			gr[q + 3] = g3;
-			if (models != null) models[i] = model;
 			gr[q + 4] = pixels[o + 4] - model;
 		}
 		return gr;
+	}
+
+	/**
+	 * A group of one's pixel {@code i} (at {@code q} in {@code gr}) of model {@code model} and value {@code value},
+	 * fitted through the link: its gradient times the slope, its residual against the clipped noise's mean; noted for
+	 * {@link #linkedOne}.
+	 */
+	private void linkedPixel(final double[] gr, final int q, final int i, final double model, final double value,
+		final double g0, final double g1, final double g2, final double g3)
+	{
+		final double s = link.slope(model);
+		gr[q] = s * g0;
+		gr[q + 1] = s * g1;
+		gr[q + 2] = s * g2;
+		gr[q + 3] = s * g3;
+		gr[q + 4] = value - link.mean(model);
+		if (linked == linkedAt.length) {
+			linkedAt = java.util.Arrays.copyOf(linkedAt, Math.max(16, 2 * linked));
+			linkedSlope = java.util.Arrays.copyOf(linkedSlope, linkedAt.length);
+		}
+		linkedAt[linked] = i;
+		linkedSlope[linked++] = s;
 	}
 
 	/**
@@ -353,11 +472,21 @@ final class NormalEquations {
 		h[row3 + 1] += g3 * g1;
 		h[row3 + 2] += g3 * g2;
 		h[row3 + 3] += g3 * g3;
+		backgroundRows(h, np, b0, ba, 1, u, v, g0, g1, g2, g3);
+	}
+
+	/**
+	 * Adds a member's terms {@code g0..g3} (from parameter {@code ba}) to the background plane's three rows of J^T J on
+	 * the flat {@code h}, times {@code one}, {@code u} and {@code v}.
+	 */
+	private static void backgroundRows(final double[] h, final int np, final int b0, final int ba, final double one,
+		final double u, final double v, final double g0, final double g1, final double g2, final double g3)
+	{
 		final int bg0 = b0 * np + ba, bg1 = bg0 + np, bg2 = bg1 + np;
-		h[bg0] += g0;
-		h[bg0 + 1] += g1;
-		h[bg0 + 2] += g2;
-		h[bg0 + 3] += g3;
+		h[bg0] += one * g0;
+		h[bg0 + 1] += one * g1;
+		h[bg0 + 2] += one * g2;
+		h[bg0 + 3] += one * g3;
 		h[bg1] += u * g0;
 		h[bg1 + 1] += u * g1;
 		h[bg1 + 2] += u * g2;

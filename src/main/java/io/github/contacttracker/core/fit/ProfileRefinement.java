@@ -160,7 +160,8 @@ public final class ProfileRefinement implements Refinement {
 			kind = KindProfiles.kindsOf(kinds, f);
 		}
 		// measured here: alternated with the centres until these stop moving (see the stack tracker)
-		// pixels near the clip levels, chosen by the model (see Censoring), at the frame's noise
+		// pixels near the clip levels, chosen by the model or linked to it (see Censoring), at the frame's noise, or
+		// at a clipped background's own as the profile measures it
 		final Censoring censoring = Censoring.of(plane, noise);
 		final int rounds = given == null ? PROFILE_ROUNDS : 1;
 		KindProfiles profiles = given;
@@ -191,7 +192,7 @@ public final class ProfileRefinement implements Refinement {
 				r = Deblender.refine(plane, ps, start, of, disc);
 			}
 			else r = GroupFit.refine(plane, ps, start, of, params.groupingDistance(), params.rOut(),
-				censoring);
+				censoring.withFloorNoise(profiles.main().floorNoise()));
 			final Estimate[] next = r.estimates();
 			for (int k = 0; k < next.length; k++) {
 				// (a group's fit: its own iterations; the deblender's: the frame's)
@@ -267,7 +268,8 @@ public final class ProfileRefinement implements Refinement {
 			final EmpiricalProfile[] before = new EmpiricalProfile[count];
 			for (int c = 0; c < count; c++)
 				before[c] = fittedWith.profile(c);
-			previous = new ProfileEstimator.Previous(before, censoring, ampNorm, scaleNorm);
+			previous = new ProfileEstimator.Previous(before, censoring.withFloorNoise(before[0].floorNoise()), ampNorm,
+				scaleNorm);
 		}
 		estimator.add(plane, cx, cy, amp, scale, masked, at, previous);
 		try {

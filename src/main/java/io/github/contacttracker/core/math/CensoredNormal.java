@@ -83,9 +83,17 @@ public final class CensoredNormal {
 	 *         Functions, 1964)
 	 */
 	public static double normalCdf(final double z) {
+		return normalCdf(z, normalDensity(z));
+	}
+
+	/**
+	 * @return {@link #normalCdf(double)} from the density at {@code z} already known ({@code density}, which holds
+	 *         the approximation's one exponential)
+	 */
+	public static double normalCdf(final double z, final double density) {
 		final double x = Math.abs(z) / Math.sqrt(2), t = 1 / (1 + 0.3275911 * x);
 		final double tail = 0.5 * t * (0.254829592 + t * (-0.284496736 + t * (1.421413741 + t * (-1.453152027 + t *
-			1.061405429)))) * Math.exp(-x * x);
+			1.061405429)))) * density * Math.sqrt(2 * Math.PI);
 		return z >= 0 ? 1 - tail : tail;
 	}
 }

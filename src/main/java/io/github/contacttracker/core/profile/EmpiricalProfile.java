@@ -39,6 +39,8 @@ public final class EmpiricalProfile implements Serializable {
 	private final double spacing;
 	private final double[] coefficients;
 	private final double background;
+	/** The noise of a background clipped at the floor, measured as a censored normal with it; NaN where none. */
+	private final double floorNoise;
 	private final double radius;
 	private final int samples;
 	/** Tables of P and P' at {@link #TABLE_STEP} for fast lookups. */
@@ -57,9 +59,21 @@ public final class EmpiricalProfile implements Serializable {
 	 * @param samples pixels that went into the estimate
 	 */
 	EmpiricalProfile(final double spacing, final double[] coefficients, final double background, final int samples) {
+		this(spacing, coefficients, background, samples, Double.NaN);
+	}
+
+	/**
+	 * As {@link #EmpiricalProfile(double, double[], double, int)}, measured on frames whose background is clipped at
+	 * the floor: {@code floorNoise} that background's noise standard deviation (grey levels), measured with it as a
+	 * censored normal, NaN where not.
+	 */
+	EmpiricalProfile(final double spacing, final double[] coefficients, final double background, final int samples,
+		final double floorNoise)
+	{
 		this.spacing = spacing;
 		this.coefficients = coefficients.clone();
 		this.background = background;
+		this.floorNoise = floorNoise;
 		this.radius = (coefficients.length + 1) * spacing;
 		this.samples = samples;
 		final int n = (int) Math.ceil(radius / TABLE_STEP) + 2;
@@ -141,6 +155,15 @@ public final class EmpiricalProfile implements Serializable {
 	/** @return the background grey level */
 	public double background() {
 		return background;
+	}
+
+	/**
+	 * @return the noise standard deviation of the frames' background where it is clipped at the floor, measured with
+	 *         the profile as a censored normal (which the fit links the floor with: {@code Censoring#withFloorNoise});
+	 *         NaN where the background is not clipped, or its spread is no noise
+	 */
+	public double floorNoise() {
+		return floorNoise;
 	}
 
 	/** @return the distance beyond which the profile is zero (px) */

@@ -44,7 +44,8 @@ import net.imglib2.type.numeric.RealType;
  * Pixels near spots flagged as merged or degenerate are left out, since their centres do not describe them, and
  * near spots cut by the border ({@code AT_BORDER}), whose amplitudes, scales and centres the visible part leaves
  * loose (on a crop of a movie they can make the profile change by up to its height from round to round);
- * so are clipped pixels and, given the previous estimate, those near a clip level ({@link Censoring}).
+ * so are clipped pixels and, given the previous estimate, those near a clip level ({@link Censoring}); where the
+ * floor is linked, the pixels near it enter instead, linearised about the previous estimate's model.
  * <p>
  * An estimator made {@link #ProfileEstimator(double, int, Linearisation) from the linearisation} of an earlier estimate takes
  * one chord step of the same least squares instead: it accumulates only the gradient {@code A^T (b - A x)} at the
@@ -137,8 +138,9 @@ public final class ProfileEstimator {
 
 	/**
 	 * As {@link #add(RandomAccessibleInterval, List, double, double)}, the spots fitted with {@code previous}: where
-	 * its model comes near a clip level of the frame (of noise {@code noise}), pixels are left out (see
-	 * {@link Censoring}); with {@code previous} null only the clipped pixels are.
+	 * its model comes near a clip level of the frame (of noise {@code noise}), pixels are left out, or linked at the
+	 * floor (see {@link Censoring}; a background clipped there linked with {@code previous}' floor noise); with
+	 * {@code previous} null only the clipped pixels are left out.
 	 */
 	public <T extends RealType<T>> void add(final RandomAccessibleInterval<T> frame, final List<Localization> spots,
 		final double amplitudeNorm, final double scaleNorm, final EmpiricalProfile previous, final double noise)
@@ -168,7 +170,7 @@ public final class ProfileEstimator {
 			masked[k] = !usable(s);
 		}
 		add(plane, cx, cy, amp, scale, masked, kind, previous == null ? null : new Previous(previous, Censoring.of(
-			plane, noise), amplitudeNorms, scaleNorms));
+			plane, noise).withFloorNoise(previous[0].floorNoise()), amplitudeNorms, scaleNorms));
 	}
 
 	/**
@@ -249,7 +251,9 @@ public final class ProfileEstimator {
 	/**
 	 * Adds a plane with centres in its local coordinates, each particle drawn as {@code amp_k P(r / scale_k)};
 	 * pixels near masked centres, and clipped pixels (saturated, or at 0 where a dark ring falls below it), are
-	 * skipped, and so are those where the {@code previous} model (if not null) comes near a clip level.
+	 * skipped, and so are those where the {@code previous} model (if not null) comes near a clip level; where that
+	 * model's rule links the floor, the pixels at and near it are kept, each pixel's row of the design matrix times
+	 * the link's slope {@code s} at the previous model {@code m0}, its value replaced by {@code v - E(m0) + s m0}.
 	 */
 	public void add(final Plane plane, final double[] cx, final double[] cy, final double[] amp, final double[] scale,
 		final boolean[] masked, final Previous previous)
@@ -282,10 +286,18 @@ public final class ProfileEstimator {
 		final double[] inReachR = new double[n];
 		final boolean backgroundUsable = previous == null || previous.censoring().usable(previous.profiles()[0]
 			.background());
+		// Where the floor is linked (Censoring#mean), the pixels near it enter linearised about the previous model m0:
+		// v - E(m0) + s m0 = s m, s the link's slope at m0. Known not to come near it likewise: a pixel of the
+		// background alone, or of one particle whose whole range of light stays above the link.
+		final boolean linked = previous != null && previous.censoring().linked();
+		final double linkTop = linked ? previous.censoring().linkTop() : Double.NEGATIVE_INFINITY;
+		final boolean backgroundUnlinked = !linked || previous.profiles()[0].background() >= linkTop;
+		final boolean[] aloneUnlinked = new boolean[n];
 		if (previous != null) for (int k = 0; k < n; k++) {
 			final EmpiricalProfile pk = previous.profiles()[kind[k]];
 			final double a = previous.amplitudeNorms()[kind[k]] * amp[k], b = pk.background();
 			aloneUsable[k] = previous.censoring().usableBetween(b + pk.leastLight(a), b + pk.greatestLight(a));
+			aloneUnlinked[k] = b + pk.leastLight(a) >= linkTop;
 		}
 		final boolean[] reachedKind = new boolean[kinds];
 		final double[] values = new double[w]; // each row read once (Plane.read), not pixel by pixel
@@ -360,8 +372,8 @@ public final class ProfileEstimator {
 						backgroundSquares += v * v;
 					}
 				}
-				if (v <= floor || previous != null && !usable(previous, reached, inReach, inReachR, amp, scale, kind,
-					aloneUsable, backgroundUsable)) continue;
+				if (v <= floor && !linked || previous != null && !usable(previous, reached, inReach, inReachR, amp, scale,
+					kind, aloneUsable, backgroundUsable)) continue;
 				if (kinds > 1) for (int c = 0; c < kinds; c++)
 					if (reachedKind[c]) kindSamples[c]++;
 				// (one pass for every pixel, of the background alone or of one particle or more: a separate copy for the
@@ -375,8 +387,18 @@ public final class ProfileEstimator {
 				val[len++] = (yd - my) / RAMP_UNIT;
 				samples++;
 				if (len > 3) profileSamples++;
+				double target = v;
+				if (linked && !(reached == 0 && backgroundUnlinked || reached == 1 && aloneUnlinked[inReach[0]])) {
+					final double m0 = model(previous, reached, inReach, inReachR, amp, scale, kind);
+					if (m0 < linkTop) {
+						final double slope = previous.censoring().slope(m0);
+						target = v - previous.censoring().mean(m0) + slope * m0;
+						for (int a = 0; a < len; a++)
+							val[a] *= slope;
+					}
+				}
 				if (from != null) {
-					gradient(idx, val, len, v);
+					gradient(idx, val, len, target);
 					continue;
 				}
 				// The outer product, lower triangle only (by index: mirrored in estimate()), each unordered pair of
@@ -385,7 +407,7 @@ public final class ProfileEstimator {
 					final int ia = idx[a];
 					final double va = val[a];
 					final double[] row = ata[ia];
-					atb[ia] += va * v;
+					atb[ia] += va * target;
 					row[ia] += va * va;
 					for (int b = 0; b < a; b++) {
 						final int ib = idx[b];
@@ -433,13 +455,20 @@ public final class ProfileEstimator {
 		final boolean[] aloneUsable, final boolean backgroundUsable)
 	{
 		if (reached == 0 && backgroundUsable || reached == 1 && aloneUsable[inReach[0]]) return true;
+		return previous.censoring().usable(model(previous, reached, inReach, inReachR, amp, scale, kind));
+	}
+
+	/** @return the {@code previous} model at a pixel within reach of the {@code reached} particles {@code inReach} */
+	private static double model(final Previous previous, final int reached, final int[] inReach,
+		final double[] inReachR, final double[] amp, final double[] scale, final int[] kind)
+	{
 		double model = previous.profiles()[0].background();
 		for (int q = 0; q < reached; q++) {
 			final int k = inReach[q], c = kind[k];
 			model += previous.amplitudeNorms()[c] * amp[k] * previous.profiles()[c].lookup(inReachR[q] / (previous
 				.scaleNorms()[c] * scale[k]));
 		}
-		return previous.censoring().usable(model);
+		return model;
 	}
 
 	/**
@@ -538,7 +567,8 @@ public final class ProfileEstimator {
 	 */
 	public Solution solve() {
 		final int m = bIndex + 3;
-		final double held = heldBackground();
+		final double[] clippedNormal = clippedBackground();
+		final double held = clippedNormal == null ? Double.NaN : clippedNormal[0];
 		// the weight of the penalty on each kind's second differences: the kind's diagonal and the background's
 		final double[] lambda = new double[kinds];
 		for (int c = 0; c < kinds; c++) {
@@ -587,7 +617,8 @@ public final class ProfileEstimator {
 		for (int c = 0; c < kinds; c++) {
 			final double[] coefficients = new double[count];
 			System.arraycopy(x, c * count, coefficients, 0, count);
-			out[c] = new EmpiricalProfile(SPACING, coefficients, x[bIndex], samples);
+			out[c] = new EmpiricalProfile(SPACING, coefficients, x[bIndex], samples, clippedNormal == null ? Double.NaN
+				: clippedNormal[1]);
 		}
 		return new Solution(out, new Linearisation(normal, x));
 	}
@@ -602,24 +633,27 @@ public final class ProfileEstimator {
 
 	/**
 	 * The background of a frame clipped at the floor (more than {@link Censoring#CLIPPED_BACKGROUND} of the background's
-	 * pixels at it), or NaN where it is not: the mean of the normal whose values below
+	 * pixels at it): the mean of the normal whose values below
 	 * the floor were read as the floor ({@link CensoredNormal}), from the pixels of the background alone. A value read
 	 * as the floor of an integer frame stands for every true value below half a level above it (the pixels are
-	 * rounded), and one above it for its own. Where the background is clipped, no pixel a fit may use shows it
-	 * (they lie {@link Censoring clear of the floor}), and the profile's outer knots and the background would trade
+	 * rounded), and one above it for its own. Where the background is clipped and banded, no pixel a fit may use
+	 * shows it (they lie {@link Censoring clear of the floor}), and the profile's outer knots and the background would trade
 	 * places freely: measured from the pixels above the floor alone, the background came out 2 grey levels high on
 	 * discs on a background of 2 clipped at 0 (noise 4), each profile's tail as much too low, and touching particles,
 	 * whose tails add up between them, pulled 0.03 px towards each other. The profile is measured about this
-	 * background, held.
+	 * background, held, and the normal's standard deviation is the noise the fit links the floor with
+	 * ({@link EmpiricalProfile#floorNoise}).
+	 *
+	 * @return {mean, standard deviation} of that normal, or null where the background is not clipped or spreads more
+	 *         than noise does
 	 */
-	double heldBackground() {
+	private double[] clippedBackground() {
 		final long all = backgroundAtFloor + backgroundAbove;
 		if (Double.isNaN(floor) || !(noise > 0) || !(backgroundAtFloor > Censoring.CLIPPED_BACKGROUND * all))
-			return Double.NaN;
+			return null;
 		final double[] normal = CensoredNormal.estimate(floor + 0.5, backgroundAtFloor, backgroundAbove, backgroundSum,
 			backgroundSquares);
-		if (normal == null || !(normal[1] <= NOISE_LIKE * noise)) return Double.NaN;
-		return normal[0];
+		return normal == null || !(normal[1] <= NOISE_LIKE * noise) ? null : normal;
 	}
 
 	/**

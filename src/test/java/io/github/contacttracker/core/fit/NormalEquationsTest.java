@@ -29,6 +29,10 @@ import java.util.Random;
 
 import org.junit.jupiter.api.Test;
 
+import net.imglib2.img.array.ArrayImgs;
+
+import io.github.contacttracker.core.image.Censoring;
+import io.github.contacttracker.core.image.Plane;
 import io.github.contacttracker.core.profile.EmpiricalProfile;
 import io.github.contacttracker.core.profile.ProfileAccess;
 
@@ -92,15 +96,29 @@ class NormalEquationsTest {
 	private static void assertMatchesDefinition(final FitPixels px, final double[] p,
 		final EmpiricalProfile[] profile)
 	{
+		assertMatchesDefinition(px, p, profile, null);
+	}
+
+	/**
+	 * As {@link #assertMatchesDefinition(FitPixels, double[], EmpiricalProfile[])}, the floor linked by {@code link}
+	 * (null: not): the residuals against the link's mean of the model, the Jacobian that of the mean (by central
+	 * differences of it).
+	 */
+	private static void assertMatchesDefinition(final FitPixels px, final double[] p,
+		final EmpiricalProfile[] profile, final Censoring link)
+	{
 		final int n = profile.length, np = p.length;
 		final double[][] jtj = new double[np][np];
 		final double[] jtr = new double[np], models = new double[px.count()];
-		final double rss = new NormalEquations().accumulate(px, p, n, profile, jtj, jtr, new double[4 * n], models);
+		final double rss = new NormalEquations(link).accumulate(px, p, n, profile, jtj, jtr, new double[4 * n],
+			models);
 		final double[][] wantJtj = new double[np][np];
 		final double[] wantJtr = new double[np], g = new double[np];
 		double wantRss = 0;
+		int linked = 0;
 		for (int i = 0; i < px.count(); i++) {
-			final double m = model(px, i, p, profile), r = px.value()[i] - m;
+			final double m = model(px, i, p, profile), r = px.value()[i] - mean(link, m);
+			if (link != null && m < link.linkTop()) linked++;
 			assertEquals(m, models[i], 1e-9 * Math.abs(m), "model at pixel " + i);
 			wantRss += r * r;
 			for (int a = 0; a < np; a++) {
@@ -108,7 +126,7 @@ class NormalEquationsTest {
 				final double[] up = p.clone(), down = p.clone();
 				up[a] += h;
 				down[a] -= h;
-				g[a] = (model(px, i, up, profile) - model(px, i, down, profile)) / (2 * h);
+				g[a] = (mean(link, model(px, i, up, profile)) - mean(link, model(px, i, down, profile))) / (2 * h);
 			}
 			for (int a = 0; a < np; a++) {
 				wantJtr[a] += g[a] * r;
@@ -124,6 +142,31 @@ class NormalEquationsTest {
 				assertEquals(wantJtj[a][b], jtj[a][b], 1e-3 * Math.sqrt(wantJtj[a][a] * wantJtj[b][b]), "J^T J, " + a +
 					", " + b);
 		}
+		if (link != null) assertTrue(linked > px.count() / 10 && linked < px.count(), linked + " of " + px.count() +
+			" pixels linked: the test must mix both");
+	}
+
+	/** @return the model through the link, or the model itself where none */
+	private static double mean(final Censoring link, final double model) {
+		return link == null || model >= link.linkTop() ? model : link.mean(model);
+	}
+
+	/**
+	 * The floor linked (here with a noise of 8 grey levels, so that the link reaches 48.5 grey levels, above the
+	 * background of 40, below the particles' cores): the passes of a group of one and of two against the definition
+	 * of least squares through the link, the background plane's rows and its own block included.
+	 */
+	@Test
+	void linkedFloorMatchesTheDefinition() {
+		final byte[] frame = new byte[100];
+		java.util.Arrays.fill(frame, (byte) 50);
+		final Censoring link = Censoring.of(Plane.of(ArrayImgs.unsignedBytes(frame, 10, 10)), 8);
+		assertTrue(link.linked());
+		final EmpiricalProfile profile = ringed();
+		assertMatchesDefinition(pixels(profile, 34.3, 31.8), new double[] { 34.1, 32.0, 1.05, 0.98, 39, 0.4, -0.2 },
+			new EmpiricalProfile[] { profile }, link);
+		assertMatchesDefinition(pixels(profile, 24.3, 31.8, 44.1, 30.2), new double[] { 24.1, 32.0, 1.05, 0.98, 44.3,
+			30.1, 0.95, 1.02, 39, 0.4, -0.2 }, new EmpiricalProfile[] { profile, profile }, link);
 	}
 
 	@Test
