@@ -24,6 +24,7 @@ package io.github.contacttracker.lab.cli;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.util.ArrayList;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
 import java.util.function.IntFunction;
@@ -42,6 +43,7 @@ import io.github.contacttracker.pipeline.Outputs;
 import io.github.contacttracker.pipeline.TrackingPipeline;
 import io.github.contacttracker.pipeline.TrackingResult;
 import io.github.contacttracker.settings.FrontEnd;
+import io.github.contacttracker.settings.Setting;
 import io.github.contacttracker.settings.SettingValues;
 import io.github.contacttracker.settings.TrackingSettings;
 import net.imglib2.RandomAccessibleInterval;
@@ -57,6 +59,9 @@ final class NewUserTracker implements DetectionStudy.Tracker {
 
 	private final int threads;
 	private final boolean trueDiameter;
+	/** A value given as a user types it (null: none), and its setting. */
+	private final Setting<Double> setting;
+	private final double value;
 
 	/** @param threads worker threads (below 1: all) */
 	NewUserTracker(final int threads) {
@@ -69,8 +74,24 @@ final class NewUserTracker implements DetectionStudy.Tracker {
 	 *        the helper's diameter from the detection's own failures; the rest is measured as without it
 	 */
 	NewUserTracker(final int threads, final boolean trueDiameter) {
+		this(threads, trueDiameter, null, Double.NaN);
+	}
+
+	private NewUserTracker(final int threads, final boolean trueDiameter, final Setting<Double> setting,
+		final double value)
+	{
 		this.threads = threads;
 		this.trueDiameter = trueDiameter;
+		this.setting = setting;
+		this.value = value;
+	}
+
+	/**
+	 * @return this tracker with {@code setting} given as {@code value} (as {@code --r-out 7} on the command line), the
+	 *         rest measured as without it: a control that tells one measured value's part in a scene's failures
+	 */
+	NewUserTracker given(final Setting<Double> setting, final double value) {
+		return new NewUserTracker(threads, trueDiameter, setting, value);
 	}
 
 	@Override
@@ -80,10 +101,16 @@ final class NewUserTracker implements DetectionStudy.Tracker {
 		final int n = scene.frames().size();
 		final IntFunction<RandomAccessibleInterval<? extends RealType<?>>> frame = t -> cast(scene.frames().get(t));
 		try {
-			final SettingValues given = trueDiameter ? SettingValues.defaults().with(TrackingSettings.DIAMETER, scene.scene()
+			SettingValues given = trueDiameter ? SettingValues.defaults().with(TrackingSettings.DIAMETER, scene.scene()
 				.type().diameterPx()) : SettingValues.defaults();
-			final MeasuredSettings.Result measured = MeasuredSettings.of(name, frame, n, true, given, trueDiameter ? Set
-				.of(TrackingSettings.DIAMETER) : Set.of(), FrontEnd.COMMAND_LINE);
+			final Set<Setting<?>> typed = new HashSet<>();
+			if (trueDiameter) typed.add(TrackingSettings.DIAMETER);
+			if (setting != null) {
+				given = given.with(setting, value);
+				typed.add(setting);
+			}
+			final MeasuredSettings.Result measured = MeasuredSettings.of(name, frame, n, true, given, typed,
+				FrontEnd.COMMAND_LINE);
 			final SettingValues used = measured.settings();
 			final TrackingResult result = new TrackingPipeline(used).run(FrameSource.of(n, frame, Calibration.PIXELS,
 				name, t -> ImagePlusFrames.range(frame.apply(t), t)), Outputs.NONE, threads, false, null, () -> false);

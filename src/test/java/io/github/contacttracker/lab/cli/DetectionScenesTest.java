@@ -34,6 +34,7 @@ import io.github.contacttracker.lab.sim.DetectionScene;
 import io.github.contacttracker.lab.sim.DetectionScenes;
 import io.github.contacttracker.pipeline.MeasuredSettings;
 import io.github.contacttracker.settings.SettingValues;
+import io.github.contacttracker.settings.TrackingSettings;
 import net.imglib2.RandomAccessibleInterval;
 import net.imglib2.type.numeric.RealType;
 
@@ -294,6 +295,28 @@ class DetectionScenesTest {
 		final DetectionScene scene = DetectionScenes.denseBidisperse(2, 6001);
 		study.add(scene, new NewUserTracker(2).track(scene));
 		assertFoundAndCentred(study.total());
+	}
+
+	/**
+	 * A confocal slice of a dense packing of many sizes, a fifth of the gaps between them clipped at 0, with {@code --r-out
+	 * 7} given (the helper's 4 falls short of the largest particles' light: accuracy.md): 99% of the particles found,
+	 * at least 80% of the spots unflagged (today 99.1% and 86%), at most 3 false spots, spread under 0.5 px. The pixels at
+	 * and near 0 are fitted through the mean of the noise clipped there; left out within 3 noise sigma of 0, the rule
+	 * before, the rounds of profile and centres did not settle and every spot was flagged {@code NOT_CONVERGED}.
+	 */
+	@Test
+	void aConfocalPackingClippedAtZeroSettles() {
+		final DetectionScene scene = DetectionScenes.densePolydisperse(1, 8001);
+		final DetectionStudy study = new DetectionStudy();
+		study.add(scene, new NewUserTracker(2).given(TrackingSettings.R_OUT, 7.0).track(scene));
+		final DetectionStudy.Row all = study.total();
+		// a fifth of the gaps between the particles (2.3% of the frame: below the 5% that makes a background clipped,
+		// so the floor is linked with the frame's noise)
+		assertTrue(scene.clipped() > 0.02 * scene.width() * scene.height(), scene.clipped() + " pixels at 0");
+		assertTrue(all.recall() >= 0.99, "recall " + all.recall());
+		assertTrue(all.unflaggedShare() >= 0.8, "unflagged " + all.unflaggedShare() + ", mostly " + all.mainFlag());
+		assertTrue(all.falseSpots() <= 3, all.falseSpots() + " false spots");
+		assertTrue(all.spread() < 0.5, "spread " + all.spread() + " px");
 	}
 
 	/**
