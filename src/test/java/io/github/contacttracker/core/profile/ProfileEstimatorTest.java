@@ -144,7 +144,9 @@ class ProfileEstimatorTest {
 	 * light where the fit uses it (above 12, three noise deviations clear of the floor). Measured from the pixels above
 	 * the floor alone, the background and the profile's outer knots traded places freely (here it came out -1.2; on the
 	 * detection study's clipped scene 4, every profile value 2 too low): between touching particles, whose tails add
-	 * up, the model then lacks that much light and pulls them together.
+	 * up, the model then lacks that much light and pulls them together. The round after, the floor linked with the
+	 * clipped normal's spread ({@code Censoring#mean}), measures the profile's tail too, down to the floor, out to
+	 * 11 px.
 	 */
 	@Test
 	void aBackgroundClippedAtTheFloorIsItsUnclippedMean() {
@@ -175,6 +177,14 @@ class ProfileEstimatorTest {
 		assertEquals(2, p.background(), 0.15, "background");
 		for (double r = 0; r < 6.5; r += 0.5)
 			assertEquals(pixelAverage(profile, r), p.value(r), 1, "at r = " + r);
+		// the clipped normal's spread is the background's noise, which the next round links the floor with
+		assertEquals(4, p.floorNoise(), 0.3, "floor noise");
+		final ProfileEstimator third = new ProfileEstimator(12);
+		third.add(frame, spots, 1, 1, p, 4);
+		final EmpiricalProfile linked = third.estimate();
+		assertEquals(2, linked.background(), 0.15, "background, linked");
+		for (double r = 0; r < 11; r += 0.5)
+			assertEquals(pixelAverage(profile, r), linked.value(r), 1, "linked, at r = " + r);
 	}
 
 	private static double gaussian(final java.util.SplittableRandom random) {
