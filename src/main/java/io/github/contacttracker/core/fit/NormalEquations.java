@@ -49,6 +49,8 @@ final class NormalEquations {
 	private int[] linkedAt = new int[0];
 	private double[] linkedSlope = new double[0];
 	private int linked;
+	/** The link's mean and slope at the pixel in hand ({@link Censoring#link}). */
+	private final double[] linkAt = new double[2];
 
 	/** Passes with their own work array: one per fit (not shared between threads). */
 	NormalEquations() {
@@ -147,8 +149,9 @@ final class NormalEquations {
 			if (models != null) models[i] = model;
 			double res = pixels[o + 4] - model, one = 1, su = u, sv = v;
 			if (model < linkTop) { // through the link: the clipped noise's mean, every gradient times its slope
-				one = link.slope(model);
-				res = pixels[o + 4] - link.mean(model);
+				link.link(model, linkAt);
+				one = linkAt[1];
+				res = pixels[o + 4] - linkAt[0];
 				su = one * u;
 				sv = one * v;
 				for (int c = 0; c < GroupFit.PER_PARTICLE * m; c++)
@@ -339,12 +342,13 @@ final class NormalEquations {
 	private void linkedPixel(final double[] gr, final int q, final int i, final double model, final double value,
 		final double g0, final double g1, final double g2, final double g3)
 	{
-		final double s = link.slope(model);
+		link.link(model, linkAt);
+		final double s = linkAt[1];
 		gr[q] = s * g0;
 		gr[q + 1] = s * g1;
 		gr[q + 2] = s * g2;
 		gr[q + 3] = s * g3;
-		gr[q + 4] = value - link.mean(model);
+		gr[q + 4] = value - linkAt[0];
 		if (linked == linkedAt.length) {
 			linkedAt = java.util.Arrays.copyOf(linkedAt, Math.max(16, 2 * linked));
 			linkedSlope = java.util.Arrays.copyOf(linkedSlope, linkedAt.length);

@@ -168,14 +168,27 @@ public final class Censoring {
 	 *         {@code z = (m - f - 1/2) / sigma} (the values above the floor taken as unrounded)
 	 */
 	public double mean(final double model) {
-		final double z = (model - floor - ROUNDING) / floorNoise, density = CensoredNormal.normalDensity(z);
-		return floor + (model - floor) * CensoredNormal.normalCdf(z, density) + floorNoise * density;
+		final double[] out = new double[2];
+		link(model, out);
+		return out[0];
 	}
 
 	/** @return the derivative of {@link #mean} with respect to the model: {@code Phi(z) + phi(z) / (2 sigma)} */
 	public double slope(final double model) {
+		final double[] out = new double[2];
+		link(model, out);
+		return out[1];
+	}
+
+	/**
+	 * The link at {@code model}: its {@link #mean} into {@code out[0]} and its {@link #slope} into {@code out[1]},
+	 * from one exponential (the fit's passes need both at every pixel near the floor).
+	 */
+	public void link(final double model, final double[] out) {
 		final double z = (model - floor - ROUNDING) / floorNoise, density = CensoredNormal.normalDensity(z);
-		return CensoredNormal.normalCdf(z, density) + density * ROUNDING / floorNoise;
+		final double below = CensoredNormal.normalCdf(z, density);
+		out[0] = floor + (model - floor) * below + floorNoise * density;
+		out[1] = below + density * ROUNDING / floorNoise;
 	}
 
 	/** @return whether a pixel whose model value is {@code model} is usable: not within the margin of a clip level */

@@ -277,27 +277,29 @@ public final class ProfileEstimator {
 		final int[] near = new int[n], spanFrom = new int[n], spanTo = new int[n];
 		final int[] idx = new int[4 * n + 3];
 		final double[] val = new double[4 * n + 3];
+		final double[] linkAt = new double[2]; // the link's mean and slope at a pixel (Censoring#link)
 		final double mx = 0.5 * (w - 1), my = 0.5 * (h - 1);
 		// The previous model decides which pixels are too near a clip level. Where a pixel is within reach of one
 		// particle alone whose whole range of light keeps the model usable (or of none, and the background is), the
 		// decision is known without evaluating it.
-		final boolean[] aloneUsable = new boolean[n];
 		final int[] inReach = new int[n];
 		final double[] inReachR = new double[n];
 		final boolean backgroundUsable = previous == null || previous.censoring().usable(previous.profiles()[0]
 			.background());
 		// Where the floor is linked (Censoring#mean), the pixels near it enter linearised about the previous model m0:
 		// v - E(m0) + s m0 = s m, s the link's slope at m0. Known not to come near it likewise: a pixel of the
-		// background alone, or of one particle whose whole range of light stays above the link.
+		// background alone, or of one particle whose whole range of light stays above the link. Where neither the band
+		// nor the link is settled so, the model is evaluated once for both.
 		final boolean linked = previous != null && previous.censoring().linked();
 		final double linkTop = linked ? previous.censoring().linkTop() : Double.NEGATIVE_INFINITY;
-		final boolean backgroundUnlinked = !linked || previous.profiles()[0].background() >= linkTop;
-		final boolean[] aloneUnlinked = new boolean[n];
+		final boolean backgroundSettled = backgroundUsable && (!linked || previous.profiles()[0].background() >=
+			linkTop);
+		final boolean[] aloneSettled = new boolean[n];
 		if (previous != null) for (int k = 0; k < n; k++) {
 			final EmpiricalProfile pk = previous.profiles()[kind[k]];
 			final double a = previous.amplitudeNorms()[kind[k]] * amp[k], b = pk.background();
-			aloneUsable[k] = previous.censoring().usableBetween(b + pk.leastLight(a), b + pk.greatestLight(a));
-			aloneUnlinked[k] = b + pk.leastLight(a) >= linkTop;
+			aloneSettled[k] = previous.censoring().usableBetween(b + pk.leastLight(a), b + pk.greatestLight(a)) && b + pk
+				.leastLight(a) >= linkTop;
 		}
 		final boolean[] reachedKind = new boolean[kinds];
 		final double[] values = new double[w]; // each row read once (Plane.read), not pixel by pixel
@@ -372,8 +374,11 @@ public final class ProfileEstimator {
 						backgroundSquares += v * v;
 					}
 				}
-				if (v <= floor && !linked || previous != null && !usable(previous, reached, inReach, inReachR, amp, scale,
-					kind, aloneUsable, backgroundUsable)) continue;
+				// (NaN where the previous model need not be evaluated: no previous one, or band and link settled above)
+				final boolean settled = previous == null || (reached == 0 ? backgroundSettled : reached == 1 &&
+					aloneSettled[inReach[0]]);
+				final double m0 = settled ? Double.NaN : model(previous, reached, inReach, inReachR, amp, scale, kind);
+				if (v <= floor && !linked || !settled && !previous.censoring().usable(m0)) continue;
 				if (kinds > 1) for (int c = 0; c < kinds; c++)
 					if (reachedKind[c]) kindSamples[c]++;
 				// (one pass for every pixel, of the background alone or of one particle or more: a separate copy for the
@@ -388,14 +393,11 @@ public final class ProfileEstimator {
 				samples++;
 				if (len > 3) profileSamples++;
 				double target = v;
-				if (linked && !(reached == 0 && backgroundUnlinked || reached == 1 && aloneUnlinked[inReach[0]])) {
-					final double m0 = model(previous, reached, inReach, inReachR, amp, scale, kind);
-					if (m0 < linkTop) {
-						final double slope = previous.censoring().slope(m0);
-						target = v - previous.censoring().mean(m0) + slope * m0;
-						for (int a = 0; a < len; a++)
-							val[a] *= slope;
-					}
+				if (m0 < linkTop) { // (false for NaN)
+					previous.censoring().link(m0, linkAt);
+					target = v - linkAt[0] + linkAt[1] * m0;
+					for (int a = 0; a < len; a++)
+						val[a] *= linkAt[1];
 				}
 				if (from != null) {
 					gradient(idx, val, len, target);
@@ -443,19 +445,6 @@ public final class ProfileEstimator {
 				rowSum[ia] = 0;
 			}
 		}
-	}
-
-	/**
-	 * @return whether the {@code previous} model keeps a pixel within reach of the {@code reached} particles
-	 *         {@code inReach} (at distances {@code inReachR}); evaluated only when the particle alone, or the
-	 *         background, does not settle it
-	 */
-	private static boolean usable(final Previous previous, final int reached, final int[] inReach,
-		final double[] inReachR, final double[] amp, final double[] scale, final int[] kind,
-		final boolean[] aloneUsable, final boolean backgroundUsable)
-	{
-		if (reached == 0 && backgroundUsable || reached == 1 && aloneUsable[inReach[0]]) return true;
-		return previous.censoring().usable(model(previous, reached, inReach, inReachR, amp, scale, kind));
 	}
 
 	/** @return the {@code previous} model at a pixel within reach of the {@code reached} particles {@code inReach} */
