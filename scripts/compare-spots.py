@@ -6,20 +6,41 @@ Usage: scripts/compare-spots.py A.csv B.csv [--within PX]
 Matches the spots of each frame nearest first (each spot used once, within PX pixels, default 5) and prints how many
 matched, how many are in one table only, and the distances between matched spots at the median, 90th and 99th
 percentile and the largest, in the tables' position units.
+
+Also the reading of spot tables that the other scripts share (footage-suite, perturbation-check, truth-match.py,
+overlay.py load this file): rows, flags_set (which flags count as warnings), flag_summary and match.
 """
 import argparse
 import csv
 import math
-from collections import defaultdict
+from collections import Counter, defaultdict
+
+
+def rows(path):
+    """The rows of a spot table as dicts by column name (lines starting with # skipped)."""
+    with open(path, newline="") as f:
+        return list(csv.DictReader(line for line in f if not line.startswith("#")))
+
+
+def flags_set(row):
+    """The warning flags set on a spot: its FLAG_ columns set, but FLAG_SECOND_PASS, which marks the normal case."""
+    return [k for k, v in row.items() if k.startswith("FLAG_") and k != "FLAG_SECOND_PASS" and (v or "0") not in
+            ("0", "false")]
+
+
+def flag_summary(table):
+    """The spots of a table's rows, how many carry a warning flag, and a Counter of the flags set."""
+    counts, flagged = Counter(), 0
+    for r in table:
+        on = flags_set(r)
+        flagged += bool(on)
+        counts.update(on)
+    return len(table), flagged, counts
 
 
 def load(path):
-    with open(path, newline="") as f:
-        rows = list(csv.reader(line for line in f if not line.startswith("#")))
-    header = rows[0]
     frames = defaultdict(list)
-    for r in rows[1:]:
-        d = dict(zip(header, r))
+    for d in rows(path):
         frames[int(float(d["FRAME"]))].append((float(d["POSITION_X"]), float(d["POSITION_Y"])))
     return frames
 

@@ -11,9 +11,15 @@ calibrated units: --pixel-size gives the units a pixel (default: the TIFF's own 
 one, else 1). Needs numpy and Pillow; tifffile for TIFF stacks; imageio with imageio-ffmpeg for AVI.
 """
 import argparse
-import csv
+import importlib.util
 import os
 import sys
+
+# the spot table read, and the flags that count, as scripts/compare-spots.py does for every script
+_spec = importlib.util.spec_from_file_location("compare_spots", os.path.join(os.path.dirname(os.path.abspath(
+    __file__)), "compare-spots.py"))
+compare = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(compare)
 
 
 def frame_of(movie, index):
@@ -82,21 +88,19 @@ def main():
     picture = Image.fromarray(grey).resize((round(w * z), round(h * z)), Image.NEAREST).convert("RGB")
     draw = ImageDraw.Draw(picture)
     spots = flagged = 0
-    with open(args.spots, newline="") as f:
-        for row in csv.DictReader(line for line in f if not line.startswith("#")):
-            if int(float(row["FRAME"])) != args.frame:
-                continue
-            bad = any(k.startswith("FLAG_") and k != "FLAG_SECOND_PASS" and (v or "0") not in ("0", "false")
-                      for k, v in row.items())
-            x, y = float(row["POSITION_X"]) / unit, float(row["POSITION_Y"]) / unit
-            r = float(row.get("RADIUS") or 0) / unit
-            colour = (255, 40, 40) if bad else (40, 230, 40)
-            cx, cy = (x + 0.5) * z, (y + 0.5) * z
-            if r > 0:
-                draw.ellipse([cx - r * z, cy - r * z, cx + r * z, cy + r * z], outline=colour)
-            draw.ellipse([cx - 1.5, cy - 1.5, cx + 1.5, cy + 1.5], fill=colour)
-            spots += 1
-            flagged += bad
+    for row in compare.rows(args.spots):
+        if int(float(row["FRAME"])) != args.frame:
+            continue
+        bad = bool(compare.flags_set(row))
+        x, y = float(row["POSITION_X"]) / unit, float(row["POSITION_Y"]) / unit
+        r = float(row.get("RADIUS") or 0) / unit
+        colour = (255, 40, 40) if bad else (40, 230, 40)
+        cx, cy = (x + 0.5) * z, (y + 0.5) * z
+        if r > 0:
+            draw.ellipse([cx - r * z, cy - r * z, cx + r * z, cy + r * z], outline=colour)
+        draw.ellipse([cx - 1.5, cy - 1.5, cx + 1.5, cy + 1.5], fill=colour)
+        spots += 1
+        flagged += bad
     picture.save(args.out)
     print(f"{args.out}: frame {args.frame}, {spots} spots, {flagged} flagged (red), pixel {unit:g} units")
 

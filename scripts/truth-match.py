@@ -14,19 +14,16 @@ positions are divided by --pixel-size (um a pixel; default 0.0847, the detection
 `simulate` writes into the movie) to compare them with the truth's pixels.
 """
 import argparse
-import csv
+import importlib.util
 import math
+import os
 from collections import defaultdict
 
-
-def rows(path):
-    with open(path, newline="") as f:
-        return list(csv.DictReader(line for line in f if not line.startswith("#")))
-
-
-def flagged(row):
-    return any(k.startswith("FLAG_") and k != "FLAG_SECOND_PASS" and (v or "0") not in ("0", "false")
-               for k, v in row.items())
+# the tables read, and the flags that count, as scripts/compare-spots.py does for every script
+_spec = importlib.util.spec_from_file_location("compare_spots", os.path.join(os.path.dirname(os.path.abspath(
+    __file__)), "compare-spots.py"))
+compare = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(compare)
 
 
 def percentile(values, q):
@@ -45,11 +42,11 @@ def main():
     if not args.pixel_size > 0:
         parser.error("--pixel-size must be positive")
     truth, spots = defaultdict(list), defaultdict(list)
-    for r in rows(args.truth):
+    for r in compare.rows(args.truth):
         truth[int(r["frame"])].append((float(r["x_px"]), float(r["y_px"]), float(r["diameter_px"]), r["band"]))
-    for r in rows(args.spots):
+    for r in compare.rows(args.spots):
         spots[int(float(r["FRAME"]))].append((float(r["POSITION_X"]) / args.pixel_size,
-                                              float(r["POSITION_Y"]) / args.pixel_size, flagged(r)))
+                                              float(r["POSITION_Y"]) / args.pixel_size, bool(compare.flags_set(r))))
     bands = defaultdict(lambda: {"n": 0, "found": 0, "flagged": 0, "errors": []})
     false_spots = false_unflagged = 0
     for frame in sorted(set(truth) | set(spots)):
