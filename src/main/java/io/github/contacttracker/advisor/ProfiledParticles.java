@@ -163,12 +163,58 @@ record ProfiledParticles(List<double[]> centres, double[] at, boolean refined, d
 	}
 
 	/**
+	 * @return each pixel's whether it lies in an active area at {@code level} whose outline is one particle's (not
+	 *         {@link ComponentShape#outlineMerged})
+	 */
+	private static boolean[] roundAreas(final Plane plane, final double level) {
+		final int w = plane.width();
+		final boolean[] round = new boolean[w * plane.height()];
+		for (final Region r : ComponentLabeling.label(plane, level, Connectivity.EIGHT)) {
+			if (ComponentShape.of(r).outlineMerged(false)) continue;
+			for (int k = 0; k < r.runCount(); k++)
+				java.util.Arrays.fill(round, r.runY(k) * w + r.runStart(k), r.runY(k) * w + r.runEnd(k) + 1, true);
+		}
+		return round;
+	}
+
+	/** @return the index of the pixel nearest {@code at} (plane coordinates) */
+	private static int pixel(final Plane plane, final double[] at) {
+		final int x = Math.max(0, Math.min(plane.width() - 1, (int) Math.round(at[0])));
+		final int y = Math.max(0, Math.min(plane.height() - 1, (int) Math.round(at[1])));
+		return y * plane.width() + x;
+	}
+
+	/**
 	 * The spots to profile when no point is given: the ones with the largest distances to their nearest neighbours,
 	 * none merged, degenerate or near the border, at most {@value #MAX_PARTICLES}, down to half the
-	 * first one's distance (or {@code wanted}).
+	 * first one's distance (or {@code wanted}). Where that leaves none and every area away from the border has one
+	 * particle's outline ({@link #outlineMerged}), a spot flagged merged counts too, as it does at a point: the flags
+	 * then come from the gradient lines alone, not from any outline. On compressed video, whose codec smooths the
+	 * noise between neighbouring pixels away, the frame's noise (read from those neighbours) is a seventh of its true
+	 * value or less, and a lone particle's gradient lines, which the noise still tilts, miss one another by more than
+	 * so little noise explains (an optical trap's single bead at low signal: a round area, no bay, its lines 2 px
+	 * apart, every frame refused). Where some area's outline is merged (particles of both contrasts in several focal
+	 * planes, whose rings and cores part into fragments), the areas are no particles to profile.
 	 */
 	private static List<Integer> mostIsolated(final Plane plane, final FrameSpots s, final double diameter,
 		final double wanted)
+	{
+		final List<Integer> chosen = mostIsolated(plane, s, diameter, wanted, null);
+		if (!chosen.isEmpty()) return chosen;
+		final boolean[] round = roundAreas(plane, s.level());
+		for (int k = 0; k < s.xy().length; k++) {
+			final Localization spot = s.spots().get(k);
+			if (!spot.has(Flag.AT_BORDER) && !spot.has(Flag.DEGENERATE) && !round[pixel(plane, s.xy()[k])]) return chosen;
+		}
+		return mostIsolated(plane, s, diameter, wanted, round);
+	}
+
+	/**
+	 * @param round null, or each pixel's whether its active area at the spots' level has one particle's outline: a
+	 *        spot flagged merged on such an area counts
+	 */
+	private static List<Integer> mostIsolated(final Plane plane, final FrameSpots s, final double diameter,
+		final double wanted, final boolean[] round)
 	{
 		final int w = plane.width(), h = plane.height();
 		final double[][] xy = s.xy();
@@ -180,7 +226,8 @@ record ProfiledParticles(List<double[]> centres, double[] at, boolean refined, d
 		final List<Integer> chosen = new ArrayList<>();
 		for (final int k : order) {
 			final Localization spot = s.spots().get(k);
-			if (spot.has(Flag.MERGED) || spot.has(Flag.AT_BORDER) || spot.has(Flag.DEGENERATE)) continue;
+			if (spot.has(Flag.AT_BORDER) || spot.has(Flag.DEGENERATE)) continue;
+			if (spot.has(Flag.MERGED) && (round == null || !round[pixel(plane, xy[k])])) continue;
 			if (xy[k][0] < diameter / 2 || xy[k][1] < diameter / 2 || xy[k][0] > w - 1 - diameter / 2 || xy[k][1] > h - 1 -
 				diameter / 2) continue;
 			if (!chosen.isEmpty() && nn[k] < Math.min(wanted, 0.5 * nn[chosen.get(0)])) break;
