@@ -27,22 +27,15 @@ import static io.github.contacttracker.advisor.HelperFormat.round2;
 import java.io.UncheckedIOException;
 import java.util.ArrayList;
 import java.util.Arrays;
-import java.util.Comparator;
 import java.util.List;
 import java.util.Locale;
-import java.util.function.DoubleToIntFunction;
 
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.core.Method;
 import io.github.contacttracker.core.TrackerParameters;
-import io.github.contacttracker.core.detect.DetectionChoice;
-import io.github.contacttracker.core.detect.ParticleScale;
-import io.github.contacttracker.core.image.Illumination;
-import io.github.contacttracker.core.image.Inversion;
 import io.github.contacttracker.core.image.Plane;
 import io.github.contacttracker.core.kind.KindFeatures;
 import io.github.contacttracker.core.kind.Kinds;
-import io.github.contacttracker.core.math.Statistics;
 import io.github.contacttracker.core.track.ContactTracker;
 import net.imglib2.RandomAccessibleInterval;
 import net.imglib2.type.numeric.RealType;
@@ -89,7 +82,8 @@ import net.imglib2.type.numeric.RealType;
  * </ol>
  * The steps have their own classes: the spots {@link FrameSpots}, the diameter {@link DiameterEstimate}, the
  * particles profiled {@link ProfiledParticles}, their background {@link BackgroundPlane} and pooled profile
- * {@link PooledProfile}, the threshold's bridge and raises {@link ThresholdRules}; this class joins them.
+ * {@link PooledProfile}, the threshold {@link ThresholdRules}; this class joins them. Whether a frame's particles are
+ * dark, before any of it, is {@link Contrast}'s.
  */
 public final class ProfileAnalysis {
 
@@ -175,7 +169,7 @@ public final class ProfileAnalysis {
 		 *         the default unless they are so small that their active areas come near it
 		 */
 		public int suggestedMinArea(final double threshold) {
-			return minArea(ProfileAnalysis.activeRadius(radius, level, count, threshold));
+			return ThresholdRules.minArea(ThresholdRules.activeRadius(radius, level, count, threshold));
 		}
 
 		/**
@@ -323,9 +317,9 @@ public final class ProfileAnalysis {
 			subject[0] + plane.minX(), subject[1] + plane.minY(), diameter / 2, innermost, diameterGiven > 0 ? ""
 				: ", or its diameter"));
 		final double rOut = m.reach() + Margins.R_OUT_MARGIN_PX;
-		final double[] level = levels(pooled);
-		final Threshold t = threshold(plane, pooled, level, diameter, m.reach(), centre, findings);
-		final double activeRadius = activeRadius(pooled.radius(), level, pooled.count(), t.threshold());
+		final double[] level = ThresholdRules.levels(pooled);
+		final ThresholdRules.Threshold t = ThresholdRules.threshold(plane, pooled, level, diameter, m.reach(), centre, findings);
+		final double activeRadius = ThresholdRules.activeRadius(pooled.radius(), level, pooled.count(), t.threshold());
 		if (activeRadius == 0) findings.add(new Finding.ThresholdAboveCentre());
 		final List<double[]> inFrame = new ArrayList<>();
 		for (final double[] c : m.centres())
@@ -333,7 +327,7 @@ public final class ProfileAnalysis {
 		return new Result(subject[0] + plane.minX(), subject[1] + plane.minY(), m.refined(), diameter, sized
 			.estimated(), m.centres().size(), m.radiusCap(), pooled.radius(), level, pooled.count(), pooled.background(), pooled
 				.noise(), t.peak(), m.reach(), rOut, t.bridge(), t.atContact(), t.threshold(), activeRadius, inFrame,
-			findings, kinds(kindFrames, t.threshold(), rOut, minArea(activeRadius)));
+			findings, kinds(kindFrames, t.threshold(), rOut, ThresholdRules.minArea(activeRadius)));
 	}
 
 	/**
@@ -388,91 +382,6 @@ public final class ProfileAnalysis {
 	}
 
 	/**
-	 * The suggested threshold and what it was raised from.
-	 *
-	 * @param bridge the brightest grey level between particles at contact
-	 * @param atContact {@code bridge} plus the noise margin
-	 * @param threshold the suggestion (not rounded)
-	 * @param peak the brightest pixel of the first particle
-	 */
-	private record Threshold(double bridge, double atContact, double threshold, double peak) {}
-
-	/**
-	 * Steps 7-9: the bridge between particles at contact plus the noise margin; raised clear of the background's
-	 * texture (halos, rings, their sums between particles); and raised until every active area has the shape of one
-	 * particle (bright fringes between touching particles in bright field are brighter than the sum of two
-	 * profiles), up to half the cores' height.
-	 */
-	private static Threshold threshold(final Plane plane, final PooledProfile pooled, final double[] level,
-		final double diameter, final double reach, final double[] centre, final List<Finding> findings)
-	{
-		final double bridge = pooled.background() + Math.max(0, ThresholdRules.brightestBetween(pooled, diameter,
-			reach));
-		final double atContact = bridge + Margins.THRESHOLD_MARGIN_SIGMAS * pooled.noise();
-		// the active areas that count as particles at a threshold: as the tracker will keep them (small particles' are
-		// smaller than the default min_area: counting only the larger ones would judge the merges alone)
-		final DoubleToIntFunction minArea = th -> minArea(activeRadius(pooled.radius(), level, pooled.count(), th));
-		final double[] gap = ThresholdRules.textureGap(plane, atContact, pooled.background(), minArea.applyAsInt(
-			atContact));
-		final double clear = Math.max(atContact, Double.isNaN(gap[0]) ? atContact : pooled.background() + (gap[0] +
-			gap[1]) / 2);
-		if (clear > atContact) findings.add(new Finding.BackgroundTexture(atContact, (int) gap[2], gap[0], gap[1]));
-		final double peak = FrameSpots.peak(plane, centre[0], centre[1], Math.max(2, diameter / 4));
-		final double ceiling = pooled.background() + 0.5 * (peak - pooled.background());
-		final double[] shaped = ThresholdRules.roundFrom(plane, clear, ceiling, Math.max(0.5, pooled.noise() / 2),
-			minArea);
-		final double threshold = shaped[0];
-		if (threshold > clear) findings.add(new Finding.RaisedUntilRound(clear, (int) shaped[1], (int) shaped[2]));
-		else if (shaped[1] > 0) findings.add(new Finding.NotRound((int) shaped[1], (int) shaped[2], ceiling));
-		return new Threshold(bridge, atContact, threshold, peak);
-	}
-
-	/** @return each ring's grey level: the background plus its height (NaN for an empty ring) */
-	private static double[] levels(final PooledProfile pooled) {
-		final double[] level = new double[pooled.radius().length];
-		for (int k = 0; k < level.length; k++)
-			level[k] = pooled.count()[k] > 0 ? pooled.background() + pooled.height()[k] : Double.NaN;
-		return level;
-	}
-
-	/**
-	 * @param radius each ring's mean radius, {@code level} its grey level, {@code count} its pixels (as in {@link Result})
-	 * @return where the profile falls below the threshold (px, interpolated; 0 when even the centre is below)
-	 */
-	private static double activeRadius(final double[] radius, final double[] level, final int[] count,
-		final double threshold)
-	{
-		double activeRadius = 0;
-		int previous = -1;
-		for (int k = 0; k < level.length; k++) {
-			if (count[k] == 0) continue;
-			if (level[k] < threshold) {
-				if (previous >= 0) activeRadius = radius[previous] + (radius[k] - radius[previous]) * (level[previous] -
-					threshold) / (level[previous] - level[k]);
-				break;
-			}
-			activeRadius = radius[k];
-			previous = k;
-		}
-		return activeRadius;
-	}
-
-	/**
-	 * The {@code min_area} for particles whose active areas at a threshold have radius {@code activeRadius}: half
-	 * their area {@code pi r^2}, at most the default {@value TrackerParameters#DEFAULT_MIN_AREA} px (0: the default).
-	 * The default was set for particles tens of pixels across; particles a few pixels across have active areas near
-	 * it, and the default dropped many (in trackpy's bulk_water sample in-focus particles of 15-19 px, where the
-	 * profile's active disc holds 28 px at the helper's threshold; 69 of 126 simulated spots 7.5 px across). A
-	 * component of less than half a particle's area is noise or a fringe: the threshold lies 3 noise levels above the
-	 * brightest point between two particles.
-	 */
-	public static int minArea(final double activeRadius) {
-		if (!(activeRadius > 0)) return TrackerParameters.DEFAULT_MIN_AREA;
-		return (int) Math.max(TrackerParameters.MIN_AREA_AT_LEAST, Math.min(TrackerParameters.DEFAULT_MIN_AREA, Math
-			.floor(Math.PI * activeRadius * activeRadius / 2)));
-	}
-
-	/**
 	 * @return the area of the disc of radius {@code a} about the origin outside the disc of radius {@code r} whose
 	 *         centre lies {@code d} away (the circles' lens formula)
 	 */
@@ -485,67 +394,5 @@ public final class ProfileAnalysis {
 		final double lens = a * a * Math.acos((d * d + a * a - r * r) / (2 * d * a)) + r * r * Math.acos((d * d + r * r -
 			a * a) / (2 * d * r)) - 0.5 * Math.sqrt((-d + a + r) * (d + a - r) * (d - a + r) * (d + a + r));
 		return Math.max(0, whole - lens);
-	}
-
-
-
-	/**
-	 * How much further below the background its darkest pixel must lie than its brightest above it for a frame
-	 * without blobs to compare to be taken for dark particles when nobody said which. The background covers most of a
-	 * frame; bright particles reach further above it than their dark rings reach below, and dark particles the other
-	 * way round. Twice as far leaves a margin: saturated cores and deep dark rings can bring bright particles' two
-	 * reaches near each other, and such footage must not be taken for dark (manual.md gives the figures measured on
-	 * real footage).
-	 */
-	public static final double DARK_RATIO = 2;
-
-	/**
-	 * Where the frame has blobs, the darkest pixel must lie this much further below the background than the
-	 * brightest above it, and the inverted frame's blobs must stand out more than its own. Particles dark inside a
-	 * bright ring (microgels, beads a little out of focus) reach 1.3 to 1.6 times as far below as above (a simulated
-	 * pair with a core 700 grey levels deep and a ring 350 high, under photon noise), and were taken for bright: the
-	 * helper then measured the noise's bumps as particles 1.9 px across and the run found 2 spots in 40 frames. Bright
-	 * particles with deep dark rings stay bright by either test: the paper authors' 1.avi reaches 1.04 times as far
-	 * either way, and its rings are no blobs.
-	 */
-	public static final double DARKER = 1.2;
-
-	/**
-	 * @return whether the frame's particles are darker than the background, to be inverted first
-	 *         ({@code core.image.Inversion}): its darkest pixel lies more than {@link #DARKER} times as far below the
-	 *         background as its brightest above it, and the inverted frame's blobs stand out more than the frame's
-	 *         own ({@link DetectionChoice#otherContrastStronger}, at the scale of the frame's blobs); or, where the
-	 *         frame holds no blob, more than {@link #DARK_RATIO} times as far. The levels are read relative to the
-	 *         frame's light ({@link Illumination}: a ramp of light across the frame puts its extremes on the ramp),
-	 *         the background at their median. The median is the background's level only where the background
-	 *         covers most of the frame: bright particles packed edge to edge put it on the particles, with the small
-	 *         dark gaps between them far below, and only the blobs tell which are the particles (a simulated
-	 *         monolayer of bright discs at an area fraction of 0.6: the median test says dark, the inverted blobs
-	 *         stand 1.06 times as high as the frame's; dark spheres in dyed fluid on a confocal slice, 2.3).
-	 */
-	@SuppressWarnings({ "rawtypes", "unchecked" })
-	public static boolean looksDark(final RandomAccessibleInterval<? extends RealType<?>> frame) {
-		final Plane plane = Plane.of((RandomAccessibleInterval) frame);
-		final double[] v = Illumination.residuals(plane);
-		final double median = Statistics.quantile(v, 0.5); // sorted by it
-		final double below = median - v[0], above = v[v.length - 1] - median;
-		if (!(below > DARKER * above)) return false;
-		final Plane inverted = Plane.of((RandomAccessibleInterval) Inversion.of((RandomAccessibleInterval) frame));
-		double d = ParticleScale.diameter(plane);
-		if (!(d > 0)) d = ParticleScale.diameter(inverted);
-		// no blob at any scale to compare: the levels alone decide
-		return d > 0 ? DetectionChoice.otherContrastStronger(plane, inverted, d) : below > DARK_RATIO * above;
-	}
-
-	/**
-	 * @return whether the frame holds nothing brighter or darker than its noise, as the helper judges it
-	 *         ({@link FrameSpots#find}: its brightest pixels stand no more than {@link Margins#THRESHOLD_MARGIN_SIGMAS}
-	 *         noise sigmas above its median, and its darkest no more below): a blank frame, such as one before the
-	 *         shutter opened or a confocal slice below the coverslip
-	 */
-	@SuppressWarnings({ "rawtypes", "unchecked" })
-	public static boolean blank(final RandomAccessibleInterval<? extends RealType<?>> frame) {
-		final FrameSpots.Levels levels = FrameSpots.Levels.of(Plane.of((RandomAccessibleInterval) frame));
-		return !levels.brighterThanNoise() && !levels.darkerThanNoise();
 	}
 }

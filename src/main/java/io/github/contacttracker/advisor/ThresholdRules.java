@@ -26,16 +26,18 @@ import java.util.List;
 import java.util.function.DoubleToIntFunction;
 
 import io.github.contacttracker.core.Connectivity;
+import io.github.contacttracker.core.TrackerParameters;
 import io.github.contacttracker.core.image.ComponentLabeling;
 import io.github.contacttracker.core.image.Plane;
 import io.github.contacttracker.core.image.Region;
 import io.github.contacttracker.core.radial.ComponentShape;
 
 /**
- * The helper's threshold rules: the contact rule's bridge (the brightest point between particles at contact, from
- * the pooled profile), and the rules that raise the threshold above it: clear of the background's texture (bright
- * spots of halos and rings that are no particle's core) and until the frame's active areas have the shape of one
- * particle each (these two read the frame at candidate thresholds).
+ * The helper's threshold (steps 7-9 of {@link ProfileAnalysis}): the contact rule's bridge (the brightest point
+ * between particles at contact, from the pooled profile), and the rules that raise the threshold above it: clear of
+ * the background's texture (bright spots of halos and rings that are no particle's core) and until the frame's active
+ * areas have the shape of one particle each (these two read the frame at candidate thresholds); and what a threshold
+ * leaves of a particle, its active radius and the {@code min_area} that follows.
  */
 final class ThresholdRules {
 
@@ -144,5 +146,90 @@ final class ThresholdRules {
 				}
 		}
 		return best;
+	}
+
+	/**
+	 * The suggested threshold and what it was raised from.
+	 *
+	 * @param bridge the brightest grey level between particles at contact
+	 * @param atContact {@code bridge} plus the noise margin
+	 * @param threshold the suggestion (not rounded)
+	 * @param peak the brightest pixel of the first particle
+	 */
+	record Threshold(double bridge, double atContact, double threshold, double peak) {}
+
+	/**
+	 * Steps 7-9: the bridge between particles at contact plus the noise margin; raised clear of the background's
+	 * texture (halos, rings, their sums between particles); and raised until every active area has the shape of one
+	 * particle (bright fringes between touching particles in bright field are brighter than the sum of two
+	 * profiles), up to half the cores' height.
+	 */
+	static Threshold threshold(final Plane plane, final PooledProfile pooled, final double[] level,
+		final double diameter, final double reach, final double[] centre, final List<Finding> findings)
+	{
+		final double bridge = pooled.background() + Math.max(0, ThresholdRules.brightestBetween(pooled, diameter,
+			reach));
+		final double atContact = bridge + Margins.THRESHOLD_MARGIN_SIGMAS * pooled.noise();
+		// the active areas that count as particles at a threshold: as the tracker will keep them (small particles' are
+		// smaller than the default min_area: counting only the larger ones would judge the merges alone)
+		final DoubleToIntFunction minArea = th -> minArea(activeRadius(pooled.radius(), level, pooled.count(), th));
+		final double[] gap = ThresholdRules.textureGap(plane, atContact, pooled.background(), minArea.applyAsInt(
+			atContact));
+		final double clear = Math.max(atContact, Double.isNaN(gap[0]) ? atContact : pooled.background() + (gap[0] +
+			gap[1]) / 2);
+		if (clear > atContact) findings.add(new Finding.BackgroundTexture(atContact, (int) gap[2], gap[0], gap[1]));
+		final double peak = FrameSpots.peak(plane, centre[0], centre[1], Math.max(2, diameter / 4));
+		final double ceiling = pooled.background() + 0.5 * (peak - pooled.background());
+		final double[] shaped = ThresholdRules.roundFrom(plane, clear, ceiling, Math.max(0.5, pooled.noise() / 2),
+			minArea);
+		final double threshold = shaped[0];
+		if (threshold > clear) findings.add(new Finding.RaisedUntilRound(clear, (int) shaped[1], (int) shaped[2]));
+		else if (shaped[1] > 0) findings.add(new Finding.NotRound((int) shaped[1], (int) shaped[2], ceiling));
+		return new Threshold(bridge, atContact, threshold, peak);
+	}
+
+	/** @return each ring's grey level: the background plus its height (NaN for an empty ring) */
+	static double[] levels(final PooledProfile pooled) {
+		final double[] level = new double[pooled.radius().length];
+		for (int k = 0; k < level.length; k++)
+			level[k] = pooled.count()[k] > 0 ? pooled.background() + pooled.height()[k] : Double.NaN;
+		return level;
+	}
+
+	/**
+	 * @param radius each ring's mean radius, {@code level} its grey level, {@code count} its pixels (as in {@link Result})
+	 * @return where the profile falls below the threshold (px, interpolated; 0 when even the centre is below)
+	 */
+	static double activeRadius(final double[] radius, final double[] level, final int[] count,
+		final double threshold)
+	{
+		double activeRadius = 0;
+		int previous = -1;
+		for (int k = 0; k < level.length; k++) {
+			if (count[k] == 0) continue;
+			if (level[k] < threshold) {
+				if (previous >= 0) activeRadius = radius[previous] + (radius[k] - radius[previous]) * (level[previous] -
+					threshold) / (level[previous] - level[k]);
+				break;
+			}
+			activeRadius = radius[k];
+			previous = k;
+		}
+		return activeRadius;
+	}
+
+	/**
+	 * The {@code min_area} for particles whose active areas at a threshold have radius {@code activeRadius}: half
+	 * their area {@code pi r^2}, at most the default {@value TrackerParameters#DEFAULT_MIN_AREA} px (0: the default).
+	 * The default was set for particles tens of pixels across; particles a few pixels across have active areas near
+	 * it, and the default dropped many (in trackpy's bulk_water sample in-focus particles of 15-19 px, where the
+	 * profile's active disc holds 28 px at the helper's threshold; 69 of 126 simulated spots 7.5 px across). A
+	 * component of less than half a particle's area is noise or a fringe: the threshold lies 3 noise levels above the
+	 * brightest point between two particles.
+	 */
+	static int minArea(final double activeRadius) {
+		if (!(activeRadius > 0)) return TrackerParameters.DEFAULT_MIN_AREA;
+		return (int) Math.max(TrackerParameters.MIN_AREA_AT_LEAST, Math.min(TrackerParameters.DEFAULT_MIN_AREA, Math
+			.floor(Math.PI * activeRadius * activeRadius / 2)));
 	}
 }

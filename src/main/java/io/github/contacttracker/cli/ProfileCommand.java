@@ -30,6 +30,7 @@ import java.util.List;
 import java.util.Locale;
 
 import ij.ImagePlus;
+import io.github.contacttracker.advisor.Contrast;
 import io.github.contacttracker.advisor.ProfileAnalysis;
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.ij.ImagePlusFrames;
@@ -100,7 +101,7 @@ public final class ProfileCommand extends ContactTrackerCli.Subcommand {
 			particlesOption)).dark();
 		final ImagePlusFrames plain = ImagePlusFrames.of(imp, options.value(channelOption));
 		// as 'track' measures: dark where the frame looks so, unless bright or dark was said
-		final boolean dark = said || !given && frame >= 1 && frame <= plain.frameCount() && ProfileAnalysis.looksDark(plain
+		final boolean dark = said || !given && frame >= 1 && frame <= plain.frameCount() && Contrast.looksDark(plain
 			.frame(frame - 1));
 		final ImagePlusFrames frames = dark ? ImagePlusFrames.of(imp, options.value(channelOption), true) : plain;
 		if (frame < 1 || frame > frames.frameCount())

@@ -30,6 +30,7 @@ import java.util.function.IntFunction;
 
 import io.github.contacttracker.advisor.Finding;
 import io.github.contacttracker.advisor.HelperFormat;
+import io.github.contacttracker.advisor.Contrast;
 import io.github.contacttracker.advisor.ProfileAnalysis;
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.core.Method;
@@ -70,7 +71,7 @@ public final class MeasuredSettings {
 	 * @param settings the settings given (the others at their defaults)
 	 * @param given the settings the user gave. Of these the threshold, r_out, the particles and {@code min_area}
 	 *        count: when neither the particles (bright or dark) nor the threshold was given, the particles are taken
-	 *        for dark ones where the frame looks so ({@link ProfileAnalysis#looksDark}); when {@code min_area} was not,
+	 *        for dark ones where the frame looks so ({@link Contrast#looksDark}); when {@code min_area} was not,
 	 *        it is lowered for small particles ({@link ProfileAnalysis.Result#suggestedMinArea}); the notice says so
 	 * @throws InvalidInputException when the threshold or r_out is missing and cannot be measured
 	 */
@@ -108,7 +109,7 @@ public final class MeasuredSettings {
 
 	/**
 	 * As {@link #of(String, RandomAccessibleInterval, boolean, SettingValues, Set)}, on a movie of {@code count}
-	 * frames: where the first frame is blank ({@link ProfileAnalysis#blank}: a frame before the shutter opened, the
+	 * frames: where the first frame is blank ({@link Contrast#blank}: a frame before the shutter opened, the
 	 * slices of a stack below the coverslip), the helper measures on the middle one, then the last, and the notice
 	 * names the frame. Only where it measures on none do the first frame's fallbacks apply (detection by the image, or
 	 * the refusal, naming the first frame). A first frame that holds particles the helper cannot measure (a dense
@@ -123,7 +124,7 @@ public final class MeasuredSettings {
 		final FrontEnd words)
 	{
 		final RandomAccessibleInterval<?> first = frame.apply(0);
-		if (count >= 3 && ProfileAnalysis.blank((RandomAccessibleInterval) first))
+		if (count >= 3 && Contrast.blank((RandomAccessibleInterval) first))
 			for (final int t : new int[] { count / 2, count - 1 })
 				try {
 					return of(name, frame.apply(t), t + 1, false, integerData, settings, given, words);
@@ -150,7 +151,7 @@ public final class MeasuredSettings {
 		if (thresholdGiven && rOutGiven && diameter) return new Result(settings, "");
 		SettingValues v = settings;
 		final Said said = new Said();
-		if (!thresholdGiven && !particlesGiven && !settings.dark() && ProfileAnalysis.looksDark(
+		if (!thresholdGiven && !particlesGiven && !settings.dark() && Contrast.looksDark(
 			(RandomAccessibleInterval) first))
 		{
 			v = v.withText(TrackingSettings.PARTICLES, TrackingSettings.DARK);

@@ -26,6 +26,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 
+import io.github.contacttracker.advisor.Contrast;
 import io.github.contacttracker.advisor.ProfileAnalysis;
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.core.image.Inversion;
@@ -64,7 +65,7 @@ public final class ProfileSummary {
 		if (frame < 0 || frame >= frames.frameCount()) throw new InvalidInputException("frame " + frame + " does not " +
 			"exist: there " + (frames.frameCount() == 1 ? "is 1 frame" : "are " + frames.frameCount() + " frames") +
 			" (counted from 0)");
-		final boolean dark = particles == null ? ProfileAnalysis.looksDark(frames.frame(frame)) : SettingValues
+		final boolean dark = particles == null ? Contrast.looksDark(frames.frame(frame)) : SettingValues
 			.defaults().withText(TrackingSettings.PARTICLES, particles).dark();
 		final List<RandomAccessibleInterval<? extends RealType<?>>> kindFrames = new ArrayList<>();
 		for (final int t : ProfileAnalysis.kindFrames(frame, frames.frameCount()))

@@ -27,6 +27,7 @@ import java.util.List;
 import java.util.Locale;
 
 import ij.ImagePlus;
+import io.github.contacttracker.advisor.Contrast;
 import io.github.contacttracker.advisor.ProfileAnalysis;
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.core.Numbers;
@@ -73,7 +74,7 @@ public record ShownFrameProfile(ProfileAnalysis.Result result, String title, int
 	 * A diameter given is used; if the helper cannot measure with it (typically one left in the fields from another
 	 * image, e.g. twice these particles' size on a dense monolayer: no background within reach), the diameter is
 	 * estimated instead and {@link #summary()} and {@link #logText} say so ({@link #rejectedDiameter()}). Particles
-	 * said bright on a frame that looks dark ({@link ProfileAnalysis#looksDark}) are measured as dark ones, as {@code track}
+	 * said bright on a frame that looks dark ({@link Contrast#looksDark}) are measured as dark ones, as {@code track}
 	 * measures them when neither they nor the threshold are given, and the summary says so ({@link #darkFound()}):
 	 * the buttons set the setting with the values.
 	 *
@@ -91,7 +92,7 @@ public record ShownFrameProfile(ProfileAnalysis.Result result, String title, int
 		final ImagePlusFrames plain = ImagePlusFrames.of(imp, channel);
 		// within the selection, as the dialog tracks (text burned into a corner of the frame left out, say)
 		final Interval region = ShownImage.selection(imp);
-		final boolean found = !said && ProfileAnalysis.looksDark(ImagePlusFrames.within(plain.frame(ShownImage.frame(
+		final boolean found = !said && Contrast.looksDark(ImagePlusFrames.within(plain.frame(ShownImage.frame(
 			imp)), region));
 		final boolean dark = said || found;
 		// one view of the frames for both tries, its frames read once

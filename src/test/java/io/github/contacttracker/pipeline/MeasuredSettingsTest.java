@@ -34,6 +34,7 @@ import java.util.SplittableRandom;
 import org.junit.jupiter.api.Test;
 
 import io.github.contacttracker.settings.FrontEnd;
+import io.github.contacttracker.advisor.Contrast;
 import io.github.contacttracker.advisor.ProfileAnalysis;
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.core.image.Inversion;
@@ -89,8 +90,8 @@ class MeasuredSettingsTest {
 	@Test
 	void aThresholdAboveEveryPixelSaysWhatToTry() {
 		final RandomAccessibleInterval<UnsignedByteType> bright = brightField(), dark = inverted(bright);
-		assertFalse(ProfileAnalysis.looksDark(bright));
-		assertFalse(ProfileAnalysis.looksDark(dark), "1.avi inverted is not taken for dark either");
+		assertFalse(Contrast.looksDark(bright));
+		assertFalse(Contrast.looksDark(dark), "1.avi inverted is not taken for dark either");
 		final SettingValues defaults = SettingValues.defaults();
 		final InvalidInputException e = assertThrows(InvalidInputException.class, () -> MeasuredSettings.of("bf.tif",
 			dark, true, defaults, Set.of(), FrontEnd.COMMAND_LINE));
@@ -158,8 +159,8 @@ class MeasuredSettingsTest {
 	 */
 	@Test
 	void darkCoresInBrightRingsOnARampAreTakenForDark() {
-		assertTrue(ProfileAnalysis.looksDark(ringsOnARamp(1)));
-		assertFalse(ProfileAnalysis.looksDark(ringsOnARamp(-1)));
+		assertTrue(Contrast.looksDark(ringsOnARamp(1)));
+		assertFalse(Contrast.looksDark(ringsOnARamp(-1)));
 		final MeasuredSettings.Result r = MeasuredSettings.of("pair.tif", ringsOnARamp(1), true, SettingValues.defaults(),
 			Set.of(), FrontEnd.COMMAND_LINE);
 		assertTrue(r.settings().dark() && r.notice().contains("--particles dark"), r.notice());
@@ -294,8 +295,8 @@ class MeasuredSettingsTest {
 	 */
 	@Test
 	void aPackedMonolayerOfBrightParticlesIsNotTakenForDark() {
-		assertFalse(ProfileAnalysis.looksDark(firstFrame(DetectionScenes.dense(1, 3))));
-		assertTrue(ProfileAnalysis.looksDark(firstFrame(DetectionScenes.dark(1, 3))));
+		assertFalse(Contrast.looksDark(firstFrame(DetectionScenes.dense(1, 3))));
+		assertTrue(Contrast.looksDark(firstFrame(DetectionScenes.dark(1, 3))));
 	}
 
 	@SuppressWarnings("unchecked")
@@ -317,7 +318,7 @@ class MeasuredSettingsTest {
 			centres.add(new double[] { 40 + 60 * (k % 3) + rnd.nextDouble(), 40 + 60 * (k / 3) + rnd.nextDouble() });
 		final RandomAccessibleInterval<UnsignedByteType> bright = Quantiser.toUnsignedBytes(new ImageSimulator(profile, 3)
 			.render(centres, 200, 200, 40), NoiseModel.gaussian(2), rnd).image(), dark = inverted(bright);
-		assertTrue(ProfileAnalysis.looksDark(dark));
+		assertTrue(Contrast.looksDark(dark));
 		final SettingValues defaults = SettingValues.defaults();
 		final MeasuredSettings.Result fromBright = MeasuredSettings.of("m.tif", bright, true, defaults, Set.of(), FrontEnd.COMMAND_LINE);
 		final MeasuredSettings.Result fromDark = MeasuredSettings.of("m.tif", dark, true, defaults, Set.of(), FrontEnd.COMMAND_LINE);
