@@ -297,9 +297,8 @@ public final class ProfileEstimator {
 		final boolean[] aloneSettled = new boolean[n];
 		if (previous != null) for (int k = 0; k < n; k++) {
 			final EmpiricalProfile pk = previous.profiles()[kind[k]];
-			final double a = previous.amplitudeNorms()[kind[k]] * amp[k], b = pk.background();
-			aloneSettled[k] = previous.censoring().usableBetween(b + pk.leastLight(a), b + pk.greatestLight(a)) && b + pk
-				.leastLight(a) >= linkTop;
+			final double a = previous.amplitudeNorms()[kind[k]] * amp[k], b = pk.background(), lo = b + pk.leastLight(a);
+			aloneSettled[k] = previous.censoring().usableBetween(lo, b + pk.greatestLight(a)) && lo >= linkTop;
 		}
 		final boolean[] reachedKind = new boolean[kinds];
 		final double[] values = new double[w]; // each row read once (Plane.read), not pixel by pixel

@@ -31,6 +31,7 @@ import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.Locale;
 
 import io.github.contacttracker.core.Numbers;
@@ -45,6 +46,7 @@ import io.github.contacttracker.lab.sim.SimulatedStack;
 import io.github.contacttracker.settings.CommandOptions;
 import io.github.contacttracker.settings.Option;
 import io.github.contacttracker.cli.ContactTrackerCli;
+import net.imglib2.img.array.ArrayImg;
 
 /**
  * {@code simulate --scenario pair|triple --separation R --out stack.tif --truth truth.csv}, or {@code simulate
@@ -97,15 +99,7 @@ final class SimulateCommand extends ContactTrackerCli.Subcommand {
 		final SimulatedStack<?> stack = SimulatedStack.simulate(type, scenario, separation, frames, options.value(
 			seedOption), bits);
 		final Calibration cal = Calibration.ofPixelSize(type.pixelSizeMicrons(), "micron");
-		ImageFiles.saveTiff(TimeSeries.of(stackFile.getFileName().toString(), stack.frames(), cal), stackFile);
-		try {
-			AtomicFile.write(truthFile, stream -> stack.writeTruthCsv(new BufferedWriter(new OutputStreamWriter(stream,
-				StandardCharsets.UTF_8))));
-		}
-		catch (final IOException e) {
-			Files.deleteIfExists(stackFile); // both or neither
-			throw e;
-		}
+		write(stackFile, stack.frames(), cal, truthFile, stack::writeTruthCsv);
 		out.printf(Locale.ROOT,
 			"%s: %d frames %dx%d, %s of %s at r/D = %.3f; suggested --threshold %s --r-out %s; truth in %s%n",
 			stackFile, frames, stack.width(), stack.height(), scenario.name().toLowerCase(Locale.ROOT), type.name(),
@@ -128,28 +122,40 @@ final class SimulateCommand extends ContactTrackerCli.Subcommand {
 			.output("--truth", options.value(truthOption));
 		final DetectionScene scene = DetectionScenes.of(key, frames, options.value(seedOption));
 		final Calibration cal = Calibration.ofPixelSize(scene.pixelSizeNm() / 1000, "micron");
-		ImageFiles.saveTiff(TimeSeries.of(stackFile.getFileName().toString(), scene.frames(), cal), stackFile);
+		write(stackFile, scene.frames(), cal, truthFile, w -> {
+			w.write("frame,particle,x_px,y_px,diameter_px,band\n");
+			for (int t = 0; t < scene.frames().size(); t++)
+				for (int k = 0; k < scene.truth().get(t).size(); k++) {
+					final double[] c = scene.truth().get(t).get(k);
+					w.write(String.format(Locale.ROOT, "%d,%d,%.6f,%.6f,%.4f,%s%n", t, k, c[0], c[1], scene.diameter(k),
+						scene.band(t, k)));
+				}
+			w.flush();
+		});
+		out.printf(Locale.ROOT, "%s: %d frames %dx%d of the detection scene %s (%d particles; %s); truth in %s%n",
+			stackFile, frames, scene.width(), scene.height(), key, scene.scene().particles().size(), scene.description(),
+			truthFile);
+		return 0;
+	}
+
+	/** Writes the truth CSV to {@code w} (UTF-8), flushing it. */
+	private interface Truth {
+		void write(BufferedWriter w) throws IOException;
+	}
+
+	/** Writes the stack, then its truth: both or neither (the stack is deleted where the truth cannot be written). */
+	private static void write(final Path stackFile, final List<? extends ArrayImg<?, ?>> frames,
+		final Calibration cal, final Path truthFile, final Truth truth) throws IOException
+	{
+		ImageFiles.saveTiff(TimeSeries.of(stackFile.getFileName().toString(), frames, cal), stackFile);
 		try {
-			AtomicFile.write(truthFile, stream -> {
-				final BufferedWriter w = new BufferedWriter(new OutputStreamWriter(stream, StandardCharsets.UTF_8));
-				w.write("frame,particle,x_px,y_px,diameter_px,band\n");
-				for (int t = 0; t < scene.frames().size(); t++)
-					for (int k = 0; k < scene.truth().get(t).size(); k++) {
-						final double[] c = scene.truth().get(t).get(k);
-						w.write(String.format(Locale.ROOT, "%d,%d,%.6f,%.6f,%.4f,%s%n", t, k, c[0], c[1], scene.diameter(k),
-							scene.band(t, k)));
-					}
-				w.flush();
-			});
+			AtomicFile.write(truthFile, stream -> truth.write(new BufferedWriter(new OutputStreamWriter(stream,
+				StandardCharsets.UTF_8))));
 		}
 		catch (final IOException e) {
 			Files.deleteIfExists(stackFile); // both or neither
 			throw e;
 		}
-		out.printf(Locale.ROOT, "%s: %d frames %dx%d of the detection scene %s (%d particles; %s); truth in %s%n",
-			stackFile, frames, scene.width(), scene.height(), key, scene.scene().particles().size(), scene.description(),
-			truthFile);
-		return 0;
 	}
 
 	static Scenario scenario(final String text) {
