@@ -50,20 +50,22 @@ public final class Contrast {
 	public static final double DARK_RATIO = 2;
 
 	/**
-	 * Where the frame has blobs, the darkest pixel must lie this much further below the background than the
-	 * brightest above it, and the inverted frame's blobs must stand out more than its own. Particles dark inside a
-	 * bright ring (microgels, beads a little out of focus) reach 1.3 to 1.6 times as far below as above (a simulated
-	 * pair with a core 700 grey levels deep and a ring 350 high, under photon noise), and were taken for bright: the
-	 * helper then measured the noise's bumps as particles 1.9 px across and the run found 2 spots in 40 frames. Bright
-	 * particles with deep dark rings stay bright by either test: the paper authors' 1.avi reaches 1.04 times as far
-	 * either way, and its rings are no blobs.
+	 * Where the frame has blobs, its brightest pixel reaching more than this many times as far above the background as
+	 * its darkest below says bright particles; short of that, the extremes do not tell, and the blobs decide: the
+	 * inverted frame's blobs must stand out more than its own. Particles dark inside a bright ring (microgels, beads a
+	 * little out of focus) reach 1.3 to 1.6 times as far below as above while they stand apart (a simulated pair with
+	 * a core 700 grey levels deep and a ring 350 high, under photon noise); pushed into contact, their rings' light
+	 * adds up where they cross, as bright as the cores are dark (1.0 to 1.1 times as far), while their cores still
+	 * stand out twice as much as the rings at the particles' scale. Bright particles with deep dark rings stay bright:
+	 * the paper authors' 1.avi reaches 1.04 times as far either way, and its rings are no blobs; inverted, its cores
+	 * are, and it is taken for dark, as it then is.
 	 */
 	public static final double DARKER = 1.2;
 
 	/**
 	 * @return whether the frame's particles are darker than the background, to be inverted first
-	 *         ({@code core.image.Inversion}): its darkest pixel lies more than {@link #DARKER} times as far below the
-	 *         background as its brightest above it, and the inverted frame's blobs stand out more than the frame's
+	 *         ({@code core.image.Inversion}): its brightest pixel lies no more than {@link #DARKER} times as far above
+	 *         the background as its darkest below it, and the inverted frame's blobs stand out more than the frame's
 	 *         own ({@link DetectionChoice#otherContrastStronger}, at the scale of the frame's blobs); or, where the
 	 *         frame holds no blob, more than {@link #DARK_RATIO} times as far. The levels are read relative to the
 	 *         frame's light ({@link Illumination}: a ramp of light across the frame puts its extremes on the ramp),
@@ -79,7 +81,7 @@ public final class Contrast {
 		final double[] v = Illumination.residuals(plane);
 		final double median = Statistics.quantile(v, 0.5); // sorted by it
 		final double below = median - v[0], above = v[v.length - 1] - median;
-		if (!(below > DARKER * above)) return false;
+		if (!(below * DARKER > above)) return false;
 		final Plane inverted = Plane.of((RandomAccessibleInterval) Inversion.of((RandomAccessibleInterval) frame));
 		double d = ParticleScale.diameter(plane);
 		if (!(d > 0)) d = ParticleScale.diameter(inverted);

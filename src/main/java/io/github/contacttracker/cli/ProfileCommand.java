@@ -73,8 +73,9 @@ public final class ProfileCommand extends ContactTrackerCli.Subcommand {
 		"multi-channel image (from 1), or of a colour one (1 red, 2 green, 3 blue)").withDefaultExplained("0"));
 	private final Option<String> particlesOption = options.add(Option.text("--particles", "bright|dark", "particles " +
 		"brighter or darker than the background (dark: the image inverted first, as 'track --particles dark'); " +
-		"default: dark where the frame's darkest pixel lies more than twice as far below its median as its brightest " +
-		"above it, as 'track' measures it, else bright").withDefaultExplained("bright"));
+		"default: as 'track' judges it: dark where the frame's dark blobs stand out more than its bright ones (and " +
+		"its brightest pixel lies at most 1.2 times as far above the background as its darkest below), else bright")
+			.withDefaultExplained("bright"));
 	private final Option<Path> pngOption = options.add(Option.path("--png", "OUT.png", "write the profile plot"));
 	private final Option<Path> csvOption = options.add(Option.path("--csv", "OUT.csv", "write the profile table"));
 

@@ -109,12 +109,19 @@ public final class MeasuredSettings {
 
 	/**
 	 * As {@link #of(String, RandomAccessibleInterval, boolean, SettingValues, Set)}, on a movie of {@code count}
-	 * frames: where the first frame is blank ({@link Contrast#blank}: a frame before the shutter opened, the
-	 * slices of a stack below the coverslip), the helper measures on the middle one, then the last, and the notice
-	 * names the frame. Only where it measures on none do the first frame's fallbacks apply (detection by the image, or
-	 * the refusal, naming the first frame). A first frame that holds particles the helper cannot measure (a dense
-	 * field) keeps its own fallbacks: another frame of the same field gives no better values, and the helper's values
-	 * on a dense frame (an r_out reaching the neighbours) are worse than detection by the image's.
+	 * frames: where the first frame is blank ({@link Contrast#blank}: a frame before the shutter opened, the slices of
+	 * a stack below the coverslip), the helper measures on the middle one, then the last, and the notice names the
+	 * frame. So it does where the helper cannot measure on the first frame and another frame shows the particles in
+	 * the other contrast ({@link Contrast#looksDark}), the particles' contrast not given: the first frame's contrast
+	 * is then in doubt (a tweezer pair of particles dark inside a bright ring, overlapping on the first frame and
+	 * pulled apart later: where the rings cross they are as bright as the cores are dark, and the frame was taken for
+	 * bright particles). Only where it measures on none do the first frame's fallbacks apply (detection by the image,
+	 * or the refusal, naming the first frame). A first frame that holds particles the helper cannot measure (a dense
+	 * field) otherwise keeps its own fallbacks: another frame of the same field gives no better values, and the
+	 * helper's values on a crowded frame (an r_out reaching the neighbours, a diameter from a pair nearer than
+	 * contact) are worse than detection by the image's (the detection study's pair of blurred discs, measured on its
+	 * middle frame where the helper could not measure on its first: 97% of the particles found nearer than 1
+	 * diameter, against all by the image).
 	 *
 	 * @param frame supplies frame {@code t} (0-based) of the movie
 	 */
@@ -124,15 +131,34 @@ public final class MeasuredSettings {
 		final FrontEnd words)
 	{
 		final RandomAccessibleInterval<?> first = frame.apply(0);
-		if (count >= 3 && Contrast.blank((RandomAccessibleInterval) first))
-			for (final int t : new int[] { count / 2, count - 1 })
-				try {
-					return of(name, frame.apply(t), t + 1, false, integerData, settings, given, words);
+		if (count >= 3) {
+			final boolean blank = Contrast.blank((RandomAccessibleInterval) first);
+			if (blank || contrastJudged(settings, given)) {
+				if (!blank) try {
+					return of(name, first, 1, false, integerData, settings, given, words);
 				}
 				catch (final InvalidInputException e) {
-					// the next frame, then the first frame's fallbacks
+					// the frames that show the other contrast, then the first frame's fallbacks
 				}
+				final boolean dark = !blank && Contrast.looksDark((RandomAccessibleInterval) first);
+				for (final int t : new int[] { count / 2, count - 1 }) {
+					final RandomAccessibleInterval<?> other = frame.apply(t);
+					if (blank || Contrast.looksDark((RandomAccessibleInterval) other) != dark) try {
+						return of(name, other, t + 1, false, integerData, settings, given, words);
+					}
+					catch (final InvalidInputException e) {
+						// the next frame, then the first frame's fallbacks
+					}
+				}
+			}
+		}
 		return of(name, first, 1, true, integerData, settings, given, words);
+	}
+
+	/** @return whether the particles' contrast is judged from the frame ({@link Contrast#looksDark}): nobody said it */
+	private static boolean contrastJudged(final SettingValues settings, final Set<Setting<?>> given) {
+		return !given.contains(TrackingSettings.THRESHOLD) && !given.contains(TrackingSettings.PARTICLES) && !settings
+			.dark();
 	}
 
 	/**
@@ -151,7 +177,7 @@ public final class MeasuredSettings {
 		if (thresholdGiven && rOutGiven && diameter) return new Result(settings, "");
 		SettingValues v = settings;
 		final Said said = new Said();
-		if (!thresholdGiven && !particlesGiven && !settings.dark() && Contrast.looksDark(
+		if (contrastJudged(settings, given) && Contrast.looksDark(
 			(RandomAccessibleInterval) first))
 		{
 			v = v.withText(TrackingSettings.PARTICLES, TrackingSettings.DARK);

@@ -38,6 +38,7 @@ import io.github.contacttracker.advisor.Contrast;
 import io.github.contacttracker.advisor.ProfileAnalysis;
 import io.github.contacttracker.core.InvalidInputException;
 import io.github.contacttracker.core.image.Inversion;
+import io.github.contacttracker.settings.Setting;
 import io.github.contacttracker.settings.SettingValues;
 import io.github.contacttracker.settings.TrackingSettings;
 import io.github.contacttracker.lab.sim.DetectionScene;
@@ -82,19 +83,26 @@ class MeasuredSettingsTest {
 	}
 
 	/**
-	 * Inverted, such a frame is dark cores in bright rings, and its darkest pixel lies little further below its median
-	 * than its brightest above it (as on 1.avi inverted): not taken for dark particles. The helper then takes the
+	 * Inverted, such a frame is dark cores in bright rings, and its darkest pixel lies about as far below its median
+	 * as its brightest above it (as on 1.avi inverted): the levels do not tell, its blobs do (the cores stand out more
+	 * than the rings), and it is measured as the bright frame is, inverted. Said to be bright, the helper takes the
 	 * rings for cores and its threshold lies above every pixel; that is said, with what to do, instead of a refusal of
-	 * the threshold later. Told, the values are those of the bright frame.
+	 * the threshold later. Told dark, the values are those of the bright frame.
 	 */
 	@Test
 	void aThresholdAboveEveryPixelSaysWhatToTry() {
 		final RandomAccessibleInterval<UnsignedByteType> bright = brightField(), dark = inverted(bright);
 		assertFalse(Contrast.looksDark(bright));
-		assertFalse(Contrast.looksDark(dark), "1.avi inverted is not taken for dark either");
+		assertTrue(Contrast.looksDark(dark), "1.avi inverted is dark cores in bright rings");
 		final SettingValues defaults = SettingValues.defaults();
+		final MeasuredSettings.Result seen = MeasuredSettings.of("bf.tif", dark, true, defaults, Set.of(),
+			FrontEnd.COMMAND_LINE);
+		final MeasuredSettings.Result measured = MeasuredSettings.of("bf.tif", bright, true, defaults, Set.of(),
+			FrontEnd.COMMAND_LINE);
+		assertEquals(measured.settings().withText(TrackingSettings.PARTICLES, TrackingSettings.DARK), seen.settings());
 		final InvalidInputException e = assertThrows(InvalidInputException.class, () -> MeasuredSettings.of("bf.tif",
-			dark, true, defaults, Set.of(), FrontEnd.COMMAND_LINE));
+			dark, true, defaults.withText(TrackingSettings.PARTICLES, "bright"), Set.of(
+				TrackingSettings.PARTICLES), FrontEnd.COMMAND_LINE));
 		assertTrue(e.getMessage().startsWith("cannot measure --threshold on the first frame of bf.tif: the helper's "),
 			e.getMessage());
 		assertTrue(e.getMessage().contains(" lies above its every pixel ("), e.getMessage());
@@ -138,11 +146,16 @@ class MeasuredSettingsTest {
 	 * particles inverted about the background: bright cores in dark rings.
 	 */
 	private static RandomAccessibleInterval<UnsignedShortType> ringsOnARamp(final double sign) {
+		return ringsOnARamp(sign, 48);
+	}
+
+	/** As {@link #ringsOnARamp(double)}, the pair's centres {@code apart} px apart (its diameter is about 24 px). */
+	private static RandomAccessibleInterval<UnsignedShortType> ringsOnARamp(final double sign, final double apart) {
 		final RadialProfile profile = r -> sign * (-700 * Math.exp(-r * r / (2 * 4.2 * 4.2)) + 350 * Math.exp(-(r - 12) *
 			(r - 12) / (2 * 2.2 * 2.2)));
 		final int w = 200, h = 140;
-		final NoiseFreeImage image = new ImageSimulator(profile, 3).render(List.of(new double[] { 76, 70 }, new double[] {
-			124, 70 }), w, h, 0);
+		final NoiseFreeImage image = new ImageSimulator(profile, 3).render(List.of(new double[] { 100 - apart / 2, 70 }, new double[] {
+			100 + apart / 2, 70 }), w, h, 0);
 		final double[] p = image.pixels();
 		for (int y = 0; y < h; y++)
 			for (int x = 0; x < w; x++)
@@ -165,6 +178,26 @@ class MeasuredSettingsTest {
 			Set.of(), FrontEnd.COMMAND_LINE);
 		assertTrue(r.settings().dark() && r.notice().contains("--particles dark"), r.notice());
 		assertEquals(24, r.settings().diameter(), 4, r.notice());
+	}
+
+	/**
+	 * Pushed into contact, a tweezer pair of such particles puts its two rings' light together where they cross, as
+	 * bright there as the cores are dark: the frame's extremes no longer tell (its darkest pixel 1.0 to 1.1 times as
+	 * far below as its brightest above), and its blobs decide (the cores stand out about twice as much as the rings at
+	 * the particles' scale). This pair was taken for bright below 1.17 diameters apart, and a single frame of the
+	 * detection study's ring pair at 1.08 and 0.96 diameters refused ("no single particle away from the border");
+	 * with the blobs deciding, it is dark down to contact, and both of the study's particles are found. Inverted,
+	 * still bright.
+	 */
+	@Test
+	void darkCoresInBrightRingsAtContactAreTakenForDark() {
+		for (final double apart : new double[] { 26, 24 }) {
+			assertTrue(Contrast.looksDark(ringsOnARamp(1, apart)), "apart " + apart);
+			assertFalse(Contrast.looksDark(ringsOnARamp(-1, apart)), "apart " + apart);
+		}
+		final MeasuredSettings.Result r = MeasuredSettings.of("pair.tif", ringsOnARamp(1, 24), true, SettingValues
+			.defaults(), Set.of(), FrontEnd.COMMAND_LINE);
+		assertTrue(r.settings().dark() && r.notice().contains("--particles dark"), r.notice());
 	}
 
 	/**
@@ -211,9 +244,13 @@ class MeasuredSettingsTest {
 	 */
 	@Test
 	void theHelperSpeaksTheFrontEndsWords() {
+		// (dark cores in bright rings said to be bright)
 		final RandomAccessibleInterval<UnsignedByteType> dark = inverted(brightField());
+		final SettingValues bright = SettingValues.defaults().withText(TrackingSettings.PARTICLES,
+			"bright");
+		final Set<Setting<?>> said = Set.of(TrackingSettings.PARTICLES);
 		final InvalidInputException fiji = assertThrows(InvalidInputException.class, () -> MeasuredSettings.of("bf.tif",
-			dark, true, SettingValues.defaults(), Set.of(), FrontEnd.FIJI));
+			dark, true, bright, said, FrontEnd.FIJI));
 		assertFalse(fiji.getMessage().contains("--"), fiji.getMessage());
 		assertTrue(fiji.getMessage().startsWith("cannot measure 'Threshold' (macro threshold) on the first frame"), fiji
 			.getMessage());
@@ -221,7 +258,7 @@ class MeasuredSettingsTest {
 		assertTrue(fiji.getMessage().contains("(Plugins > Tracking > Contact Tracker Profile, a click on the particle, " +
 			"measures one particle)"), fiji.getMessage());
 		final InvalidInputException cli = assertThrows(InvalidInputException.class, () -> MeasuredSettings.of("bf.tif",
-			dark, true, SettingValues.defaults(), Set.of(), FrontEnd.COMMAND_LINE));
+			dark, true, bright, said, FrontEnd.COMMAND_LINE));
 		assertTrue(cli.getMessage().contains("give --particles dark") && cli.getMessage().contains(
 			"(contact-tracker profile MOVIE --at X,Y measures one particle)"), cli.getMessage());
 
@@ -402,5 +439,48 @@ class MeasuredSettingsTest {
 			List.of(blank)::get, 1, true, defaults, Set.of(), FrontEnd.COMMAND_LINE));
 		assertTrue(e.getMessage().startsWith("cannot measure the particles on the first frame of blank.tif"), e
 			.getMessage());
+	}
+
+	/**
+	 * A tweezer pair that starts overlapping and is pulled apart: on the first frame the helper finds no particle
+	 * standing alone, so it measures on the middle frame, where the two stand apart, and says which; the values are
+	 * those of that frame alone (dark cores in bright rings, their diameter). Before, the first frame's fallback
+	 * tracked the whole movie by the image as bright particles: on the detection study's ring pair played backwards,
+	 * 64% of the particles were found, none closer than 0.75 diameters; now all, unflagged.
+	 */
+	@Test
+	void aPairOverlappingOnTheFirstFrameIsMeasuredWhereItStandsApart() {
+		final List<RandomAccessibleInterval<UnsignedShortType>> movie = List.of(ringsOnARamp(1, 12), ringsOnARamp(1, 30),
+			ringsOnARamp(1, 40), ringsOnARamp(1, 48));
+		final SettingValues defaults = SettingValues.defaults();
+		final MeasuredSettings.Result first = MeasuredSettings.of("pair.tif", movie.get(0), true, defaults, Set.of(),
+			FrontEnd.COMMAND_LINE);
+		assertTrue(first.notice().contains("the profile helper could not measure"), first.notice());
+		final MeasuredSettings.Result onMovie = MeasuredSettings.of("pair.tif", movie::get, movie.size(), true, defaults,
+			Set.of(), FrontEnd.COMMAND_LINE);
+		final MeasuredSettings.Result onFrame = MeasuredSettings.of("pair.tif", movie.get(2), true, defaults, Set.of(),
+			FrontEnd.COMMAND_LINE);
+		assertTrue(onMovie.notice().contains("measured on frame 3 by the profile helper: --particles dark"), onMovie
+			.notice());
+		assertEquals(onFrame.notice().replace("frame 1", "frame 3"), onMovie.notice());
+		assertEquals(onFrame.settings(), onMovie.settings());
+	}
+
+	/**
+	 * A packed field the helper cannot measure on keeps the first frame's fallback (detection by the image, at the
+	 * diameter of its blobs): another frame of the same field gives no better values.
+	 */
+	@Test
+	void aPackedFirstFrameKeepsItsFallback() {
+		final RandomAccessibleInterval<UnsignedByteType> packed = firstFrame(DetectionScenes.dense(1, 3));
+		final List<RandomAccessibleInterval<UnsignedByteType>> movie = List.of(packed, packed, packed);
+		final SettingValues defaults = SettingValues.defaults();
+		final MeasuredSettings.Result onMovie = MeasuredSettings.of("dense.tif", movie::get, movie.size(), true,
+			defaults, Set.of(), FrontEnd.COMMAND_LINE);
+		final MeasuredSettings.Result onFrame = MeasuredSettings.of("dense.tif", packed, true, defaults, Set.of(),
+			FrontEnd.COMMAND_LINE);
+		assertTrue(onMovie.notice().contains("tracked by the particles' image"), onMovie.notice());
+		assertEquals(onFrame.notice(), onMovie.notice());
+		assertEquals(onFrame.settings(), onMovie.settings());
 	}
 }
