@@ -61,8 +61,15 @@ public final class MeasuredSettings {
 	/**
 	 * @param settings the settings to use
 	 * @param notice what was measured, with the options that override it, in one line; empty when nothing was
+	 * @param profiled how many particles the helper pooled the profile of (0 where it did not measure)
 	 */
-	public record Result(SettingValues settings, String notice) {}
+	public record Result(SettingValues settings, String notice, int profiled) {
+
+		/** A result the helper did not measure. */
+		public Result(final SettingValues settings, final String notice) {
+			this(settings, notice, 0);
+		}
+	}
 
 	/**
 	 * @param name the movie's file name, for messages
@@ -109,54 +116,20 @@ public final class MeasuredSettings {
 
 	/**
 	 * As {@link #of(String, RandomAccessibleInterval, boolean, SettingValues, Set)}, on a movie of {@code count}
-	 * frames: where the first frame is blank ({@link Contrast#blank}: a frame before the shutter opened, the slices of
-	 * a stack below the coverslip), the helper measures on the middle one, then the last, and the notice names the
-	 * frame. So it does where the helper cannot measure on the first frame and another frame shows the particles in
-	 * the other contrast ({@link Contrast#looksDark}), the particles' contrast not given: the first frame's contrast
-	 * is then in doubt (a tweezer pair of particles dark inside a bright ring, overlapping on the first frame and
-	 * pulled apart later: where the rings cross they are as bright as the cores are dark, and the frame was taken for
-	 * bright particles). Only where it measures on none do the first frame's fallbacks apply (detection by the image,
-	 * or the refusal, naming the first frame). A first frame that holds particles the helper cannot measure (a dense
-	 * field) otherwise keeps its own fallbacks: another frame of the same field gives no better values, and the
-	 * helper's values on a crowded frame (an r_out reaching the neighbours, a diameter from a pair nearer than
-	 * contact) are worse than detection by the image's (the detection study's pair of blurred discs, measured on its
-	 * middle frame where the helper could not measure on its first: 97% of the particles found nearer than 1
-	 * diameter, against all by the image).
+	 * frames, measured on the frame {@link HelperFrames} chooses (the first, unless it is blank, looks the other
+	 * contrast's, or sizes a lone blob unlike the others), which the notice names.
 	 *
 	 * @param frame supplies frame {@code t} (0-based) of the movie
 	 */
-	@SuppressWarnings({ "unchecked", "rawtypes" })
 	public static Result of(final String name, final IntFunction<? extends RandomAccessibleInterval<?>> frame,
 		final int count, final boolean integerData, final SettingValues settings, final Set<Setting<?>> given,
 		final FrontEnd words)
 	{
-		final RandomAccessibleInterval<?> first = frame.apply(0);
-		if (count >= 3) {
-			final boolean blank = Contrast.blank((RandomAccessibleInterval) first);
-			if (blank || contrastJudged(settings, given)) {
-				if (!blank) try {
-					return of(name, first, 1, false, integerData, settings, given, words);
-				}
-				catch (final InvalidInputException e) {
-					// the frames that show the other contrast, then the first frame's fallbacks
-				}
-				final boolean dark = !blank && Contrast.looksDark((RandomAccessibleInterval) first);
-				for (final int t : new int[] { count / 2, count - 1 }) {
-					final RandomAccessibleInterval<?> other = frame.apply(t);
-					if (blank || Contrast.looksDark((RandomAccessibleInterval) other) != dark) try {
-						return of(name, other, t + 1, false, integerData, settings, given, words);
-					}
-					catch (final InvalidInputException e) {
-						// the next frame, then the first frame's fallbacks
-					}
-				}
-			}
-		}
-		return of(name, first, 1, true, integerData, settings, given, words);
+		return HelperFrames.of(name, frame, count, integerData, settings, given, words);
 	}
 
 	/** @return whether the particles' contrast is judged from the frame ({@link Contrast#looksDark}): nobody said it */
-	private static boolean contrastJudged(final SettingValues settings, final Set<Setting<?>> given) {
+	static boolean contrastJudged(final SettingValues settings, final Set<Setting<?>> given) {
 		return !given.contains(TrackingSettings.THRESHOLD) && !given.contains(TrackingSettings.PARTICLES) && !settings
 			.dark();
 	}
@@ -167,7 +140,7 @@ public final class MeasuredSettings {
 	 *        may be chosen); without, it is refused
 	 */
 	@SuppressWarnings({ "unchecked", "rawtypes" })
-	private static Result of(final String name, final RandomAccessibleInterval<?> first, final int number,
+	static Result of(final String name, final RandomAccessibleInterval<?> first, final int number,
 		final boolean fallBack, final boolean integerData, final SettingValues settings, final Set<Setting<?>> given,
 		final FrontEnd words)
 	{
@@ -272,7 +245,7 @@ public final class MeasuredSettings {
 		return new Result(v, "contact-tracker: " + name + ": measured on frame " + number + " by the profile helper" + (blobs
 			? " at the diameter of the frame's blobs (its own threshold lay outside the frame's range)" : "") + ":" + said
 				.in(words) + " (given values win; " + words.showsHow(name) + (blobs ? " with " + words.value(
-					TrackingSettings.DIAMETER, optionValue(v.diameter())) : "") + " shows how)");
+					TrackingSettings.DIAMETER, optionValue(v.diameter())) : "") + " shows how)", r.particles());
 	}
 
 	/** @return whether the helper measured the particles' diameter on their rim (at half height) */

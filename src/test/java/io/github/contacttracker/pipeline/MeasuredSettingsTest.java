@@ -483,4 +483,31 @@ class MeasuredSettingsTest {
 		assertEquals(onFrame.notice(), onMovie.notice());
 		assertEquals(onFrame.settings(), onMovie.settings());
 	}
+
+	/**
+	 * A pair of blurred discs held overlapping on the first frame (0.5 diameters) and pulled apart to 2: the helper
+	 * measures the first frame's overlap as one particle nearly twice as wide, and the middle frame's pair, 1.27
+	 * diameters apart, sets its spacing; the last frame, where the pair stands apart, gives the particles' size, and
+	 * its values are taken, and said. The movie played forwards keeps its first frame's values.
+	 */
+	@Test
+	void aPairOverlappingOnTheFirstFrameIsSizedWhereItStandsApart() {
+		final List<RandomAccessibleInterval<?>> forward = new ArrayList<>(DetectionScenes.pairSweep(40, 1).frames());
+		final List<RandomAccessibleInterval<?>> backward = new ArrayList<>(forward);
+		java.util.Collections.reverse(backward);
+		final SettingValues defaults = SettingValues.defaults();
+		final MeasuredSettings.Result first = MeasuredSettings.of("pair.tif", backward.get(0), true, defaults, Set.of(),
+			FrontEnd.COMMAND_LINE);
+		assertTrue(first.settings().diameter() > 18, first.notice());
+		final MeasuredSettings.Result onMovie = MeasuredSettings.of("pair.tif", backward::get, backward.size(), true,
+			defaults, Set.of(), FrontEnd.COMMAND_LINE);
+		final MeasuredSettings.Result onLast = MeasuredSettings.of("pair.tif", backward.get(39), true, defaults, Set
+			.of(), FrontEnd.COMMAND_LINE);
+		assertEquals(onLast.notice().replace("frame 1", "frame 40"), onMovie.notice());
+		assertEquals(onLast.settings(), onMovie.settings());
+		assertEquals(12, onMovie.settings().diameter(), 1, onMovie.notice());
+		final MeasuredSettings.Result played = MeasuredSettings.of("pair.tif", forward::get, forward.size(), true,
+			defaults, Set.of(), FrontEnd.COMMAND_LINE);
+		assertTrue(played.notice().contains("measured on frame 1 by the profile helper"), played.notice());
+	}
 }
