@@ -107,7 +107,8 @@ final class HelperFrames {
 	 * @return the first frame's measurement where the helper profiled several particles there (of one size they are
 	 *         not all blobs of several), where the middle frame's diameter agrees with it ({@link #SIZES_DISAGREE}), or
 	 *         where the middle frame cannot be measured on; else, of the first, middle and last frames' (the last where
-	 *         it can be measured on), the measurement of the smallest diameter. Where particles crowd, the
+	 *         the helper measures particles there, if only their rim), the measurement of the smallest diameter. Where
+	 *         particles crowd, the
 	 *         helper's diameter errs large, never small: a blob of two overlapping ones is measured as one particle
 	 *         twice as wide, and two standing closer than their size apart set the spots' spacing it reads. So a
 	 *         tweezer pair held overlapping on the first frame and pulled apart was tracked with the diameter of the
@@ -129,13 +130,17 @@ final class HelperFrames {
 		return smallest;
 	}
 
-	/** @return the helper's measurement on frame {@code t} (0-based), or null where it cannot measure there */
+	/**
+	 * @return the helper's measurement on frame {@code t} (0-based), its rim's where it measured the particles but no
+	 *         threshold there; null where it measured no particle
+	 */
 	private static Result measuredOn(final String name, final IntFunction<? extends RandomAccessibleInterval<?>> frame,
 		final int t, final boolean integerData, final SettingValues settings, final Set<Setting<?>> given,
 		final FrontEnd words)
 	{
 		try {
-			return MeasuredSettings.of(name, frame.apply(t), t + 1, false, integerData, settings, given, words);
+			final Result r = MeasuredSettings.of(name, frame.apply(t), t + 1, true, integerData, settings, given, words);
+			return r.profiled() > 0 ? r : null;
 		}
 		catch (final InvalidInputException e) {
 			return null;

@@ -219,8 +219,12 @@ public final class MeasuredSettings {
 						fallen = fallen.with(TrackingSettings.R_OUT, r.suggestedROut());
 						kept.add(TrackingSettings.R_OUT, optionValue(r.suggestedROut()));
 					}
-					return byImage(name, frame, fallen, false, rOutGiven || rim, kept, rim && (!diameter || !rOutGiven),
-						new InvalidInputException("its threshold " + optionValue(t) + " lies " + side + " every pixel"), words);
+					final Result image = byImage(name, frame, fallen, false, rOutGiven || rim, kept, rim && (!diameter ||
+						!rOutGiven), new InvalidInputException("its threshold " + optionValue(t) + " lies " + side +
+							" every pixel"), words);
+					// (the helper measured the particles on that frame, though not the threshold: said, and counted)
+					return !rim ? image : new Result(image.settings(), number == 1 ? image.notice() : image.notice()
+						.replace(RIM_MEASURED, RIM_MEASURED + " on frame " + number), r.particles());
 				}
 				throw new InvalidInputException("cannot measure " + words.name(TrackingSettings.THRESHOLD) + " on the first " +
 					"frame of " + name + ": the helper's " + optionValue(t) + " lies " + side + " its every pixel (" +
@@ -410,10 +414,13 @@ public final class MeasuredSettings {
 				v.diameter())));
 			said.add(TrackingSettings.R_OUT, optionValue(v.get(TrackingSettings.R_OUT)));
 		}
-		return new Result(v, "contact-tracker: " + name + ": the profile helper " + (rimKept ? "measured the particles' " +
-			"rim but no threshold (" : "could not measure (") + InvalidInputException.oneLine(why.getMessage()) +
+		return new Result(v, "contact-tracker: " + name + ": " + (rimKept ? RIM_MEASURED + " but no threshold ("
+			: "the profile helper could not measure (") + InvalidInputException.oneLine(why.getMessage()) +
 			"); tracked by the particles' image:" + said.in(words) + " (given values win)");
 	}
+
+	/** What a notice says where the helper measured the particles' rim but not the threshold. */
+	private static final String RIM_MEASURED = "the profile helper measured the particles' rim";
 
 	/** The values a notice says were measured, in order, said in a front end's words ({@link FrontEnd#values}). */
 	private static final class Said {

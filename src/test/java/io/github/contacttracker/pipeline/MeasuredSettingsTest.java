@@ -488,7 +488,8 @@ class MeasuredSettingsTest {
 	 * A pair of blurred discs held overlapping on the first frame (0.5 diameters) and pulled apart to 2: the helper
 	 * measures the first frame's overlap as one particle nearly twice as wide, and the middle frame's pair, 1.27
 	 * diameters apart, sets its spacing; the last frame, where the pair stands apart, gives the particles' size, and
-	 * its values are taken, and said. The movie played forwards keeps its first frame's values.
+	 * its values are taken, and said (on another movie of the scene, the last frame's rim, where the helper measures
+	 * no threshold). The movie played forwards keeps its first frame's values.
 	 */
 	@Test
 	void aPairOverlappingOnTheFirstFrameIsSizedWhereItStandsApart() {
@@ -509,5 +510,13 @@ class MeasuredSettingsTest {
 		final MeasuredSettings.Result played = MeasuredSettings.of("pair.tif", forward::get, forward.size(), true,
 			defaults, Set.of(), FrontEnd.COMMAND_LINE);
 		assertTrue(played.notice().contains("measured on frame 1 by the profile helper"), played.notice());
+		// another movie of the scene: on its last frame the helper measures the rim but no threshold, whose size counts
+		final List<RandomAccessibleInterval<?>> third = new ArrayList<>(DetectionScenes.pairSweep(40, 3).frames());
+		java.util.Collections.reverse(third);
+		final MeasuredSettings.Result rim = MeasuredSettings.of("pair.tif", third::get, third.size(), true, defaults,
+			Set.of(), FrontEnd.COMMAND_LINE);
+		assertTrue(rim.notice().contains("the profile helper measured the particles' rim on frame 40 but no threshold"),
+			rim.notice());
+		assertEquals(12, rim.settings().diameter(), 1, rim.notice());
 	}
 }
