@@ -248,7 +248,7 @@ public final class MeasuredSettings {
 		}
 		return new Result(v, "contact-tracker: " + name + ": measured on frame " + number + " by the profile helper" + (blobs
 			? " at the diameter of the frame's blobs (its own threshold lay outside the frame's range)" : "") + ":" + said
-				.in(words) + " (given values win; " + words.showsHow(name) + (blobs ? " with " + words.value(
+				.in(words) + " (given values win; " + words.showsHow(name, number) + (blobs ? " with " + words.value(
 					TrackingSettings.DIAMETER, optionValue(v.diameter())) : "") + " shows how)", r.particles());
 	}
 

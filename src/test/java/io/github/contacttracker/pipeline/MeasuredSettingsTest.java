@@ -431,7 +431,8 @@ class MeasuredSettingsTest {
 			defaults, Set.of(), FrontEnd.COMMAND_LINE);
 		final MeasuredSettings.Result onFrame = MeasuredSettings.of("movie.tif", particles, true, defaults, Set.of(), FrontEnd.COMMAND_LINE);
 		assertTrue(onMovie.notice().contains("measured on frame 3 by the profile helper"), onMovie.notice());
-		assertEquals(onFrame.notice().replace("frame 1", "frame 3"), onMovie.notice());
+		assertEquals(onFrame.notice().replace("frame 1", "frame 3").replace("profile movie.tif", "profile --frame 3 movie.tif"),
+			onMovie.notice());
 		assertEquals(onFrame.settings(), onMovie.settings());
 		assertEquals(TrackingSettings.AUTO, onMovie.settings().get(TrackingSettings.DETECTION), "not sent to the image");
 		// one frame, blank: nothing to measure on, said (a constant frame holds no blob either)
@@ -462,7 +463,8 @@ class MeasuredSettingsTest {
 			FrontEnd.COMMAND_LINE);
 		assertTrue(onMovie.notice().contains("measured on frame 3 by the profile helper: --particles dark"), onMovie
 			.notice());
-		assertEquals(onFrame.notice().replace("frame 1", "frame 3"), onMovie.notice());
+		assertEquals(onFrame.notice().replace("frame 1", "frame 3").replace("profile pair.tif", "profile --frame 3 pair.tif"),
+			onMovie.notice());
 		assertEquals(onFrame.settings(), onMovie.settings());
 	}
 
@@ -504,7 +506,8 @@ class MeasuredSettingsTest {
 			defaults, Set.of(), FrontEnd.COMMAND_LINE);
 		final MeasuredSettings.Result onLast = MeasuredSettings.of("pair.tif", backward.get(39), true, defaults, Set
 			.of(), FrontEnd.COMMAND_LINE);
-		assertEquals(onLast.notice().replace("frame 1", "frame 40"), onMovie.notice());
+		assertEquals(onLast.notice().replace("frame 1", "frame 40").replace("profile pair.tif", "profile --frame 40 pair.tif"),
+			onMovie.notice());
 		assertEquals(onLast.settings(), onMovie.settings());
 		assertEquals(12, onMovie.settings().diameter(), 1, onMovie.notice());
 		final MeasuredSettings.Result played = MeasuredSettings.of("pair.tif", forward::get, forward.size(), true,
