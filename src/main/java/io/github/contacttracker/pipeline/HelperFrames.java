@@ -68,20 +68,15 @@ final class HelperFrames {
 		final RandomAccessibleInterval<?> first = frame.apply(0);
 		if (count >= 3) {
 			final boolean blank = Contrast.blank((RandomAccessibleInterval) first);
-			if (!blank && !(settings.diameter() > 0)) try {
-				return consistent(MeasuredSettings.of(name, first, 1, false, integerData, settings, given, words), name,
-					frame, count, integerData, settings, given, words);
+			final boolean judged = MeasuredSettings.contrastJudged(settings, given), sized = settings.diameter() > 0;
+			if (!blank && (judged || !sized)) try {
+				final Result measured = MeasuredSettings.of(name, first, 1, false, integerData, settings, given, words);
+				return sized ? measured : consistent(measured, name, frame, count, integerData, settings, given, words);
 			}
 			catch (final InvalidInputException e) {
-				// below
+				// the frames that show the other contrast, then the first frame's fallbacks
 			}
-			if (blank || MeasuredSettings.contrastJudged(settings, given)) {
-				if (!blank && settings.diameter() > 0) try {
-					return MeasuredSettings.of(name, first, 1, false, integerData, settings, given, words);
-				}
-				catch (final InvalidInputException e) {
-					// the frames that show the other contrast, then the first frame's fallbacks
-				}
+			if (blank || judged) {
 				final boolean dark = !blank && Contrast.looksDark((RandomAccessibleInterval) first);
 				for (final int t : new int[] { count / 2, count - 1 }) {
 					final RandomAccessibleInterval<?> other = frame.apply(t);
@@ -108,11 +103,10 @@ final class HelperFrames {
 	 *         not all blobs of several), where the middle frame's diameter agrees with it ({@link #SIZES_DISAGREE}), or
 	 *         where the middle frame cannot be measured on; else, of the first, middle and last frames' (the last where
 	 *         the helper measures particles there, if only their rim), the measurement of the smallest diameter. Where
-	 *         particles crowd, the
-	 *         helper's diameter errs large, never small: a blob of two overlapping ones is measured as one particle
-	 *         twice as wide, and two standing closer than their size apart set the spots' spacing it reads. So a
-	 *         tweezer pair held overlapping on the first frame and pulled apart was tracked with the diameter of the
-	 *         overlap (the detection study's blurred pair played backwards: 22.6 px on the first frame, 15.2 on the
+	 *         particles crowd, the helper's diameter errs large, never small: a blob of two overlapping ones is
+	 *         measured as one particle twice as wide, and two standing closer than their size apart set the spots'
+	 *         spacing it reads. So a tweezer pair held overlapping on the first frame and pulled apart was tracked with
+	 *         the diameter of the overlap (the detection study's blurred pair played backwards: 22.6 px on the first frame, 15.2 on the
 	 *         middle one at 1.27 diameters, 11.6 on the last, true 12).
 	 */
 	private static Result consistent(final Result first, final String name,

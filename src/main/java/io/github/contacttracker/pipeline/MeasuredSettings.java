@@ -166,7 +166,7 @@ public final class MeasuredSettings {
 			final Seen frame = new Seen(seen);
 			final boolean otherContrast = autoSeesOtherContrast(v, frame, particlesGiven);
 			if (imageCanTake(v) && !(auto(v) && (thresholdGiven && rOutGiven || otherContrast))) return byImage(name,
-				frame, v, thresholdGiven, rOutGiven, said, false, e, words);
+				number, frame, v, thresholdGiven, rOutGiven, said, false, e, words);
 			if (thresholdGiven && rOutGiven) return new Result(settings, "contact-tracker: " + name + ": the diameter " +
 				"could not be measured (" + InvalidInputException.oneLine(e.getMessage()) + "); tracked without it (give " +
 				words.name(TrackingSettings.DIAMETER) + ")");
@@ -219,12 +219,11 @@ public final class MeasuredSettings {
 						fallen = fallen.with(TrackingSettings.R_OUT, r.suggestedROut());
 						kept.add(TrackingSettings.R_OUT, optionValue(r.suggestedROut()));
 					}
-					final Result image = byImage(name, frame, fallen, false, rOutGiven || rim, kept, rim && (!diameter ||
-						!rOutGiven), new InvalidInputException("its threshold " + optionValue(t) + " lies " + side +
-							" every pixel"), words);
-					// (the helper measured the particles on that frame, though not the threshold: said, and counted)
-					return !rim ? image : new Result(image.settings(), number == 1 ? image.notice() : image.notice()
-						.replace(RIM_MEASURED, RIM_MEASURED + " on frame " + number), r.particles());
+					final Result image = byImage(name, number, frame, fallen, false, rOutGiven || rim, kept, rim &&
+						(!diameter || !rOutGiven), new InvalidInputException("its threshold " + optionValue(t) + " lies " +
+							side + " every pixel"), words);
+					// (the helper measured the particles, though not the threshold: counted)
+					return rim ? new Result(image.settings(), image.notice(), r.particles()) : image;
 				}
 				throw new InvalidInputException("cannot measure " + words.name(TrackingSettings.THRESHOLD) + " on the first " +
 					"frame of " + name + ": the helper's " + optionValue(t) + " lies " + side + " its every pixel (" +
@@ -378,12 +377,14 @@ public final class MeasuredSettings {
 	 * diameter (a particle's image reaches about a radius beyond its edge), or less where the particles are packed
 	 * closer ({@link #SPACED}), all said in the notice.
 	 *
+	 * @param number the frame's number in the movie, counted from 1, for the notice where the helper measured its rim
 	 * @param rimKept whether {@code said} holds the helper's rim diameter or r_out, kept where only its threshold lies
-	 *        outside the frame's range: the notice then says what the helper measured, and what it did not
+	 *        outside the frame's range: the notice then says what the helper measured (on which frame, after the
+	 *        first), and what it did not
 	 * @throws InvalidInputException where the frame holds no blob to measure the diameter on
 	 */
 	@SuppressWarnings({ "rawtypes", "unchecked" })
-	private static Result byImage(final String name, final Seen seen, final SettingValues given,
+	private static Result byImage(final String name, final int number, final Seen seen, final SettingValues given,
 		final boolean thresholdGiven, final boolean rOutGiven, final Said said, final boolean rimKept,
 		final InvalidInputException why, final FrontEnd words)
 	{
@@ -414,13 +415,11 @@ public final class MeasuredSettings {
 				v.diameter())));
 			said.add(TrackingSettings.R_OUT, optionValue(v.get(TrackingSettings.R_OUT)));
 		}
-		return new Result(v, "contact-tracker: " + name + ": " + (rimKept ? RIM_MEASURED + " but no threshold ("
-			: "the profile helper could not measure (") + InvalidInputException.oneLine(why.getMessage()) +
+		return new Result(v, "contact-tracker: " + name + ": the profile helper " + (rimKept ? "measured the particles' " +
+			"rim" + (number > 1 ? " on frame " + number : "") + " but no threshold (" : "could not measure (") +
+			InvalidInputException.oneLine(why.getMessage()) +
 			"); tracked by the particles' image:" + said.in(words) + " (given values win)");
 	}
-
-	/** What a notice says where the helper measured the particles' rim but not the threshold. */
-	private static final String RIM_MEASURED = "the profile helper measured the particles' rim";
 
 	/** The values a notice says were measured, in order, said in a front end's words ({@link FrontEnd#values}). */
 	private static final class Said {

@@ -127,19 +127,14 @@ public enum FrontEnd {
 			"Profile, a click on the particle,";
 	}
 
-	/** @return what shows how the profile helper measured a movie's values, as the subject of "shows how" */
-	public String showsHow(final String movie) {
-		return showsHow(movie, 1);
-	}
-
 	/**
 	 * @param frame the frame (counted from 1) the values were measured on
 	 * @return what shows how the profile helper measured a movie's values on that frame, as the subject of "shows how"
 	 */
 	public String showsHow(final String movie, final int frame) {
-		final String on = frame > 1 ? " on frame " + frame : "";
-		return this == COMMAND_LINE ? "'contact-tracker profile " + (frame > 1 ? "--frame " + frame + " " : "") + movie +
-			"'" : "Plugins > Tracking > Contact Tracker Profile" + on;
+		if (this == COMMAND_LINE) return "'contact-tracker profile " + (frame > 1 ? "--frame " + frame + " " : "") +
+			movie + "'";
+		return "Plugins > Tracking > Contact Tracker Profile" + (frame > 1 ? " on frame " + frame : "");
 	}
 
 	/**
