@@ -75,14 +75,28 @@ public final class Contrast {
 	 *         monolayer of bright discs at an area fraction of 0.6: the median test says dark, the inverted blobs
 	 *         stand 1.06 times as high as the frame's; dark spheres in dyed fluid on a confocal slice, 2.3).
 	 */
-	@SuppressWarnings({ "rawtypes", "unchecked" })
 	public static boolean looksDark(final RandomAccessibleInterval<? extends RealType<?>> frame) {
+		return looksDark(frame, 0);
+	}
+
+	/**
+	 * {@link #looksDark(RandomAccessibleInterval)}; where {@code diameter > 0} (someone gave it), the blobs at that
+	 * diameter decide alone ({@link DetectionChoice#otherContrastStrongerAt}). The frame's own blobs can be a large
+	 * particle's texture and the pieces of its rim, and its extremes the rim's light: a tweezer's bead 62 px across,
+	 * dark inside a bright rim that reaches the 8-bit ceiling, lies 1.2 times as far above the background as its
+	 * core below, and at its own diameter it stands inverted 15 times as high as anything else in the frame.
+	 *
+	 * @param diameter the particles' diameter as given (px), or 0 (not given: the frame's blobs')
+	 */
+	@SuppressWarnings({ "rawtypes", "unchecked" })
+	public static boolean looksDark(final RandomAccessibleInterval<? extends RealType<?>> frame, final double diameter) {
 		final Plane plane = Plane.of((RandomAccessibleInterval) frame);
+		final Plane inverted = Plane.of((RandomAccessibleInterval) Inversion.of((RandomAccessibleInterval) frame));
+		if (diameter > 0) return DetectionChoice.otherContrastStrongerAt(plane, inverted, diameter);
 		final double[] v = Illumination.residuals(plane);
 		final double median = Statistics.quantile(v, 0.5); // sorted by it
 		final double below = median - v[0], above = v[v.length - 1] - median;
 		if (!(below * DARKER > above)) return false;
-		final Plane inverted = Plane.of((RandomAccessibleInterval) Inversion.of((RandomAccessibleInterval) frame));
 		double d = ParticleScale.diameter(plane);
 		if (!(d > 0)) d = ParticleScale.diameter(inverted);
 		// no blob at any scale to compare: the levels alone decide

@@ -103,7 +103,7 @@ public final class ProfileCommand extends ContactTrackerCli.Subcommand {
 		final ImagePlusFrames plain = ImagePlusFrames.of(imp, options.value(channelOption));
 		// as 'track' measures: dark where the frame looks so, unless bright or dark was said
 		final boolean dark = said || !given && frame >= 1 && frame <= plain.frameCount() && Contrast.looksDark(plain
-			.frame(frame - 1));
+			.frame(frame - 1), options.value(diameterOption));
 		final ImagePlusFrames frames = dark ? ImagePlusFrames.of(imp, options.value(channelOption), true) : plain;
 		if (frame < 1 || frame > frames.frameCount())
 			throw new InvalidInputException("--frame " + frame + " does not exist: " + movie + " has " + frames

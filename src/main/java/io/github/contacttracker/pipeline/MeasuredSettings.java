@@ -152,7 +152,7 @@ public final class MeasuredSettings {
 		SettingValues v = settings;
 		final Said said = new Said();
 		if (contrastJudged(settings, given) && Contrast.looksDark(
-			(RandomAccessibleInterval) first))
+			(RandomAccessibleInterval) first, settings.diameter()))
 		{
 			v = v.withText(TrackingSettings.PARTICLES, TrackingSettings.DARK);
 			said.add(TrackingSettings.PARTICLES, TrackingSettings.DARK);
@@ -371,7 +371,10 @@ public final class MeasuredSettings {
 	@SuppressWarnings({ "rawtypes", "unchecked" })
 	private static boolean autoSeesOtherContrast(final SettingValues v, final Seen seen, final boolean particlesGiven) {
 		if (!auto(v) || particlesGiven && v.diameter() > 0) return false;
-		final double d = v.diameter() > 0 ? v.diameter() : seen.blobs();
+		// (at a diameter given, as the contrast was judged: Contrast#looksDark)
+		if (v.diameter() > 0) return DetectionChoice.otherContrastStrongerAt(seen.plane(), Plane.of(Inversion.of(
+			seen.frame)), v.diameter());
+		final double d = seen.blobs();
 		return d > 0 && DetectionChoice.otherContrastStronger(seen.plane(), Plane.of(Inversion.of(seen.frame)), d);
 	}
 

@@ -65,7 +65,7 @@ public final class ProfileSummary {
 		if (frame < 0 || frame >= frames.frameCount()) throw new InvalidInputException("frame " + frame + " does not " +
 			"exist: there " + (frames.frameCount() == 1 ? "is 1 frame" : "are " + frames.frameCount() + " frames") +
 			" (counted from 0)");
-		final boolean dark = particles == null ? Contrast.looksDark(frames.frame(frame)) : SettingValues
+		final boolean dark = particles == null ? Contrast.looksDark(frames.frame(frame), diameter) : SettingValues
 			.defaults().withText(TrackingSettings.PARTICLES, particles).dark();
 		final List<RandomAccessibleInterval<? extends RealType<?>>> kindFrames = new ArrayList<>();
 		for (final int t : ProfileAnalysis.kindFrames(frame, frames.frameCount()))

@@ -93,7 +93,7 @@ public record ShownFrameProfile(ProfileAnalysis.Result result, String title, int
 		// within the selection, as the dialog tracks (text burned into a corner of the frame left out, say)
 		final Interval region = ShownImage.selection(imp);
 		final boolean found = !said && Contrast.looksDark(ImagePlusFrames.within(plain.frame(ShownImage.frame(
-			imp)), region));
+			imp)), region), diameter);
 		final boolean dark = said || found;
 		// one view of the frames for both tries, its frames read once
 		final ImagePlusFrames frames = dark ? ImagePlusFrames.of(imp, channel, true) : plain;

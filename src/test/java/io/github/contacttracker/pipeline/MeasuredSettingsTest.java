@@ -546,4 +546,44 @@ class MeasuredSettingsTest {
 		assertEquals(6, far.settings().get(TrackingSettings.R_OUT), far.notice());
 		assertFalse(far.notice().contains("try --r-out"), far.notice());
 	}
+
+	/**
+	 * A tweezer's bead a third of the frame across, dark inside a bright rim that reaches the 8-bit ceiling, its core
+	 * textured with bright specks (as sanger-matteo/Bead_Tracker's {@code Stack_BoaB}): with its diameter given and not
+	 * its contrast, it is taken for dark, judged by the blobs at that diameter (the frame's extremes say bright: the
+	 * rim lies 1.6 times as far above the background as the core below).
+	 */
+	@Test
+	void aBeadDarkInsideABrightRimIsDarkAtTheDiameterGiven() {
+		final SettingValues given = SettingValues.defaults().with(TrackingSettings.DIAMETER, 62.0);
+		final MeasuredSettings.Result r = MeasuredSettings.of("bead.tif", texturedBead(), true, given, Set.of(
+			TrackingSettings.DIAMETER), FrontEnd.COMMAND_LINE);
+		assertTrue(r.settings().dark(), r.notice());
+		assertTrue(r.notice().contains("--particles dark"), r.notice());
+	}
+
+	/** 184 x 181 px, 8-bit: a bead of 62 px around (95.3, 91.6), its core 75 below a background of 135, its rim 120 above. */
+	private static RandomAccessibleInterval<UnsignedByteType> texturedBead() {
+		final int w = 184, h = 181;
+		final double cx = 95.3, cy = 91.6;
+		final SplittableRandom random = new SplittableRandom(5);
+		final double[][] specks = new double[14][];
+		for (int i = 0; i < specks.length; i++) {
+			final double r = 18 * Math.sqrt(random.nextDouble()), t = 2 * Math.PI * random.nextDouble();
+			specks[i] = new double[] { cx + r * Math.cos(t), cy + r * Math.sin(t) };
+		}
+		final byte[] pixels = new byte[w * h];
+		for (int y = 0; y < h; y++)
+			for (int x = 0; x < w; x++) {
+				final double d = Math.hypot(x - cx, y - cy);
+				double v = 135 + 0.05 * (x - w / 2) - 75 / (1 + Math.exp((d - 26) / 1.2)) + 120 * Math.exp(-(d - 29) * (d -
+					29) / 8.0);
+				for (final double[] s : specks)
+					v += 90 * Math.exp(-((x - s[0]) * (x - s[0]) + (y - s[1]) * (y - s[1])) / (2 * 2.2 * 2.2)) / (1 + Math
+						.exp(d - 24));
+				v += 2 * random.nextGaussian();
+				pixels[y * w + x] = (byte) Math.round(Math.max(0, Math.min(255, v)));
+			}
+		return net.imglib2.img.array.ArrayImgs.unsignedBytes(pixels, w, h);
+	}
 }

@@ -104,6 +104,18 @@ public record Peaks(double[] x, double[] y, double[] height, double[] prominence
 
 	/**
 	 * @param ratio how many times higher the strong peaks stand than every other ({@code > 1})
+	 * @return the height of the peaks that stand apart ({@link #standingApart}): where some do, the
+	 *         {@link #STRONG_QUANTILE} quantile of theirs (a tweezer's one bead among the background's bumps: its own
+	 *         height, where the quantile of all its seeds lies between the two highest); else {@link #typicalHeight}
+	 */
+	public double standingHeight(final double ratio) {
+		final int apart = standingApart(ratio);
+		return apart < height.length ? Statistics.quantile(Arrays.copyOf(height, apart), STRONG_QUANTILE)
+			: typicalHeight();
+	}
+
+	/**
+	 * @param ratio how many times higher the strong peaks stand than every other ({@code > 1})
 	 * @return how many of the highest peaks stand at least {@code ratio} times as high as each lower one (the
 	 *         peaks being highest first): where the heights fall by that factor from one peak to the next, the count
 	 *         above the first such fall; every peak where none falls that far
