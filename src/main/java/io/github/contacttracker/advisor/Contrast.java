@@ -91,16 +91,22 @@ public final class Contrast {
 	@SuppressWarnings({ "rawtypes", "unchecked" })
 	public static boolean looksDark(final RandomAccessibleInterval<? extends RealType<?>> frame, final double diameter) {
 		final Plane plane = Plane.of((RandomAccessibleInterval) frame);
-		final Plane inverted = Plane.of((RandomAccessibleInterval) Inversion.of((RandomAccessibleInterval) frame));
-		if (diameter > 0) return DetectionChoice.otherContrastStrongerAt(plane, inverted, diameter);
+		if (diameter > 0) return DetectionChoice.otherContrastStrongerAt(plane, inverted(frame), diameter);
 		final double[] v = Illumination.residuals(plane);
 		final double median = Statistics.quantile(v, 0.5); // sorted by it
 		final double below = median - v[0], above = v[v.length - 1] - median;
 		if (!(below * DARKER > above)) return false;
+		final Plane inverted = inverted(frame);
 		double d = ParticleScale.diameter(plane);
 		if (!(d > 0)) d = ParticleScale.diameter(inverted);
 		// no blob at any scale to compare: the levels alone decide
 		return d > 0 ? DetectionChoice.otherContrastStronger(plane, inverted, d) : below > DARK_RATIO * above;
+	}
+
+	/** @return the frame inverted ({@code core.image.Inversion}: a copy), as a plane */
+	@SuppressWarnings({ "rawtypes", "unchecked" })
+	private static Plane inverted(final RandomAccessibleInterval<? extends RealType<?>> frame) {
+		return Plane.of((RandomAccessibleInterval) Inversion.of((RandomAccessibleInterval) frame));
 	}
 
 	/**

@@ -372,10 +372,10 @@ public final class MeasuredSettings {
 	private static boolean autoSeesOtherContrast(final SettingValues v, final Seen seen, final boolean particlesGiven) {
 		if (!auto(v) || particlesGiven && v.diameter() > 0) return false;
 		// (at a diameter given, as the contrast was judged: Contrast#looksDark)
-		if (v.diameter() > 0) return DetectionChoice.otherContrastStrongerAt(seen.plane(), Plane.of(Inversion.of(
-			seen.frame)), v.diameter());
+		if (v.diameter() > 0) return DetectionChoice.otherContrastStrongerAt(seen.plane(), seen.inverted(), v
+			.diameter());
 		final double d = seen.blobs();
-		return d > 0 && DetectionChoice.otherContrastStronger(seen.plane(), Plane.of(Inversion.of(seen.frame)), d);
+		return d > 0 && DetectionChoice.otherContrastStronger(seen.plane(), seen.inverted(), d);
 	}
 
 	/**
@@ -485,6 +485,12 @@ public final class MeasuredSettings {
 		Plane plane() {
 			if (plane == null) plane = Plane.of(frame);
 			return plane;
+		}
+
+		/** @return the frame inverted, as a plane */
+		@SuppressWarnings("unchecked")
+		Plane inverted() {
+			return Plane.of(Inversion.of(frame));
 		}
 
 		/** @return the diameter of the frame's blobs to 0.01 px, as a value tracked with and said */

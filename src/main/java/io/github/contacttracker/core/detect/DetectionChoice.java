@@ -24,6 +24,7 @@ package io.github.contacttracker.core.detect;
 import java.io.Serializable;
 import java.util.List;
 import java.util.Locale;
+import java.util.function.ToDoubleFunction;
 
 import io.github.contacttracker.core.Detection;
 import io.github.contacttracker.core.Flag;
@@ -128,10 +129,7 @@ public record DetectionChoice(Detection detection, int merged, int spots, int di
 	 * @param diameter the particles' diameter (px, {@code > 0})
 	 */
 	public static boolean otherContrastStronger(final Plane frame, final Plane inverted, final double diameter) {
-		if (!fits(frame, diameter)) return false;
-		final double own = ImageDetection.seeds(frame, diameter, NoiseEstimate.sigma(frame)).typicalHeight();
-		final double other = ImageDetection.seeds(inverted, diameter, NoiseEstimate.sigma(inverted)).typicalHeight();
-		return other > OTHER_CONTRAST * own;
+		return stronger(frame, inverted, diameter, Peaks::typicalHeight);
 	}
 
 	/**
@@ -144,11 +142,20 @@ public record DetectionChoice(Detection detection, int merged, int spots, int di
 	 * bump (12.9), and the bead was tracked as bright: no spot in 401 frames.
 	 */
 	public static boolean otherContrastStrongerAt(final Plane frame, final Plane inverted, final double diameter) {
+		return stronger(frame, inverted, diameter, p -> p.standingHeight(1 / ImageDetection.RELATIVE));
+	}
+
+	/**
+	 * @param height the height of a frame's particles among its seeds at {@code diameter}
+	 * @return whether the inverted frame's particles stand {@link #OTHER_CONTRAST} times as high as the frame's own
+	 */
+	private static boolean stronger(final Plane frame, final Plane inverted, final double diameter,
+		final ToDoubleFunction<Peaks> height)
+	{
 		if (!fits(frame, diameter)) return false;
-		final double ratio = 1 / ImageDetection.RELATIVE;
-		final double own = ImageDetection.seeds(frame, diameter, NoiseEstimate.sigma(frame)).standingHeight(ratio);
-		final double other = ImageDetection.seeds(inverted, diameter, NoiseEstimate.sigma(inverted)).standingHeight(
-			ratio);
+		final double own = height.applyAsDouble(ImageDetection.seeds(frame, diameter, NoiseEstimate.sigma(frame)));
+		final double other = height.applyAsDouble(ImageDetection.seeds(inverted, diameter, NoiseEstimate.sigma(
+			inverted)));
 		return other > OTHER_CONTRAST * own;
 	}
 
